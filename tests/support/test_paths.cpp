@@ -1,0 +1,27 @@
+#include "support/test_paths.hpp"
+
+#include <cstdlib>
+
+namespace stipple::test {
+
+std::string shared_model(const std::string& name) {
+    const char* env = std::getenv("STIPPLE_SHARED_MODELS");
+    std::filesystem::path dir = env ? env : STIPPLE_SHARED_MODELS_DIR;
+    std::filesystem::path path = dir / name;
+    return std::filesystem::is_regular_file(path) ? path.string() : std::string();
+}
+
+std::filesystem::path output_path(const std::string& name) {
+    std::filesystem::path dir = STIPPLE_TEST_OUTPUT_DIR;
+    std::filesystem::create_directories(dir);
+    return dir / name;
+}
+
+std::filesystem::path temp_dir(const std::string& test_name) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("stipple-test-" + test_name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace stipple::test

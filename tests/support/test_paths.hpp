@@ -1,0 +1,15 @@
+#pragma once
+// Where tests find the shared real models and where they write their output.
+#include <filesystem>
+#include <string>
+
+namespace stipple::test {
+
+// ../shared/models/<name>, or "" when absent (the caller then GTEST_SKIPs with a message).
+std::string shared_model(const std::string& name);
+// <build>/test-output/<name>, creating the folder.
+std::filesystem::path output_path(const std::string& name);
+// A fresh empty temporary folder for files a test writes itself.
+std::filesystem::path temp_dir(const std::string& test_name);
+
+}  // namespace stipple::test
