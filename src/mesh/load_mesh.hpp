@@ -1,0 +1,24 @@
+#pragma once
+#include <string>
+
+#include "mesh/mesh.hpp"
+
+namespace stipple {
+
+struct LoadOptions {
+    // Largest element count a header may claim before we refuse it (guards against absurd counts
+    // and huge allocations). The file size also bounds every count: a count is refused when the
+    // file cannot possibly hold that many elements.
+    uint64_t max_elements = 200'000'000;
+};
+
+// Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
+// (validate_mesh) and computes normals where the file has none.
+// Every problem throws stipple::Error with one line "<path>: <problem>".
+Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+Mesh load_obj(const std::string& path, const LoadOptions& options);
+Mesh load_ply(const std::string& path, const LoadOptions& options);
+Mesh load_gltf(const std::string& path, const LoadOptions& options);  // .gltf and .glb
+
+}  // namespace stipple

@@ -1,0 +1,145 @@
+#include "mesh/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace stipple {
+
+namespace {
+
+glm::dvec3 to_double(const glm::vec3& v) { return glm::dvec3(v); }
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+void compute_vertex_normals(Mesh& mesh) {
+    // Accumulate in double: the unnormalised cross product is twice the face area, so summing it
+    // weights each face by its area; float sums lose the small faces of dense scans.
+    std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
+    const size_t vertex_count = mesh.positions.size();
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        // Skipped rather than trusted: this runs before validate_mesh reports bad indices.
+        if (a >= vertex_count || b >= vertex_count || c >= vertex_count) continue;
+        const glm::dvec3 pa = to_double(mesh.positions[a]);
+        const glm::dvec3 n = glm::cross(to_double(mesh.positions[b]) - pa, to_double(mesh.positions[c]) - pa);
+        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) continue;
+        sum[a] += n;
+        sum[b] += n;
+        sum[c] += n;
+    }
+    mesh.normals.resize(vertex_count);
+    for (size_t i = 0; i < vertex_count; ++i) {
+        const double length = glm::length(sum[i]);
+        mesh.normals[i] = length > 0.0 ? glm::vec3(sum[i] / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+}
+
+void validate_mesh(const Mesh& mesh) {
+    const std::string& source = mesh.source;
+    if (mesh.indices.size() % 3 != 0)
+        fail_file(source, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
+    if (mesh.indices.empty()) fail_file(source, "the model has no triangles");
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3& p = mesh.positions[i];
+        if (std::isnan(p.x) || std::isnan(p.y) || std::isnan(p.z))
+            fail_file(source, "vertex " + std::to_string(i) + " has a NaN coordinate");
+        if (!finite(p)) fail_file(source, "vertex " + std::to_string(i) + " has an infinite coordinate");
+    }
+    const size_t vertex_count = mesh.positions.size();
+    for (size_t i = 0; i < mesh.indices.size(); ++i) {
+        if (mesh.indices[i] >= vertex_count)
+            fail_file(source, "face " + std::to_string(i / 3) + " refers to vertex " +
+                                  std::to_string(mesh.indices[i]) + " but there are only " +
+                                  std::to_string(vertex_count) + " vertices");
+    }
+    if (mesh.normals.size() != vertex_count)
+        fail_file(source, "has " + std::to_string(mesh.normals.size()) + " normals for " +
+                              std::to_string(vertex_count) + " vertices");
+    for (size_t i = 0; i < mesh.normals.size(); ++i) {
+        if (!finite(mesh.normals[i])) fail_file(source, "normal " + std::to_string(i) + " is not finite");
+    }
+}
+
+Bounds compute_bounds(const Mesh& mesh) {
+    if (mesh.positions.empty()) return Bounds{};
+    Bounds b{mesh.positions[0], mesh.positions[0]};
+    for (const glm::vec3& p : mesh.positions) {
+        b.min = glm::min(b.min, p);
+        b.max = glm::max(b.max, p);
+    }
+    return b;
+}
+
+Sphere compute_bounding_sphere(const Mesh& mesh) {
+    const std::vector<glm::vec3>& points = mesh.positions;
+    if (points.empty()) return Sphere{};
+    // Ritter: two sweeps for a far-apart pair give the initial diameter.
+    auto farthest_from = [&](const glm::dvec3& from) {
+        size_t best = 0;
+        double best_d2 = -1.0;
+        for (size_t i = 0; i < points.size(); ++i) {
+            const glm::dvec3 d = to_double(points[i]) - from;
+            const double d2 = glm::dot(d, d);
+            if (d2 > best_d2) best_d2 = d2, best = i;
+        }
+        return to_double(points[best]);
+    };
+    const glm::dvec3 y = farthest_from(to_double(points[0]));
+    const glm::dvec3 z = farthest_from(y);
+    glm::dvec3 center = 0.5 * (y + z);
+    double radius = 0.5 * glm::length(z - y);
+    // Grow towards every point left outside, moving the centre only as far as needed.
+    for (const glm::vec3& p : points) {
+        const glm::dvec3 q = to_double(p);
+        const double d = glm::length(q - center);
+        if (d > radius) {
+            const double grown = 0.5 * (radius + d);
+            center += (grown - radius) / d * (q - center);
+            radius = grown;
+        }
+    }
+    // Rounding in the growing pass can leave a point a hair outside, and so can converting the
+    // centre to float: the radius is the true maximum distance from the float centre, padded so
+    // that converting it to float cannot lose the guarantee either.
+    const glm::vec3 c(center);
+    double max_d = 0.0;
+    for (const glm::vec3& p : points) max_d = std::max(max_d, glm::length(to_double(p) - to_double(c)));
+    return Sphere{c, static_cast<float>(max_d * (1.0 + 1e-6))};
+}
+
+double triangle_area(const Mesh& mesh, size_t triangle) {
+    const glm::dvec3 a = to_double(mesh.positions[mesh.indices[3 * triangle]]);
+    const glm::dvec3 b = to_double(mesh.positions[mesh.indices[3 * triangle + 1]]);
+    const glm::dvec3 c = to_double(mesh.positions[mesh.indices[3 * triangle + 2]]);
+    return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+double total_area(const Mesh& mesh) {
+    double sum = 0.0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) sum += triangle_area(mesh, t);
+    return sum;
+}
+
+void append_mesh(Mesh& a, const Mesh& b) {
+    if (a.source.empty()) a.source = b.source;
+    const bool a_has_normals = a.positions.empty() || a.normals.size() == a.positions.size();
+    const bool b_has_normals = b.normals.size() == b.positions.size();
+    const auto offset = static_cast<uint32_t>(a.positions.size());
+    STIPPLE_CHECK(a.positions.size() + b.positions.size() <= UINT32_MAX, "appended mesh exceeds 32-bit indices");
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    // Normals only stay when both sides have a full set; otherwise they are dropped so that the
+    // mismatch is visible (validate_mesh) and the caller recomputes them for the whole mesh.
+    if (a_has_normals && b_has_normals)
+        a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
+    else
+        a.normals.clear();
+    a.indices.reserve(a.indices.size() + b.indices.size());
+    for (uint32_t i : b.indices) a.indices.push_back(i + offset);
+}
+
+}  // namespace stipple

@@ -1,0 +1,50 @@
+#pragma once
+// The one in-memory form of every model: an indexed triangle list in object space.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace stipple {
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    glm::vec3 center() const { return 0.5f * (min + max); }
+};
+
+// Bounding sphere used for framing, silhouette thinning (paper §3.1) and the reference scale
+// of stipple generation.
+struct Sphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+
+struct Mesh {
+    std::string source;                // path it was loaded from (for messages), or a generator name
+    std::vector<glm::vec3> positions;  // one per vertex, finite
+    std::vector<glm::vec3> normals;    // one per vertex, unit length (computed when the file has none)
+    std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
+
+    size_t triangle_count() const { return indices.size() / 3; }
+    size_t vertex_count() const { return positions.size(); }
+};
+
+// Area-weighted vertex normals from the faces; degenerate faces contribute nothing and a
+// vertex with no usable face gets +Z so that every normal is unit length.
+void compute_vertex_normals(Mesh& mesh);
+
+// Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf,
+// the index count is not a multiple of 3, normals are missing/mismatched, or there is no triangle.
+void validate_mesh(const Mesh& mesh);
+
+Bounds compute_bounds(const Mesh& mesh);
+Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains every vertex
+double triangle_area(const Mesh& mesh, size_t triangle);
+double total_area(const Mesh& mesh);
+
+// Appends b to a (for scenes and multi-primitive files).
+void append_mesh(Mesh& a, const Mesh& b);
+
+}  // namespace stipple

@@ -1,0 +1,434 @@
+// Model loaders: every format on small files written here, every kind of bad input, and the
+// shared real models (skipped when they are not there).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+#include "support/model_files.hpp"
+#include "support/test_paths.hpp"
+
+namespace {
+
+using stipple::load_mesh;
+using stipple::Mesh;
+using stipple::test::ByteWriter;
+using stipple::test::temp_dir;
+using stipple::test::write_file;
+
+// The message load_mesh throws for `path`, or "" (and a test failure) when it loads.
+std::string load_error(const std::string& path) {
+    try {
+        load_mesh(path);
+    } catch (const stipple::Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << path << " loaded without an error";
+    return "";
+}
+
+void expect_load_error(const std::string& path, const std::string& phrase) {
+    const std::string message = load_error(path);
+    EXPECT_NE(message.find(path + ": "), std::string::npos) << "message does not name the file: " << message;
+    EXPECT_NE(message.find(phrase), std::string::npos) << "expected '" << phrase << "' in: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "message is not one line: " << message;
+}
+
+void expect_unit_normals(const Mesh& mesh) {
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    for (const glm::vec3& n : mesh.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+}
+
+glm::vec3 face_normal(const Mesh& m, size_t t) {
+    const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                    c = m.positions[m.indices[3 * t + 2]];
+    return glm::cross(b - a, c - a);
+}
+
+// ---------------------------------------------------------------- OBJ
+
+TEST(ObjLoader, TrianglesWithNormalsKeepFileNormals) {
+    const auto dir = temp_dir("loaders_obj_normals");
+    const std::string path = write_file(dir / "tri.OBJ",  // extensions are case-insensitive
+                                        "# a triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 1u);
+    EXPECT_EQ(m.vertex_count(), 3u);
+    EXPECT_EQ(m.source, path);
+    expect_unit_normals(m);
+    EXPECT_NEAR(m.normals[0].z, 1.0f, 1e-6f);  // the file's normal, normalised
+}
+
+TEST(ObjLoader, QuadsAreTriangulatedAndNormalsComputed) {
+    const auto dir = temp_dir("loaders_obj_quads");
+    // A unit cube of six quads, outward winding, no normals.
+    const std::string path = write_file(dir / "cube.obj",
+                                        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                        "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 12u);
+    EXPECT_EQ(m.vertex_count(), 8u);
+    expect_unit_normals(m);
+    const glm::vec3 center(0.5f);
+    for (size_t i = 0; i < m.vertex_count(); ++i)  // computed normals point out of the cube
+        EXPECT_GT(glm::dot(m.normals[i], m.positions[i] - center), 0.0f);
+}
+
+TEST(ObjLoader, NormalsOnSomeFacesOnlyAreRecomputed) {
+    const auto dir = temp_dir("loaders_obj_mixed");
+    const std::string path = write_file(dir / "mixed.obj",
+                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 1 0 0\nf 1//1 2//1 3//1\nf 2 4 3\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 2u);
+    EXPECT_EQ(m.vertex_count(), 4u);
+    expect_unit_normals(m);
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);  // computed, not the file's +X
+}
+
+TEST(ObjLoader, ZeroAreaTriangleIsKept) {
+    const auto dir = temp_dir("loaders_obj_zero_area");
+    const std::string path =
+        write_file(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 2u);
+    EXPECT_DOUBLE_EQ(stipple::triangle_area(m, 0), 0.0);
+    EXPECT_DOUBLE_EQ(stipple::total_area(m), 0.5);
+    expect_unit_normals(m);
+}
+
+// ---------------------------------------------------------------- PLY
+
+TEST(PlyLoader, AsciiWithCommentsExtraPropertiesAndElements) {
+    const auto dir = temp_dir("loaders_ply_ascii");
+    const std::string path = write_file(dir / "tetra.ply",
+                                        "ply\nformat ascii 1.0\ncomment made by hand\nobj_info test\n"
+                                        "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                                        "property uchar red\nelement face 4\nproperty list uchar int vertex_indices\n"
+                                        "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+                                        "0 0 0 255\n1 0 0 0\n0 1 0 0\n0 0 1 7\n"
+                                        "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+                                        "0 1\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 4u);
+    EXPECT_EQ(m.vertex_count(), 4u);
+    EXPECT_EQ(m.positions[3], glm::vec3(0, 0, 1));
+    expect_unit_normals(m);
+}
+
+// The tetrahedron with normals, in either byte order, with mixed scalar types and properties and
+// elements the loader must skip.
+std::string binary_tetra_ply(bool big_endian, float first_x = 0.0f) {
+    std::string ply = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                      " 1.0\nelement vertex 4\nproperty double x\nproperty float32 y\nproperty float z\n"
+                      "property float nx\nproperty float ny\nproperty float nz\nproperty uint8 quality\n"
+                      "element face 4\nproperty uchar flags\nproperty list uint8 uint32 vertex_indices\n"
+                      "element extra 2\nproperty list ushort short data\nend_header\n";
+    ByteWriter w(big_endian);
+    const float p[4][3] = {{first_x, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (const auto& v : p) {
+        w.put<double>(v[0]).put<float>(v[1]).put<float>(v[2]);
+        w.put<float>(v[0] - 0.25f).put<float>(v[1] - 0.25f).put<float>(v[2] - 0.25f).put<uint8_t>(9);
+    }
+    const uint32_t faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& f : faces) w.put<uint8_t>(0).put<uint8_t>(3).put<uint32_t>(f[0]).put<uint32_t>(f[1]).put<uint32_t>(f[2]);
+    w.put<uint16_t>(2).put<int16_t>(-1).put<int16_t>(5).put<uint16_t>(0);
+    return ply + w.bytes();
+}
+
+class PlyBinary : public ::testing::TestWithParam<bool> {};
+
+TEST_P(PlyBinary, ReadsPositionsNormalsAndFaces) {
+    const auto dir = temp_dir(GetParam() ? "loaders_ply_be" : "loaders_ply_le");
+    const std::string path = write_file(dir / "tetra.ply", binary_tetra_ply(GetParam()));
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 4u);
+    ASSERT_EQ(m.vertex_count(), 4u);
+    EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
+    EXPECT_EQ(m.positions[3], glm::vec3(0, 0, 1));
+    EXPECT_EQ(m.indices[0], 0u);
+    EXPECT_EQ(m.indices[1], 2u);
+    expect_unit_normals(m);
+    // The file's normals (v - 0.25, normalised), not computed ones.
+    EXPECT_NEAR(m.normals[1].x, glm::normalize(glm::vec3(0.75f, -0.25f, -0.25f)).x, 1e-6f);
+}
+
+INSTANTIATE_TEST_SUITE_P(ByteOrder, PlyBinary, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "BigEndian" : "LittleEndian"; });
+
+TEST(PlyLoader, PolygonsAreFanTriangulated) {
+    const auto dir = temp_dir("loaders_ply_polygons");
+    const std::string path = write_file(dir / "poly.ply",
+                                        "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement face 2\nproperty list uchar uint vertex_index\n"
+                                        "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 2 0\n4 0 1 2 3\n5 0 1 2 4 3\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 2u + 3u);
+    const std::vector<uint32_t> fan = {0, 1, 2, 0, 2, 3};
+    EXPECT_EQ(std::vector<uint32_t>(m.indices.begin(), m.indices.begin() + 6), fan);
+}
+
+TEST(PlyLoader, TriangleStripsWithSeparatorsAndDegenerates) {
+    const auto dir = temp_dir("loaders_ply_strips");
+    // A 3x2 grid of points in z = 0; the strips zig-zag so that every triangle faces +Z.
+    // Strip one ends with a repeated corner (two degenerate joins, dropped).
+    const std::string path = write_file(dir / "strips.ply",
+                                        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+                                        "end_header\n0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n"
+                                        "11 1 0 3 2 2 3 -1 3 2 5 4\n");
+    const Mesh m = load_mesh(path);
+    ASSERT_EQ(m.triangle_count(), 4u);
+    const std::vector<uint32_t> expected = {1, 0, 3, 3, 0, 2, 3, 2, 5, 5, 2, 4};
+    EXPECT_EQ(m.indices, expected);
+    for (size_t t = 0; t < m.triangle_count(); ++t) EXPECT_GT(face_normal(m, t).z, 0.0f) << "triangle " << t;
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
+    EXPECT_DOUBLE_EQ(stipple::total_area(m), 2.0);
+}
+
+// ---------------------------------------------------------------- glTF
+
+// A glTF document around one buffer; `buffer` is the JSON of buffers[0].
+std::string gltf_json(const std::string& buffer, const std::string& rest) {
+    return R"({"asset":{"version":"2.0"},"buffers":[)" + buffer + "]," + rest + "}";
+}
+
+std::string embedded(const std::string& bytes) {
+    return R"({"byteLength":)" + std::to_string(bytes.size()) + R"(,"uri":"data:application/octet-stream;base64,)" +
+           stipple::test::base64(bytes) + "\"}";
+}
+
+TEST(GltfLoader, EmbeddedBufferIndexedTrianglesAndStrip) {
+    const auto dir = temp_dir("loaders_gltf_embedded");
+    ByteWriter w;
+    for (float v : {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}) w.put<float>(v);  // quad, counter-clockwise
+    for (float v : {0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1}) w.put<float>(v);  // zig-zag for a strip, z = 1
+    for (uint16_t i : {0, 1, 2, 0, 2, 3}) w.put<uint16_t>(i);
+    const std::string json = gltf_json(
+        embedded(w.bytes()),
+        R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96,"byteStride":12},{"buffer":0,"byteOffset":96,"byteLength":12}],)"
+        R"("accessors":[{"bufferView":0,"byteOffset":0,"componentType":5126,"count":4,"type":"VEC3"},)"
+        R"({"bufferView":0,"byteOffset":48,"componentType":5126,"count":4,"type":"VEC3"},)"
+        R"({"bufferView":1,"componentType":5123,"count":6,"type":"SCALAR"}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":2},{"attributes":{"POSITION":1},"mode":5}]}],)"
+        R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}])");
+    const Mesh m = load_mesh(write_file(dir / "quad.gltf", json));
+    EXPECT_EQ(m.triangle_count(), 4u);
+    EXPECT_EQ(m.vertex_count(), 8u);
+    expect_unit_normals(m);
+    for (size_t t = 0; t < m.triangle_count(); ++t) EXPECT_GT(face_normal(m, t).z, 0.0f) << "triangle " << t;
+    const stipple::Bounds b = stipple::compute_bounds(m);
+    EXPECT_EQ(b.min, glm::vec3(0, 0, 0));
+    EXPECT_EQ(b.max, glm::vec3(1, 1, 1));
+}
+
+TEST(GltfLoader, GlbNodeTransformsInterleavedNormalsAndSkippedLines) {
+    const auto dir = temp_dir("loaders_gltf_glb");
+    ByteWriter w;  // position and normal interleaved, stride 24
+    for (float v : {0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1}) w.put<float>(v);
+    for (uint8_t i : {0, 1, 2}) w.put<uint8_t>(i);
+    const std::string json =
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":75}],)"
+        R"("bufferViews":[{"buffer":0,"byteLength":72,"byteStride":24},{"buffer":0,"byteOffset":72,"byteLength":3}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+        R"({"bufferView":0,"byteOffset":12,"componentType":5126,"count":3,"type":"VEC3"},)"
+        R"({"bufferView":1,"componentType":5121,"count":3,"type":"SCALAR"}],)"
+        R"("meshes":[{"name":"shape","primitives":[{"attributes":{"POSITION":0,"NORMAL":1},"indices":2},)"
+        R"({"attributes":{"POSITION":0},"mode":1}]}],)"
+        // Parent moves by +10 in x; the child scales by 2 and turns 90 degrees about z.
+        R"("nodes":[{"translation":[10,0,0],"children":[1]},)"
+        R"({"mesh":0,"scale":[2,2,2],"rotation":[0,0,0.70710678,0.70710678]}],)"
+        R"("scenes":[{"nodes":[]},{"nodes":[0]}],"scene":1})";
+    const std::string path = write_file(dir / "scene.glb", stipple::test::make_glb(json, w.bytes()));
+    ::testing::internal::CaptureStderr();
+    const Mesh m = load_mesh(path);
+    const std::string warnings = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(warnings.find(path + ": warning: skipping mesh 'shape' primitive 1 (mode LINES)"), std::string::npos)
+        << warnings;
+    EXPECT_EQ(m.triangle_count(), 1u);
+    const stipple::Bounds b = stipple::compute_bounds(m);  // (0,0),(2,0),(0,2) -> (10,0),(10,2),(8,0)
+    EXPECT_NEAR(b.min.x, 8.0f, 1e-5f);
+    EXPECT_NEAR(b.min.y, 0.0f, 1e-5f);
+    EXPECT_NEAR(b.max.x, 10.0f, 1e-5f);
+    EXPECT_NEAR(b.max.y, 2.0f, 1e-5f);
+    expect_unit_normals(m);
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-5f);
+}
+
+std::string one_triangle_gltf(const std::string& mode, uint8_t last_index) {
+    ByteWriter w;
+    for (float v : {0, 0, 0, 1, 0, 0, 0, 1, 0}) w.put<float>(v);
+    for (uint8_t i : {uint8_t(0), uint8_t(1), last_index}) w.put<uint8_t>(i);
+    return gltf_json(embedded(w.bytes()),
+                     R"("bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":3}],)"
+                     R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+                     R"({"bufferView":1,"componentType":5121,"count":3,"type":"SCALAR"}],)"
+                     R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":)" +
+                         mode + "}]}]");  // no scenes: every mesh once
+}
+
+TEST(GltfLoader, ExternalBufferFile) {
+    const auto dir = temp_dir("loaders_gltf_external");
+    ByteWriter w;
+    for (float v : {0, 0, 0, 1, 0, 0, 0, 1, 0}) w.put<float>(v);
+    write_file(dir / "tri.bin", w.bytes());
+    const std::string json = gltf_json(
+        R"({"byteLength":36,"uri":"tri.bin"})",
+        R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}])");
+    const Mesh m = load_mesh(write_file(dir / "tri.gltf", json));
+    EXPECT_EQ(m.triangle_count(), 1u);
+    EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
+}
+
+TEST(GltfLoader, NodeCycleIsAnError) {
+    const auto dir = temp_dir("loaders_gltf_cycle");
+    std::string json = one_triangle_gltf("4", 2);
+    json.pop_back();  // reopen the document to add a scene whose nodes form a cycle
+    json += R"(,"nodes":[{"mesh":0,"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}]})";
+    expect_load_error(write_file(dir / "cycle.gltf", json), "node 0 is reached twice");
+}
+
+TEST(GltfLoader, OnlyPointsIsAnError) {
+    const auto dir = temp_dir("loaders_gltf_points");
+    ::testing::internal::CaptureStderr();
+    expect_load_error(write_file(dir / "points.gltf", one_triangle_gltf("0", 2)), "the model has no triangles");
+    EXPECT_NE(::testing::internal::GetCapturedStderr().find("(mode POINTS)"), std::string::npos);
+}
+
+// ---------------------------------------------------------------- bad input
+
+TEST(BadInput, MissingFile) {
+    expect_load_error((temp_dir("loaders_missing") / "nothing.obj").string(), "no such file");
+}
+
+TEST(BadInput, EmptyFile) { expect_load_error(write_file(temp_dir("loaders_empty") / "empty.ply", ""), "file is empty"); }
+
+TEST(BadInput, Directory) {
+    const auto dir = temp_dir("loaders_directory") / "model.obj";
+    std::filesystem::create_directories(dir);
+    expect_load_error(dir.string(), "is a directory, not a model file");
+}
+
+TEST(BadInput, UnknownExtension) {
+    expect_load_error(write_file(temp_dir("loaders_unknown_ext") / "model.stl", "solid x\n"), "unknown model format '.stl'");
+}
+
+TEST(BadInput, TruncatedBinaryPly) {
+    const std::string ply = binary_tetra_ply(false);
+    // Cut inside the last face (the 'extra' element takes the last 8 bytes).
+    const std::string path = write_file(temp_dir("loaders_ply_truncated") / "cut.ply", ply.substr(0, ply.size() - 8 - 5));
+    expect_load_error(path, "truncated: header promises 4 faces but the file ends after 3");
+}
+
+TEST(BadInput, PlyHeaderPromisesMoreFacesThanTheData) {
+    const std::string path = write_file(temp_dir("loaders_ply_short") / "short.ply",
+                                        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement face 10\nproperty list uchar int vertex_indices\n"
+                                        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n");
+    expect_load_error(path, "truncated: header promises 10 faces but the file ends after 2");
+}
+
+TEST(BadInput, PlyHeaderClaimsATrillionFacesFailsFast) {
+    ByteWriter w;
+    for (float v : {0, 0, 0, 1, 0, 0, 0, 1, 0}) w.put<float>(v);
+    w.put<uint8_t>(3).put<int32_t>(0).put<int32_t>(1).put<int32_t>(2);
+    const std::string path = write_file(temp_dir("loaders_ply_huge") / "huge.ply",
+                                        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                        "property float y\nproperty float z\nelement face 1000000000000\n"
+                                        "property list uchar int vertex_indices\nend_header\n" +
+                                            w.bytes());
+    const auto start = std::chrono::steady_clock::now();
+    expect_load_error(path, "header claims 1000000000000 faces, more than the file can hold");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.5);
+}
+
+TEST(BadInput, CountAboveTheElementLimit) {
+    stipple::LoadOptions options;
+    options.max_elements = 3;
+    const std::string path = write_file(temp_dir("loaders_limit") / "tetra.ply", binary_tetra_ply(false));
+    try {
+        load_mesh(path, options);
+        ADD_FAILURE() << "loaded despite the limit";
+    } catch (const stipple::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path + ": header claims 4 vertices, more than the limit of 3"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(BadInput, GarbageBytes) {
+    const auto dir = temp_dir("loaders_garbage");
+    std::mt19937 rng(1234);
+    std::string bytes(4096, '\0');
+    for (char& c : bytes) c = static_cast<char>(rng());
+    expect_load_error(write_file(dir / "noise.ply", bytes), "not a PLY file");
+    expect_load_error(write_file(dir / "noise.obj", bytes), "not a text OBJ file");
+    expect_load_error(write_file(dir / "noise.glb", bytes), "not a binary glTF file");
+    expect_load_error(write_file(dir / "noise.gltf", bytes), "cannot read glTF");
+}
+
+TEST(BadInput, ObjIndexOutOfRange) {
+    expect_load_error(write_file(temp_dir("loaders_obj_range") / "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
+                      "face 1 (line 4) refers to vertex 9 but there are only 3 vertices");
+}
+
+TEST(BadInput, PlyIndexOutOfRange) {
+    const std::string path = write_file(temp_dir("loaders_ply_range") / "range.ply",
+                                        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 900\n");
+    expect_load_error(path, "face 0 refers to vertex 900 but there are only 3 vertices");
+}
+
+TEST(BadInput, GltfIndexOutOfRange) {
+    expect_load_error(write_file(temp_dir("loaders_gltf_range") / "range.gltf", one_triangle_gltf("4", 9)),
+                      "refers to vertex 9 but there are only 3 vertices");
+}
+
+TEST(BadInput, ObjNaNAndInfCoordinates) {
+    const auto dir = temp_dir("loaders_obj_nan");
+    expect_load_error(write_file(dir / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"),
+                      "vertex 2 (line 2) has a NaN coordinate");
+    expect_load_error(write_file(dir / "inf.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n"),
+                      "vertex 3 (line 3) has an infinite coordinate");
+}
+
+TEST(BadInput, PlyBinaryNaNAndInfCoordinates) {
+    const auto dir = temp_dir("loaders_ply_nan");
+    expect_load_error(write_file(dir / "nan.ply", binary_tetra_ply(false, std::numeric_limits<float>::quiet_NaN())),
+                      "vertex 0 has a NaN coordinate");
+    expect_load_error(write_file(dir / "inf.ply", binary_tetra_ply(true, std::numeric_limits<float>::infinity())),
+                      "vertex 0 has an infinite coordinate");
+}
+
+// ---------------------------------------------------------------- real models
+
+// Loads a shared model, checks its size and prints the load rate.
+void load_real_model(const std::string& name, size_t triangles, size_t vertices) {
+    const std::string path = stipple::test::shared_model(name);
+    if (path.empty()) GTEST_SKIP() << name << " is not in the shared models folder";
+    const auto start = std::chrono::steady_clock::now();
+    const Mesh m = load_mesh(path);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(m.triangle_count(), triangles);
+    if (vertices) {
+        EXPECT_EQ(m.vertex_count(), vertices);
+    }
+    expect_unit_normals(m);
+    std::printf("%s: %zu triangles, %zu vertices in %.1f ms (%.2f M triangles/s)\n", name.c_str(), m.triangle_count(),
+                m.vertex_count(), seconds * 1e3, m.triangle_count() / seconds / 1e6);
+}
+
+TEST(RealModels, StanfordBunnyObj) { load_real_model("stanford-bunny.obj", 69'451, 35'947); }
+TEST(RealModels, IgeaPlyTriangleStrips) { load_real_model("igea.ply", 268'686, 134'345); }
+TEST(RealModels, HorsePlyWithNormals) { load_real_model("horse.ply", 96'966, 48'485); }
+TEST(RealModels, OgreObj) { load_real_model("ogre.obj", 124'008, 0); }
+TEST(RealModels, SpotObj) { load_real_model("spot.obj", 5'856, 0); }
+
+}  // namespace
