@@ -1,0 +1,90 @@
+#pragma once
+// A tiny deterministic parallel_for over std::thread.
+//
+// Work is cut into fixed chunks whose boundaries depend only on the problem size and the chunk
+// size the caller gives, never on the number of threads; threads take chunks in any order. So a
+// body that writes only the outputs of its own chunk (and combines per-chunk results in chunk
+// order afterwards) gives bit-identical results for any thread count, including 1.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace stipple {
+
+namespace detail {
+inline std::atomic<unsigned>& worker_override() {
+    static std::atomic<unsigned> value{0};
+    return value;
+}
+}  // namespace detail
+
+// Number of worker threads used by parallel_for: set_worker_count's value if set, else the value
+// of the STIPPLE_THREADS environment variable, else the hardware concurrency. (1 forces serial
+// execution; handy to check that results do not depend on the thread count.)
+inline unsigned worker_count() {
+    if (const unsigned forced = detail::worker_override().load(std::memory_order_relaxed)) return forced;
+    static const unsigned count = [] {
+        if (const char* env = std::getenv("STIPPLE_THREADS")) {
+            const int n = std::atoi(env);
+            if (n >= 1) return static_cast<unsigned>(n);
+        }
+        const unsigned hw = std::thread::hardware_concurrency();
+        return hw == 0 ? 1u : hw;
+    }();
+    return count;
+}
+
+// Overrides worker_count() (0 restores the default). For tests and benchmarks.
+inline void set_worker_count(unsigned threads) { detail::worker_override().store(threads, std::memory_order_relaxed); }
+
+// Calls body(chunk_index, begin, end) for every chunk [begin, end) of [0, n) of `chunk` items
+// (the last one shorter). Blocks until all chunks ran. The first exception thrown by a body is
+// rethrown here (the remaining chunks are skipped).
+template <class Body>
+void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
+    if (n == 0) return;
+    chunk = std::max<size_t>(chunk, 1);
+    const size_t chunks = (n + chunk - 1) / chunk;
+    const unsigned threads = static_cast<unsigned>(std::min<size_t>(worker_count(), chunks));
+    if (threads <= 1) {
+        for (size_t c = 0; c < chunks; ++c) body(c, c * chunk, std::min(n, (c + 1) * chunk));
+        return;
+    }
+    std::atomic<size_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    auto worker = [&] {
+        for (;;) {
+            const size_t c = next.fetch_add(1, std::memory_order_relaxed);
+            if (c >= chunks) return;
+            try {
+                body(c, c * chunk, std::min(n, (c + 1) * chunk));
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(error_mutex);
+                if (!error) error = std::current_exception();
+                next.store(chunks, std::memory_order_relaxed);  // skip the rest
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    pool.reserve(threads - 1);
+    for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
+    worker();  // the calling thread works too
+    for (std::thread& t : pool) t.join();
+    if (error) std::rethrow_exception(error);
+}
+
+// Calls body(i) for every i in [0, n), in chunks of `chunk` consecutive indices.
+template <class Body>
+void parallel_for(size_t n, size_t chunk, Body&& body) {
+    parallel_for_chunks(n, chunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) body(i);
+    });
+}
+
+}  // namespace stipple

@@ -1,0 +1,174 @@
+// Stipple generation: the candidate stipples of one object (Lu et al. 2002, §2.1 "Initial Point
+// Generation").
+//
+// The paper generates random points in every polygon, redistributes them toward a Poisson-disc
+// distribution, and gives polygon i  N_max = Object_max * min(D_max, D_r)  stipples, where D_r
+// follows "the initial screen area of the projected polygon" so that "the stipple pattern is
+// independent of the object tessellation". Our reading, precisely:
+//
+// * Reference scale. The object is framed so that its bounding-sphere radius R spans
+//   kReferenceHeight / 2 pixels: px_per_unit = (kReferenceHeight / 2) / R, and triangle i has the
+//   reference area a_i = area_i * px_per_unit^2. The polygon is taken as facing the camera: the
+//   paper's orientation and depth terms (cos(N_z * pi), Z_rel) change every frame and belong to
+//   the per-frame density pass, not to generation.
+// * Density, in stipples per reference pixel^2: d = min(D_max, Object_max / sum_i a_i). D_r is
+//   read as the density the object's budget affords, so the budget lowers the density evenly over
+//   the surface instead of truncating some triangles. stipple_density_per_area = d * px_per_unit^2
+//   (stipples per object-space unit area).
+// * Counts. Triangle i expects E_i = density_per_area * area_i stipples. The integer count comes
+//   from cumulative rounding in triangle order, N_i = floor(S_i + 0.5) - floor(S_{i-1} + 0.5) with
+//   S_i = E_1 + ... + E_i: every N_i is within 1 of E_i, and the total is within 1 of the exact
+//   total density * area however finely the surface is tessellated (rounding each triangle on its
+//   own would lose or gain up to half a stipple per triangle, which dominates on dense meshes).
+//   Zero-area triangles expect 0 and get 0.
+// * Positions. Uniform in the triangle by square-root barycentrics, from a counter-based random
+//   stream keyed by (seed, triangle, index): deterministic, and independent of the thread count
+//   and of the order in which triangles are processed.
+// * Relaxation (relax.cpp). A few Jacobi iterations of repulsion between neighbours within two
+//   hexagonal spacings, over the whole surface (not per triangle, which would leave stipples
+//   clumped along shared edges of small triangles); moves stay in the triangle's plane and each
+//   stipple is clamped back into its own triangle.
+// * Progressive order (progressive_order.cpp). Within each triangle the stipples are stored so
+//   that the first ones, kept at low density, are well spread over the whole surface.
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
+#include "stipple/progressive_order.hpp"
+#include "stipple/relax.hpp"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+
+namespace {
+
+constexpr size_t kTriangleChunk = 16384;
+constexpr size_t kPointChunk = 16384;
+
+uint64_t mix64(uint64_t x) {
+    x ^= x >> 30;
+    x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 27;
+    x *= 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    return x;
+}
+
+// The name errors start with: the file the mesh came from, or its generator's name.
+std::string source_name(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh") : mesh.source; }
+
+void check_params(const Mesh& mesh, const GenerationParams& params) {
+    const std::string name = source_name(mesh);
+    if (!std::isfinite(params.dmax) || params.dmax < 0.0f)
+        fail_file(name, "stipple density D_max must be a finite number >= 0, got " + std::to_string(params.dmax));
+    if (params.relax_iterations < 0 || params.relax_iterations > 1000)
+        fail_file(name, "relaxation iterations must be in [0, 1000], got " + std::to_string(params.relax_iterations));
+    if (mesh.indices.size() % 3 != 0)
+        fail_file(name, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
+}
+
+// Area of every triangle, in double. Throws on an index out of range or a non-finite area.
+std::vector<double> triangle_areas(const Mesh& mesh) {
+    const size_t triangles = mesh.triangle_count();
+    std::vector<double> area(triangles);
+    const size_t vertex_count = mesh.positions.size();
+    parallel_for_chunks(triangles, kTriangleChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t) {
+            const uint32_t ia = mesh.indices[3 * t], ib = mesh.indices[3 * t + 1], ic = mesh.indices[3 * t + 2];
+            if (ia >= vertex_count || ib >= vertex_count || ic >= vertex_count)
+                fail_file(source_name(mesh), "face " + std::to_string(t) + " refers to a vertex out of range");
+            const glm::dvec3 a(mesh.positions[ia]);
+            const double value = 0.5 * glm::length(glm::cross(glm::dvec3(mesh.positions[ib]) - a, glm::dvec3(mesh.positions[ic]) - a));
+            if (!std::isfinite(value)) fail_file(source_name(mesh), "face " + std::to_string(t) + " has a non-finite area");
+            area[t] = value;
+        }
+    });
+    return area;
+}
+
+double sum_in_order(const std::vector<double>& values) {
+    double sum = 0.0;
+    for (double v : values) sum += v;
+    return sum;
+}
+
+double density_for_area(const Mesh& mesh, const GenerationParams& params, double area) {
+    const float radius = compute_bounding_sphere(mesh).radius;
+    if (!(area > 0.0) || !(radius > 0.0f) || params.dmax <= 0.0f || params.max_stipples == 0) return 0.0;
+    const double px_per_unit = (kReferenceHeight / 2.0) / radius;
+    const double reference_area = area * px_per_unit * px_per_unit;
+    const double d = std::min(static_cast<double>(params.dmax), static_cast<double>(params.max_stipples) / reference_area);
+    return d * px_per_unit * px_per_unit;
+}
+
+}  // namespace
+
+double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params) {
+    check_params(mesh, params);
+    return density_for_area(mesh, params, sum_in_order(triangle_areas(mesh)));
+}
+
+StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params) {
+    const auto start = std::chrono::steady_clock::now();
+    check_params(mesh, params);
+    ProgressBar bar("Generating stipples", params.progress);
+
+    const std::vector<double> area = triangle_areas(mesh);
+    const size_t triangles = area.size();
+    StippleSet set;
+    set.density_per_area = density_for_area(mesh, params, sum_in_order(area));
+    if (set.density_per_area > 0.0)
+        set.poisson_radius = std::sqrt(2.0 / (std::sqrt(3.0) * set.density_per_area));
+
+    // Counts by cumulative rounding (see the top of this file).
+    set.first.resize(triangles + 1);
+    set.first[0] = 0;
+    double running = 0.0;  // S_t; never decreases (E_t >= 0), so neither does its rounding
+    for (size_t t = 0; t < triangles; ++t) {
+        running += set.density_per_area * area[t];
+        const double rounded = std::floor(running + 0.5);
+        if (rounded > double(UINT32_MAX - 1))
+            fail_file(source_name(mesh), "more than 2^32 stipples requested; lower D_max or the stipple budget");
+        set.first[t + 1] = static_cast<uint32_t>(rounded);
+    }
+    const size_t n = set.first[triangles];
+
+    set.triangle.resize(n);
+    parallel_for_chunks(triangles, kTriangleChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t t = begin; t < end; ++t)
+            std::fill(set.triangle.begin() + set.first[t], set.triangle.begin() + set.first[t + 1], uint32_t(t));
+    });
+
+    // Uniform random positions: point k of triangle t from hash(seed, t, k).
+    set.positions.resize(n);
+    const uint64_t seed_key = mix64(params.seed ^ 0x53544950504C4531ull);
+    parallel_for_chunks(n, kPointChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const uint32_t t = set.triangle[i];
+            const uint64_t k = i - set.first[t];
+            const uint64_t bits = mix64(seed_key ^ mix64((uint64_t(t) << 32) + k));
+            const double u1 = double(bits >> 40) * 0x1p-24, u2 = double(bits & 0xFFFFFF) * 0x1p-24;
+            const double su = std::sqrt(u1);
+            const glm::dvec3 a(mesh.positions[mesh.indices[3 * size_t(t)]]);
+            const glm::dvec3 b(mesh.positions[mesh.indices[3 * size_t(t) + 1]]);
+            const glm::dvec3 c(mesh.positions[mesh.indices[3 * size_t(t) + 2]]);
+            set.positions[i] = glm::vec3((1.0 - su) * a + su * (1.0 - u2) * b + su * u2 * c);
+        }
+    });
+    bar.update(0.05);
+
+    relax_stipples(mesh, set.triangle, set.positions, set.poisson_radius, params.relax_iterations,
+                   [&](double f) { bar.update(0.05 + 0.65 * f); });  // about the shares of the time
+    progressive_order(set.positions, set.first, set.poisson_radius, params.seed,
+                      [&](double f) { bar.update(0.70 + 0.30 * f); });
+    bar.finish();
+
+    set.generation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return set;
+}
+
+}  // namespace stipple

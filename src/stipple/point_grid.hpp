@@ -1,0 +1,176 @@
+#pragma once
+// A static 3D spatial hash of points for fixed-radius neighbour queries (stipple relaxation and the
+// nearest-neighbour quality metric).
+//
+// Points go into cubic cells; cells go into a power-of-two bucket table; a counting sort stores
+// each bucket's points contiguously, as separate x, y, z arrays so that a query can stream
+// through them with SIMD. Different cells may share a bucket: queries always test the real
+// distance, so a collision costs a few extra distance tests and never a wrong answer.
+//
+// Bucket layout: space is tiled by windows of W^3 cells (W = 2^w). Inside a window a cell's
+// bucket is its row-major index (x fastest), offset by a hash of the window that only touches
+// bits above 3w. So neighbouring cells share cache lines, and the three cells x-1, x, x+1 of a
+// row are three consecutive buckets: the 27 neighbours of a cell are 9 contiguous runs of points.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/parallel.hpp"
+
+namespace stipple {
+
+// Cubic cells of a given size, numbered into a power-of-two table of buckets (see above).
+class CellHash {
+public:
+    // About `buckets` buckets (rounded up to a power of two, at least 64).
+    void init(const glm::vec3& origin, float cell_size, size_t buckets) {
+        origin_ = origin;
+        cell_size_ = cell_size;
+        inv_cell_ = 1.0f / cell_size;
+        int bits = 6;
+        while (bits < 30 && (size_t(1) << bits) < buckets) ++bits;
+        mask_ = (uint32_t(1) << bits) - 1;
+        window_bits_ = bits / 3;
+    }
+
+    glm::ivec3 cell_of(const glm::vec3& p) const {
+        // Clamped so that far-away points stay representable; they merely share edge cells.
+        const glm::vec3 lim(1.0e9f);
+        const glm::vec3 c = glm::clamp((p - origin_) * inv_cell_, -lim, lim);
+        // floor by truncation and correction: std::floor is a library call without SSE4.1.
+        const glm::ivec3 i(c);
+        return i - glm::ivec3(glm::lessThan(c, glm::vec3(i)));
+    }
+
+    uint32_t bucket(const glm::ivec3& c) const {
+        const uint32_t wmask = (uint32_t(1) << window_bits_) - 1;
+        const uint32_t local = (uint32_t(c.x) & wmask) | (uint32_t(c.y) & wmask) << window_bits_ |
+                               (uint32_t(c.z) & wmask) << (2 * window_bits_);
+        return (local ^ (window_hash(c) << (3 * window_bits_))) & mask_;
+    }
+
+    // True when cells x0..x1 of a row (same y, z) are in one window: then their buckets are
+    // consecutive, bucket(x0) .. bucket(x0) + (x1 - x0).
+    bool one_window(int x0, int x1) const { return (uint32_t(x0) >> window_bits_) == (uint32_t(x1) >> window_bits_); }
+    bool one_window(const glm::ivec3& lo, const glm::ivec3& hi) const {
+        return one_window(lo.x, hi.x) && one_window(lo.y, hi.y) && one_window(lo.z, hi.z);
+    }
+
+    size_t bucket_count() const { return size_t(mask_) + 1; }
+    float cell_size() const { return cell_size_; }
+
+private:
+    uint32_t window_hash(const glm::ivec3& c) const {
+        const uint32_t hx = uint32_t(c.x) >> window_bits_, hy = uint32_t(c.y) >> window_bits_,
+                       hz = uint32_t(c.z) >> window_bits_;
+        uint32_t h = hx * 0x9E3779B1u ^ hy * 0x85EBCA77u ^ hz * 0xC2B2AE3Du;
+        h ^= h >> 15;
+        h *= 0x2C1B3C6Du;
+        h ^= h >> 12;
+        return h;
+    }
+
+    glm::vec3 origin_{0.0f};
+    float cell_size_ = 1.0f;
+    float inv_cell_ = 1.0f;
+    uint32_t mask_ = 63;
+    int window_bits_ = 2;
+};
+
+class PointGrid {
+public:
+    struct Run {
+        uint32_t begin, end;  // slots [begin, end)
+    };
+
+    // Rebuilds the grid for `points` with cubic cells of side `cell_size` (> 0). Deterministic:
+    // within a bucket, points keep their input order.
+    void build(std::span<const glm::vec3> points, float cell_size) {
+        const size_t n = points.size();
+        glm::vec3 lo(0.0f);
+        if (n > 0) {
+            lo = points[0];
+            for (const glm::vec3& p : points) lo = glm::min(lo, p);
+        }
+        // About two points per bucket: cells hold several points, so most buckets hold one cell.
+        hash_.init(lo, cell_size, n / 2);
+        bucket_of_point_.resize(n);
+        parallel_for(n, 65536, [&](size_t i) { bucket_of_point_[i] = hash_.bucket(hash_.cell_of(points[i])); });
+        start_.assign(hash_.bucket_count() + 1, 0);
+        for (size_t i = 0; i < n; ++i) ++start_[bucket_of_point_[i] + 1];
+        for (size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
+        // Padded by one SIMD width of points that are out of every query's reach.
+        const float far = std::numeric_limits<float>::max();
+        xs_.assign(n + kPad, far), ys_.assign(n + kPad, far), zs_.assign(n + kPad, far);
+        index_.resize(n);
+        fill_.assign(start_.begin(), start_.end() - 1);
+        for (size_t i = 0; i < n; ++i) {
+            const uint32_t slot = fill_[bucket_of_point_[i]]++;
+            xs_[slot] = points[i].x, ys_[slot] = points[i].y, zs_[slot] = points[i].z;
+            index_[slot] = static_cast<uint32_t>(i);
+        }
+    }
+
+    glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
+    uint32_t bucket(const glm::ivec3& c) const { return hash_.bucket(c); }
+
+    // The points of the 27 cells around `cell` as runs of slots; returns the number of runs.
+    // Runs never overlap (a bucket shared by two of the cells is listed once).
+    int neighbor_runs(const glm::ivec3& cell, Run out[27]) const {
+        int count = 0;
+        if (hash_.one_window(cell - glm::ivec3(1), cell + glm::ivec3(1))) {
+            // Distinct rows of one window: 9 disjoint runs of 3 consecutive buckets.
+            for (int z = -1; z <= 1; ++z)
+                for (int y = -1; y <= 1; ++y) {
+                    const uint32_t first = bucket(cell + glm::ivec3(-1, y, z));
+                    out[count++] = {start_[first], start_[first + 3]};
+                }
+            return count;
+        }
+        uint32_t buckets[27];
+        for (int z = -1; z <= 1; ++z)
+            for (int y = -1; y <= 1; ++y)
+                for (int x = -1; x <= 1; ++x) buckets[count++] = bucket(cell + glm::ivec3(x, y, z));
+        std::sort(buckets, buckets + count);
+        count = static_cast<int>(std::unique(buckets, buckets + count) - buckets);
+        for (int i = 0; i < count; ++i) out[i] = {start_[buckets[i]], start_[buckets[i] + 1]};
+        return count;
+    }
+
+    // The distinct buckets of the cells in [lo, hi] (inclusive), sorted ascending.
+    void buckets_in_box(const glm::ivec3& lo, const glm::ivec3& hi, std::vector<uint32_t>& out) const {
+        out.clear();
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) out.push_back(bucket({x, y, z}));
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+
+    size_t bucket_count() const { return hash_.bucket_count(); }
+    uint32_t bucket_begin(uint32_t b) const { return start_[b]; }
+    uint32_t bucket_end(uint32_t b) const { return start_[b + 1]; }
+    glm::vec3 sorted_position(uint32_t slot) const { return {xs_[slot], ys_[slot], zs_[slot]}; }
+    uint32_t sorted_index(uint32_t slot) const { return index_[slot]; }  // input index of a slot
+    // Coordinates by slot, readable up to kPad slots past the last point.
+    const float* xs() const { return xs_.data(); }
+    const float* ys() const { return ys_.data(); }
+    const float* zs() const { return zs_.data(); }
+    float cell_size() const { return hash_.cell_size(); }
+
+    static constexpr size_t kPad = 8;
+
+private:
+    CellHash hash_;
+    std::vector<uint32_t> start_;  // bucket b's points are slots [start_[b], start_[b+1])
+    std::vector<float> xs_, ys_, zs_;
+    std::vector<uint32_t> index_;
+    std::vector<uint32_t> bucket_of_point_, fill_;  // scratch of build()
+};
+
+}  // namespace stipple

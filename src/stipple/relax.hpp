@@ -1,0 +1,28 @@
+#pragma once
+// Whole-surface relaxation of random stipples toward a Poisson-disc distribution (paper §2.1:
+// "generated randomly within the polygon and then redistributed to approximate a Poisson-disc
+// distribution").
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+
+namespace stipple {
+
+// Moves every stipple away from its neighbours within its own triangle's plane, `iterations`
+// times. Stipple i belongs to triangle triangle_of[i] of `mesh` and stays inside it. `spacing` is
+// the hexagonal-packing spacing at the stipple density (neighbours within 2 * spacing repel).
+// Deterministic for any thread count (Jacobi iterations over fixed chunks).
+// `progress`, if set, is called with the fraction done after each iteration.
+void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std::vector<glm::vec3>& positions,
+                    double spacing, int iterations, const std::function<void(double)>& progress = {});
+
+// The point of triangle (a, b, c) closest to p, moved inside by a hair (barycentric coordinates
+// at least 1e-5), so that a clamped stipple never lies on an edge shared with another triangle.
+glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+}  // namespace stipple

@@ -1,0 +1,51 @@
+#pragma once
+// Per-polygon stipple generation (paper §2.1): the candidate stipples of one object.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+
+namespace stipple {
+
+// Height in pixels of the reference view in which polygon areas are measured at generation time
+// ("the initial screen area of the projected polygon", §2.1). At the reference view the object is
+// framed, so its bounding-sphere radius spans kReferenceHeight/2 pixels. A fixed constant, so that
+// the candidates do not depend on the window size.
+inline constexpr float kReferenceHeight = 1280.0f;
+
+struct GenerationParams {
+    // D_max: the maximum stipple density, in stipples per reference pixel^2 (see docs/paper-reading.md).
+    float dmax = 0.15f;
+    // Object_max: the object's stipple budget. The density actually used is
+    // min(D_max, Object_max / total reference area), so the budget lowers the density evenly.
+    uint64_t max_stipples = 8'000'000;
+    uint64_t seed = 1;
+    int relax_iterations = 6;  // whole-surface relaxation toward a Poisson-disc distribution
+    bool progress = false;     // print a progress bar on stderr (only when it is a terminal)
+};
+
+struct StippleSet {
+    std::vector<glm::vec3> positions;  // object space, on the surface, one per candidate stipple
+    std::vector<uint32_t> triangle;    // the triangle each stipple belongs to
+    // Prefix sums per triangle (size triangle_count + 1): the stipples of triangle t are
+    // [first[t], first[t+1]) and are stored in progressive order, so every prefix is well spread.
+    std::vector<uint32_t> first;
+    double density_per_area = 0.0;  // stipples per object-space unit area actually used
+    double poisson_radius = 0.0;    // hexagonal-packing spacing at that density (object units)
+    double generation_seconds = 0.0;
+
+    size_t size() const { return positions.size(); }
+    uint32_t count(size_t t) const { return first[t + 1] - first[t]; }
+};
+
+// Deterministic for a given mesh, parameters and seed (also across thread counts).
+// Zero-area triangles get no stipples. The total is within 1 of density * total area, whatever
+// the tessellation.
+StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params);
+
+// Stipples per object-space unit area for this mesh and parameters (the paper's N_max per area).
+double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params);
+
+}  // namespace stipple

@@ -1,0 +1,241 @@
+// Stipple generation (paper §2.1): tessellation independence, Poisson-disc-like spread of the full
+// set and of its progressive prefixes, determinism, budgets, containment in triangles.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <cstdio>
+#include <cstring>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "mesh/primitives.hpp"
+#include "stipple/quality.hpp"
+#include "stipple/relax.hpp"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+namespace {
+
+// D_max giving about `count` stipples on a unit sphere (bounding radius 1: kReferenceHeight / 2
+// px per unit).
+float dmax_for(double count) {
+    const double px_per_unit = kReferenceHeight / 2.0;
+    return static_cast<float>(count / (4.0 * std::numbers::pi * px_per_unit * px_per_unit));
+}
+
+bool same_positions(const StippleSet& a, const StippleSet& b) {
+    return a.positions.size() == b.positions.size() &&
+           std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0;
+}
+
+// first[] is a prefix sum matching triangle[], and every stipple lies in its own triangle:
+// barycentric coordinates >= -tol and on the plane within tol (relative to the triangle size).
+void expect_consistent_and_inside(const Mesh& mesh, const StippleSet& set) {
+    const size_t triangles = mesh.triangle_count();
+    ASSERT_EQ(set.first.size(), triangles + 1);
+    ASSERT_EQ(set.first[0], 0u);
+    ASSERT_EQ(set.first[triangles], set.size());
+    ASSERT_EQ(set.triangle.size(), set.size());
+    size_t outside = 0, wrong_triangle = 0;
+    double worst_bary = 1.0, worst_plane = 0.0;
+    for (size_t t = 0; t < triangles; ++t) {
+        ASSERT_LE(set.first[t], set.first[t + 1]);
+        const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
+            c(mesh.positions[mesh.indices[3 * t + 2]]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        const double n2 = glm::dot(n, n);
+        const double size = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
+        for (uint32_t i = set.first[t]; i < set.first[t + 1]; ++i) {
+            if (set.triangle[i] != t) ++wrong_triangle;
+            const glm::dvec3 p(set.positions[i]);
+            // Barycentrics from signed sub-areas.
+            const double u = glm::dot(glm::cross(c - b, p - b), n) / n2;
+            const double v = glm::dot(glm::cross(a - c, p - c), n) / n2;
+            const double w = 1.0 - u - v;
+            const double bary = std::min({u, v, w});
+            const double plane = std::abs(glm::dot(p - a, n)) / std::sqrt(n2) / size;
+            worst_bary = std::min(worst_bary, bary);
+            worst_plane = std::max(worst_plane, plane);
+            if (bary < -1e-4 || plane > 1e-4) ++outside;
+        }
+    }
+    std::printf("  %zu stipples: min barycentric %.2e, max off-plane %.2e (relative)\n", set.size(), worst_bary,
+                worst_plane);
+    EXPECT_EQ(wrong_triangle, 0u);
+    EXPECT_EQ(outside, 0u);
+}
+
+TEST(Generation, TessellationIndependentCount) {
+    GenerationParams params;
+    params.dmax = dmax_for(150000);
+    const Mesh coarse = make_uv_sphere(500), fine = make_uv_sphere(200000);
+    const StippleSet a = generate_stipples(coarse, params), b = generate_stipples(fine, params);
+    const double diff = std::abs(double(a.size()) - double(b.size())) / double(b.size());
+    std::printf("%zu triangles: %zu stipples; %zu triangles: %zu stipples; difference %.2f%%\n",
+                coarse.triangle_count(), a.size(), fine.triangle_count(), b.size(), 100.0 * diff);
+    EXPECT_LT(diff, 0.02);
+    // Both totals are within 1 of density * area (cumulative rounding), whatever the triangle size.
+    EXPECT_NEAR(double(a.size()), a.density_per_area * total_area(coarse), 1.0);
+    EXPECT_NEAR(double(b.size()), b.density_per_area * total_area(fine), 1.0);
+    EXPECT_DOUBLE_EQ(b.density_per_area, stipple_density_per_area(fine, params));
+}
+
+TEST(Generation, DistributionQualityFullAndPrefix) {
+    const Mesh mesh = make_uv_sphere(100000);
+    GenerationParams params;
+    params.dmax = dmax_for(400000);
+    const StippleSet set = generate_stipples(mesh, params);
+    const double area = total_area(mesh);
+    const double full = normalized_nn_distance(set.positions, area);
+    const std::vector<glm::vec3> quarter = prefix_at_fraction(set, 0.25);
+    const double prefix = normalized_nn_distance(quarter, area);
+    std::printf("%zu triangles, %zu stipples (%.1f per triangle) in %.3f s = %.0f stipples/s\n",
+                mesh.triangle_count(), set.size(), double(set.size()) / mesh.triangle_count(),
+                set.generation_seconds, set.size() / set.generation_seconds);
+    std::printf("delta-bar full %.3f, prefix f=0.25 (%zu stipples) %.3f\n", full, quarter.size(), prefix);
+    EXPECT_GE(full, 0.75);
+    EXPECT_GE(prefix, 0.65);
+    // The prefix keeps, in every triangle, the stipples with k + 0.5 < f N_t: ceil(f N_t - 0.5) of them.
+    size_t expected = 0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t)
+        expected += size_t(std::clamp(std::ceil(0.25 * set.count(t) - 0.5), 0.0, double(set.count(t))));
+    EXPECT_EQ(quarter.size(), expected);
+    EXPECT_GT(quarter.size(), set.size() / 6);
+}
+
+TEST(Generation, RelaxationImprovesSpread) {
+    const Mesh mesh = make_icosphere(5);
+    GenerationParams params;
+    params.dmax = dmax_for(60000);
+    params.relax_iterations = 0;
+    const StippleSet random = generate_stipples(mesh, params);
+    params.relax_iterations = 6;
+    const StippleSet relaxed = generate_stipples(mesh, params);
+    const double area = total_area(mesh);
+    const double before = normalized_nn_distance(random.positions, area);
+    const double after = normalized_nn_distance(relaxed.positions, area);
+    std::printf("delta-bar random %.3f, relaxed (6 iterations) %.3f\n", before, after);
+    EXPECT_LT(before, 0.6);
+    EXPECT_GE(after, 0.75);
+    EXPECT_EQ(random.size(), relaxed.size());
+}
+
+TEST(Generation, Deterministic) {
+    const Mesh mesh = make_icosphere(4);
+    GenerationParams params;
+    params.dmax = dmax_for(50000);
+    const StippleSet a = generate_stipples(mesh, params);
+    const StippleSet b = generate_stipples(mesh, params);
+    EXPECT_TRUE(same_positions(a, b));
+    EXPECT_EQ(a.first, b.first);
+    // Independent of the thread count.
+    set_worker_count(1);
+    const StippleSet serial = generate_stipples(mesh, params);
+    set_worker_count(3);
+    const StippleSet three = generate_stipples(mesh, params);
+    set_worker_count(0);
+    EXPECT_TRUE(same_positions(a, serial));
+    EXPECT_TRUE(same_positions(a, three));
+    params.seed = 2;
+    const StippleSet c = generate_stipples(mesh, params);
+    EXPECT_EQ(a.first, c.first);  // counts depend on areas only
+    size_t differ = 0;
+    for (size_t i = 0; i < a.size(); ++i) differ += a.positions[i] != c.positions[i];
+    std::printf("seed 1 vs 2: %zu of %zu stipples differ\n", differ, a.size());
+    EXPECT_GT(differ, a.size() * 9 / 10);
+}
+
+TEST(Generation, ZeroAreaTrianglesGetNoStipples) {
+    Mesh mesh = make_grid(4);
+    const size_t real = mesh.triangle_count();
+    // Degenerate faces: a repeated vertex, and three collinear vertices.
+    mesh.indices.insert(mesh.indices.end(), {0, 0, 5, 0, 1, 2});
+    mesh.indices.insert(mesh.indices.end(), {6, 7, 7});
+    compute_vertex_normals(mesh);
+    GenerationParams params;
+    params.dmax = 0.05f;
+    const StippleSet set = generate_stipples(mesh, params);
+    std::printf("%zu stipples; degenerate triangles got %u, %u, %u\n", set.size(), set.count(real),
+                set.count(real + 1), set.count(real + 2));
+    EXPECT_GT(set.size(), 1000u);
+    for (size_t t = real; t < mesh.triangle_count(); ++t) EXPECT_EQ(set.count(t), 0u) << "triangle " << t;
+    for (size_t t = 0; t < real; ++t) EXPECT_GT(set.count(t), 0u) << "triangle " << t;
+    expect_consistent_and_inside(mesh, set);
+}
+
+TEST(Generation, StipplesInsideTheirTriangles) {
+    GenerationParams params;
+    params.dmax = dmax_for(80000);
+    // Thin polar triangles, several stipples per triangle.
+    const Mesh sphere = make_uv_sphere(20000);
+    expect_consistent_and_inside(sphere, generate_stipples(sphere, params));
+    // Two huge triangles with tens of thousands of stipples each.
+    const Mesh quad = make_grid(1);
+    params.dmax = 0.05f;
+    const StippleSet big = generate_stipples(quad, params);
+    EXPECT_GT(big.count(0), 10000u);
+    expect_consistent_and_inside(quad, big);
+    // Even across a shared edge the big triangles' stipples stay apart: the quality holds.
+    std::printf("quad: delta-bar full %.3f, prefix f=0.1 %.3f\n", normalized_nn_distance(big.positions, 4.0),
+                normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0));
+    EXPECT_GE(normalized_nn_distance(big.positions, 4.0), 0.75);
+    EXPECT_GE(normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0), 0.65);
+}
+
+TEST(Generation, BudgetLimitsTheCount) {
+    const Mesh mesh = make_icosphere(4);
+    GenerationParams params;
+    params.dmax = dmax_for(40000);
+    const size_t unlimited = generate_stipples(mesh, params).size();
+    params.max_stipples = 10000;
+    const StippleSet limited = generate_stipples(mesh, params);
+    std::printf("D_max alone: %zu stipples; with Object_max = 10000: %zu\n", unlimited, limited.size());
+    EXPECT_GT(unlimited, 30000u);
+    EXPECT_NEAR(double(limited.size()), 10000.0, 1.0);
+    EXPECT_NEAR(limited.density_per_area * total_area(mesh), 10000.0, 1e-6);
+    // A budget above what D_max gives changes nothing.
+    params.max_stipples = 1000000;
+    EXPECT_EQ(generate_stipples(mesh, params).size(), unlimited);
+    params.max_stipples = 0;
+    EXPECT_EQ(generate_stipples(mesh, params).size(), 0u);
+}
+
+TEST(Generation, BadParametersThrow) {
+    const Mesh mesh = make_icosphere(1);
+    GenerationParams params;
+    params.dmax = -1.0f;
+    EXPECT_THROW(generate_stipples(mesh, params), Error);
+    params.dmax = std::nanf("");
+    EXPECT_THROW(generate_stipples(mesh, params), Error);
+    params.dmax = 0.1f;
+    params.relax_iterations = -1;
+    EXPECT_THROW(generate_stipples(mesh, params), Error);
+    Mesh broken = mesh;
+    broken.indices.back() = 100000;
+    params.relax_iterations = 2;
+    EXPECT_THROW(generate_stipples(broken, params), Error);
+}
+
+TEST(Quality, MetricMatchesKnownDistributions) {
+    // Uniform random points on a unit square: about 0.46; a hexagonal lattice: 1.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<glm::vec3> random(100000);
+    for (glm::vec3& p : random) p = glm::vec3(u(rng), u(rng), 0.0f);
+    std::vector<glm::vec3> hex;
+    const float d = 0.01f;
+    for (int j = 0; j < 100; ++j)
+        for (int i = 0; i < 100; ++i) hex.emplace_back(i * d + (j % 2) * d / 2, j * d * std::sqrt(3.0f) / 2, 0.0f);
+    const double hex_area = 100 * d * 100 * d * std::sqrt(3.0) / 2;
+    const double r = normalized_nn_distance(random, 1.0), h = normalized_nn_distance(hex, hex_area);
+    std::printf("delta-bar random %.3f, hexagonal %.3f\n", r, h);
+    EXPECT_NEAR(r, 0.465, 0.02);
+    EXPECT_NEAR(h, 1.0, 0.01);
+}
+
+}  // namespace
+}  // namespace stipple
