@@ -1,0 +1,37 @@
+#version 460
+// GPU-driven path (beyond the paper): after the density pass, compacted indirect draws of the
+// surviving stipple ranges, so culled stipples never reach the vertex stage. Runs of polygons that draw
+// all their candidates are merged into one draw (draws_merge_with_previous), exactly as the CPU path does.
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+
+layout(local_size_x = kDensityWorkgroupSize) in;
+
+layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
+layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
+layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
+layout(set = 0, binding = kBindingDrawCommands, std430) buffer DrawCommands {
+    uint draw_count;
+    uint draw_pad0, draw_pad1, draw_pad2;
+    DrawCommand commands[];
+};
+
+uint drawn(uint t) { return uint(ceil(draws[t].density)); }
+
+// Polygon t joins the draw of polygon t - 1 (same rule as build_draw_commands in density_cpu.cpp).
+bool merges_with_previous(uint t) {
+    if (t == 0u || t % kMaxMergedPolygons == 0u || drawn(t) == 0u) return false;
+    uint previous = drawn(t - 1u);
+    return previous > 0u && previous == uint(infos[t - 1u].normal_count.w);
+}
+
+void main() {
+    uint t = gl_GlobalInvocationID.x;
+    uint triangles = object.flags.y;
+    if (t >= triangles) return;
+    uint count = drawn(t);
+    if (count == 0u || merges_with_previous(t)) return;
+    for (uint next = t + 1u; next < triangles && merges_with_previous(next); ++next) count += drawn(next);
+    uint slot = atomicAdd(draw_count, 1u);
+    commands[slot] = DrawCommand(count, 1u, draws[t].first_stipple, 0u);
+}

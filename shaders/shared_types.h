@@ -1,0 +1,99 @@
+// Struct layouts, limits and workgroup sizes shared by C++ and GLSL: one definition, read by both.
+// C++ includes it through src/gpu/shared_types.hpp, which static_asserts every size and offset.
+// Only vec4/mat4/scalar members (or vec3 followed by a scalar), so std140/std430 and C++ agree.
+#ifndef STIPPLE_SHARED_TYPES_H
+#define STIPPLE_SHARED_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace stipple::gpu {
+using glm::mat4;
+using glm::uvec4;
+using glm::vec2;
+using glm::vec3;
+using glm::vec4;
+using uint = uint32_t;
+#define STIPPLE_CONST inline constexpr
+#else
+#define STIPPLE_CONST const
+#endif
+
+STIPPLE_CONST uint kDensityWorkgroupSize = 64;
+
+// Draw-command merging (CPU and indirect paths): consecutive polygons share one draw while each one
+// before draws all of its candidates, up to this many polygons per draw (bounds the GPU's scan).
+STIPPLE_CONST uint kMaxMergedPolygons = 256;
+
+// Specialisation constants (variants without copied shader files).
+STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert: record drawn stipples in the debug buffer
+
+// Descriptor bindings of the one set every stipple pipeline uses (set 0).
+STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
+STIPPLE_CONST uint kBindingObject = 1;         // ObjectUniforms (uniform)
+STIPPLE_CONST uint kBindingTriangleDraw = 2;   // TriangleDraw[] (storage), per frame
+STIPPLE_CONST uint kBindingTriangleInfo = 3;   // TriangleInfo[] (storage), constant
+STIPPLE_CONST uint kBindingDrawCommands = 4;   // DrawCommands (storage): count + VkDrawIndirectCommand[]
+STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
+
+// Bits of ObjectUniforms.flags.
+STIPPLE_CONST uint kFlagShading = 1u;          // §2.2 (N.L)^n
+STIPPLE_CONST uint kFlagExtrinsic = 2u;        // §2.3 extrinsic distance enhancement
+STIPPLE_CONST uint kFlagIntrinsic = 4u;        // §2.3 intrinsic depth enhancement
+STIPPLE_CONST uint kFlagRoundPoints = 8u;      // discard outside the disc for large points
+STIPPLE_CONST uint kFlagBackfaceCull = 16u;    // polygons facing away get no stipples (§2.1)
+STIPPLE_CONST uint kFlagToonFade = 32u;        // §3.1 stipples fade near the silhouette (toon mode)
+
+// One candidate stipple as the vertex stage reads it (vertex binding 0): 16 bytes.
+struct StippleVertex {
+    vec3 position;  // object space, on the surface
+    uint triangle;  // index into TriangleDraw/TriangleInfo
+};
+
+// Per triangle and per frame: written by the density pass (GPU) or by the CPU path,
+// read by stipple.vert to cull stipples beyond the density (§3.2).
+struct TriangleDraw {
+    float density;       // stipples to draw, fractional (§2.1: the last one at the fractional intensity)
+    uint first_stipple;  // index of the triangle's first stipple in the stipple buffer
+};
+
+// Per triangle, constant: what the density computation reads.
+struct TriangleInfo {
+    vec4 center_area;   // xyz: centroid (object space); w: area (object space)
+    vec4 normal_count;  // xyz: unit face normal (object space); w: candidate count
+    vec4 selection;     // x: the polygon's fixed selection value in [0, 1) (§2.3); yzw: unused
+};
+
+// One indirect draw, laid out as VkDrawIndirectCommand.
+struct DrawCommand {
+    uint vertex_count;
+    uint instance_count;
+    uint first_vertex;
+    uint first_instance;
+};
+
+struct FrameUniforms {
+    mat4 view_proj;      // world -> clip
+    mat4 view;           // world -> view (camera at origin looking down -z)
+    vec4 light_view;     // xyz: unit direction toward the light, view space
+    vec4 ink_color;      // rgb ink, a unused
+    vec4 paper_color;    // rgb paper (background), a unused
+    vec4 viewport;       // width, height, 1/width, 1/height
+    vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2); y: near; z: far
+};
+
+struct ObjectUniforms {
+    mat4 model_view;        // object -> view
+    mat4 normal_view;       // inverse transpose of model_view (upper 3x3 used)
+    mat4 model;             // object -> world
+    vec4 shading;           // x: shading exponent n (§2.2); y: point size (px); z: toon sharpness (§3.1); w: unused
+    vec4 extrinsic;         // x: pr; y: minimum stipple area (px^2); z: reference pixels per world unit; w: unused
+    vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre
+    uvec4 flags;            // x: kFlag* bits; y: triangle count; z: unused; w: candidate count
+};
+
+#ifdef __cplusplus
+}  // namespace stipple::gpu
+#endif
+
+#endif

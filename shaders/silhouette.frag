@@ -1,0 +1,13 @@
+#version 460
+// §3.1 Raskar-Cohen silhouette lines: back faces drawn as wide lines in ink; the depth test against
+// the front faces lets only the edges next to the silhouette through.
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+
+layout(location = 0) out vec4 out_color;
+
+layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
+
+void main() {
+    out_color = vec4(frame.ink_color.rgb, 1.0);
+}

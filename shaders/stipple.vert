@@ -1,0 +1,41 @@
+#version 460
+// Draws candidate stipples; the per-polygon density decides which survive (§3.2): a stipple whose
+// index within its polygon is beyond the density is pushed beyond the far plane and clipped.
+// The last one gets the fractional part of the density as its intensity (§2.1).
+// The kCountDrawn variant also records every surviving stipple (tests and statistics).
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+#include "stipple_formulas.h"
+
+layout(constant_id = 0) const bool kCountDrawn = false;
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in uint in_triangle;
+
+layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
+layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
+layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
+    uint drawn_count;
+    uint debug_pad0, debug_pad1, debug_pad2;
+    uint drawn_mask[];
+};
+
+layout(location = 0) out float out_intensity;
+
+void main() {
+    TriangleDraw draw = draws[in_triangle];
+    float index = float(uint(gl_VertexIndex) - draw.first_stipple);
+    float intensity = stipple_intensity(draw.density, index);
+    gl_PointSize = object.shading.y;
+    out_intensity = intensity;
+    if (intensity <= 0.0f) {
+        gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // z > w: beyond the far plane, clipped
+        return;
+    }
+    if (kCountDrawn) {
+        atomicAdd(drawn_count, 1u);
+        atomicOr(drawn_mask[uint(gl_VertexIndex) >> 5u], 1u << (uint(gl_VertexIndex) & 31u));
+    }
+    gl_Position = frame.view_proj * (object.model * vec4(in_position, 1.0));
+}

@@ -1,0 +1,191 @@
+// The paper's per-frame density formulas, in exactly one place: the GLSL shaders include this file,
+// and the C++ CPU path includes it through src/render/density_formulas.hpp (glm supplies the same
+// functions). Every literal carries an f suffix and every integer is 32-bit unsigned, so both
+// languages compute the same values. docs/paper-reading.md explains each reading of the paper.
+#ifndef STIPPLE_FORMULAS_H
+#define STIPPLE_FORMULAS_H
+
+#ifdef __cplusplus
+#define STIPPLE_FN inline
+#else
+#define STIPPLE_FN
+#endif
+
+STIPPLE_CONST float kPi = 3.14159265358979f;
+
+// §2.2 Shading. The paper shades with the Lambertian term (N.L)^n; stipples convey darkness, so the
+// share of a polygon's candidates drawn is 1 - (N.L)^n: a surface facing the light is left white, one
+// facing away gets every candidate. n > 0 (n > 1 widens the dark tones, n < 1 the light ones).
+STIPPLE_FN float shading_fraction(vec3 unit_normal, vec3 unit_to_light, float exponent) {
+    float lambert = dot(unit_normal, unit_to_light);
+    if (lambert <= 0.0f) return 1.0f;
+    // Near the highlight 1 - lambert^n cancels; there we use 1 - lambert = |N x L|^2 / (1 + lambert) and
+    // 1 - (1 - x)^n = -expm1(n log1p(-x)) by short series, so the CPU and the GPU agree to 1e-6 even
+    // where the drawn share is tiny.
+    vec3 c = cross(unit_normal, unit_to_light);
+    float x = dot(c, c) / (1.0f + lambert);
+    if (x > 0.01f) return 1.0f - pow(lambert, exponent);
+    float y = -exponent * x * (1.0f + x * (0.5f + x * (1.0f / 3.0f + 0.25f * x)));  // n log1p(-x)
+    if (y < -0.05f) return 1.0f - exp(y);
+    return -y * (1.0f + y * (0.5f + y * (1.0f / 6.0f + y * (1.0f / 24.0f))));       // -expm1(y)
+}
+
+// §2.1/§2.3 The orientation term of the projected area, "cos(N_z * pi)" with N_z the z component of the
+// image-space normal. Taken literally it is negative for N_z > 1/2; we read it as the smooth ramp
+// (1 - cos(pi N_z)) / 2, which is 0 edge-on, 1/2 at 60 degrees and 1 facing the viewer, like N_z itself.
+// N_z is measured against the eye ray (perspective-correct facing ratio). Computed as sin^2(pi N_z / 2),
+// the same value without the cancellation of 1 - cos near edge-on polygons.
+STIPPLE_FN float orientation_factor(float facing) {
+    float s = sin(0.5f * kPi * clamp(facing, 0.0f, 1.0f));
+    return s * s;
+}
+
+// §2.3 Extrinsic distance enhancement, polygons large enough on screen:
+// density / ((Z_min - Z_curr) / 2)^pr. We read the bracket as the polygon's distance relative to the
+// reference distance (where the object is framed in the reference view that set its candidate counts,
+// see src/stipple/generate.cpp), i.e. the inverse of its current linear screen scale s. So the factor
+// is s^pr: pr = 2 keeps the stipples per screen pixel constant (the projected area shrinks as s^2).
+STIPPLE_FN float extrinsic_factor(float screen_scale, float pr) {
+    return pow(max(screen_scale, 0.0f), pr);
+}
+
+// §2.3 Intrinsic depth enhancement: density * (1 + (Z_curr / A)^de) with Z_curr the polygon's depth in
+// the object's depth range (-A, A). We measure Z_curr toward the viewer from the object's centre (so
+// near parts are positive) and keep the sign for real exponents: 1 + sign(z) |z|^de, from 0 at the far
+// end through 1 at the centre to 2 at the near end (then capped by the candidates). Larger de
+// lessens the effect, smaller de exaggerates it.
+STIPPLE_FN float intrinsic_factor(float depth_toward_viewer, float half_range, float de) {
+    float z = clamp(depth_toward_viewer / max(half_range, 1e-20f), -1.0f, 1.0f);
+    return 1.0f + sign(z) * pow(abs(z), de);
+}
+
+// §3.1 Toon silhouettes. The paper multiplies N.E by an increasing ramp clamped to [0, 1] and uses the
+// result as the surface's intensity, so that only surfaces seen edge-on darken; the ramp's steepness
+// sets the sharpness. Our reading, as ink: clamp(1 - k N.E, 0, 1) — full ink edge-on, none once
+// N.E > 1/k. The stipples get the matching decreasing ramp, clamp(k N.E, 0, 1), so they fade where the
+// toon ink takes over. N.E is measured against the eye ray.
+STIPPLE_FN float toon_surface_ink(float n_dot_e, float sharpness) {
+    return clamp(1.0f - sharpness * n_dot_e, 0.0f, 1.0f);
+}
+
+STIPPLE_FN float toon_stipple_fade(float n_dot_e, float sharpness) {
+    return clamp(sharpness * n_dot_e, 0.0f, 1.0f);
+}
+
+// §3.1 Raskar-Cohen line thinning: the bounding-sphere radius perpendicular to the view is projected to
+// the screen; its size relative to the object's reference size (the radius of an object framed in a
+// 1024-pixel-high view, 512 px) scales the user's width, clamped between one pixel and that width.
+STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_px, bool thinning) {
+    if (!thinning) return user_width;
+    return clamp(user_width * projected_radius_px / 512.0f, 1.0f, user_width);
+}
+
+// §2.1 No popping: a polygon with fractional density d draws stipples 0..ceil(d)-1, the last one
+// with intensity frac(d). Index k (0-based) is drawn with intensity clamp(d - k, 0, 1); zero means
+// the stipple is culled (pushed beyond the far plane by the vertex shader, §3.2).
+STIPPLE_FN float stipple_intensity(float density, float index) {
+    return clamp(density - index, 0.0f, 1.0f);
+}
+
+// Everything one polygon's density depends on, in view space.
+struct PolygonView {
+    float candidates;     // N_max of the polygon (its stipple count)
+    float selection;      // fixed selection value in [0, 1) (src/stipple/selection_order.cpp)
+    float area;           // world-space area
+    vec3 center;          // view-space centroid (the eye at the origin looking down -z)
+    vec3 normal;          // view-space unit normal
+};
+
+struct DensityParams {
+    vec3 to_light;             // view-space unit direction toward the light
+    float shading_exponent;    // n
+    float toon_sharpness;      // k of the toon ramps
+    float pr;                  // extrinsic rate
+    float min_area;            // minimum stipple screen area, px^2 (2..9 in the paper)
+    float pixels_per_unit;     // pixels per world unit at unit distance (projection and viewport)
+    float reference_ppu;       // pixels per world unit in the object's reference view
+    float de;                  // intrinsic rate
+    float half_range;          // A: the object's depth half-range (bounding-sphere radius)
+    float center_depth;        // view distance of the object's centre
+    uint flags;                // kFlag* bits
+};
+
+// The density inputs of one polygon, from its constant data and the object's uniforms.
+STIPPLE_FN PolygonView polygon_view(TriangleInfo info, ObjectUniforms o) {
+    PolygonView p;
+    p.candidates = info.normal_count.w;
+    p.selection = info.selection.x;
+    p.area = info.center_area.w * o.extrinsic.w;
+    p.center = vec3(o.model_view * vec4(vec3(info.center_area), 1.0f));
+    p.normal = normalize(mat3(o.normal_view) * vec3(info.normal_count));
+    return p;
+}
+
+STIPPLE_FN DensityParams density_params(FrameUniforms f, ObjectUniforms o) {
+    DensityParams q;
+    q.to_light = vec3(f.light_view);
+    q.shading_exponent = o.shading.x;
+    q.toon_sharpness = o.shading.z;
+    q.pr = o.extrinsic.x;
+    q.min_area = o.extrinsic.y;
+    q.pixels_per_unit = f.projection.x;
+    q.reference_ppu = o.extrinsic.z;
+    q.de = o.intrinsic.x;
+    q.half_range = o.intrinsic.y;
+    q.center_depth = o.intrinsic.z;
+    q.flags = o.flags.x;
+    return q;
+}
+
+// One polygon's density this frame, before the selection draw: the density it draws if selected and
+// the probability that it is selected (1 outside the probabilistic regime).
+struct PolygonDensity {
+    float density;
+    float probability;
+};
+
+// §2.1-2.3: shading, intrinsic and extrinsic enhancement, in both regimes; density in [0, candidates].
+STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) {
+    PolygonDensity result;
+    result.density = 0.0f;
+    result.probability = 1.0f;
+    float distance = -p.center.z;
+    if (distance <= 0.0f || p.candidates <= 0.0f) return result;
+    float facing = dot(p.normal, -p.center) / length(p.center);
+    if ((q.flags & kFlagBackfaceCull) != 0u && facing <= 0.0f) return result;
+
+    float density = p.candidates;
+    if ((q.flags & kFlagShading) != 0u) density *= shading_fraction(p.normal, q.to_light, q.shading_exponent);
+    if ((q.flags & kFlagIntrinsic) != 0u) density *= intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
+    if ((q.flags & kFlagToonFade) != 0u) density *= toon_stipple_fade(facing, q.toon_sharpness);
+    if ((q.flags & kFlagExtrinsic) == 0u) {
+        result.density = min(density, p.candidates);
+        return result;
+    }
+    float orientation = orientation_factor(facing);
+    float screen_scale = q.pixels_per_unit / (distance * q.reference_ppu);
+    density = min(density * extrinsic_factor(screen_scale, q.pr) * orientation, p.candidates);
+    result.density = density;
+
+    // §2.3 Polygons smaller on screen than the minimum stipple area: probabilistic selection. The
+    // approximate screen area (area * orientation * depth term) sets the probability that the polygon
+    // draws; a selected polygon carries the tone of the ones skipped (density / probability), so the
+    // expected ink always equals the density: tone is conserved in both regimes. Two refinements of
+    // ours: a polygon owed less than one stipple is selected with probability = its density, so the one
+    // it draws is a whole stipple (many faint dots overlap more and read lighter than fewer full ones);
+    // and the probability never falls below density / candidates, which the candidates can carry.
+    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation;
+    if (screen_area >= q.min_area || density <= 0.0f) return result;
+    result.probability = min(max(min(screen_area / q.min_area, density), density / p.candidates), 1.0f);
+    result.density = min(density / result.probability, p.candidates);
+    return result;
+}
+
+// The density of a polygon this frame: 0 when it is not selected.
+STIPPLE_FN float polygon_density(PolygonView p, DensityParams q) {
+    PolygonDensity d = polygon_density_terms(p, q);
+    if (d.probability < 1.0f && p.selection >= d.probability) return 0.0f;
+    return d.density;
+}
+
+#endif

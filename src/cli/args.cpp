@@ -1,0 +1,81 @@
+#include "cli/args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace stipple::cli {
+
+Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& flags,
+           const std::set<std::string>& options) {
+    for (size_t i = 0; i < argv.size(); ++i) {
+        const std::string& arg = argv[i];
+        if (arg.size() < 2 || arg[0] != '-' || (arg.size() > 1 && (std::isdigit(arg[1]) || arg[1] == '.'))) {
+            positionals_.push_back(arg);
+            continue;
+        }
+        std::string name = arg;
+        std::optional<std::string> value;
+        if (size_t eq = arg.find('='); eq != std::string::npos) {
+            name = arg.substr(0, eq);
+            value = arg.substr(eq + 1);
+        }
+        if (flags.count(name)) {
+            if (value) fail("option " + name + " takes no value");
+            flags_.insert(name);
+        } else if (options.count(name)) {
+            if (!value) {
+                if (i + 1 >= argv.size()) fail("option " + name + " needs a value");
+                value = argv[++i];
+            }
+            values_[name] = *value;
+        } else {
+            fail("unknown option " + name + " (see --help)");
+        }
+    }
+}
+
+std::string Args::get(const std::string& name, const std::string& fallback) const {
+    auto it = values_.find(name);
+    return it == values_.end() ? fallback : it->second;
+}
+
+double Args::number(const std::string& name, double fallback) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) return fallback;
+    const char* text = it->second.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double value = std::strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !std::isfinite(value))
+        fail("option " + name + ": '" + it->second + "' is not a finite number");
+    return value;
+}
+
+long long Args::integer(const std::string& name, long long fallback) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) return fallback;
+    const char* text = it->second.c_str();
+    char* end = nullptr;
+    errno = 0;
+    long long value = std::strtoll(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE) fail("option " + name + ": '" + it->second + "' is not an integer");
+    return value;
+}
+
+glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) return fallback;
+    std::istringstream in(it->second);
+    glm::vec3 v;
+    char c1 = 0, c2 = 0;
+    if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() || !std::isfinite(v.x) ||
+        !std::isfinite(v.y) || !std::isfinite(v.z))
+        fail("option " + name + ": '" + it->second + "' is not three numbers X,Y,Z");
+    return v;
+}
+
+}  // namespace stipple::cli

@@ -1,0 +1,34 @@
+#pragma once
+// A small command-line reader: positionals and --name value / --name=value options, each option
+// declared by the command so unknown ones are rejected with a clear message.
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace stipple::cli {
+
+class Args {
+public:
+    // `flags` take no value; `options` take one. Throws stipple::Error on unknown or incomplete options.
+    Args(const std::vector<std::string>& argv, const std::set<std::string>& flags,
+         const std::set<std::string>& options);
+
+    const std::vector<std::string>& positionals() const { return positionals_; }
+    bool flag(const std::string& name) const { return flags_.count(name) > 0; }
+    bool has(const std::string& name) const { return values_.count(name) > 0; }
+    std::string get(const std::string& name, const std::string& fallback) const;
+    double number(const std::string& name, double fallback) const;
+    long long integer(const std::string& name, long long fallback) const;
+    glm::vec3 vec3(const std::string& name, glm::vec3 fallback) const;
+
+private:
+    std::vector<std::string> positionals_;
+    std::set<std::string> flags_;
+    std::map<std::string, std::string> values_;
+};
+
+}  // namespace stipple::cli

@@ -1,0 +1,55 @@
+#include <cstdio>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/loaded_object.hpp"
+#include "cli/object_options.hpp"
+#include "core/error.hpp"
+
+namespace stipple::cli {
+
+int run_info(const std::vector<std::string>& argv) {
+    std::set<std::string> flags = object_flags();
+    flags.insert("--json");
+    Args args(argv, flags, object_options());
+    if (args.positionals().size() != 1) fail("info needs exactly one MODEL (see stipple --help)");
+    const std::string path = args.positionals()[0];
+    ObjectParams params = read_object_params(args);
+    LoadedObject object = load_object(path, params);
+
+    const Mesh& mesh = object.mesh;
+    Bounds bounds = compute_bounds(mesh);
+    double area = total_area(mesh);
+    double stipples_per_second =
+        object.stipples.generation_seconds > 0 ? object.stipples.size() / object.stipples.generation_seconds : 0.0;
+    if (args.flag("--json")) {
+        std::printf(
+            "{\"model\": \"%s\", \"triangles\": %zu, \"vertices\": %zu, \"stipple_candidates\": %zu, "
+            "\"surface_area\": %.9g, \"bounds_min\": [%.9g, %.9g, %.9g], \"bounds_max\": [%.9g, %.9g, %.9g], "
+            "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
+            "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
+            "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f}\n",
+            path.c_str(), mesh.triangle_count(), mesh.vertex_count(), object.stipples.size(), area, bounds.min.x,
+            bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds_sphere.center.x,
+            object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius,
+            object.stipples.density_per_area, object.stipples.poisson_radius, object.load_seconds,
+            object.stipples.generation_seconds, stipples_per_second);
+    } else {
+        std::printf("model:               %s\n", path.c_str());
+        std::printf("triangles:           %zu\n", mesh.triangle_count());
+        std::printf("vertices:            %zu\n", mesh.vertex_count());
+        std::printf("stipple candidates:  %zu\n", object.stipples.size());
+        std::printf("surface area:        %.6g\n", area);
+        std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,
+                    bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
+        std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g\n", object.bounds_sphere.center.x,
+                    object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius);
+        std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
+                    object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);
+        std::printf("generation time:     %.3f s (%.0f stipples/s)\n", object.stipples.generation_seconds,
+                    stipples_per_second);
+    }
+    return 0;
+}
+
+}  // namespace stipple::cli

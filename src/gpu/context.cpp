@@ -1,0 +1,305 @@
+#include "gpu/context.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace stipple::gpu {
+
+namespace {
+
+const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool layer_available(const char* name) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
+    std::vector<VkLayerProperties> layers(count);
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
+    for (const auto& layer : layers)
+        if (std::strcmp(layer.layerName, name) == 0) return true;
+    return false;
+}
+
+const char* device_type_name(VkPhysicalDeviceType type) {
+    switch (type) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+        default: return "other";
+    }
+}
+
+int device_type_rank(VkPhysicalDeviceType type) {
+    switch (type) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+        default: return 0;
+    }
+}
+
+std::vector<VkPhysicalDevice> enumerate_devices(VkInstance instance) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+    std::vector<VkPhysicalDevice> devices(count);
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+    return devices;
+}
+
+}  // namespace
+
+bool ContextOptions::default_validation() {
+    if (const char* env = std::getenv("STIPPLE_VALIDATION")) return std::strcmp(env, "0") != 0;
+#ifdef NDEBUG
+    return false;
+#else
+    return true;
+#endif
+}
+
+Context::Context(const ContextOptions& options) {
+    // The loader needs a runtime dir on some set-ups; an unset XDG_RUNTIME_DIR only causes warnings.
+    create_instance(options);
+    pick_physical_device(options);
+    create_device(options);
+}
+
+Context::~Context() {
+    if (device) {
+        vkDeviceWaitIdle(device);
+        if (command_pool) vkDestroyCommandPool(device, command_pool, nullptr);
+        vkDestroyDevice(device, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(instance, messenger_, nullptr);
+    }
+    if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                       VkDebugUtilsMessageTypeFlagsEXT,
+                                                       const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
+    auto* context = static_cast<Context*>(user);
+    context->validation_messages_.fetch_add(1);
+    std::fprintf(stderr, "vulkan validation: %s\n", data->pMessage ? data->pMessage : "(no message)");
+    return VK_FALSE;
+}
+
+void Context::create_instance(const ContextOptions& options) {
+    std::vector<const char*> extensions = options.instance_extensions;
+    std::vector<const char*> layers;
+    bool validation = options.validation;
+    if (validation) {
+        if (!layer_available(kValidationLayer))
+            fail(std::string("validation was requested but ") + kValidationLayer +
+                 " is not installed (apt-get install vulkan-validationlayers, or set STIPPLE_VALIDATION=0)");
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "stipple";
+    app.apiVersion = VK_API_VERSION_1_3;
+
+    VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messenger_info.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                 VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messenger_info.pfnUserCallback = debug_callback;
+    messenger_info.pUserData = this;
+
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pNext = validation ? &messenger_info : nullptr;  // also catches messages of create/destroy
+    info.pApplicationInfo = &app;
+    info.enabledLayerCount = uint32_t(layers.size());
+    info.ppEnabledLayerNames = layers.data();
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkResult result = vkCreateInstance(&info, nullptr, &instance);
+    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+        fail("no Vulkan 1.3 driver found (on a machine without a GPU install mesa-vulkan-drivers for lavapipe)");
+    VK_CHECK(result);
+
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+        if (!create) fail("VK_EXT_debug_utils is missing although the validation layer is present");
+        VK_CHECK(create(instance, &messenger_info, nullptr, &messenger_));
+    }
+}
+
+void Context::pick_physical_device(const ContextOptions& options) {
+    std::vector<VkPhysicalDevice> devices = enumerate_devices(instance);
+    if (devices.empty()) fail("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
+    if (options.device_index >= 0) {
+        if (options.device_index >= int(devices.size()))
+            fail("--device " + std::to_string(options.device_index) + " is out of range: there are " +
+                 std::to_string(devices.size()) + " Vulkan devices (0.." + std::to_string(devices.size() - 1) + ")");
+        physical_device = devices[size_t(options.device_index)];
+    } else {
+        int best_rank = -1;
+        for (VkPhysicalDevice candidate : devices) {
+            VkPhysicalDeviceProperties props;
+            vkGetPhysicalDeviceProperties(candidate, &props);
+            if (props.apiVersion < VK_API_VERSION_1_3) continue;
+            int rank = device_type_rank(props.deviceType);
+            if (rank > best_rank) best_rank = rank, physical_device = candidate;
+        }
+        if (!physical_device) fail("no Vulkan 1.3 device found");
+    }
+    vkGetPhysicalDeviceProperties(physical_device, &properties);
+    vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties);
+    if (properties.apiVersion < VK_API_VERSION_1_3)
+        fail(std::string("device '") + properties.deviceName + "' supports only Vulkan " +
+             std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+             std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + "; stipple needs 1.3");
+    device_name = properties.deviceName;
+
+    uint32_t family_count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &family_count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(family_count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device, &family_count, families.data());
+    bool found = false;
+    for (uint32_t i = 0; i < family_count && !found; ++i) {
+        const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & need) == need) queue_family = i, found = true;
+        features.timestamps = found && families[i].timestampValidBits > 0;
+    }
+    if (!found) fail(std::string("device '") + device_name + "' has no graphics+compute queue");
+    if (options.verbose)
+        std::fprintf(stderr, "stipple: using Vulkan device '%s' (%s)\n", device_name.c_str(),
+                     device_type_name(properties.deviceType));
+}
+
+void Context::create_device(const ContextOptions& options) {
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(physical_device, &supported);
+    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    supported12.pNext = &supported13;
+    VkPhysicalDeviceFeatures2 supported2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    supported2.pNext = &supported12;
+    vkGetPhysicalDeviceFeatures2(physical_device, &supported2);
+    if (!supported13.dynamicRendering || !supported13.synchronization2)
+        fail("device '" + device_name + "' lacks dynamic rendering or synchronization2");
+
+    VkPhysicalDeviceFeatures enabled{};
+    enabled.largePoints = supported.largePoints;
+    enabled.wideLines = supported.wideLines;
+    enabled.fillModeNonSolid = supported.fillModeNonSolid;
+    enabled.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
+    enabled.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
+    enabled.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+    enabled.multiDrawIndirect = supported.multiDrawIndirect;
+    enabled.depthBiasClamp = supported.depthBiasClamp;
+    VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    enabled12.drawIndirectCount = supported12.drawIndirectCount;
+    enabled12.hostQueryReset = supported12.hostQueryReset;
+    enabled12.shaderFloat16 = VK_FALSE;
+    VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    enabled13.dynamicRendering = VK_TRUE;
+    enabled13.synchronization2 = VK_TRUE;
+    enabled12.pNext = &enabled13;
+
+    features.large_points = supported.largePoints;
+    features.wide_lines = supported.wideLines;
+    features.fill_mode_non_solid = supported.fillModeNonSolid;
+    features.pipeline_statistics = supported.pipelineStatisticsQuery;
+    features.draw_indirect_count = supported12.drawIndirectCount;
+    features.max_point_size = supported.largePoints ? properties.limits.pointSizeRange[1] : 1.0f;
+    features.max_line_width = supported.wideLines ? properties.limits.lineWidthRange[1] : 1.0f;
+    features.timestamp_period_ns = properties.limits.timestampPeriod;
+    features.timestamps = features.timestamps && properties.limits.timestampComputeAndGraphics;
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queue_info.queueFamilyIndex = queue_family;
+    queue_info.queueCount = 1;
+    queue_info.pQueuePriorities = &priority;
+
+    std::vector<const char*> extensions;
+    if (options.swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pNext = &enabled12;
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queue_info;
+    info.pEnabledFeatures = &enabled;
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VK_CHECK(vkCreateDevice(physical_device, &info, nullptr, &device));
+    vkGetDeviceQueue(device, queue_family, 0, &queue);
+
+    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool_info.queueFamilyIndex = queue_family;
+    VK_CHECK(vkCreateCommandPool(device, &pool_info, nullptr, &command_pool));
+}
+
+VkCommandBuffer Context::begin_one_shot() const {
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = command_pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &cb));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cb, &begin));
+    return cb;
+}
+
+void Context::submit_and_wait(VkCommandBuffer cb) const {
+    VK_CHECK(vkEndCommandBuffer(cb));
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence));
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cb;
+    VkResult result = vkQueueSubmit(queue, 1, &submit, fence);
+    if (result == VK_SUCCESS) result = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device, fence, nullptr);
+    vkFreeCommandBuffers(device, command_pool, 1, &cb);
+    VK_CHECK(result);
+}
+
+uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                                   VkMemoryPropertyFlags preferred) const {
+    for (int pass = 0; pass < 2; ++pass) {
+        VkMemoryPropertyFlags want = pass == 0 ? (required | preferred) : required;
+        for (uint32_t i = 0; i < memory_properties.memoryTypeCount; ++i)
+            if ((type_bits & (1u << i)) && (memory_properties.memoryTypes[i].propertyFlags & want) == want) return i;
+    }
+    fail("no Vulkan memory type with the required properties");
+}
+
+std::vector<std::string> Context::list_devices() {
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.apiVersion = VK_API_VERSION_1_3;
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pApplicationInfo = &app;
+    VkInstance instance = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
+    std::vector<std::string> names;
+    std::vector<VkPhysicalDevice> devices = enumerate_devices(instance);
+    for (size_t i = 0; i < devices.size(); ++i) {
+        VkPhysicalDeviceProperties props;
+        vkGetPhysicalDeviceProperties(devices[i], &props);
+        names.push_back(std::to_string(i) + ": " + props.deviceName + " (" + device_type_name(props.deviceType) + ")");
+    }
+    vkDestroyInstance(instance, nullptr);
+    return names;
+}
+
+}  // namespace stipple::gpu

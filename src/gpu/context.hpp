@@ -1,0 +1,82 @@
+#pragma once
+// The Vulkan instance, the chosen physical device, the logical device and its one queue.
+// Headless by default; the viewer asks for the surface extensions it needs.
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace stipple::gpu {
+
+struct ContextOptions {
+    int device_index = -1;  // --device N; -1 picks the best (discrete > integrated > virtual > CPU)
+    // Validation layer: on in debug builds; STIPPLE_VALIDATION=1 forces it on, =0 off.
+    bool validation = default_validation();
+    std::vector<const char*> instance_extensions;  // e.g. from glfwGetRequiredInstanceExtensions
+    bool swapchain = false;                        // enable VK_KHR_swapchain on the device
+    bool verbose = false;
+
+    static bool default_validation();
+};
+
+// Optional features, recorded as enabled so the passes can adapt (lavapipe has all of them).
+struct DeviceFeatures {
+    bool large_points = false;
+    bool wide_lines = false;
+    bool fill_mode_non_solid = false;
+    bool pipeline_statistics = false;
+    bool draw_indirect_count = false;
+    bool timestamps = false;
+    float max_point_size = 1.0f;
+    float max_line_width = 1.0f;
+    double timestamp_period_ns = 1.0;
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queue_family = 0;
+    VkCommandPool command_pool = VK_NULL_HANDLE;  // for one-shot and per-frame command buffers
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory_properties{};
+    DeviceFeatures features;
+    std::string device_name;
+
+    // Validation messages (warnings and errors) seen so far; every one is also printed on stderr.
+    // A run or test with a non-zero count has failed.
+    uint32_t validation_message_count() const { return validation_messages_.load(); }
+    bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
+
+    // One-shot command buffer: record, then submit and wait.
+    VkCommandBuffer begin_one_shot() const;
+    void submit_and_wait(VkCommandBuffer command_buffer) const;
+
+    uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                              VkMemoryPropertyFlags preferred = 0) const;
+
+    // Lists the devices Vulkan sees, "index: name (type)", for --help-style output and errors.
+    static std::vector<std::string> list_devices();
+
+private:
+    void create_instance(const ContextOptions& options);
+    void pick_physical_device(const ContextOptions& options);
+    void create_device(const ContextOptions& options);
+
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    std::atomic<uint32_t> validation_messages_{0};
+    static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                         VkDebugUtilsMessageTypeFlagsEXT types,
+                                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                         void* user);
+};
+
+}  // namespace stipple::gpu

@@ -1,0 +1,227 @@
+#include "gpu/pipelines.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "gpu/shared_types.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace stipple::gpu {
+
+namespace {
+
+// Owns the modules of one pipeline creation (destroyed once the pipeline exists).
+struct ShaderModules {
+    const Context& context;
+    std::vector<VkShaderModule> modules;
+    ~ShaderModules() {
+        for (VkShaderModule m : modules) vkDestroyShaderModule(context.device, m, nullptr);
+    }
+    VkShaderModule add(const std::string& name) { return modules.emplace_back(load_shader(context, name)); }
+};
+
+struct SpecializationData {
+    std::vector<VkSpecializationMapEntry> entries;
+    std::vector<uint32_t> values;
+    VkSpecializationInfo info{};
+    explicit SpecializationData(const Specialization& spec) {
+        for (auto [id, value] : spec.constants) {
+            entries.push_back({id, uint32_t(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
+            values.push_back(value);
+        }
+        info.mapEntryCount = uint32_t(entries.size());
+        info.pMapEntries = entries.data();
+        info.dataSize = values.size() * sizeof(uint32_t);
+        info.pData = values.data();
+    }
+    const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+};
+
+}  // namespace
+
+bool format_has_stencil(VkFormat format) {
+    return format == VK_FORMAT_D32_SFLOAT_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+           format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_S8_UINT;
+}
+
+std::string shader_path(const std::string& name) {
+    const char* env = std::getenv("STIPPLE_SHADER_DIR");
+    std::string dir = env ? env : STIPPLE_SHADER_DIR;
+    return dir + "/" + name + ".spv";
+}
+
+VkShaderModule load_shader(const Context& context, const std::string& name) {
+    std::string path = shader_path(name);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail_file(path, "shader not found (was the project built? set STIPPLE_SHADER_DIR to move it)");
+    std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = bytes.size();
+    info.pCode = reinterpret_cast<const uint32_t*>(bytes.data());
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
+    return module;
+}
+
+VkPipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc, VkPipelineLayout layout) {
+    ShaderModules modules{context, {}};
+    SpecializationData spec(desc.specialization);
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stage.module = modules.add(desc.vertex_shader);
+    stage.pName = "main";
+    stage.pSpecializationInfo = spec.get();
+    stages.push_back(stage);
+    if (!desc.fragment_shader.empty()) {
+        stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+        stage.module = modules.add(desc.fragment_shader);
+        stages.push_back(stage);
+    }
+
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = uint32_t(desc.vertex_bindings.size());
+    vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
+    vertex_input.vertexAttributeDescriptionCount = uint32_t(desc.vertex_attributes.size());
+    vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
+
+    VkPipelineInputAssemblyStateCreateInfo input_assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    input_assembly.topology = desc.topology;
+
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = desc.polygon_mode;
+    raster.cullMode = desc.cull_mode;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // with the negative-height viewport (GL convention)
+    raster.depthBiasEnable = desc.depth_bias;
+    raster.lineWidth = 1.0f;
+
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = desc.depth_test;
+    depth.depthWriteEnable = desc.depth_write;
+    depth.depthCompareOp = desc.depth_compare;
+    if (desc.stencil != CoverageStencil::None) {
+        depth.stencilTestEnable = VK_TRUE;
+        VkStencilOpState op{};
+        op.compareMask = 1;
+        op.writeMask = 1;
+        op.reference = 1;
+        if (desc.stencil == CoverageStencil::Write) {
+            op.compareOp = VK_COMPARE_OP_ALWAYS;
+            op.passOp = VK_STENCIL_OP_REPLACE;  // where the depth test passes: a surface covers the pixel
+        } else {
+            op.compareOp = VK_COMPARE_OP_EQUAL;
+        }
+        depth.front = op;
+        depth.back = op;
+    }
+
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask = desc.color_write ? (VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT)
+                                                 : 0;
+    if (desc.blend) {
+        attachment.blendEnable = VK_TRUE;
+        attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        attachment.colorBlendOp = VK_BLEND_OP_ADD;
+        attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        attachment.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    bool has_color = desc.color_format != VK_FORMAT_UNDEFINED;
+    blend.attachmentCount = has_color ? 1 : 0;
+    blend.pAttachments = &attachment;
+
+    std::vector<VkDynamicState> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    if (desc.depth_bias) dynamic_states.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
+    if (desc.dynamic_line_width) dynamic_states.push_back(VK_DYNAMIC_STATE_LINE_WIDTH);
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = uint32_t(dynamic_states.size());
+    dynamic.pDynamicStates = dynamic_states.data();
+
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = has_color ? 1 : 0;
+    rendering.pColorAttachmentFormats = &desc.color_format;
+    rendering.depthAttachmentFormat = desc.depth_format;
+    if (format_has_stencil(desc.depth_format)) rendering.stencilAttachmentFormat = desc.depth_format;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.pNext = &rendering;
+    info.stageCount = uint32_t(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &input_assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateGraphicsPipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    return pipeline;
+}
+
+VkPipeline create_compute_pipeline(const Context& context, const std::string& shader, VkPipelineLayout layout,
+                                   const Specialization& specialization) {
+    ShaderModules modules{context, {}};
+    SpecializationData spec(specialization);
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = modules.add(shader);
+    info.stage.pName = "main";
+    info.stage.pSpecializationInfo = spec.get();
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    return pipeline;
+}
+
+StippleLayout create_stipple_layout(const Context& context) {
+    const VkShaderStageFlags stages =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+    VkDescriptorSetLayoutBinding bindings[] = {
+        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
+        {kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
+        {kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+    };
+    StippleLayout layout;
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = uint32_t(std::size(bindings));
+    set_info.pBindings = bindings;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &layout.set_layout));
+
+    VkPushConstantRange push{stages, 0, kPushConstantBytes};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &layout.set_layout;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout.pipeline_layout));
+    return layout;
+}
+
+void destroy_stipple_layout(const Context& context, StippleLayout& layout) {
+    if (layout.pipeline_layout) vkDestroyPipelineLayout(context.device, layout.pipeline_layout, nullptr);
+    if (layout.set_layout) vkDestroyDescriptorSetLayout(context.device, layout.set_layout, nullptr);
+    layout = {};
+}
+
+}  // namespace stipple::gpu

@@ -1,0 +1,64 @@
+#pragma once
+// Shader modules loaded by name and pipelines described by plain structs (dynamic rendering).
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace stipple::gpu {
+
+class Context;
+
+// Reads <shader dir>/<name>.spv, e.g. load_shader(ctx, "stipple.vert"). The shader dir is the build's
+// (compiled in) unless STIPPLE_SHADER_DIR is set in the environment.
+VkShaderModule load_shader(const Context& context, const std::string& name);
+std::string shader_path(const std::string& name);
+
+// Specialisation constants: (constant_id, 32-bit value) pairs; variants without copied files.
+struct Specialization {
+    std::vector<std::pair<uint32_t, uint32_t>> constants;
+};
+
+// The stencil marks the pixels a surface covers: the depth pass writes it, the stipple pass tests it,
+// so that no stipple (a point wider than a pixel) ever inks the paper beside the object.
+enum class CoverageStencil { None, Write, Test };
+
+bool format_has_stencil(VkFormat format);
+
+struct GraphicsPipelineDesc {
+    std::string vertex_shader;    // shader name, e.g. "stipple.vert"
+    std::string fragment_shader;  // empty: depth-only
+    Specialization specialization;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    std::vector<VkVertexInputBindingDescription> vertex_bindings;
+    std::vector<VkVertexInputAttributeDescription> vertex_attributes;
+    VkPolygonMode polygon_mode = VK_POLYGON_MODE_FILL;
+    VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+    bool depth_test = true;
+    bool depth_write = true;
+    VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+    bool depth_bias = false;  // values set dynamically (vkCmdSetDepthBias)
+    CoverageStencil stencil = CoverageStencil::None;
+    bool blend = false;       // premultiplied-free "over": src alpha, one minus src alpha
+    bool color_write = true;
+    bool dynamic_line_width = false;
+    VkFormat color_format = VK_FORMAT_UNDEFINED;
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+};
+
+VkPipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc, VkPipelineLayout layout);
+VkPipeline create_compute_pipeline(const Context& context, const std::string& shader, VkPipelineLayout layout,
+                                   const Specialization& specialization = {});
+
+// The one descriptor-set layout (set 0) and pipeline layout that every stipple pipeline shares:
+// bindings from shaders/shared_types.h, plus a small push-constant block.
+struct StippleLayout {
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
+};
+StippleLayout create_stipple_layout(const Context& context);
+void destroy_stipple_layout(const Context& context, StippleLayout& layout);
+
+inline constexpr uint32_t kPushConstantBytes = 16;
+
+}  // namespace stipple::gpu

@@ -1,0 +1,230 @@
+#include "gpu/resources.hpp"
+
+#include <cstring>
+#include <utility>
+
+#include "gpu/context.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace stipple::gpu {
+
+namespace {
+
+VkMemoryPropertyFlags required_flags(MemoryUse use) {
+    switch (use) {
+        case MemoryUse::DeviceLocal: return 0;  // preferred DEVICE_LOCAL, below; CPU drivers have only host memory
+        case MemoryUse::Upload:
+        case MemoryUse::Readback: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+    }
+    return 0;
+}
+
+VkMemoryPropertyFlags preferred_flags(MemoryUse use) {
+    switch (use) {
+        case MemoryUse::DeviceLocal: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        case MemoryUse::Upload: return VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        case MemoryUse::Readback: return VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    }
+    return 0;
+}
+
+}  // namespace
+
+Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use)
+    : device_(context.device), size_(size) {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size > 0 ? size : 4;  // zero-sized buffers are invalid; an empty object still binds one
+    // Device-local buffers can always be copied from, so tests and tools can read any of them back.
+    info.usage = use == MemoryUse::DeviceLocal ? usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT : usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
+    uint32_t type = context.find_memory_type(requirements.memoryTypeBits, required_flags(use), preferred_flags(use));
+    coherent_ = context.memory_properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = requirements.size;
+    alloc.memoryTypeIndex = type;
+    VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory_);
+    if (result != VK_SUCCESS) {
+        reset();
+        fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory (" +
+             vk_result_name(result) + ")");
+    }
+    VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+    if (use != MemoryUse::DeviceLocal) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+    if (this != &other) {
+        reset();
+        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        size_ = std::exchange(other.size_, 0);
+        mapped_ = std::exchange(other.mapped_, nullptr);
+        coherent_ = other.coherent_;
+    }
+    return *this;
+}
+
+void Buffer::reset() {
+    if (!device_) return;
+    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    buffer_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    mapped_ = nullptr;
+    device_ = VK_NULL_HANDLE;
+}
+
+void Buffer::flush() const {
+    if (coherent_ || !mapped_) return;
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_, 0, VK_WHOLE_SIZE};
+    VK_CHECK(vkFlushMappedMemoryRanges(device_, 1, &range));
+}
+
+void Buffer::invalidate() const {
+    if (coherent_ || !mapped_) return;
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_, 0, VK_WHOLE_SIZE};
+    VK_CHECK(vkInvalidateMappedMemoryRanges(device_, 1, &range));
+}
+
+Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+             VkImageAspectFlags aspect)
+    : device_(context.device), format_(format), extent_(extent), aspect_(aspect) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device_, image_, &requirements);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = requirements.size;
+    alloc.memoryTypeIndex =
+        context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+
+    VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view_info.image = image_;
+    view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view_info.format = format;
+    view_info.subresourceRange = {aspect, 0, 1, 0, 1};
+    VK_CHECK(vkCreateImageView(device_, &view_info, nullptr, &view_));
+}
+
+Image& Image::operator=(Image&& other) noexcept {
+    if (this != &other) {
+        reset();
+        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+        view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        format_ = other.format_;
+        extent_ = other.extent_;
+        aspect_ = other.aspect_;
+    }
+    return *this;
+}
+
+void Image::reset() {
+    if (!device_) return;
+    if (view_) vkDestroyImageView(device_, view_, nullptr);
+    if (image_) vkDestroyImage(device_, image_, nullptr);
+    if (memory_) vkFreeMemory(device_, memory_, nullptr);
+    view_ = VK_NULL_HANDLE;
+    image_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    device_ = VK_NULL_HANDLE;
+}
+
+Buffer create_device_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage) {
+    Buffer buffer(context, data.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal);
+    if (data.empty()) return buffer;
+    Buffer staging(context, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+    std::memcpy(staging.mapped(), data.data(), data.size());
+    staging.flush();
+    VkCommandBuffer cb = context.begin_one_shot();
+    VkBufferCopy region{0, 0, data.size()};
+    vkCmdCopyBuffer(cb, staging.handle(), buffer.handle(), 1, &region);
+    context.submit_and_wait(cb);
+    return buffer;
+}
+
+std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer) {
+    std::vector<std::byte> bytes(buffer.size());
+    if (bytes.empty()) return bytes;
+    Buffer staging(context, buffer.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+    VkCommandBuffer cb = context.begin_one_shot();
+    VkBufferCopy region{0, 0, buffer.size()};
+    vkCmdCopyBuffer(cb, buffer.handle(), staging.handle(), 1, &region);
+    buffer_barrier(cb, staging.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    context.submit_and_wait(cb);
+    staging.invalidate();
+    std::memcpy(bytes.data(), staging.mapped(), bytes.size());
+    return bytes;
+}
+
+void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                   VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = src_stage;
+    barrier.srcAccessMask = src_access;
+    barrier.dstStageMask = dst_stage;
+    barrier.dstAccessMask = dst_access;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.imageMemoryBarrierCount = 1;
+    dependency.pImageMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cb, &dependency);
+}
+
+void memory_barrier(VkCommandBuffer cb, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = src_stage;
+    barrier.srcAccessMask = src_access;
+    barrier.dstStageMask = dst_stage;
+    barrier.dstAccessMask = dst_access;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cb, &dependency);
+}
+
+void buffer_barrier(VkCommandBuffer cb, VkBuffer buffer, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+    barrier.srcStageMask = src_stage;
+    barrier.srcAccessMask = src_access;
+    barrier.dstStageMask = dst_stage;
+    barrier.dstAccessMask = dst_access;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.buffer = buffer;
+    barrier.offset = 0;
+    barrier.size = VK_WHOLE_SIZE;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.bufferMemoryBarrierCount = 1;
+    dependency.pBufferMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cb, &dependency);
+}
+
+}  // namespace stipple::gpu

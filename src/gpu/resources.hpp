@@ -1,0 +1,100 @@
+#pragma once
+// Buffers and images with their memory: small move-only owners, so nothing leaks when an error
+// unwinds (a leak would be a validation message at device destruction).
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace stipple::gpu {
+
+class Context;
+
+enum class MemoryUse {
+    DeviceLocal,  // GPU-only data (stipples, per-frame densities, depth)
+    Upload,       // host-visible, written by the CPU (uniforms, staging)
+    Readback,     // host-visible and cached, read by the CPU (images, counters)
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use);
+    ~Buffer() { reset(); }
+    Buffer(Buffer&& other) noexcept { *this = std::move(other); }
+    Buffer& operator=(Buffer&& other) noexcept;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    void reset();
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    void* mapped() const { return mapped_; }  // non-null for Upload and Readback
+    explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+
+    // Makes host writes visible / device writes readable on non-coherent memory.
+    void flush() const;
+    void invalidate() const;
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+    bool coherent_ = true;
+};
+
+class Image {
+public:
+    Image() = default;
+    Image(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+          VkImageAspectFlags aspect);
+    ~Image() { reset(); }
+    Image(Image&& other) noexcept { *this = std::move(other); }
+    Image& operator=(Image&& other) noexcept;
+    Image(const Image&) = delete;
+    Image& operator=(const Image&) = delete;
+
+    void reset();
+    VkImage handle() const { return image_; }
+    VkImageView view() const { return view_; }
+    VkFormat format() const { return format_; }
+    VkExtent2D extent() const { return extent_; }
+    VkImageAspectFlags aspect() const { return aspect_; }
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent_{};
+    VkImageAspectFlags aspect_ = 0;
+};
+
+// A device-local buffer filled once from host data through a staging buffer (waits for completion).
+Buffer create_device_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage);
+
+template <typename T>
+Buffer create_device_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage) {
+    return create_device_buffer(context, std::as_bytes(data), usage);
+}
+
+// Copies a buffer's contents back to the host (waits). The buffer needs TRANSFER_SRC usage.
+std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer);
+
+// Image layout transition with a full pipeline barrier between the two stages (synchronization2).
+void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                   VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
+// A global memory dependency (cheaper to write than one barrier per buffer).
+void memory_barrier(VkCommandBuffer cb, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
+void buffer_barrier(VkCommandBuffer cb, VkBuffer buffer, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
+}  // namespace stipple::gpu

@@ -1,0 +1,41 @@
+#pragma once
+// The GPU-visible layouts from shaders/shared_types.h, checked against what GLSL's std140/std430
+// and the vertex input layout expect.
+#include <cstddef>
+
+#include "shared_types.h"
+
+namespace stipple::gpu {
+
+static_assert(sizeof(StippleVertex) == 16);
+static_assert(offsetof(StippleVertex, position) == 0);
+static_assert(offsetof(StippleVertex, triangle) == 12);
+
+static_assert(sizeof(TriangleDraw) == 8);
+static_assert(offsetof(TriangleDraw, density) == 0);
+static_assert(offsetof(TriangleDraw, first_stipple) == 4);
+
+static_assert(sizeof(TriangleInfo) == 48);
+static_assert(offsetof(TriangleInfo, normal_count) == 16);
+static_assert(offsetof(TriangleInfo, selection) == 32);
+
+static_assert(sizeof(DrawCommand) == 16);
+static_assert(offsetof(DrawCommand, first_vertex) == 8);
+
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 5 * 16);
+static_assert(offsetof(FrameUniforms, view) == 64);
+static_assert(offsetof(FrameUniforms, light_view) == 128);
+static_assert(offsetof(FrameUniforms, ink_color) == 144);
+static_assert(offsetof(FrameUniforms, paper_color) == 160);
+static_assert(offsetof(FrameUniforms, viewport) == 176);
+static_assert(offsetof(FrameUniforms, projection) == 192);
+
+static_assert(sizeof(ObjectUniforms) == 3 * 64 + 4 * 16);
+static_assert(offsetof(ObjectUniforms, normal_view) == 64);
+static_assert(offsetof(ObjectUniforms, model) == 128);
+static_assert(offsetof(ObjectUniforms, shading) == 192);
+static_assert(offsetof(ObjectUniforms, extrinsic) == 208);
+static_assert(offsetof(ObjectUniforms, intrinsic) == 224);
+static_assert(offsetof(ObjectUniforms, flags) == 240);
+
+}  // namespace stipple::gpu

@@ -1,0 +1,43 @@
+#include "render/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace stipple {
+
+float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg) {
+    float half_y = glm::radians(fov_y_deg) * 0.5f;
+    float half_x = std::atan(std::tan(half_y) * aspect);
+    float half = std::min(half_x, half_y);
+    return std::max(sphere.radius, 1e-6f) / std::sin(half);
+}
+
+OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg) {
+    OrbitCamera camera;
+    camera.target = sphere.center;
+    camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg) * distance_multiple;
+    camera.yaw_deg = yaw_deg;
+    camera.pitch_deg = pitch_deg;
+    return camera;
+}
+
+CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sphere& scene) {
+    float yaw = glm::radians(camera.yaw_deg);
+    float pitch = glm::radians(camera.pitch_deg);
+    glm::vec3 offset(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
+    CameraMatrices m;
+    m.eye = camera.target + offset * camera.distance;
+    glm::vec3 up = std::abs(std::cos(pitch)) < 1e-4f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    m.view = glm::lookAt(m.eye, camera.target, up);
+
+    float center_distance = glm::length(scene.center - m.eye);
+    float radius = std::max(scene.radius, 1e-6f) * 1.02f;
+    m.far_plane = center_distance + radius;
+    m.near_plane = std::max(center_distance - radius, m.far_plane * 1e-4f);
+    m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);
+    return m;
+}
+
+}  // namespace stipple

@@ -1,0 +1,34 @@
+#pragma once
+// Orbit camera framing a bounding sphere; Vulkan depth range [0, 1].
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+
+namespace stipple {
+
+struct OrbitCamera {
+    glm::vec3 target{0.0f};
+    float distance = 1.0f;  // eye to target, world units
+    float yaw_deg = 0.0f;   // around +Y; 0 looks down -Z from +Z
+    float pitch_deg = 0.0f; // up is positive
+    float fov_y_deg = 30.0f;
+};
+
+struct CameraMatrices {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    glm::vec3 eye{0.0f};
+    float near_plane = 0.01f;
+    float far_plane = 100.0f;
+};
+
+// Distance at which the sphere just fits the view, vertically and horizontally.
+float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg);
+
+// A camera framing `sphere`, at `distance_multiple` times the framing distance.
+OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg);
+
+// Near and far planes hug `scene` (so depth precision is spent on the objects).
+CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sphere& scene);
+
+}  // namespace stipple

@@ -1,0 +1,20 @@
+#pragma once
+// The paper's "no vertex program" path: the CPU evaluates the per-polygon density (the same
+// formulas as the GPU, shaders/stipple_formulas.h) and submits only the stipples that survive.
+#include <span>
+
+#include "shared_types.h"
+
+namespace stipple {
+
+// One density per polygon, exactly polygon_density() of the shaders.
+void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, const gpu::FrameUniforms& frame,
+                           const gpu::ObjectUniforms& object, std::span<float> densities);
+
+// Draw commands for the surviving stipples: polygon t draws [first[t], first[t] + ceil(density)).
+// Consecutive polygons merge into one command while each one before draws all of its candidates,
+// so a dense region costs one draw, not one per polygon. Returns the number of commands written.
+uint32_t build_draw_commands(std::span<const float> densities, std::span<const uint32_t> first_stipple,
+                             std::span<const gpu::TriangleInfo> triangles, std::span<gpu::DrawCommand> commands);
+
+}  // namespace stipple

@@ -1,0 +1,28 @@
+#pragma once
+// The C++ side of shaders/stipple_formulas.h: the very same source, compiled with glm's functions,
+// so the CPU path and the shaders cannot drift apart.
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "shared_types.h"
+
+namespace stipple::formulas {
+using namespace stipple::gpu;
+using glm::abs;
+using glm::clamp;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::exp;
+using glm::floor;
+using glm::length;
+using glm::mat3;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::sign;
+using glm::sin;
+using std::pow;
+#include "stipple_formulas.h"
+}  // namespace stipple::formulas

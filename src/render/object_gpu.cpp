@@ -1,0 +1,190 @@
+#include "render/object_gpu.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "gpu/shared_types.hpp"
+#include "gpu/vk_check.hpp"
+#include "render/density_cpu.hpp"
+#include "render/density_formulas.hpp"
+#include "render/stipple_renderer.hpp"
+#include "stipple/selection_order.hpp"
+
+namespace stipple {
+
+using gpu::Buffer;
+using gpu::MemoryUse;
+
+namespace {
+
+std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, const StippleSet& stipples, uint64_t stipples_seed) {
+    std::vector<gpu::TriangleInfo> infos(mesh.triangle_count());
+    std::vector<float> selection = polygon_selection_values(mesh, stipples_seed);
+    for (size_t t = 0; t < infos.size(); ++t) {
+        glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
+        glm::vec3 b = mesh.positions[mesh.indices[3 * t + 1]];
+        glm::vec3 c = mesh.positions[mesh.indices[3 * t + 2]];
+        glm::vec3 cross = glm::cross(b - a, c - a);
+        float length = glm::length(cross);
+        glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f);
+        infos[t].center_area = glm::vec4((a + b + c) / 3.0f, 0.5f * length);
+        infos[t].normal_count = glm::vec4(normal, float(stipples.count(t)));
+        infos[t].selection = glm::vec4(selection[t], 0.0f, 0.0f, 0.0f);
+    }
+    return infos;
+}
+
+// Lengths scale by this much from object to world (the mean for non-uniform scales).
+float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::determinant(glm::mat3(model)))); }
+
+void write_descriptors(VkDevice device, VkDescriptorSet set, const Buffer& frame_uniforms, const ObjectGpu& object) {
+    struct Entry {
+        uint32_t binding;
+        VkDescriptorType type;
+        VkBuffer buffer;
+    };
+    const Entry entries[] = {
+        {gpu::kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_uniforms.handle()},
+        {gpu::kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, object.object_uniforms.handle()},
+        {gpu::kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.triangle_draw.handle()},
+        {gpu::kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.triangle_info.handle()},
+        {gpu::kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.gpu_commands.handle()},
+        {gpu::kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.debug.handle()},
+    };
+    VkDescriptorBufferInfo infos[std::size(entries)];
+    VkWriteDescriptorSet writes[std::size(entries)];
+    for (size_t i = 0; i < std::size(entries); ++i) {
+        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set;
+        writes[i].dstBinding = entries[i].binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = entries[i].type;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(device, uint32_t(std::size(writes)), writes, 0, nullptr);
+}
+
+}  // namespace
+
+ObjectGpu::~ObjectGpu() {
+    if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
+}
+
+std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
+                                             const Buffer& frame_uniforms, const Mesh& mesh,
+                                             const StippleSet& stipples, const glm::mat4& model,
+                                             const ObjectParams& params, bool count_drawn) {
+    validate_params(params);
+    STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
+    if (params.point_size > context.features.max_point_size)
+        fail("--point-size " + std::to_string(params.point_size) + " exceeds this device's maximum of " +
+             std::to_string(context.features.max_point_size));
+
+    auto object = std::make_unique<ObjectGpu>();
+    object->device = context.device;
+    object->params = params;
+    object->model = model;
+    object->bounds = compute_bounding_sphere(mesh);
+    object->index_count = uint32_t(mesh.indices.size());
+    object->triangle_count = uint32_t(mesh.triangle_count());
+    object->stipple_count = uint32_t(stipples.size());
+    object->triangles = triangle_infos(mesh, stipples, params.generation.seed);
+    object->first_stipple.assign(stipples.first.begin(), stipples.first.end() - 1);
+
+    std::vector<gpu::StippleVertex> vertices(stipples.size());
+    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = {stipples.positions[i], stipples.triangle[i]};
+    std::vector<gpu::TriangleDraw> draws(object->triangle_count);
+    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, object->first_stipple[t]};
+
+    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    object->positions = gpu::create_device_buffer(context, std::span(mesh.positions), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    object->normals = gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    object->indices = gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    object->stipples = gpu::create_device_buffer(context, std::span<const gpu::StippleVertex>(vertices),
+                                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    object->triangle_info =
+        gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(object->triangles), storage);
+    object->triangle_draw = gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
+    VkDeviceSize draw_bytes = sizeof(gpu::TriangleDraw) * object->triangle_count;
+    object->draw_staging = Buffer(context, draw_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+    VkDeviceSize command_bytes = sizeof(gpu::DrawCommand) * object->triangle_count;
+    object->gpu_commands = Buffer(context, 16 + command_bytes, storage | indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                  MemoryUse::DeviceLocal);
+    object->cpu_commands = Buffer(context, command_bytes, indirect, MemoryUse::Upload);
+    VkDeviceSize debug_bytes = count_drawn ? 16 + 4 * ((object->stipple_count + 31) / 32) : 16;
+    object->debug = Buffer(context, debug_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+    object->object_uniforms =
+        Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = uint32_t(std::size(sizes));
+    pool_info.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &object->pool));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = object->pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &set_layout;
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &alloc, &object->set));
+    write_descriptors(context.device, object->set, frame_uniforms, *object);
+    return object;
+}
+
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view) {
+    const ObjectParams& p = object.params;
+    gpu::ObjectUniforms u{};
+    u.model = object.model;
+    u.model_view = view.camera.view * object.model;
+    u.normal_view = glm::inverseTranspose(u.model_view);
+    float scale = linear_scale(object.model);
+    float radius_world = std::max(object.bounds.radius * scale, 1e-20f);
+    u.shading = glm::vec4(p.shading_exponent, p.point_size, p.toon_sharpness, 0.0f);
+    // Reference view of generation: the bounding-sphere radius spans kReferenceHeight / 2 pixels.
+    u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_world, scale * scale);
+    glm::vec3 center_view = glm::vec3(u.model_view * glm::vec4(object.bounds.center, 1.0f));
+    u.intrinsic = glm::vec4(p.de, radius_world, -center_view.z, 0.0f);
+    uint32_t flags = gpu::kFlagBackfaceCull;
+    if (p.shading) flags |= gpu::kFlagShading;
+    if (p.extrinsic) flags |= gpu::kFlagExtrinsic;
+    if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
+    if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
+    if (has_toon(p.silhouette)) flags |= gpu::kFlagToonFade;
+    u.flags = glm::uvec4(flags, object.triangle_count, 0u, object.stipple_count);
+    return u;
+}
+
+float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width) {
+    float radius_world = object.bounds.radius * linear_scale(object.model);
+    glm::vec3 center_view = glm::vec3(view.camera.view * object.model * glm::vec4(object.bounds.center, 1.0f));
+    float distance = std::max(-center_view.z, 1e-6f);
+    float projected_radius = radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / distance;
+    float width = formulas::silhouette_line_width(object.params.silhouette_width, projected_radius,
+                                                  object.params.silhouette_thinning);
+    return std::min(width, max_width);
+}
+
+double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
+    std::vector<float> densities(object.triangle_count);
+    compute_densities_cpu(object.triangles, frame, object.uniforms, densities);
+    auto* draws = static_cast<gpu::TriangleDraw*>(object.draw_staging.mapped());
+    double sum = 0.0;
+    for (size_t t = 0; t < densities.size(); ++t) {
+        draws[t] = {densities[t], object.first_stipple[t]};
+        sum += densities[t];
+    }
+    object.draw_staging.flush();
+    auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
+    object.cpu_command_count = build_draw_commands(densities, object.first_stipple, object.triangles,
+                                                   std::span(commands, object.triangle_count));
+    object.cpu_commands.flush();
+    return sum;
+}
+
+}  // namespace stipple

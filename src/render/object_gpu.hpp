@@ -1,0 +1,70 @@
+#pragma once
+// One object's data on the GPU (mesh for the depth pass, candidate stipples, per-polygon constants,
+// per-frame densities and draws) and the CPU copies the CPU density path needs.
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/pipelines.hpp"
+#include "gpu/resources.hpp"
+#include "mesh/mesh.hpp"
+#include "render/object_params.hpp"
+#include "shared_types.h"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+
+struct FrameView;
+
+struct ObjectGpu {
+    ObjectGpu() = default;
+    ~ObjectGpu();
+    ObjectGpu(const ObjectGpu&) = delete;
+    ObjectGpu& operator=(const ObjectGpu&) = delete;
+
+    ObjectParams params;
+    glm::mat4 model{1.0f};
+    Sphere bounds;                 // object space
+    uint32_t index_count = 0;
+    uint32_t triangle_count = 0;
+    uint32_t stipple_count = 0;
+    std::vector<gpu::TriangleInfo> triangles;  // CPU copies for the CPU density path
+    std::vector<uint32_t> first_stipple;
+    gpu::ObjectUniforms uniforms{};            // this frame's
+    uint32_t cpu_command_count = 0;            // CPU path: draws written this frame
+    float line_width = 1.0f;                   // Raskar-Cohen line width this frame (thinned)
+
+    gpu::Buffer positions;        // mesh vertices (depth pass)
+    gpu::Buffer normals;          // mesh vertex normals (toon silhouettes)
+    gpu::Buffer indices;          // mesh triangles (depth pass)
+    gpu::Buffer stipples;         // StippleVertex per candidate
+    gpu::Buffer triangle_info;    // TriangleInfo per polygon
+    gpu::Buffer triangle_draw;    // TriangleDraw per polygon: density per frame, first stipple constant
+    gpu::Buffer draw_staging;     // CPU path: densities on their way to triangle_draw
+    gpu::Buffer gpu_commands;     // indirect path: count (16 bytes) + DrawCommand per polygon
+    gpu::Buffer cpu_commands;     // CPU path: DrawCommand per surviving range
+    gpu::Buffer debug;            // drawn count (16 bytes) + drawn bit mask, when counting
+    gpu::Buffer object_uniforms;  // ObjectUniforms
+
+    VkDevice device = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
+std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
+                                             const gpu::Buffer& frame_uniforms, const Mesh& mesh,
+                                             const StippleSet& stipples, const glm::mat4& model,
+                                             const ObjectParams& params, bool count_drawn);
+
+// The object's uniforms for this frame (view-dependent terms included).
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view);
+
+// The silhouette line width this frame (§3.1 thinning), at most `max_width` (the device's limit).
+float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width);
+
+// The CPU density path for one object: densities into draw_staging and the surviving ranges, with
+// runs of fully drawn polygons merged, into cpu_commands. Returns the sum of the densities.
+double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame);
+
+}  // namespace stipple

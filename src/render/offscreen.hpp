@@ -1,0 +1,43 @@
+#pragma once
+// Offscreen rendering: a colour and a depth image of a fixed size, and their read-back.
+#include <vector>
+
+#include "gpu/resources.hpp"
+#include "io/png_io.hpp"
+#include "render/stipple_renderer.hpp"
+
+namespace stipple {
+
+inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// Depth with a stencil: the stencil marks covered pixels (see gpu::CoverageStencil). Create depth
+// images with kDepthAspect; read back only the depth aspect.
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+inline constexpr VkImageAspectFlags kDepthAspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+
+struct RenderedFrame {
+    Image color;               // RGBA8, top row first
+    std::vector<float> depth;  // window depth per pixel, top row first; 1 where no surface
+    // White where a surface covers the pixel, black elsewhere (for compositing and tests).
+    Image coverage_mask() const;
+};
+
+class OffscreenTarget {
+public:
+    OffscreenTarget(const gpu::Context& context, VkExtent2D extent);
+    VkExtent2D extent() const { return extent_; }
+    RenderTargets targets() const;
+    // Prepares, records, submits and waits; reads back colour and depth.
+    RenderedFrame render(StippleRenderer& renderer, const FrameView& view);
+    // The same frame without the read-back (what an interactive frame costs); returns wall milliseconds.
+    double draw(StippleRenderer& renderer, const FrameView& view);
+
+private:
+    const gpu::Context& context_;
+    VkExtent2D extent_;
+    gpu::Image color_;
+    gpu::Image depth_;
+    gpu::Buffer color_readback_;
+    gpu::Buffer depth_readback_;
+};
+
+}  // namespace stipple

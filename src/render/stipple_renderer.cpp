@@ -1,0 +1,357 @@
+#include "render/stipple_renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "gpu/shared_types.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace stipple {
+
+using gpu::Buffer;
+using gpu::MemoryUse;
+
+StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_format, VkFormat depth_format,
+                                 RendererOptions options)
+    : context_(context), options_(options), depth_format_(depth_format), timer_(context) {
+    layout_ = gpu::create_stipple_layout(context);
+    create_pipelines(color_format, depth_format);
+    frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+}
+
+StippleRenderer::~StippleRenderer() {
+    vkDeviceWaitIdle(context_.device);
+    objects_.clear();
+    for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, draw_commands_pipeline_,
+                         toon_pipeline_, silhouette_pipeline_})
+        if (p) vkDestroyPipeline(context_.device, p, nullptr);
+    gpu::destroy_stipple_layout(context_, layout_);
+}
+
+void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_format) {
+    gpu::GraphicsPipelineDesc depth;
+    depth.vertex_shader = "depth.vert";
+    depth.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
+    depth.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
+    depth.depth_bias = true;
+    depth.stencil = gpu::CoverageStencil::Write;
+    depth.color_write = false;  // depth only; the colour attachment stays bound for the one rendering scope
+    depth.color_format = color_format;
+    depth.depth_format = depth_format;
+    depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layout_.pipeline_layout);
+
+    gpu::GraphicsPipelineDesc stipple;
+    stipple.vertex_shader = "stipple.vert";
+    stipple.fragment_shader = "stipple.frag";
+    stipple.specialization.constants = {{gpu::kSpecCountDrawn, options_.count_drawn ? 1u : 0u}};
+    stipple.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    stipple.vertex_bindings = {{0, sizeof(gpu::StippleVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    stipple.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(gpu::StippleVertex, position)},
+                                 {1, 0, VK_FORMAT_R32_UINT, offsetof(gpu::StippleVertex, triangle)}};
+    stipple.depth_write = false;  // stipples never occlude each other
+    stipple.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    stipple.stencil = gpu::CoverageStencil::Test;  // never ink beside the object
+    stipple.blend = true;
+    stipple.color_format = color_format;
+    stipple.depth_format = depth_format;
+    stipple_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layout_.pipeline_layout);
+
+    gpu::GraphicsPipelineDesc toon = depth;
+    toon.vertex_shader = "toon.vert";
+    toon.fragment_shader = "toon.frag";
+    toon.vertex_bindings.push_back({1, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX});
+    toon.vertex_attributes.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
+    toon.color_write = true;  // opaque: the nearest surface's toon ink wins with the depth test
+    toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layout_.pipeline_layout);
+
+    // Raskar-Cohen: back faces as wide lines; the front faces' depth lets only the silhouette through.
+    gpu::GraphicsPipelineDesc lines;
+    lines.vertex_shader = "depth.vert";
+    lines.fragment_shader = "silhouette.frag";
+    lines.vertex_bindings = depth.vertex_bindings;
+    lines.vertex_attributes = depth.vertex_attributes;
+    lines.polygon_mode = context_.features.fill_mode_non_solid ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
+    lines.cull_mode = VK_CULL_MODE_FRONT_BIT;
+    lines.depth_write = false;
+    lines.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    lines.dynamic_line_width = true;
+    lines.stencil = gpu::CoverageStencil::None;  // outlines lie half outside the surface
+    lines.color_format = color_format;
+    lines.depth_format = depth_format;
+    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layout_.pipeline_layout);
+
+    density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout);
+    draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layout_.pipeline_layout);
+}
+
+size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
+                                   const ObjectParams& params) {
+    objects_.push_back(create_object_gpu(context_, layout_.set_layout, frame_uniforms_, mesh, stipples, model, params,
+                                         options_.count_drawn));
+    return objects_.size() - 1;
+}
+
+void StippleRenderer::remove_object(size_t object) {
+    STIPPLE_CHECK(object < objects_.size(), "remove_object: no such object");
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    objects_.erase(objects_.begin() + std::ptrdiff_t(object));
+}
+
+ObjectParams& StippleRenderer::params(size_t object) { return objects_.at(object)->params; }
+glm::mat4& StippleRenderer::model(size_t object) { return objects_.at(object)->model; }
+
+void StippleRenderer::prepare(const FrameView& view) {
+    view_ = view;
+    frame_ = {};
+    frame_.view_proj = view.camera.proj * view.camera.view;
+    frame_.view = view.camera.view;
+    frame_.light_view = glm::vec4(glm::normalize(view.light_view), 0.0f);
+    frame_.ink_color = glm::vec4(view.ink_color, 1.0f);
+    frame_.paper_color = glm::vec4(view.paper_color, 1.0f);
+    frame_.viewport = glm::vec4(view.extent.width, view.extent.height, 1.0f / view.extent.width,
+                                1.0f / view.extent.height);
+    frame_.projection = glm::vec4(view.camera.proj[1][1] * 0.5f * float(view.extent.height), view.camera.near_plane,
+                                  view.camera.far_plane, 0.0f);
+    std::memcpy(frame_uniforms_.mapped(), &frame_, sizeof(frame_));
+    frame_uniforms_.flush();
+
+    stats_ = {};
+    auto cpu_start = std::chrono::steady_clock::now();
+    for (auto& object : objects_) {
+        validate_params(object->params);
+        object->uniforms = make_object_uniforms(*object, view);
+        object->line_width = object_line_width(*object, view, context_.features.max_line_width);
+        std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
+        object->object_uniforms.flush();
+        if (object->params.density_path == DensityPath::Cpu) {
+            run_cpu_density(*object, frame_);
+            stats_.cpu_draw_commands += object->cpu_command_count;
+        }
+        stats_.triangles += object->triangle_count;
+        stats_.candidate_stipples += object->stipple_count;
+    }
+    stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+}
+
+void StippleRenderer::record_density(VkCommandBuffer cb) {
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &object.set, 0,
+                                nullptr);
+        vkCmdDispatch(cb, (object.triangle_count + group - 1) / group, 1, 1);
+    };
+    // Densities: the compute pass (vertex and indirect paths) or the CPU's upload; clears.
+    bool any_indirect = false;
+    for (auto& object : objects_) {
+        if (object->triangle_count == 0) continue;
+        if (options_.count_drawn) vkCmdFillBuffer(cb, object->debug.handle(), 0, VK_WHOLE_SIZE, 0);
+        if (object->params.density_path == DensityPath::Cpu) {
+            VkBufferCopy region{0, 0, object->draw_staging.size()};
+            vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &region);
+            continue;
+        }
+        if (object->params.density_path == DensityPath::Indirect) {
+            vkCmdFillBuffer(cb, object->gpu_commands.handle(), 0, 16, 0);
+            any_indirect = true;
+        }
+        dispatch(*object, density_pipeline_);
+    }
+    // Indirect path: merged draws of the surviving ranges, from the densities just written.
+    if (any_indirect) {
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        for (auto& object : objects_)
+            if (object->triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
+                dispatch(*object, draw_commands_pipeline_);
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+}
+
+void StippleRenderer::record_depth(VkCommandBuffer cb) {
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& object : objects_) {
+        if (object->index_count == 0) continue;
+        // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
+        bool toon = has_toon(object->params.silhouette);
+        VkPipeline pipeline = toon ? toon_pipeline_ : depth_pipeline_;
+        if (pipeline != bound) {
+            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            vkCmdSetDepthBias(cb, kDepthBiasConstant, 0.0f, kDepthBiasSlope);
+            bound = pipeline;
+        }
+        VkBuffer buffers[] = {object->positions.handle(), object->normals.handle()};
+        VkDeviceSize offsets[] = {0, 0};
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+                                nullptr);
+        vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
+        vkCmdBindIndexBuffer(cb, object->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cb, object->index_count, 1, 0, 0, 0);
+    }
+}
+
+void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
+    bool any = false;
+    for (const auto& object : objects_) {
+        if (object->index_count == 0 || !has_lines(object->params.silhouette)) continue;
+        if (!any) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
+        any = true;
+        VkDeviceSize offset = 0;
+        VkBuffer vb = object->positions.handle();
+        vkCmdSetLineWidth(cb, object->line_width);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+                                nullptr);
+        vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
+        vkCmdBindIndexBuffer(cb, object->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cb, object->index_count, 1, 0, 0, 0);
+    }
+}
+
+void StippleRenderer::record_stipples(VkCommandBuffer cb) {
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, stipple_pipeline_);
+    for (const auto& object : objects_) {
+        if (object->stipple_count == 0) continue;
+        VkDeviceSize offset = 0;
+        VkBuffer vb = object->stipples.handle();
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+                                nullptr);
+        vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
+        switch (object->params.density_path) {
+            case DensityPath::Vertex:  // every candidate; the vertex shader culls (§3.2)
+                vkCmdDraw(cb, object->stipple_count, 1, 0, 0);
+                break;
+            case DensityPath::Cpu:
+                if (object->cpu_command_count > 0)
+                    vkCmdDrawIndirect(cb, object->cpu_commands.handle(), 0, object->cpu_command_count,
+                                      sizeof(gpu::DrawCommand));
+                break;
+            case DensityPath::Indirect:
+                vkCmdDrawIndirectCount(cb, object->gpu_commands.handle(), 16, object->gpu_commands.handle(), 0,
+                                       object->triangle_count, sizeof(gpu::DrawCommand));
+                break;
+        }
+    }
+}
+
+void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
+    timer_.begin_frame(cb);
+    record_density(cb);
+    timer_.mark(cb, "density");
+
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
+    const bool stencil = gpu::format_has_stencil(depth_format_);
+    const VkImageLayout depth_layout =
+        stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    gpu::image_barrier(cb, targets.depth,
+                       stencil ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT,
+                       VK_IMAGE_LAYOUT_UNDEFINED, depth_layout,
+                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+
+    // One rendering scope per pass: a software rasteriser bins a whole scope and rasterises it at its
+    // end, so timestamps between passes inside one scope would not measure the passes.
+    const bool any_lines = std::any_of(objects_.begin(), objects_.end(),
+                                       [](const auto& o) { return has_lines(o->params.silhouette); });
+    begin_rendering(cb, targets, true);
+    record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
+    vkCmdEndRendering(cb);
+    timer_.mark(cb, "depth");
+    begin_rendering(cb, targets, false);
+    record_stipples(cb);
+    vkCmdEndRendering(cb);
+    timer_.mark(cb, "stipples");
+    if (any_lines) {  // extra pipelines cost nothing when off: not even a pass is recorded
+        begin_rendering(cb, targets, false);
+        record_silhouette_lines(cb);
+        vkCmdEndRendering(cb);
+        timer_.mark(cb, "silhouettes");
+    }
+}
+
+void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const {
+    if (!clear) {  // the previous pass's writes before this one's reads and writes
+        gpu::memory_barrier(cb,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    }
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = targets.color_view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue.color = {{view_.paper_color.r, view_.paper_color.g, view_.paper_color.b, 1.0f}};
+    const bool stencil = gpu::format_has_stencil(depth_format_);
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = targets.depth_view;
+    depth.imageLayout =
+        stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, targets.extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depth;
+    rendering.pStencilAttachment = stencil ? &depth : nullptr;  // one image: the same attachment info
+    vkCmdBeginRendering(cb, &rendering);
+
+    // Negative height: y up in NDC as in OpenGL, so counter-clockwise stays front-facing.
+    VkViewport viewport{0.0f, float(targets.extent.height), float(targets.extent.width),
+                        -float(targets.extent.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, targets.extent};
+    vkCmdSetViewport(cb, 0, 1, &viewport);
+    vkCmdSetScissor(cb, 0, 1, &scissor);
+}
+
+void StippleRenderer::collect() {
+    stats_.gpu_ms = timer_.read();
+    if (!options_.count_drawn) return;
+    stats_.drawn_stipples = 0;
+    for (const auto& object : objects_) {
+        object->debug.invalidate();
+        stats_.drawn_stipples += *static_cast<const uint32_t*>(object->debug.mapped());
+    }
+}
+
+std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
+    STIPPLE_CHECK(options_.count_drawn, "drawn_mask needs RendererOptions::count_drawn");
+    const ObjectGpu& o = *objects_.at(object);
+    o.debug.invalidate();
+    const auto* words = static_cast<const uint32_t*>(o.debug.mapped()) + 4;
+    return std::vector<uint32_t>(words, words + (o.stipple_count + 31) / 32);
+}
+
+}  // namespace stipple
+
+namespace stipple {
+
+std::vector<float> StippleRenderer::read_densities(size_t object) const {
+    std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->triangle_draw);
+    std::vector<float> densities(bytes.size() / sizeof(gpu::TriangleDraw));
+    for (size_t t = 0; t < densities.size(); ++t)
+        std::memcpy(&densities[t], bytes.data() + t * sizeof(gpu::TriangleDraw), sizeof(float));
+    return densities;
+}
+
+}  // namespace stipple

@@ -1,0 +1,119 @@
+#pragma once
+// Owns every object's GPU data and the stipple pipelines, and records a frame:
+//   density (compute pass, or CPU upload) -> depth pass (polygon offset) -> stipple pass (points).
+// The same recording serves offscreen renders and the window's swapchain images.
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/gpu_timer.hpp"
+#include "gpu/pipelines.hpp"
+#include "gpu/resources.hpp"
+#include "mesh/mesh.hpp"
+#include "render/camera.hpp"
+#include "render/object_gpu.hpp"
+#include "render/object_params.hpp"
+#include "shared_types.h"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+
+namespace gpu {
+class Context;
+}
+
+struct FrameView {
+    CameraMatrices camera;
+    VkExtent2D extent{1280, 1024};
+    glm::vec3 light_view{-0.45f, 0.55f, 0.70f};  // toward the light, view space (x right, y up, z to viewer)
+    glm::vec3 ink_color{0.0f};
+    glm::vec3 paper_color{1.0f};
+};
+
+// Images the frame is drawn into. Layouts on entry are ignored (contents are cleared); on exit the
+// colour image is in COLOR_ATTACHMENT_OPTIMAL and the depth image in DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+// (or DEPTH_ATTACHMENT_OPTIMAL for a depth format without stencil).
+struct RenderTargets {
+    VkImage color = VK_NULL_HANDLE;
+    VkImageView color_view = VK_NULL_HANDLE;
+    VkImage depth = VK_NULL_HANDLE;
+    VkImageView depth_view = VK_NULL_HANDLE;
+    VkExtent2D extent{};
+};
+
+struct RendererOptions {
+    bool count_drawn = false;  // record every drawn stipple (drawn_count, drawn_mask): tests, --stats
+};
+
+struct FrameStats {
+    uint64_t triangles = 0;
+    uint64_t candidate_stipples = 0;
+    int64_t drawn_stipples = -1;  // counted on the GPU; -1 unless RendererOptions::count_drawn
+    double cpu_density_ms = 0.0;  // CPU time of the CPU density path this frame
+    uint64_t cpu_draw_commands = 0;  // indirect draws the CPU path submitted (merged ranges)
+    std::vector<std::pair<std::string, double>> gpu_ms;  // per pass, after collect()
+};
+
+class StippleRenderer {
+public:
+    StippleRenderer(const gpu::Context& context, VkFormat color_format, VkFormat depth_format,
+                    RendererOptions options = {});
+    ~StippleRenderer();
+    StippleRenderer(const StippleRenderer&) = delete;
+    StippleRenderer& operator=(const StippleRenderer&) = delete;
+
+    size_t add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
+                      const ObjectParams& params);
+    size_t object_count() const { return objects_.size(); }
+    void remove_object(size_t object);  // waits for the GPU; later objects move down by one
+    ObjectParams& params(size_t object);  // validated again at the next prepare()
+    glm::mat4& model(size_t object);
+
+    // CPU part of a frame (uniforms, CPU-path densities). The GPU must have finished the previous frame.
+    void prepare(const FrameView& view);
+    void record(VkCommandBuffer cb, const RenderTargets& targets);
+    // After the frame's submission has completed: GPU pass times and drawn counts into stats().
+    void collect();
+    const FrameStats& stats() const { return stats_; }
+    // Which candidates were drawn in the last frame, one bit per stipple (count_drawn only).
+    std::vector<uint32_t> drawn_mask(size_t object) const;
+    // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).
+    std::vector<float> read_densities(size_t object) const;
+    const gpu::FrameUniforms& frame_uniforms() const { return frame_; }
+    const ObjectGpu& object(size_t index) const { return *objects_.at(index); }
+
+private:
+    void create_pipelines(VkFormat color_format, VkFormat depth_format);
+    void record_density(VkCommandBuffer cb);
+    void record_depth(VkCommandBuffer cb);
+    void record_stipples(VkCommandBuffer cb);
+    void record_silhouette_lines(VkCommandBuffer cb);
+    void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
+
+    const gpu::Context& context_;
+    RendererOptions options_;
+    VkFormat depth_format_;
+    gpu::StippleLayout layout_;
+    VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline density_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
+    VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
+    gpu::Buffer frame_uniforms_;
+    gpu::FrameUniforms frame_{};
+    gpu::GpuTimer timer_;
+    std::vector<std::unique_ptr<ObjectGpu>> objects_;
+    FrameView view_;
+    FrameStats stats_;
+};
+
+// Polygon offset of the depth pass, in the units of vkCmdSetDepthBias.
+inline constexpr float kDepthBiasConstant = 2.0f;
+inline constexpr float kDepthBiasSlope = 1.5f;
+
+}  // namespace stipple

@@ -1,0 +1,50 @@
+#include "support/run_command.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "support/test_paths.hpp"
+
+namespace stipple::test {
+
+namespace {
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+CommandResult run_stipple(const std::vector<std::string>& args) {
+    static int counter = 0;
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / "stipple-cli-capture";
+    std::filesystem::create_directories(dir);
+    std::string stem = std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    std::filesystem::path out = dir / (stem + ".out"), err = dir / (stem + ".err");
+    std::string cmd = quote(STIPPLE_EXECUTABLE);
+    for (const std::string& a : args) cmd += " " + quote(a);
+    cmd += " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    int status = std::system(cmd.c_str());
+    CommandResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    result.out = slurp(out);
+    result.err = slurp(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return result;
+}
+
+}  // namespace stipple::test

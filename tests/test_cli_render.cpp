@@ -1,0 +1,130 @@
+// The stipple command as a user runs it: the default scene, figures from info, and one clear line
+// with a non-zero exit for every kind of bad input (never a crash, a hang or a validation message).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+
+#include "io/png_io.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::run_stipple;
+
+size_t count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
+
+void write_file(const std::filesystem::path& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+}
+
+TEST(CliRender, NoArgumentsRendersTheDefaultScene) {
+    auto dir = test::temp_dir("cli-default");
+    // The README's command is `stipple render` with no MODEL; -o only keeps the test's file apart.
+    auto result = run_stipple({"render", "-o", (dir / "default.png").string(), "--mask", (dir / "mask.png").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(result.err.find("validation"), std::string::npos) << result.err;
+    Image image = read_png((dir / "default.png").string());
+    EXPECT_EQ(image.width, 1280);
+    EXPECT_EQ(image.height, 1024);
+    Image mask = read_png((dir / "mask.png").string());
+    size_t covered = 0, inked = 0;
+    for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+        bool inside = mask.pixels[i * mask.channels] > 127;
+        covered += inside;
+        inked += inside && image.pixels[i * image.channels] < 128;
+    }
+    EXPECT_GT(covered, 100000u) << "the default scene should fill a good part of the frame";
+    EXPECT_GT(double(inked) / double(covered), 0.03);
+}
+
+TEST(CliRender, InfoPrintsFiguresAsJson) {
+    auto dir = test::temp_dir("cli-info");
+    write_file(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    auto result = run_stipple({"info", (dir / "quad.obj").string(), "--json"});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("\"triangles\": 2"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("\"stipple_candidates\""), std::string::npos);
+    EXPECT_EQ(count_lines(result.out), 1u);
+}
+
+struct BadInput {
+    const char* name;
+    const char* file;      // written into a temp dir ("" = not written)
+    const char* contents;  // nullptr: create a directory instead
+    const char* expect;    // phrase expected in the message
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneLineNamingTheFileAndNonZeroExit) {
+    const BadInput& bad = GetParam();
+    auto dir = test::temp_dir(std::string("cli-bad-") + bad.name);
+    auto path = dir / bad.file;
+    if (!bad.contents)
+        std::filesystem::create_directories(path);
+    else if (std::string(bad.name) != "missing")
+        write_file(path, std::string(bad.contents, std::strlen(bad.contents)));
+    for (const char* command : {"render", "info"}) {
+        std::vector<std::string> args{command, path.string()};
+        if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
+        auto result = run_stipple(args);
+        EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
+        EXPECT_EQ(count_lines(result.err), 1u) << result.err;
+        EXPECT_NE(result.err.find(path.string()), std::string::npos) << result.err;
+        EXPECT_NE(result.err.find(bad.expect), std::string::npos) << result.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, CliBadInput,
+    ::testing::Values(BadInput{"missing", "nothing.obj", "", "no such file"},
+                      BadInput{"empty", "empty.ply", "", "empty"},
+                      BadInput{"directory", "folder.obj", nullptr, "directory"},
+                      BadInput{"garbage_ply", "garbage.ply", "\x13\x37\xff\x00garbage", "ply"},
+                      BadInput{"truncated_ply", "short.ply",
+                               "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                               "property float y\nproperty float z\nelement face 1\n"
+                               "property list uchar int vertex_indices\nend_header\n\x01\x02",
+                               "truncated"},
+                      BadInput{"nan_obj", "nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "NaN"},
+                      BadInput{"index_out_of_range", "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "vertex"},
+                      BadInput{"huge_count", "huge.ply",
+                               "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
+                               "property float x\nproperty float y\nproperty float z\nend_header\n",
+                               "1000000000000"},
+                      BadInput{"unknown_extension", "model.xyz", "hello", "extension"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CliRender, BadParametersAreRejectedClearly) {
+    struct Case {
+        std::vector<std::string> args;
+        const char* expect;
+    };
+    const Case cases[] = {
+        {{"render", "--dmax", "-1"}, "--dmax"},
+        {{"render", "--dmax", "abc"}, "--dmax"},
+        {{"render", "--point-size", "1000"}, "--point-size"},
+        {{"render", "--width", "0"}, "--width"},
+        {{"render", "--light", "0,0,0"}, "--light"},
+        {{"render", "--light", "1,2"}, "--light"},
+        {{"render", "--shading-exponent", "0"}, "--shading-exponent"},
+        {{"render", "--frobnicate"}, "--frobnicate"},
+        {{"render", "--device", "99"}, "--device"},
+        {{"info"}, "MODEL"},
+    };
+    for (const Case& c : cases) {
+        auto result = run_stipple(c.args);
+        EXPECT_NE(result.exit_code, 0) << c.args.back();
+        EXPECT_EQ(count_lines(result.err), 1u) << result.err;
+        EXPECT_NE(result.err.find(c.expect), std::string::npos) << result.err;
+    }
+}
+
+}  // namespace
+}  // namespace stipple

@@ -1,0 +1,224 @@
+// The per-frame density (paper §2.1-2.3, §3.2) on the GPU: the compute pass against the CPU
+// definition, the three density paths against each other, and the paper's claims as figures.
+#include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <random>
+
+#include "mesh/load_mesh.hpp"
+#include "mesh/primitives.hpp"
+#include "render/density_cpu.hpp"
+#include "render/density_formulas.hpp"
+#include "support/gpu_test.hpp"
+#include "support/render_helpers.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::GpuTest;
+using test::Prepared;
+
+std::string blobby_path() { return std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb"; }
+
+// Disjoint random triangles with random stipple counts: a stress set for the formulas.
+Prepared random_polygons(size_t count, std::mt19937& rng) {
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::uniform_real_distribution<float> log_size(std::log(1e-3f), std::log(0.3f));
+    std::uniform_int_distribution<uint32_t> stipples(0, 12);
+    Prepared p;
+    p.stipples.first.push_back(0);
+    for (size_t t = 0; t < count; ++t) {
+        glm::vec3 center(unit(rng), unit(rng), unit(rng));
+        float size = std::exp(log_size(rng));
+        for (int k = 0; k < 3; ++k) {
+            p.mesh.positions.push_back(center + size * glm::vec3(unit(rng), unit(rng), unit(rng)));
+            p.mesh.indices.push_back(uint32_t(p.mesh.positions.size() - 1));
+        }
+        uint32_t n = stipples(rng);
+        for (uint32_t i = 0; i < n; ++i) {
+            p.stipples.positions.push_back(center);
+            p.stipples.triangle.push_back(uint32_t(t));
+        }
+        p.stipples.first.push_back(uint32_t(p.stipples.positions.size()));
+    }
+    compute_vertex_normals(p.mesh);
+    return p;
+}
+
+TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
+    std::mt19937 rng(7);
+    Prepared polygons = random_polygons(10000, rng);
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    renderer.add_object(polygons.mesh, polygons.stipples, glm::mat4(1.0f), ObjectParams{});
+    OffscreenTarget target(*context, {320, 256});
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+
+    size_t compared = 0, selection_regime = 0, drawn = 0, near_ties = 0, mismatched = 0;
+    double max_relative = 0.0, max_absolute = 0.0;
+    for (int camera = 0; camera < 8; ++camera) {
+        ObjectParams& params = renderer.params(0);
+        params.shading_exponent = 0.5f + 3.5f * uniform(rng);
+        params.pr = 4.0f * uniform(rng);
+        params.de = 0.5f + 3.5f * uniform(rng);
+        params.min_area = 2.0f + 7.0f * uniform(rng);
+        params.shading = camera % 4 != 1;
+        params.intrinsic = camera % 4 != 2;
+        params.extrinsic = camera % 4 != 3;
+        float distance = std::exp(std::log(0.6f) + uniform(rng) * std::log(60.0f / 0.6f));
+        FrameView view = test::framed_view({glm::vec3(0.0f), 1.8f}, target.extent(), distance, 360.0f * uniform(rng),
+                                           170.0f * uniform(rng) - 85.0f);
+        view.light_view = glm::normalize(glm::vec3(uniform(rng), uniform(rng), uniform(rng)) - 0.5f);
+        target.draw(renderer, view);
+
+        std::vector<float> gpu = renderer.read_densities(0);
+        const ObjectGpu& object = renderer.object(0);
+        std::vector<float> cpu(gpu.size());
+        compute_densities_cpu(object.triangles, renderer.frame_uniforms(), object.uniforms, cpu);
+        auto q = formulas::density_params(renderer.frame_uniforms(), object.uniforms);
+        for (size_t t = 0; t < gpu.size(); ++t) {
+            auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.uniforms), q);
+            if (terms.probability < 1.0f) ++selection_regime;
+            ++compared;
+            if ((gpu[t] > 0.0f) != (cpu[t] > 0.0f)) {
+                float u = object.triangles[t].selection.x;
+                if (std::abs(u - terms.probability) < 1e-5f) ++near_ties;
+                else ++mismatched;
+                continue;
+            }
+            if (cpu[t] > 0.0f) ++drawn;
+            // Relative to the density, floored at a twentieth of a stipple (a 5% grey dot): the GPU's
+            // transcendental functions differ from the C library's in the last bits.
+            double absolute = std::abs(double(gpu[t]) - cpu[t]);
+            max_absolute = std::max(max_absolute, absolute);
+            max_relative = std::max(max_relative, absolute / std::max(double(std::abs(cpu[t])), 0.05));
+        }
+    }
+    std::printf("compared %zu densities: %zu drawn, %zu in the selection regime, max relative error %.3g, "
+                "max absolute error %.3g stipples, %zu near-tie selections, %zu mismatched selections\n",
+                compared, drawn, selection_regime, max_relative, max_absolute, near_ties, mismatched);
+    EXPECT_LE(max_relative, 1e-4);
+    EXPECT_EQ(mismatched, 0u);
+    EXPECT_GT(selection_regime, 1000u) << "the cameras should exercise probabilistic selection";
+    EXPECT_GT(drawn, 5000u);
+}
+
+TEST_F(GpuTest, ThreePathsDrawExactlyTheSameStipples) {
+    ObjectParams params;
+    Prepared blob = test::prepare(load_mesh(blobby_path()), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {1280, 1024});
+    FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), 1.5f);
+
+    std::vector<RenderedFrame> frames;
+    std::vector<std::vector<uint32_t>> masks;
+    uint32_t cpu_draws = 0, gpu_draws = 0;
+    for (DensityPath path : {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect}) {
+        renderer.params(0).density_path = path;
+        frames.push_back(target.render(renderer, view));
+        masks.push_back(renderer.drawn_mask(0));
+        if (path == DensityPath::Cpu) cpu_draws = renderer.object(0).cpu_command_count;
+        if (path == DensityPath::Indirect)
+            std::memcpy(&gpu_draws, gpu::read_buffer(*context, renderer.object(0).gpu_commands).data(), 4);
+        std::printf("%-8s path: %lld stipples drawn\n", density_path_name(path),
+                    (long long)renderer.stats().drawn_stipples);
+        EXPECT_EQ(size_t(renderer.stats().drawn_stipples), test::popcount(masks.back()));
+    }
+    std::printf("merged draws: %u on the CPU path, %u on the indirect path\n", cpu_draws, gpu_draws);
+    EXPECT_EQ(cpu_draws, gpu_draws) << "both paths merge ranges by the same rule";
+    EXPECT_LT(cpu_draws, test::popcount(masks[0]) * 3 / 4) << "merging should leave clearly fewer draws than stipples";
+    EXPECT_GT(test::popcount(masks[0]), 10000u);
+    EXPECT_LT(test::popcount(masks[0]), blob.stipples.size());
+    for (size_t i = 1; i < masks.size(); ++i) {
+        EXPECT_EQ(masks[i], masks[0]) << "path " << i << " drew a different set of stipples";
+        double differing = fraction_differing(frames[0].color, frames[i].color, 0);
+        std::printf("path %zu: %.4f%% of pixels differ from the vertex path\n", i, 100.0 * differing);
+        EXPECT_LE(differing, 0.001);
+    }
+}
+
+TEST_F(GpuTest, LastStippleCarriesTheFractionalDensity) {
+    // One triangle facing the camera, five stipples far apart, lit at 60 degrees: with shading only,
+    // the density is 5 * (1 - cos 60) = 2.5, so two stipples are full, one is half and two are culled.
+    Mesh mesh;
+    mesh.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    mesh.indices = {0, 1, 2};
+    compute_vertex_normals(mesh);
+    StippleSet stipples;
+    stipples.positions = {{-0.5f, -0.6f, 0.0f}, {0.5f, -0.6f, 0.0f}, {0.0f, 0.4f, 0.0f}, {0.0f, -0.6f, 0.0f},
+                          {0.0f, -0.1f, 0.0f}};
+    stipples.triangle.assign(5, 0u);
+    stipples.first = {0, 5};
+    ObjectParams params;
+    params.extrinsic = false;
+    params.intrinsic = false;
+    params.point_size = 5.0f;
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {256, 256});
+    FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
+    view.light_view = glm::vec3(std::sin(glm::radians(60.0f)), 0.0f, std::cos(glm::radians(60.0f)));
+    RenderedFrame frame = target.render(renderer, view);
+    EXPECT_NEAR(renderer.read_densities(0)[0], 2.5f, 1e-5f);
+
+    glm::mat4 view_proj = view.camera.proj * view.camera.view;
+    std::vector<int> values;
+    for (const glm::vec3& p : stipples.positions) {
+        glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+        int x = int((clip.x / clip.w * 0.5f + 0.5f) * 256.0f);
+        int y = int((0.5f - clip.y / clip.w * 0.5f) * 256.0f);  // top row first
+        values.push_back(luminance(frame.color, x, y));
+    }
+    std::printf("stipple luminances: %d %d %d %d %d\n", values[0], values[1], values[2], values[3], values[4]);
+    EXPECT_EQ(values[0], 0);
+    EXPECT_EQ(values[1], 0);
+    EXPECT_NEAR(values[2], 128, 2);  // half the ink over white paper
+    EXPECT_EQ(values[3], 255);
+    EXPECT_EQ(values[4], 255);
+}
+
+TEST_F(GpuTest, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
+    ObjectParams params;
+    params.intrinsic = false;
+    Prepared grid = test::prepare(make_grid(200), params);  // 80,000 small triangles
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    renderer.add_object(grid.mesh, grid.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {1280, 1024});
+    FrameView view = test::framed_view(compute_bounding_sphere(grid.mesh), target.extent(), 10.0f, 15.0f, 20.0f);
+    target.draw(renderer, view);
+    std::vector<float> densities = renderer.read_densities(0);
+    std::vector<uint32_t> first_mask = renderer.drawn_mask(0);
+
+    const ObjectGpu& object = renderer.object(0);
+    auto q = formulas::density_params(renderer.frame_uniforms(), object.uniforms);
+    double expected = 0.0, variance = 0.0;
+    size_t in_regime = 0, drawn = 0;
+    for (size_t t = 0; t < densities.size(); ++t) {
+        auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.uniforms), q);
+        if (terms.density <= 0.0f) continue;
+        expected += terms.probability;
+        variance += terms.probability * (1.0 - terms.probability);
+        in_regime += terms.probability < 1.0f;
+        drawn += densities[t] > 0.0f;
+    }
+    double n = double(densities.size());
+    double share = drawn / n, expected_share = expected / n, sigma = std::sqrt(variance) / n;
+    std::printf("selection: %zu of %zu polygons in the regime; drawn share %.5f, expected %.5f +- %.5f (1 sd)\n",
+                in_regime, densities.size(), share, expected_share, sigma);
+    EXPECT_GT(in_regime, densities.size() / 2);
+    EXPECT_LT(expected_share, 0.5) << "most tiny polygons should be skipped";
+    EXPECT_LE(std::abs(share - expected_share), 3.0 * sigma);
+
+    for (int frame = 0; frame < 3; ++frame) {
+        target.draw(renderer, view);
+        EXPECT_EQ(renderer.drawn_mask(0), first_mask) << "a still camera must draw the same polygons every frame";
+    }
+}
+
+}  // namespace
+}  // namespace stipple

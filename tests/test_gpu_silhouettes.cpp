@@ -1,0 +1,251 @@
+// Silhouettes (paper §3.1, Figures 8-9): Raskar-Cohen back-face lines with distance thinning, and
+// the toon N.E ramp with stipples fading near the outline.
+#include <cmath>
+#include <cstdio>
+#include <deque>
+
+#include "mesh/load_mesh.hpp"
+#include "mesh/primitives.hpp"
+#include "render/density_formulas.hpp"
+#include "support/gpu_test.hpp"
+#include "support/render_helpers.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::GpuTest;
+using test::Prepared;
+
+struct Frame {
+    RenderedFrame frame;
+    int width = 0, height = 0;
+    bool covered(int x, int y) const {
+        return x >= 0 && y >= 0 && x < width && y < height && frame.depth[size_t(y) * width + x] < 1.0f;
+    }
+    uint8_t red(int x, int y) const { return frame.color.pixels[4 * (size_t(y) * width + x)]; }
+    bool inked(int x, int y) const { return red(x, y) < 128; }
+    // Covered pixels with an uncovered 4-neighbour.
+    bool outline(int x, int y) const {
+        return covered(x, y) &&
+               (!covered(x - 1, y) || !covered(x + 1, y) || !covered(x, y - 1) || !covered(x, y + 1));
+    }
+};
+
+Frame render(gpu::Context& context, const Prepared& object, ObjectParams params, float distance,
+             std::vector<std::pair<std::string, double>>* passes = nullptr,
+             glm::vec3 light = FrameView{}.light_view) {
+    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    renderer.add_object(object.mesh, object.stipples, object.model, params);
+    OffscreenTarget target(context, {1280, 1024});
+    Frame f;
+    FrameView view = test::framed_view(compute_bounding_sphere(object.mesh), target.extent(), distance);
+    view.light_view = light;
+    f.frame = target.render(renderer, view);
+    f.width = 1280;
+    f.height = 1024;
+    if (passes) *passes = renderer.stats().gpu_ms;
+    return f;
+}
+
+// Share of outline pixels with ink within one pixel.
+double outline_inked(const Frame& f) {
+    size_t outline = 0, inked = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            if (!f.outline(x, y)) continue;
+            ++outline;
+            bool near = false;
+            for (int dy = -1; dy <= 1 && !near; ++dy)
+                for (int dx = -1; dx <= 1 && !near; ++dx) {
+                    int u = x + dx, v = y + dy;
+                    near = u >= 0 && v >= 0 && u < f.width && v < f.height && f.inked(u, v);
+                }
+            inked += near;
+        }
+    return outline ? double(inked) / double(outline) : 0.0;
+}
+
+// Pixels darker with silhouettes than without (the same stipples in both frames).
+std::vector<uint8_t> silhouette_ink(const Frame& with, const Frame& without) {
+    std::vector<uint8_t> ink(size_t(with.width) * with.height, 0);
+    for (int y = 0; y < with.height; ++y)
+        for (int x = 0; x < with.width; ++x) ink[size_t(y) * with.width + x] = with.red(x, y) + 64 < without.red(x, y);
+    return ink;
+}
+
+size_t outline_pixels(const Frame& f) {
+    size_t n = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) n += f.outline(x, y);
+    return n;
+}
+
+// Distance in pixels (4-connected steps) from each covered pixel to the nearest uncovered one; beyond
+// the image's edge counts as uncovered (a framed object touches the edge).
+std::vector<int> inside_distance(const Frame& f) {
+    std::vector<int> d(size_t(f.width) * f.height, -1);
+    std::deque<std::pair<int, int>> queue;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            bool edge = x == 0 || y == 0 || x == f.width - 1 || y == f.height - 1;
+            if (!f.covered(x, y) || edge) d[size_t(y) * f.width + x] = f.covered(x, y) ? 1 : 0, queue.emplace_back(x, y);
+        }
+    while (!queue.empty()) {
+        auto [x, y] = queue.front();
+        queue.pop_front();
+        const int step[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (auto& s : step) {
+            int u = x + s[0], v = y + s[1];
+            if (u < 0 || v < 0 || u >= f.width || v >= f.height) continue;
+            int& du = d[size_t(v) * f.width + u];
+            if (du < 0) du = d[size_t(y) * f.width + x] + 1, queue.emplace_back(u, v);
+        }
+    }
+    return d;
+}
+
+Prepared bunny_or_sphere(const ObjectParams& params, bool* is_bunny) {
+    std::string path = test::shared_model("stanford-bunny.obj");
+    *is_bunny = !path.empty();
+    return test::prepare(path.empty() ? make_icosphere(5) : load_mesh(path), params);
+}
+
+TEST_F(GpuTest, LinesInkTheOutline) {
+    ObjectParams params;
+    Prepared sphere = test::prepare(make_icosphere(5), params);
+    bool is_bunny = false;
+    Prepared bunny = bunny_or_sphere(params, &is_bunny);
+    for (const Prepared* object : {&sphere, &bunny}) {
+        const char* name = object == &sphere ? "sphere" : (is_bunny ? "bunny" : "sphere (no bunny)");
+        params.silhouette = SilhouetteMode::Lines;
+        double with = outline_inked(render(*context, *object, params, 1.0f));
+        params.silhouette = SilhouetteMode::None;
+        double without = outline_inked(render(*context, *object, params, 1.0f));
+        std::printf("%s: outline inked within 1 px: %.1f%% with lines, %.1f%% without\n", name, 100 * with,
+                    100 * without);
+        EXPECT_GE(with, 0.95);
+        EXPECT_LT(without, 0.7 * with);
+    }
+}
+
+TEST_F(GpuTest, LinesThinWithDistance) {
+    ObjectParams params;
+    Prepared sphere = test::prepare(make_icosphere(5), params);
+    auto thickness = [&](bool thinning, float distance) {
+        ObjectParams p = params;
+        p.silhouette_thinning = thinning;
+        p.silhouette = SilhouetteMode::None;
+        Frame without = render(*context, sphere, p, distance);
+        p.silhouette = SilhouetteMode::Lines;
+        Frame with = render(*context, sphere, p, distance);
+        std::vector<uint8_t> ink = silhouette_ink(with, without);
+        size_t pixels = 0;
+        for (uint8_t v : ink) pixels += v;
+        return double(pixels) / double(outline_pixels(with));
+    };
+    double near_thin = thickness(true, 1.0f), far_thin = thickness(true, 4.0f);
+    double near_fixed = thickness(false, 1.0f), far_fixed = thickness(false, 4.0f);
+    std::printf("line thickness (px): thinning %.2f -> %.2f, fixed %.2f -> %.2f (distance d -> 4d)\n", near_thin,
+                far_thin, near_fixed, far_fixed);
+    EXPECT_GE(near_thin / far_thin, 2.0);
+    EXPECT_LE(std::abs(far_fixed / near_fixed - 1.0), 0.2);
+}
+
+TEST_F(GpuTest, LinesDoNotSpillInsideAConvexObject) {
+    ObjectParams params;
+    Prepared sphere = test::prepare(make_icosphere(5), params);
+    params.silhouette = SilhouetteMode::None;
+    Frame without = render(*context, sphere, params, 1.0f);
+    params.silhouette = SilhouetteMode::Lines;
+    Frame with = render(*context, sphere, params, 1.0f);
+    std::vector<uint8_t> ink = silhouette_ink(with, without);
+    std::vector<int> depth_in = inside_distance(with);
+    size_t spilled = 0, total = 0, deepest = 0;
+    for (size_t i = 0; i < ink.size(); ++i) {
+        if (!ink[i]) continue;
+        ++total;
+        if (depth_in[i] > 2) ++spilled;
+        deepest = std::max(deepest, size_t(std::max(depth_in[i], 0)));
+    }
+    std::printf("silhouette ink: %zu px, %zu more than 2 px inside the outline (deepest %zu px)\n", total, spilled,
+                deepest);
+    EXPECT_GT(total, 1000u);
+    EXPECT_EQ(spilled, 0u);
+}
+
+TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
+    ObjectParams params;
+    params.toon_sharpness = 4.0f;
+    Prepared sphere = test::prepare(make_icosphere(5), params);
+    // Lit from the viewer: the centre is a highlight with few stipples, so the rim's ink is the toon's.
+    params.silhouette = SilhouetteMode::Toon;
+    Frame toon = render(*context, sphere, params, 1.0f, nullptr, glm::vec3(0.0f, 0.0f, 1.0f));
+    std::vector<int> depth_in = inside_distance(toon);
+    double band = 0, centre = 0;
+    size_t band_n = 0, centre_n = 0;
+    for (int y = 0; y < toon.height; ++y)
+        for (int x = 0; x < toon.width; ++x) {
+            int d = depth_in[size_t(y) * toon.width + x];
+            double ink = 1.0 - toon.red(x, y) / 255.0;
+            if (d >= 1 && d <= 3) band += ink, ++band_n;
+            if (std::hypot(x - 640.0, y - 512.0) < 100.0) centre += ink, ++centre_n;
+        }
+    band /= double(band_n);
+    centre /= double(centre_n);
+    std::printf("toon: mean ink %.3f in the 3-px band inside the outline, %.3f at the centre\n", band, centre);
+    EXPECT_GT(band, 0.6);
+    EXPECT_GT(band, 5.0 * centre);
+
+    // The stipples' decreasing ramp: with the enhancements that cap or select off, each polygon's density
+    // with toon over its density without is exactly toon_stipple_fade(N.E).
+    params.extrinsic = false;
+    params.intrinsic = false;
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {1280, 1024});
+    FrameView view = test::framed_view({glm::vec3(0.0f), 1.0f}, target.extent());
+    target.draw(renderer, view);
+    std::vector<float> faded = renderer.read_densities(0);
+    renderer.params(0).silhouette = SilhouetteMode::None;
+    target.draw(renderer, view);
+    std::vector<float> plain = renderer.read_densities(0);
+    const ObjectGpu& object = renderer.object(0);
+    size_t checked = 0, rim = 0;
+    double worst = 0.0, rim_faded = 0.0, rim_plain = 0.0;
+    for (size_t t = 0; t < plain.size(); ++t) {
+        if (plain[t] <= 0.05f) continue;
+        auto p = formulas::polygon_view(object.triangles[t], object.uniforms);
+        float facing = glm::dot(p.normal, -p.center) / glm::length(p.center);
+        float expected = formulas::toon_stipple_fade(facing, params.toon_sharpness);
+        worst = std::max(worst, double(std::abs(faded[t] / plain[t] - expected)));
+        ++checked;
+        if (facing < 1.0f / params.toon_sharpness) ++rim, rim_faded += faded[t], rim_plain += plain[t];
+    }
+    std::printf("fade ramp: %zu polygons checked, %zu on the rim (stipples there %.0f -> %.0f), worst deviation %.2g\n",
+                checked, rim, rim_plain, rim_faded, worst);
+    EXPECT_GT(rim, 100u);
+    EXPECT_LT(rim_faded, 0.6 * rim_plain);
+    EXPECT_LT(worst, 1e-4);
+}
+
+TEST_F(GpuTest, SilhouettePassesAreRecordedOnlyWhenUsedAndImagesWritten) {
+    ObjectParams params;
+    bool is_bunny = false;
+    Prepared object = bunny_or_sphere(params, &is_bunny);
+    for (SilhouetteMode mode : {SilhouetteMode::None, SilhouetteMode::Lines, SilhouetteMode::Toon, SilhouetteMode::Both}) {
+        params.silhouette = mode;
+        std::vector<std::pair<std::string, double>> passes;
+        Frame f = render(*context, object, params, 1.0f, &passes);
+        std::string name = std::string(is_bunny ? "bunny" : "sphere") + "_silhouette_" + silhouette_mode_name(mode) + ".png";
+        write_png(test::output_path(name).string(), f.frame.color);
+        bool line_pass = false;
+        for (const auto& [pass, ms] : passes) line_pass |= pass == "silhouettes";
+        std::printf("%-5s: %zu passes timed, line pass %s; image %s\n", silhouette_mode_name(mode), passes.size(),
+                    line_pass ? "recorded" : "absent", test::output_path(name).c_str());
+        EXPECT_EQ(line_pass, has_lines(mode));
+    }
+}
+
+}  // namespace
+}  // namespace stipple

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds stipple (Release) and renders the built-in default scene to a PNG.
+# Usage: tools/render_default.sh [OUT.png] [more stipple render options]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+cd "$STIPPLE_ROOT"
+third_party_config/install_deps.sh
+cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTIPPLE_BUILD_TESTS=OFF >/dev/null
+cmake --build build-release -j "$STIPPLE_JOBS" --target stipple
+out="${1:-stipple.png}"
+shift || true
+./build-release/stipple render -o "$out" --stats "$@"
