@@ -1,0 +1,35 @@
+#pragma once
+// Orbit, pan and zoom of the viewer's camera from mouse drags, wheel steps and keys.
+// Pure arithmetic on an OrbitCamera, so it can be reasoned about (and tested) without a window.
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+#include "render/camera.hpp"
+
+namespace stipple::app {
+
+inline constexpr float kDegreesPerPixel = 0.3f;  // orbit speed of a drag
+inline constexpr float kKeyOrbitDegrees = 5.0f;  // one arrow key press
+inline constexpr float kZoomPerStep = 0.88f;     // distance factor of one wheel step or +/- press
+inline constexpr float kMaxPitch = 89.0f;        // keeps the up vector defined
+
+// Dragging right turns the scene right (the camera moves left around it); dragging down tips it toward the viewer.
+void orbit(OrbitCamera& camera, glm::vec2 drag_pixels);
+void orbit_degrees(OrbitCamera& camera, float yaw_deg, float pitch_deg);
+
+// The point under the cursor follows it: the target moves in the view plane by the drag in world units
+// at the target's depth (viewport_height pixels span the vertical field of view there).
+void pan(OrbitCamera& camera, glm::vec2 drag_pixels, float viewport_height);
+
+// Positive steps move closer. The distance stays within [1e-3, 1e3] x the framing distance of `bounds`,
+// so the camera can neither pass through the target nor lose the scene.
+void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
+
+// Looks at the centre of `bounds` from the framing distance, keeping the direction.
+void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect);
+
+// The camera's right and up axes in world space.
+glm::vec3 camera_right(const OrbitCamera& camera);
+glm::vec3 camera_up(const OrbitCamera& camera);
+
+}  // namespace stipple::app

@@ -1,0 +1,89 @@
+#include "app/live_scene.hpp"
+
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "scene/scene_json.hpp"
+
+namespace stipple::app {
+
+LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer)
+    : scene_(std::move(scene)), data_(std::move(content.objects)), renderer_(renderer) {
+    STIPPLE_CHECK(renderer.object_count() == 0, "LiveScene needs an empty renderer");
+    for (const SceneObject& o : scene_.objects) generated_with_.push_back(o.params);
+    add_scene_objects(renderer_, scene_, data_);
+}
+
+std::vector<std::string> LiveScene::names() const {
+    std::vector<std::string> names;
+    for (const SceneObject& o : scene_.objects) names.push_back(std::filesystem::path(o.model).filename().string());
+    return names;
+}
+
+Sphere LiveScene::bounds() const { return scene_bounds(scene_, data_); }
+
+void LiveScene::sync() {
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        ObjectParams params = scene_.objects[i].params;
+        // Generation parameters only change with new stipples; until then the object keeps the old ones.
+        params.generation = generated_with_[i].generation;
+        renderer_.params(i) = params;
+        renderer_.model(i) = scene_.objects[i].transform.to_matrix();
+    }
+}
+
+bool LiveScene::regenerate_if_changed(size_t object) {
+    const ObjectParams& wanted = scene_.objects.at(object).params;
+    if (!needs_regeneration(generated_with_[object], wanted)) return false;
+    regenerate_stipples(data_[object], wanted);
+    generated_with_[object] = wanted;
+    rebuild_from(object);
+    return true;
+}
+
+void LiveScene::add_model(const std::string& path) {
+    if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
+    ObjectParams params = scene_.objects.empty() ? ObjectParams{} : scene_.objects.back().params;
+    ObjectData data = load_object_data(path, params);
+    SceneObject object;
+    // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
+    object.model = std::filesystem::absolute(path).lexically_normal().string();
+    object.params = params;
+    if (!data_.empty()) {
+        float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.to_matrix()).radius;
+        object.transform = placement_beside(bounds(), data.bounds, reference);
+    }
+    scene_.objects.push_back(object);
+    data_.push_back(std::move(data));
+    generated_with_.push_back(params);
+    renderer_.add_object(*data_.back().mesh, *data_.back().stipples, object.transform.to_matrix(), params);
+}
+
+void LiveScene::remove(size_t object) {
+    if (scene_.objects.size() <= 1 || object >= scene_.objects.size()) return;
+    renderer_.remove_object(object);
+    scene_.objects.erase(scene_.objects.begin() + std::ptrdiff_t(object));
+    data_.erase(data_.begin() + std::ptrdiff_t(object));
+    generated_with_.erase(generated_with_.begin() + std::ptrdiff_t(object));
+}
+
+void LiveScene::rebuild_from(size_t first) {
+    // The renderer appends and removes; replacing one object's stipples in place means re-adding the
+    // ones after it too, so the panel's order and the renderer's stay the same.
+    while (renderer_.object_count() > first) renderer_.remove_object(renderer_.object_count() - 1);
+    for (size_t i = first; i < data_.size(); ++i) {
+        ObjectParams params = scene_.objects[i].params;
+        params.generation = generated_with_[i].generation;
+        renderer_.add_object(*data_[i].mesh, *data_[i].stipples, scene_.objects[i].transform.to_matrix(), params);
+    }
+}
+
+void LiveScene::save(const std::string& path, const OrbitCamera& camera) const {
+    Scene saved = scene_;
+    saved.camera = scene_camera_from(camera);
+    // Parameters as generated: a slider not yet released has not changed the picture.
+    for (size_t i = 0; i < saved.objects.size(); ++i) saved.objects[i].params.generation = generated_with_[i].generation;
+    save_scene(path, saved);
+}
+
+}  // namespace stipple::app

@@ -1,0 +1,157 @@
+#include "app/panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+namespace stipple::app {
+
+namespace {
+
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
+
+void help(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void figures_section(const PanelFigures& f, PanelRequests& requests) {
+    ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
+    double gpu_total = 0.0;
+    for (const auto& [pass, ms] : f.stats.gpu_ms) {
+        ImGui::Text("  GPU %-10s %7.3f ms", pass.c_str(), ms);
+        gpu_total += ms;
+    }
+    if (!f.stats.gpu_ms.empty()) ImGui::Text("  GPU %-10s %7.3f ms", "total", gpu_total);
+    ImGui::Text("polygons            %llu", (unsigned long long)f.stats.triangles);
+    ImGui::Text("candidate stipples  %llu", (unsigned long long)f.stats.candidate_stipples);
+    if (f.stats.drawn_stipples >= 0)
+        ImGui::Text("drawn stipples      %lld", (long long)f.stats.drawn_stipples);
+    else
+        ImGui::TextDisabled("drawn stipples      (not counted: --no-count-drawn)");
+    ImGui::TextDisabled("%s, %ux%u, %s", f.device.c_str(), f.extent.width, f.extent.height, f.present_mode);
+    bool vsync = f.vsync;
+    ImGui::BeginDisabled(!f.can_disable_vsync);
+    if (ImGui::Checkbox("vsync (V)", &vsync)) requests.toggle_vsync = true;
+    ImGui::EndDisabled();
+}
+
+void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests) {
+    glm::vec3 light = scene.light;
+    if (ImGui::SliderFloat3("light", &light.x, -1.0f, 1.0f, "%.2f", kClamp) && glm::length(light) > 1e-3f)
+        scene.light = light;  // a zero direction would have no meaning; keep the last good one
+    help("Direction toward the light in view space: x right, y up, z toward you (paper §2.2).");
+    ImGui::ColorEdit3("paper", &scene.paper.x);
+    ImGui::ColorEdit3("ink", &scene.ink.x);
+    if (ImGui::Button("frame all (F)")) requests.frame_all = true;
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot (S)")) requests.screenshot = true;
+    help(("PNG at window resolution, without the panel, into " + f.screenshot_dir).c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("save scene (Ctrl+S)")) requests.save_scene = true;
+    help(("Writes the current objects, parameters, camera, light and colours to " + f.scene_path).c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("hide (H)")) requests.hide = true;
+}
+
+// Generation parameters act when the edit is committed (slider released, Enter): new stipples for
+// a big model take a while, and regenerating on every slider tick would stall the viewer.
+void commit_on_release(size_t object, PanelRequests& requests) {
+    if (ImGui::IsItemDeactivatedAfterEdit()) requests.regenerate.push_back(object);
+}
+
+void object_section(SceneObject& object, size_t index, const std::string& name, size_t object_count,
+                    const PanelFigures& f, PanelRequests& requests) {
+    ObjectParams& p = object.params;
+    ImGui::PushID(int(index));
+    std::string label = std::to_string(index) + ": " + name;
+    if (ImGui::CollapsingHeader(label.c_str(), index == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+        ImGui::TextDisabled("stipple generation (applied on release / Enter)");
+        ImGui::SliderFloat("D_max", &p.generation.dmax, 0.005f, 16.0f, "%.3f", kLog);
+        commit_on_release(index, requests);
+        help("Maximum stipple density, stipples per reference pixel^2 (paper §2.1).");
+        uint64_t step = 100000, fast = 1000000;
+        ImGui::InputScalar("budget", ImGuiDataType_U64, &p.generation.max_stipples, &step, &fast, "%llu");
+        p.generation.max_stipples = std::clamp<uint64_t>(p.generation.max_stipples, 1, 2'000'000'000);
+        commit_on_release(index, requests);
+        help("Object_max: the object's stipple budget (paper §2.1).");
+        uint64_t one = 1;
+        ImGui::InputScalar("seed", ImGuiDataType_U64, &p.generation.seed, &one, nullptr, "%llu");
+        commit_on_release(index, requests);
+        ImGui::SliderInt("relaxation steps", &p.generation.relax_iterations, 0, 100, "%d", kClamp);
+        commit_on_release(index, requests);
+
+        ImGui::TextDisabled("per frame");
+        ImGui::Checkbox("shading", &p.shading);
+        ImGui::SameLine();
+        ImGui::SliderFloat("exponent n", &p.shading_exponent, 0.05f, 64.0f, "%.2f", kLog);
+        help("(N.L)^n: a larger n keeps more stipples toward the light (paper §2.2).");
+        ImGui::Checkbox("extrinsic", &p.extrinsic);
+        ImGui::SameLine();
+        ImGui::SliderFloat("pr", &p.pr, 0.0f, 8.0f, "%.2f", kClamp);
+        help("Distance enhancement rate (paper §2.3); 2 keeps the tone as the object moves away.");
+        ImGui::SliderFloat("min area px^2", &p.min_area, 2.0f, 9.0f, "%.1f", kClamp);
+        help("Polygons projecting smaller are drawn by probabilistic selection (paper §2.3 b).");
+        ImGui::Checkbox("intrinsic", &p.intrinsic);
+        ImGui::SameLine();
+        ImGui::SliderFloat("de", &p.de, 0.05f, 16.0f, "%.2f", kLog);
+        help("Depth enhancement rate (paper §2.3): smaller exaggerates near/far.");
+        ImGui::SliderFloat("point size", &p.point_size, 1.0f, std::min(64.0f, f.max_point_size), "%.1f px", kClamp);
+        int path = int(p.density_path);
+        const char* paths[] = {"vertex (§3.2 vertex program)", "cpu (no vertex program)", "indirect (compute draws)"};
+        if (ImGui::Combo("density path", &path, paths, 3)) p.density_path = DensityPath(path);
+        int mode = int(p.silhouette);
+        const char* modes[] = {"none", "lines", "toon", "both"};
+        if (ImGui::Combo("silhouette", &mode, modes, 4)) p.silhouette = SilhouetteMode(mode);
+        help("§3.1: Raskar-Cohen back-face lines, the toon N.E ramp, or both.");
+        ImGui::SliderFloat("line width", &p.silhouette_width, 1.0f, 64.0f, "%.1f px", kClamp);
+        ImGui::SameLine();
+        ImGui::Checkbox("thinning", &p.silhouette_thinning);
+        help("Lines thin as the object's projected bounding sphere shrinks (paper Fig. 8).");
+        ImGui::SliderFloat("toon sharpness", &p.toon_sharpness, 0.5f, 64.0f, "%.1f", kLog);
+
+        ImGui::TextDisabled("placement");
+        if (object.transform.matrix) {
+            ImGui::TextDisabled("matrix transform (edit it in the scene file)");
+        } else {
+            ImGui::DragFloat3("translate", &object.transform.translate.x, 0.01f);
+            ImGui::SliderFloat3("rotate deg", &object.transform.rotate_deg.x, -180.0f, 180.0f, "%.0f", kClamp);
+            ImGui::DragFloat("scale", &object.transform.scale, 0.01f, 1e-4f, 1e4f, "%.3f", kLog);
+        }
+        ImGui::BeginDisabled(object_count <= 1);
+        if (ImGui::Button("remove object")) requests.remove = index;
+        ImGui::EndDisabled();
+    }
+    ImGui::PopID();
+}
+
+}  // namespace
+
+PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures) {
+    PanelRequests requests;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(800, std::max(200.0f, float(figures.extent.height) - 20)));
+    if (ImGui::Begin("stipple")) {
+        ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
+        figures_section(figures, requests);
+        ImGui::Separator();
+        scene_section(scene, figures, requests);
+        ImGui::Separator();
+        ImGui::TextDisabled("drag: left orbit, right/middle pan, wheel zoom; drop model files to add them");
+        for (size_t i = 0; i < scene.objects.size(); ++i)
+            object_section(scene.objects[i], i, names.at(i), scene.objects.size(), figures, requests);
+        if (!figures.messages.empty()) {
+            ImGui::Separator();
+            size_t first = figures.messages.size() > 6 ? figures.messages.size() - 6 : 0;
+            for (size_t i = first; i < figures.messages.size(); ++i)
+                ImGui::TextWrapped("%s", figures.messages[i].c_str());
+        }
+        ImGui::PopItemWidth();
+    }
+    ImGui::End();
+    return requests;
+}
+
+}  // namespace stipple::app

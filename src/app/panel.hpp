@@ -1,0 +1,44 @@
+#pragma once
+// The Dear ImGui panel: every per-object parameter of the paper, the light and colours, and live
+// figures of the last frame. It edits the scene in place; what cannot happen inside a widget
+// (new stipples, removing an object, files, screenshots) comes back as requests.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "render/stipple_renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace stipple::app {
+
+struct PanelFigures {
+    double fps = 0.0;
+    double cpu_frame_ms = 0.0;  // CPU time of a frame: input, panel, prepare, record, submit
+    FrameStats stats;           // the last completed frame's (GPU times per pass, drawn stipples)
+    std::string device;
+    VkExtent2D extent{};
+    const char* present_mode = "";
+    bool vsync = true;
+    bool can_disable_vsync = false;
+    float max_point_size = 64.0f;
+    std::string scene_path;       // where "save scene" writes
+    std::string screenshot_dir;
+    std::vector<std::string> messages;  // newest last: errors and confirmations
+};
+
+struct PanelRequests {
+    bool screenshot = false;
+    bool save_scene = false;
+    bool frame_all = false;
+    bool toggle_vsync = false;
+    bool hide = false;
+    std::vector<size_t> regenerate;  // objects whose generation parameters were committed
+    std::optional<size_t> remove;
+};
+
+// `names`: one label per scene object (its model file).
+PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures);
+
+}  // namespace stipple::app

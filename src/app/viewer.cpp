@@ -1,0 +1,384 @@
+#include "app/viewer.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <deque>
+#include <memory>
+
+#include "app/camera_control.hpp"
+#include "app/live_scene.hpp"
+#include "app/overlay.hpp"
+#include "app/panel.hpp"
+#include "app/screenshot.hpp"
+#include "app/swapchain.hpp"
+#include "app/window.hpp"
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "gpu/vk_check.hpp"
+#include "render/offscreen.hpp"
+
+namespace stipple::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_between(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+const char* present_mode_name(VkPresentModeKHR mode) {
+    switch (mode) {
+        case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
+        case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
+        case VK_PRESENT_MODE_FIFO_KHR: return "fifo (vsync)";
+        case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "fifo relaxed";
+        default: return "other";
+    }
+}
+
+gpu::ContextOptions context_options(const ViewerOptions& options) {
+    gpu::ContextOptions o;
+    o.device_index = options.device_index;
+    o.verbose = options.verbose;
+    o.instance_extensions = Window::required_instance_extensions();
+    o.swapchain = true;
+    return o;
+}
+
+// Owns the surface so that it is destroyed after the swapchain and before the instance.
+struct Surface {
+    Surface(const gpu::Context& context, const Window& window)
+        : instance(context.instance), handle(window.create_surface(context.instance)) {}
+    ~Surface() { vkDestroySurfaceKHR(instance, handle, nullptr); }
+    VkInstance instance;
+    VkSurfaceKHR handle;
+};
+
+std::string window_title(const Scene& scene) {
+    std::string name = scene.source.empty() ? std::filesystem::path(scene.objects.at(0).model).filename().string()
+                                            : std::filesystem::path(scene.source).filename().string();
+    return "stipple - " + name;
+}
+
+class Viewer {
+public:
+    Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
+        : options_(options),
+          window_(options.width, options.height, window_title(scene)),
+          context_(context_options(options)),
+          surface_(context_, window_),
+          swapchain_(context_, surface_.handle),
+          renderer_(context_, swapchain_.format(), kDepthFormat, RendererOptions{options.count_drawn}),
+          live_(std::move(scene), std::move(content), renderer_),
+          screenshot_(context_),
+          vsync_(options.vsync),
+          panel_visible_(options.panel) {
+        swapchain_.recreate(window_.framebuffer_size(), vsync_);
+        overlay_ = std::make_unique<Overlay>(context_, window_.handle(), swapchain_);
+        window_.set_capture_queries([this] { return panel_visible_ && overlay_->wants_mouse(); },
+                                    [this] { return panel_visible_ && overlay_->wants_keyboard(); });
+        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        alloc.commandPool = context_.command_pool;
+        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        alloc.commandBufferCount = 1;
+        VK_CHECK(vkAllocateCommandBuffers(context_.device, &alloc, &cb_));
+        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first frame has nothing to wait for
+        VK_CHECK(vkCreateFence(context_.device, &fence, nullptr, &frame_done_));
+        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &acquired_));
+
+        VkExtent2D size = window_.framebuffer_size();
+        float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
+        camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
+    }
+
+    ~Viewer() {
+        vkDeviceWaitIdle(context_.device);
+        vkDestroySemaphore(context_.device, acquired_, nullptr);
+        vkDestroyFence(context_.device, frame_done_, nullptr);
+        vkFreeCommandBuffers(context_.device, context_.command_pool, 1, &cb_);
+    }
+
+    int run();
+
+private:
+    void frame();
+    void finish_previous_frame();
+    void handle_input(const Input& input, float aspect);
+    void handle_requests(const PanelRequests& requests, float aspect);
+    bool ensure_swapchain();
+    void record(uint32_t image_index);
+    void message(const std::string& text, bool error = false);
+    void save_scene();
+
+    ViewerOptions options_;
+    Window window_;
+    gpu::Context context_;
+    Surface surface_;
+    Swapchain swapchain_;
+    StippleRenderer renderer_;
+    LiveScene live_;
+    ScreenshotCapture screenshot_;
+    std::unique_ptr<Overlay> overlay_;
+    VkCommandBuffer cb_ = VK_NULL_HANDLE;
+    VkFence frame_done_ = VK_NULL_HANDLE;
+    VkSemaphore acquired_ = VK_NULL_HANDLE;
+
+    OrbitCamera camera_;
+    bool vsync_;
+    bool panel_visible_;
+    bool recreate_ = false;
+    bool submitted_ = false;  // a frame is in flight (its fence is pending)
+    bool paused_ = false;
+    PanelFigures figures_;
+    std::deque<std::string> messages_;
+    std::vector<size_t> pending_regeneration_;
+    std::optional<size_t> pending_removal_;
+    long long frames_drawn_ = 0;
+    Clock::time_point fps_start_ = Clock::now();
+    int fps_frames_ = 0;
+};
+
+void Viewer::message(const std::string& text, bool error) {
+    // Errors go to stderr too (the panel may be hidden); confirmations to stdout for scripts.
+    std::fprintf(error ? stderr : stdout, "stipple: %s\n", text.c_str());
+    std::fflush(error ? stderr : stdout);
+    messages_.push_back(error ? "error: " + text : text);
+    while (messages_.size() > 20) messages_.pop_front();
+}
+
+void Viewer::save_scene() {
+    try {
+        live_.save(options_.scene_path, camera_);
+        message("scene saved: " + options_.scene_path);
+    } catch (const Error& e) {
+        message(e.what(), true);
+    }
+}
+
+int Viewer::run() {
+    const long long warmup = 10;  // the first frames compile shaders and fault in memory
+    Clock::time_point bench_start;
+    while (!window_.should_close()) {
+        if (window_.hidden()) {
+            if (!paused_) message("window hidden: drawing paused");
+            paused_ = true;
+            window_.wait_events(0.25);  // nothing to draw: sleep until the window manager shows it again
+            continue;
+        }
+        if (paused_) {
+            message("window shown: drawing resumed");
+            paused_ = false;
+            recreate_ = true;
+        }
+        window_.poll_events();
+        if (window_.should_close()) break;
+        frame();
+        if (options_.benchmark_frames > 0) {
+            if (frames_drawn_ == warmup) bench_start = Clock::now();
+            if (frames_drawn_ == warmup + options_.benchmark_frames) break;
+        }
+    }
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    if (options_.benchmark_frames > 0 && frames_drawn_ >= warmup + options_.benchmark_frames) {
+        double ms = ms_between(bench_start, Clock::now()) / double(options_.benchmark_frames);
+        VkExtent2D e = swapchain_.extent();
+        std::printf("benchmark: %lld frames at %ux%u, panel %s, %s: mean %.2f fps (%.2f ms per frame)\n",
+                    options_.benchmark_frames, e.width, e.height, panel_visible_ ? "on" : "off",
+                    present_mode_name(swapchain_.present_mode()), 1000.0 / ms, ms);
+    }
+    if (uint32_t n = context_.validation_message_count()) {
+        std::fprintf(stderr, "stipple: %u Vulkan validation message(s)\n", n);
+        return 2;
+    }
+    return 0;
+}
+
+void Viewer::finish_previous_frame() {
+    if (!submitted_) return;
+    VK_CHECK(vkWaitForFences(context_.device, 1, &frame_done_, VK_TRUE, UINT64_MAX));
+    submitted_ = false;
+    renderer_.collect();
+    figures_.stats = renderer_.stats();
+    try {
+        std::string path = screenshot_.write_pending(options_.screenshot_dir);
+        if (!path.empty()) message("screenshot: " + path);
+    } catch (const Error& e) {
+        message(e.what(), true);
+    }
+}
+
+bool Viewer::ensure_swapchain() {
+    VkExtent2D size = window_.framebuffer_size();
+    VkExtent2D have = swapchain_.extent();
+    if (!recreate_ && swapchain_.valid() && size.width == have.width && size.height == have.height) return true;
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    recreate_ = false;
+    bool ok = swapchain_.recreate(size, vsync_);
+    overlay_->rebuild(swapchain_);
+    if (ok && options_.verbose)
+        std::printf("stipple: swapchain %ux%u, %u images, %s\n", swapchain_.extent().width, swapchain_.extent().height,
+                    swapchain_.image_count(), present_mode_name(swapchain_.present_mode()));
+    return ok;
+}
+
+void Viewer::handle_input(const Input& input, float aspect) {
+    Sphere bounds = live_.bounds();
+    if (input.orbit_drag != glm::dvec2(0.0)) orbit(camera_, glm::vec2(input.orbit_drag));
+    if (input.pan_drag != glm::dvec2(0.0)) pan(camera_, glm::vec2(input.pan_drag), float(swapchain_.extent().height));
+    if (input.scroll != 0.0) zoom(camera_, float(input.scroll), bounds, aspect);
+    for (KeyCommand c : input.commands) {
+        switch (c) {
+            case KeyCommand::OrbitLeft: orbit_degrees(camera_, -kKeyOrbitDegrees, 0.0f); break;
+            case KeyCommand::OrbitRight: orbit_degrees(camera_, kKeyOrbitDegrees, 0.0f); break;
+            case KeyCommand::OrbitUp: orbit_degrees(camera_, 0.0f, kKeyOrbitDegrees); break;
+            case KeyCommand::OrbitDown: orbit_degrees(camera_, 0.0f, -kKeyOrbitDegrees); break;
+            case KeyCommand::ZoomIn: zoom(camera_, 1.0f, bounds, aspect); break;
+            case KeyCommand::ZoomOut: zoom(camera_, -1.0f, bounds, aspect); break;
+            case KeyCommand::FrameAll: frame_all(camera_, bounds, aspect); break;
+            case KeyCommand::TogglePanel: panel_visible_ = !panel_visible_; break;
+            case KeyCommand::Screenshot: screenshot_.request(); break;
+            case KeyCommand::ToggleVsync:
+                vsync_ = !vsync_;
+                recreate_ = true;
+                break;
+            case KeyCommand::SaveScene: save_scene(); break;
+            case KeyCommand::Quit: window_.request_close(); break;
+        }
+    }
+    for (const std::string& path : input.dropped) {
+        try {
+            live_.add_model(path);
+            message("added " + path);
+        } catch (const Error& e) {
+            message(e.what(), true);  // a bad file costs a message, never the session
+        }
+    }
+}
+
+void Viewer::handle_requests(const PanelRequests& r, float aspect) {
+    if (r.screenshot) screenshot_.request();
+    if (r.save_scene) save_scene();
+    if (r.frame_all) frame_all(camera_, live_.bounds(), aspect);
+    if (r.toggle_vsync) {
+        vsync_ = !vsync_;
+        recreate_ = true;
+    }
+    if (r.hide) panel_visible_ = false;
+    // Done at the start of the next frame, once the GPU has finished with the objects.
+    pending_regeneration_.insert(pending_regeneration_.end(), r.regenerate.begin(), r.regenerate.end());
+    if (r.remove) pending_removal_ = r.remove;
+}
+
+void Viewer::frame() {
+    finish_previous_frame();
+    Clock::time_point start = Clock::now();
+    VkExtent2D size = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
+    float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
+
+    for (size_t object : pending_regeneration_) {
+        if (object >= live_.size()) continue;
+        try {
+            if (live_.regenerate_if_changed(object)) message("new stipples for object " + std::to_string(object));
+        } catch (const Error& e) {
+            message(e.what(), true);
+        }
+    }
+    pending_regeneration_.clear();
+    if (pending_removal_) live_.remove(*pending_removal_);
+    pending_removal_.reset();
+    handle_input(window_.take_input(), aspect);
+    if (window_.should_close() || !ensure_swapchain()) return;
+
+    uint32_t image = 0;
+    VkResult acquired = swapchain_.acquire(acquired_, &image);
+    if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+        recreate_ = true;
+        return;
+    }
+    if (acquired == VK_TIMEOUT || acquired == VK_NOT_READY) return;
+    if (acquired == VK_SUBOPTIMAL_KHR) recreate_ = true;  // the image is ours and signalled: draw it, then recreate
+
+    if (panel_visible_) {
+        overlay_->new_frame();
+        figures_.device = context_.device_name;
+        figures_.extent = swapchain_.extent();
+        figures_.present_mode = present_mode_name(swapchain_.present_mode());
+        figures_.vsync = vsync_;
+        figures_.can_disable_vsync = swapchain_.can_disable_vsync();
+        figures_.max_point_size = context_.features.max_point_size;
+        figures_.scene_path = options_.scene_path;
+        figures_.screenshot_dir = options_.screenshot_dir;
+        figures_.messages.assign(messages_.begin(), messages_.end());
+        handle_requests(draw_panel(live_.scene(), live_.names(), figures_), aspect);
+    }
+    record(image);
+
+    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    VkSemaphore done = swapchain_.rendering_done(image);
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &acquired_;
+    submit.pWaitDstStageMask = &wait_stage;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cb_;
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &done;
+    VK_CHECK(vkResetFences(context_.device, 1, &frame_done_));
+    VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, frame_done_));
+    submitted_ = true;
+    figures_.cpu_frame_ms = ms_between(start, Clock::now());
+
+    VkResult presented = swapchain_.present(context_.queue, image);
+    if (presented != VK_SUCCESS) recreate_ = true;  // out of date or suboptimal: a new swapchain next frame
+    ++frames_drawn_;
+    ++fps_frames_;
+    double elapsed = ms_between(fps_start_, Clock::now());
+    if (elapsed >= 500.0) {
+        figures_.fps = 1000.0 * fps_frames_ / elapsed;
+        fps_frames_ = 0;
+        fps_start_ = Clock::now();
+    }
+}
+
+void Viewer::record(uint32_t image) {
+    live_.sync();
+    FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), swapchain_.extent());
+    renderer_.prepare(view);
+
+    VK_CHECK(vkResetCommandBuffer(cb_, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cb_, &begin));
+    RenderTargets targets{swapchain_.image(image), swapchain_.view(image), swapchain_.depth().handle(),
+                          swapchain_.depth().view(), swapchain_.extent()};
+    renderer_.record(cb_, targets);
+    if (screenshot_.requested()) {
+        if (swapchain_.copyable())
+            screenshot_.record_copy(cb_, swapchain_.image(image), swapchain_.format(), swapchain_.extent());
+        else {
+            screenshot_.cancel();
+            message("screenshots are not possible: this window's images cannot be copied", true);
+        }
+    }
+    if (panel_visible_) {
+        overlay_->record(cb_, image);  // its render pass ends in PRESENT_SRC_KHR
+    } else {
+        gpu::image_barrier(cb_, swapchain_.image(image), VK_IMAGE_ASPECT_COLOR_BIT,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+    }
+    VK_CHECK(vkEndCommandBuffer(cb_));
+}
+
+}  // namespace
+
+int run_viewer(Scene scene, SceneContent content, const ViewerOptions& options) {
+    Viewer viewer(std::move(scene), std::move(content), options);
+    return viewer.run();
+}
+
+}  // namespace stipple::app

@@ -1,0 +1,27 @@
+#pragma once
+// `stipple view`: a window showing a scene, turned with the mouse and keyboard, tuned with the panel.
+#include <string>
+
+#include "scene/scene.hpp"
+#include "scene/scene_content.hpp"
+
+namespace stipple::app {
+
+struct ViewerOptions {
+    int width = 1280;
+    int height = 1024;
+    bool vsync = true;
+    bool panel = true;
+    bool count_drawn = true;          // the panel's drawn-stipple count (a GPU atomic per drawn stipple)
+    std::string screenshot_dir = ".";
+    std::string scene_path = "stipple-scene.json";  // where "save scene" writes
+    long long benchmark_frames = 0;   // > 0: draw this many frames after a warm-up, print the mean fps, exit
+    int device_index = -1;
+    bool verbose = false;
+};
+
+// Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit
+// code: 0, or 2 when Vulkan validation reported anything. Throws stipple::Error on failures.
+int run_viewer(Scene scene, SceneContent content, const ViewerOptions& options);
+
+}  // namespace stipple::app

@@ -1,0 +1,225 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/object_options.hpp"
+#include "core/error.hpp"
+#include "core/progress.hpp"
+#include "gpu/context.hpp"
+#include "io/png_io.hpp"
+#include "render/offscreen.hpp"
+#include "scene/frame_sequence.hpp"
+#include "scene/scene_content.hpp"
+#include "scene/scene_json.hpp"
+
+namespace stipple::cli {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+double ink_fraction_inside(const RenderedFrame& frame, size_t* covered_out) {
+    size_t covered = 0, inked = 0;
+    for (size_t i = 0; i < frame.depth.size(); ++i) {
+        if (frame.depth[i] >= 1.0f) continue;
+        ++covered;
+        if (frame.color.pixels[4 * i] < 128) ++inked;
+    }
+    *covered_out = covered;
+    return covered ? double(inked) / double(covered) : 0.0;
+}
+
+// The object options belong to a model given on the command line; a scene file sets them per object.
+void reject_object_options_with_scene(const Args& args, const std::string& scene) {
+    for (const std::string& name : object_flags())
+        if (args.flag(name)) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
+    for (const std::string& name : object_options())
+        if (args.has(name)) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
+}
+
+// A single frame keeps -o as written unless it holds a frame number (a name may contain '%').
+std::string output_path(const std::string& pattern, size_t index, bool sequence) {
+    if (sequence) return frame_path(pattern, index);
+    try {
+        return has_frame_number(pattern) ? frame_path(pattern, index) : pattern;
+    } catch (const Error&) {
+        return pattern;
+    }
+}
+
+}  // namespace
+
+Scene scene_from_command_line(const Args& args, const std::string& what) {
+    Scene scene;
+    if (args.positionals().empty()) {
+        scene.objects.push_back({default_model_path(), {}, read_object_params(args)});
+    } else if (args.positionals().size() == 1 && is_scene_file(args.positionals()[0])) {
+        reject_object_options_with_scene(args, args.positionals()[0]);
+        scene = load_scene(args.positionals()[0]);
+    } else {
+        for (const std::string& path : args.positionals())
+            if (is_scene_file(path)) fail(what + " takes one SCENE.json on its own, not with other files (" + path + ")");
+        ObjectParams params = read_object_params(args);
+        // Paths stay as typed, so that loader errors name the file as the user wrote it.
+        for (const std::string& path : args.positionals()) scene.objects.push_back({path, {}, params});
+    }
+    // Explicit view options override the scene's camera and light.
+    if (args.has("--yaw")) scene.camera.yaw_deg = float(args.number("--yaw", 0.0));
+    if (args.has("--pitch")) scene.camera.pitch_deg = float(args.number("--pitch", 0.0));
+    if (args.has("--distance")) {
+        double distance = args.number("--distance", 1.0);
+        if (distance <= 0.0 || distance > 1e4) fail("--distance = " + std::to_string(distance) + " must be in (0, 10000]");
+        scene.camera.distance = float(distance);
+        scene.camera.world_distance.reset();
+    }
+    if (args.has("--light")) {
+        glm::vec3 light = args.vec3("--light", scene.light);
+        if (glm::length(light) < 1e-6f) fail("--light must not be the zero vector");
+        scene.light = light;
+    }
+    return scene;
+}
+
+int run_render(const std::vector<std::string>& argv) {
+    std::set<std::string> flags = object_flags();
+    flags.insert({"--stats", "--list-devices", "--verbose"});
+    std::set<std::string> options = object_options();
+    options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
+                    "--device", "--frames", "--orbit"});
+    Args args(argv, flags, options);
+
+    if (args.flag("--list-devices")) {
+        for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
+        return 0;
+    }
+    if (args.positionals().size() > 1) fail("render takes at most one MODEL or SCENE.json (see stipple --help)");
+    const std::string output = args.get("--output", args.get("-o", "stipple.png"));
+    long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
+    if (width < 1 || width > 16384 || height < 1 || height > 16384)
+        fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
+             std::to_string(height) + ")");
+    long long device = args.integer("--device", -1);
+    long long repeat = args.integer("--repeat", 0);
+    if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
+    long long frames = args.integer("--frames", 0);
+    if (frames < 0 || frames > 100000 || (args.has("--frames") && frames < 1))
+        fail("--frames = " + std::to_string(frames) + " must be in 1..100000");
+    std::optional<float> orbit;
+    if (args.has("--orbit")) {
+        double deg = args.number("--orbit", 0.0);
+        if (std::abs(deg) > 36000.0) fail("--orbit = " + std::to_string(deg) + " must be in -36000..36000 degrees");
+        if (!args.has("--frames")) fail("--orbit needs --frames N (the number of frames of the orbit)");
+        orbit = float(deg);
+    }
+    Scene scene = scene_from_command_line(args, "render");
+    const std::string what = scene.source.empty() ? scene.model_path(0) : scene.source;
+
+    auto start = std::chrono::steady_clock::now();
+    SceneContent content = load_scene_content(scene);
+    double prepare_seconds = seconds_since(start);
+
+    float aspect = float(width) / float(height);
+    Sphere bounds = scene_bounds(scene, content.objects);
+    std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit);
+    const bool sequence = cameras.size() > 1;
+    if (sequence && !has_frame_number(output))
+        fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
+             " frames: use a pattern such as frames/%04d.png");
+    if (sequence && args.has("--mask") && !has_frame_number(args.get("--mask", "")))
+        fail("--mask " + args.get("--mask", "") + " has no frame number: use a pattern such as masks/%04d.png");
+    if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
+
+    gpu::ContextOptions context_options;
+    context_options.device_index = int(device);
+    context_options.verbose = args.flag("--verbose");
+    gpu::Context context(context_options);
+    VkExtent2D extent{uint32_t(width), uint32_t(height)};
+
+    RendererOptions renderer_options;
+    renderer_options.count_drawn = args.flag("--stats");
+    StippleRenderer renderer(context, kColorFormat, kDepthFormat, renderer_options);
+    add_scene_objects(renderer, scene, content.objects);
+    OffscreenTarget target(context, extent);
+
+    // Frames are written as they are drawn (a long orbit needs no more memory than one frame).
+    ProgressBar bar("Rendering frames", sequence);
+    RenderedFrame frame;
+    FrameView view;
+    double render_seconds = 0.0;
+    for (size_t i = 0; i < cameras.size(); ++i) {
+        view = scene_frame_view(scene, cameras[i], bounds, extent);
+        auto render_start = std::chrono::steady_clock::now();
+        frame = target.render(renderer, view);
+        render_seconds = seconds_since(render_start);
+        write_png(output_path(output, i, sequence), frame.color);
+        if (args.has("--mask")) write_png(output_path(args.get("--mask", ""), i, sequence), frame.coverage_mask());
+        bar.update(double(i + 1) / double(cameras.size()));
+    }
+    if (sequence) bar.finish();
+
+    // Timed frames after the first (which warms caches and the driver's shader compilation).
+    std::vector<double> frame_ms;
+    std::map<std::string, std::vector<double>> pass_ms;
+    for (long long i = 0; i < repeat; ++i) {
+        frame_ms.push_back(target.draw(renderer, view));
+        for (const auto& [pass, ms] : renderer.stats().gpu_ms) pass_ms[pass].push_back(ms);
+    }
+
+    if (args.flag("--stats")) {
+        const FrameStats& stats = renderer.stats();
+        size_t covered = 0;
+        double ink = ink_fraction_inside(frame, &covered);
+        if (scene.source.empty())
+            std::printf("model:              %s\n", what.c_str());
+        else
+            std::printf("scene:              %s (%zu objects)\n", what.c_str(), scene.objects.size());
+        std::printf("device:             %s\n", context.device_name.c_str());
+        std::printf("triangles:          %llu\n", (unsigned long long)stats.triangles);
+        std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
+        std::printf("drawn stipples:     %lld\n", (long long)stats.drawn_stipples);
+        std::string paths;
+        for (const SceneObject& o : scene.objects)
+            if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
+                paths += std::string(paths.empty() ? "" : ", ") + density_path_name(o.params.density_path);
+        std::printf("density path:       %s\n", paths.c_str());
+        for (const auto& [pass, ms] : stats.gpu_ms) std::printf("gpu %-16s%.3f ms\n", (pass + ":").c_str(), ms);
+        if (stats.cpu_draw_commands > 0 || paths.find("cpu") != std::string::npos)
+            std::printf("cpu density:        %.3f ms, %llu draws\n", stats.cpu_density_ms,
+                        (unsigned long long)stats.cpu_draw_commands);
+        std::printf("covered pixels:     %zu\n", covered);
+        std::printf("ink inside object:  %.1f%%\n", 100.0 * ink);
+        std::printf("load + generation:  %.3f s (generation %.3f s)\n", prepare_seconds, content.generation_seconds);
+        std::printf("render + readback:  %.3f s%s\n", render_seconds, sequence ? " (last frame)" : "");
+    }
+    if (repeat > 0) {
+        std::printf("frames timed:       %lld (after one warm-up frame)\n", repeat);
+        std::printf("frame time:         median %.2f ms (%.1f fps), min %.2f, max %.2f\n", median(frame_ms),
+                    1000.0 / median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()),
+                    *std::max_element(frame_ms.begin(), frame_ms.end()));
+        for (auto& [pass, values] : pass_ms) std::printf("gpu %-16s median %.3f ms\n", (pass + ":").c_str(), median(values));
+    }
+    if (sequence)
+        std::printf("wrote %zu frames %s .. %s (%lldx%lld)\n", cameras.size(), frame_path(output, 0).c_str(),
+                    frame_path(output, cameras.size() - 1).c_str(), width, height);
+    else
+        std::printf("wrote %s (%lldx%lld)\n", output_path(output, 0, false).c_str(), width, height);
+
+    if (uint32_t messages = context.validation_message_count()) {
+        std::fprintf(stderr, "stipple: %u Vulkan validation message(s): the render is not trustworthy\n", messages);
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace stipple::cli

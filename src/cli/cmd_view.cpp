@@ -1,0 +1,48 @@
+#include <cstdio>
+
+#include "app/viewer.hpp"
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/object_options.hpp"
+#include "core/error.hpp"
+
+namespace stipple::cli {
+
+int run_view(const std::vector<std::string>& argv) {
+    std::set<std::string> flags = object_flags();
+    flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
+    std::set<std::string> options = object_options();
+    options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
+                    "--save-scene", "--benchmark-frames"});
+    Args args(argv, flags, options);
+
+    app::ViewerOptions viewer;
+    long long width = args.integer("--width", viewer.width), height = args.integer("--height", viewer.height);
+    if (width < 64 || width > 16384 || height < 64 || height > 16384)
+        fail("--width/--height must be between 64 and 16384 (got " + std::to_string(width) + "x" +
+             std::to_string(height) + ")");
+    viewer.width = int(width);
+    viewer.height = int(height);
+    viewer.vsync = !args.flag("--no-vsync");
+    viewer.panel = !args.flag("--no-panel");
+    viewer.count_drawn = !args.flag("--no-count-drawn");
+    viewer.verbose = args.flag("--verbose");
+    viewer.device_index = int(args.integer("--device", -1));
+    viewer.screenshot_dir = args.get("--screenshot-dir", ".");
+    viewer.benchmark_frames = args.integer("--benchmark-frames", 0);
+    if (viewer.benchmark_frames < 0 || viewer.benchmark_frames > 1000000)
+        fail("--benchmark-frames = " + std::to_string(viewer.benchmark_frames) + " must be in 0..1000000");
+
+    Scene scene = scene_from_command_line(args, "view");
+    viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
+    SceneContent content = load_scene_content(scene);
+    if (scene.source.empty() && scene.objects.size() > 1) {
+        // Models given side by side on the command line come in any units; line them up.
+        std::vector<Sphere> spheres;
+        for (const ObjectData& o : content.objects) spheres.push_back(o.bounds);
+        arrange_side_by_side(scene, spheres);
+    }
+    return app::run_viewer(std::move(scene), std::move(content), viewer);
+}
+
+}  // namespace stipple::cli

@@ -1,0 +1,23 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cli/args.hpp"
+#include "scene/scene.hpp"
+
+namespace stipple::cli {
+
+// Each returns the process exit code; errors are thrown as stipple::Error.
+int run_render(const std::vector<std::string>& args);
+int run_info(const std::vector<std::string>& args);
+int run_view(const std::vector<std::string>& args);
+
+void print_usage();
+std::string default_model_path();  // the built-in default scene (assets/blobby.glb)
+
+// The scene the positionals describe: none (the default scene), one SCENE.json, or MODEL files with the
+// object options; then --yaw/--pitch/--distance/--light override its camera and light. `command`
+// names the command in messages.
+Scene scene_from_command_line(const Args& args, const std::string& command);
+
+}  // namespace stipple::cli

@@ -1,0 +1,34 @@
+// stipple: interactive illustrative stipple drawing of polygonal models (Lu et al., VMV 2002).
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        stipple::cli::print_usage();
+        return args.empty() ? 1 : 0;
+    }
+    const std::string command = args[0];
+    args.erase(args.begin());
+    try {
+        if (command == "render") return stipple::cli::run_render(args);
+        if (command == "info") return stipple::cli::run_info(args);
+        if (command == "view") return stipple::cli::run_view(args);
+        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
+        return 2;
+    } catch (const stipple::Error& e) {
+        std::fprintf(stderr, "stipple: %s\n", e.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "stipple: out of memory\n");
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "stipple: internal error: %s\n", e.what());
+        return 3;
+    }
+}

@@ -1,0 +1,113 @@
+#include "scene/frame_sequence.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace stipple {
+
+namespace {
+
+OrbitCamera lerp(const OrbitCamera& a, const OrbitCamera& b, float t) {
+    OrbitCamera c;
+    c.target = glm::mix(a.target, b.target, t);
+    // Distances interpolate geometrically so that a zoom proceeds at a steady rate.
+    c.distance = a.distance * std::pow(b.distance / a.distance, t);
+    c.yaw_deg = a.yaw_deg + (b.yaw_deg - a.yaw_deg) * t;
+    c.pitch_deg = a.pitch_deg + (b.pitch_deg - a.pitch_deg) * t;
+    c.fov_y_deg = a.fov_y_deg + (b.fov_y_deg - a.fov_y_deg) * t;
+    return c;
+}
+
+}  // namespace
+
+std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_bounds, float aspect, size_t frames,
+                                       std::optional<float> orbit_deg) {
+    std::vector<OrbitCamera> cameras;
+    if (orbit_deg) {
+        if (frames == 0) fail("--orbit needs --frames N (N >= 1)");
+        OrbitCamera base = resolve_camera(scene.camera, scene_bounds, aspect);
+        for (size_t i = 0; i < frames; ++i) {
+            OrbitCamera c = base;
+            c.yaw_deg = base.yaw_deg + *orbit_deg * float(i) / float(frames);
+            cameras.push_back(c);
+        }
+        return cameras;
+    }
+    if (scene.camera_path.empty()) {
+        if (frames > 1) fail("a frame sequence needs --orbit DEG or a camera_path in the scene file");
+        cameras.push_back(resolve_camera(scene.camera, scene_bounds, aspect));
+        return cameras;
+    }
+    std::vector<OrbitCamera> keys;
+    for (const SceneCamera& key : scene.camera_path) keys.push_back(resolve_camera(key, scene_bounds, aspect));
+    if (frames == 0) return keys;
+    for (size_t i = 0; i < frames; ++i) {
+        if (keys.size() == 1 || frames == 1) {
+            cameras.push_back(keys.front());
+            continue;
+        }
+        // Frame 0 sits on the first keyframe and the last frame on the last one.
+        float u = float(i) / float(frames - 1) * float(keys.size() - 1);
+        size_t k = std::min(size_t(u), keys.size() - 2);
+        cameras.push_back(lerp(keys[k], keys[k + 1], u - float(k)));
+    }
+    return cameras;
+}
+
+namespace {
+
+// Finds the one frame-number conversion: its position, length and zero-padded width.
+struct Conversion {
+    size_t position = std::string::npos;
+    size_t length = 0;
+    int width = 0;
+};
+
+Conversion find_conversion(const std::string& pattern) {
+    Conversion found;
+    for (size_t i = 0; i < pattern.size(); ++i) {
+        if (pattern[i] != '%') continue;
+        if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+            ++i;
+            continue;
+        }
+        size_t j = i + 1;
+        int width = 0;
+        while (j < pattern.size() && std::isdigit((unsigned char)pattern[j]) && j - i <= 2)
+            width = width * 10 + (pattern[j++] - '0');
+        if (j >= pattern.size() || pattern[j] != 'd')
+            fail("output pattern '" + pattern + "': only %d or %0Nd (N up to 99) may stand for the frame number");
+        if (found.position != std::string::npos)
+            fail("output pattern '" + pattern + "' has more than one frame number");
+        found = {i, j + 1 - i, width};
+        i = j;
+    }
+    return found;
+}
+
+std::string unescape_percent(const std::string& text) {
+    std::string out;
+    for (size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        if (text[i] == '%' && i + 1 < text.size() && text[i + 1] == '%') ++i;
+    }
+    return out;
+}
+
+}  // namespace
+
+bool has_frame_number(const std::string& pattern) { return find_conversion(pattern).position != std::string::npos; }
+
+std::string frame_path(const std::string& pattern, size_t index) {
+    Conversion c = find_conversion(pattern);
+    if (c.position == std::string::npos) return unescape_percent(pattern);
+    std::string number = std::to_string(index);
+    if (int(number.size()) < c.width) number.insert(0, size_t(c.width) - number.size(), '0');
+    return unescape_percent(pattern.substr(0, c.position)) + number +
+           unescape_percent(pattern.substr(c.position + c.length));
+}
+
+}  // namespace stipple

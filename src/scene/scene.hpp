@@ -1,0 +1,80 @@
+#pragma once
+// A scene: several objects, each with its own transform and its own paper parameters (§2.3, Fig. 3
+// draws objects at different scales in one image), a camera, a light and the two colours.
+// The same description drives `stipple view` and `stipple render`; scene_json.cpp reads and writes it.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+#include "render/camera.hpp"
+#include "render/object_params.hpp"
+
+namespace stipple {
+
+// Placement of an object in the world: translate * rotate * scale, or an explicit matrix.
+struct Transform {
+    glm::vec3 translate{0.0f};
+    glm::vec3 rotate_deg{0.0f};  // about X, then Y, then Z (degrees)
+    float scale = 1.0f;          // uniform, so the object's distance enhancement sees one scale
+    std::optional<glm::mat4> matrix;  // when set it replaces the three above (column-major, like glTF)
+
+    glm::mat4 to_matrix() const;
+};
+
+struct SceneObject {
+    std::string model;  // as written in the scene file (relative to Scene::base_dir) or absolute
+    Transform transform;
+    ObjectParams params;
+};
+
+// Where the camera looks from. By default it orbits the centre of the scene's bounds at a multiple
+// of the distance that frames them, so a scene reads the same at any image size and aspect.
+struct SceneCamera {
+    float yaw_deg = 0.0f;
+    float pitch_deg = 0.0f;
+    float distance = 1.0f;                    // multiple of the framing distance
+    std::optional<float> world_distance;      // explicit eye-to-target distance (replaces `distance`)
+    std::optional<glm::vec3> target;          // default: the centre of the scene's bounds
+    float fov_y_deg = 30.0f;
+};
+
+struct Scene {
+    std::vector<SceneObject> objects;
+    SceneCamera camera;
+    std::vector<SceneCamera> camera_path;  // keyframes for frame sequences (optional)
+    glm::vec3 light{-0.45f, 0.55f, 0.70f};  // toward the light, view space (as FrameView::light_view)
+    glm::vec3 paper{1.0f};
+    glm::vec3 ink{0.0f};
+    std::filesystem::path base_dir;  // relative model paths are resolved against it
+    std::string source;              // the file it came from ("" when built from models)
+
+    std::string model_path(size_t object) const;  // resolved against base_dir
+};
+
+// True for paths that name a scene file rather than a model (.json).
+bool is_scene_file(const std::string& path);
+
+// Sets the transforms of objects 1.. so that each sits beside the ones before it, scaled to object 0's
+// bounding radius (`spheres`: the objects' object-space bounding spheres). For several models given
+// on the command line, which come in any units and would otherwise overlap.
+void arrange_side_by_side(Scene& scene, const std::vector<Sphere>& spheres);
+
+// Where to put one more model of bounding sphere `sphere` next to what is already in `scene_bounds`:
+// same radius as `reference_radius`, to the right. Used by drag-and-drop too.
+Transform placement_beside(const Sphere& scene_bounds, const Sphere& sphere, float reference_radius);
+
+// A sphere in world space holding `sphere` (object space) under `model`.
+Sphere transform_sphere(const Sphere& sphere, const glm::mat4& model);
+// The smallest sphere holding both (exact for two spheres).
+Sphere merge_spheres(const Sphere& a, const Sphere& b);
+
+// The orbit camera a SceneCamera describes for a scene with these bounds and this aspect ratio.
+OrbitCamera resolve_camera(const SceneCamera& camera, const Sphere& scene_bounds, float aspect);
+// The inverse, for saving: an explicit target and world distance.
+SceneCamera scene_camera_from(const OrbitCamera& camera);
+
+}  // namespace stipple

@@ -1,0 +1,380 @@
+#include "scene/scene_json.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+
+namespace stipple {
+
+// ordered_json keeps the file's field order (the first unknown field is the one reported) and writes
+// fields in a readable order.
+using json = nlohmann::ordered_json;
+
+namespace {
+
+// Floats are written in their shortest form that reads back to the same float ("0.15", not
+// "0.15000000596046448"), so saved scenes stay readable and round trips stay exact.
+json number(float value) {
+    char text[32];
+    auto result = std::to_chars(text, text + sizeof(text), value);
+    return json(std::strtod(std::string(text, result.ptr).c_str(), nullptr));
+}
+
+json vec3_json(const glm::vec3& v) { return json::array({number(v.x), number(v.y), number(v.z)}); }
+
+// Reads with a JSON-pointer-like location ("objects[1].params.dmax") for every message.
+class Reader {
+public:
+    explicit Reader(std::string source) : source_(std::move(source)) {}
+
+    [[noreturn]] void error(const std::string& where, const std::string& problem) const {
+        fail_file(source_, (where.empty() ? std::string() : where + ": ") + problem);
+    }
+
+    static std::string field(const std::string& where, const std::string& key) {
+        return where.empty() ? key : where + "." + key;
+    }
+
+    void expect_object(const json& j, const std::string& where, const std::vector<std::string>& allowed) const {
+        if (!j.is_object()) error(where, std::string("expected an object, got ") + j.type_name());
+        for (const auto& [key, value] : j.items()) {
+            if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+            std::string list;
+            for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            error(field(where, key), "unknown field (expected one of: " + list + ")");
+        }
+    }
+
+    float number(const json& j, const std::string& where) const {
+        if (!j.is_number()) error(where, std::string("expected a number, got ") + j.type_name());
+        double v = j.get<double>();
+        if (!std::isfinite(v) || std::abs(v) > 3.0e38) error(where, "the number is not finite");
+        return float(v);
+    }
+
+    uint64_t unsigned_integer(const json& j, const std::string& where) const {
+        if (j.is_number_unsigned()) return j.get<uint64_t>();
+        if (j.is_number_integer()) error(where, std::to_string(j.get<int64_t>()) + " is out of range: it must be >= 0");
+        error(where, std::string("expected an integer, got ") + (j.is_number() ? "a non-integer number" : j.type_name()));
+    }
+
+    bool boolean(const json& j, const std::string& where) const {
+        if (!j.is_boolean()) error(where, std::string("expected true or false, got ") + j.type_name());
+        return j.get<bool>();
+    }
+
+    std::string string(const json& j, const std::string& where) const {
+        if (!j.is_string()) error(where, std::string("expected a string, got ") + j.type_name());
+        return j.get<std::string>();
+    }
+
+    glm::vec3 vec3(const json& j, const std::string& where) const {
+        if (!j.is_array() || j.size() != 3) error(where, "expected an array of 3 numbers");
+        return {number(j[0], where + "[0]"), number(j[1], where + "[1]"), number(j[2], where + "[2]")};
+    }
+
+    glm::vec3 color(const json& j, const std::string& where) const {
+        glm::vec3 c = vec3(j, where);
+        for (int i = 0; i < 3; ++i)
+            if (c[i] < 0.0f || c[i] > 1.0f) error(where, "colour components must be in 0..1");
+        return c;
+    }
+
+private:
+    std::string source_;
+};
+
+// One entry per ObjectParams field: its scene name, how to read it and how to write it.
+struct ParamField {
+    const char* name;
+    std::function<void(ObjectParams&, const json&, const Reader&, const std::string&)> read;
+    std::function<json(const ObjectParams&)> write;
+};
+
+const std::vector<ParamField>& param_fields() {
+    using P = ObjectParams;
+    auto num = [](float P::*member) {
+        return ParamField{nullptr,
+                          [member](P& p, const json& j, const Reader& r, const std::string& w) { p.*member = r.number(j, w); },
+                          [member](const P& p) { return number(p.*member); }};
+    };
+    auto flag = [](bool P::*member) {
+        return ParamField{nullptr,
+                          [member](P& p, const json& j, const Reader& r, const std::string& w) { p.*member = r.boolean(j, w); },
+                          [member](const P& p) { return json(p.*member); }};
+    };
+    auto named = [](const char* name, ParamField f) {
+        f.name = name;
+        return f;
+    };
+    static const std::vector<ParamField> fields = {
+        {"dmax", [](P& p, const json& j, const Reader& r, const std::string& w) { p.generation.dmax = r.number(j, w); },
+         [](const P& p) { return number(p.generation.dmax); }},
+        {"max_stipples",
+         [](P& p, const json& j, const Reader& r, const std::string& w) {
+             p.generation.max_stipples = r.unsigned_integer(j, w);
+         },
+         [](const P& p) { return json(p.generation.max_stipples); }},
+        {"seed", [](P& p, const json& j, const Reader& r, const std::string& w) { p.generation.seed = r.unsigned_integer(j, w); },
+         [](const P& p) { return json(p.generation.seed); }},
+        {"relax_iterations",
+         [](P& p, const json& j, const Reader& r, const std::string& w) {
+             uint64_t n = r.unsigned_integer(j, w);
+             p.generation.relax_iterations = int(std::min<uint64_t>(n, 1u << 30));
+         },
+         [](const P& p) { return json(p.generation.relax_iterations); }},
+        named("shading", flag(&P::shading)),
+        named("shading_exponent", num(&P::shading_exponent)),
+        named("extrinsic", flag(&P::extrinsic)),
+        named("pr", num(&P::pr)),
+        named("min_area", num(&P::min_area)),
+        named("intrinsic", flag(&P::intrinsic)),
+        named("de", num(&P::de)),
+        named("point_size", num(&P::point_size)),
+        {"density_path",
+         [](P& p, const json& j, const Reader& r, const std::string& w) {
+             std::string name = r.string(j, w);
+             auto path = parse_density_path(name);
+             if (!path) r.error(w, "'" + name + "' is not one of vertex, cpu, indirect");
+             p.density_path = *path;
+         },
+         [](const P& p) { return json(density_path_name(p.density_path)); }},
+        {"silhouette",
+         [](P& p, const json& j, const Reader& r, const std::string& w) {
+             std::string name = r.string(j, w);
+             auto mode = parse_silhouette_mode(name);
+             if (!mode) r.error(w, "'" + name + "' is not one of none, lines, toon, both");
+             p.silhouette = *mode;
+         },
+         [](const P& p) { return json(silhouette_mode_name(p.silhouette)); }},
+        named("silhouette_width", num(&P::silhouette_width)),
+        named("silhouette_thinning", flag(&P::silhouette_thinning)),
+        named("toon_sharpness", num(&P::toon_sharpness)),
+    };
+    return fields;
+}
+
+ObjectParams read_params(const json& j, const Reader& r, const std::string& where) {
+    std::vector<std::string> names = scene_param_names();
+    r.expect_object(j, where, names);
+    ObjectParams params;
+    for (const ParamField& f : param_fields()) {
+        if (!j.contains(f.name)) continue;
+        std::string w = Reader::field(where, f.name);
+        f.read(params, j[f.name], r, w);
+        // The ranges live in validate_params; checking this one field on default parameters
+        // attributes a range error to the field that caused it.
+        ObjectParams probe;
+        f.read(probe, j[f.name], r, w);
+        try {
+            validate_params(probe);
+        } catch (const Error& e) {
+            std::string message = e.what();  // "--dmax = 20 is out of range: ..."
+            size_t eq = message.find(" = ");
+            r.error(w, eq == std::string::npos ? message : message.substr(eq + 3));
+        }
+    }
+    try {
+        validate_params(params);  // any rule that spans fields
+    } catch (const Error& e) {
+        r.error(where, e.what());
+    }
+    return params;
+}
+
+Transform read_transform(const json& j, const Reader& r, const std::string& where) {
+    r.expect_object(j, where, {"translate", "rotate_deg", "scale", "matrix"});
+    Transform t;
+    if (j.contains("matrix")) {
+        if (j.size() != 1) r.error(where, "\"matrix\" cannot be combined with translate, rotate_deg or scale");
+        const json& m = j["matrix"];
+        std::string w = Reader::field(where, "matrix");
+        if (!m.is_array() || m.size() != 16) r.error(w, "expected an array of 16 numbers (column-major)");
+        glm::mat4 matrix;
+        for (int i = 0; i < 16; ++i) matrix[i / 4][i % 4] = r.number(m[i], w + "[" + std::to_string(i) + "]");
+        float det = glm::determinant(glm::mat3(matrix));
+        if (!(std::abs(det) > 1e-12f) || !std::isfinite(det)) r.error(w, "the matrix is singular (it flattens the object)");
+        if (matrix[0][3] != 0.0f || matrix[1][3] != 0.0f || matrix[2][3] != 0.0f || matrix[3][3] != 1.0f)
+            r.error(w, "the last row must be 0, 0, 0, 1 (an affine transform)");
+        t.matrix = matrix;
+        return t;
+    }
+    if (j.contains("translate")) t.translate = r.vec3(j["translate"], Reader::field(where, "translate"));
+    if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], Reader::field(where, "rotate_deg"));
+    if (j.contains("scale")) {
+        t.scale = r.number(j["scale"], Reader::field(where, "scale"));
+        if (!(t.scale > 0.0f) || t.scale > 1e6f) r.error(Reader::field(where, "scale"), "must be > 0 and <= 1e6");
+    }
+    return t;
+}
+
+SceneCamera read_camera(const json& j, const Reader& r, const std::string& where) {
+    r.expect_object(j, where, {"yaw", "pitch", "distance", "world_distance", "target", "fov_y"});
+    SceneCamera c;
+    if (j.contains("yaw")) c.yaw_deg = r.number(j["yaw"], Reader::field(where, "yaw"));
+    if (j.contains("pitch")) {
+        c.pitch_deg = r.number(j["pitch"], Reader::field(where, "pitch"));
+        if (std::abs(c.pitch_deg) > 90.0f) r.error(Reader::field(where, "pitch"), "must be in -90..90 degrees");
+    }
+    if (j.contains("distance") && j.contains("world_distance"))
+        r.error(where, "give either distance (a multiple of the framing distance) or world_distance, not both");
+    if (j.contains("distance")) {
+        c.distance = r.number(j["distance"], Reader::field(where, "distance"));
+        if (!(c.distance > 0.0f) || c.distance > 1e4f) r.error(Reader::field(where, "distance"), "must be in (0, 10000]");
+    }
+    if (j.contains("world_distance")) {
+        float d = r.number(j["world_distance"], Reader::field(where, "world_distance"));
+        if (!(d > 0.0f)) r.error(Reader::field(where, "world_distance"), "must be > 0");
+        c.world_distance = d;
+    }
+    if (j.contains("target")) c.target = r.vec3(j["target"], Reader::field(where, "target"));
+    if (j.contains("fov_y")) {
+        c.fov_y_deg = r.number(j["fov_y"], Reader::field(where, "fov_y"));
+        if (!(c.fov_y_deg >= 1.0f && c.fov_y_deg <= 150.0f)) r.error(Reader::field(where, "fov_y"), "must be in 1..150 degrees");
+    }
+    return c;
+}
+
+json camera_json(const SceneCamera& c) {
+    json j = {{"yaw", number(c.yaw_deg)}, {"pitch", number(c.pitch_deg)}};
+    if (c.world_distance)
+        j["world_distance"] = number(*c.world_distance);
+    else
+        j["distance"] = number(c.distance);
+    if (c.target) j["target"] = vec3_json(*c.target);
+    j["fov_y"] = number(c.fov_y_deg);
+    return j;
+}
+
+}  // namespace
+
+std::vector<std::string> scene_param_names() {
+    std::vector<std::string> names;
+    for (const ParamField& f : param_fields()) names.push_back(f.name);
+    return names;
+}
+
+Scene parse_scene(const std::string& text, const std::string& source, const std::filesystem::path& base_dir) {
+    Reader r(source);
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        std::string message = e.what();
+        if (size_t bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
+            message = message.substr(bracket + 2);  // drop nlohmann's "[json.exception.parse_error.101] "
+        for (char& c : message)
+            if (c == '\n' || c == '\r') c = ' ';
+        r.error("", "not valid JSON: " + message);
+    }
+    r.expect_object(root, "", {"objects", "camera", "camera_path", "light", "paper", "ink"});
+    Scene scene;
+    scene.source = source;
+    scene.base_dir = base_dir;
+    if (!root.contains("objects")) r.error("objects", "required field is missing");
+    const json& objects = root["objects"];
+    if (!objects.is_array()) r.error("objects", std::string("expected an array, got ") + objects.type_name());
+    if (objects.empty()) r.error("objects", "the scene has no objects (at least one is needed)");
+    for (size_t i = 0; i < objects.size(); ++i) {
+        std::string where = "objects[" + std::to_string(i) + "]";
+        const json& o = objects[i];
+        r.expect_object(o, where, {"model", "transform", "params"});
+        SceneObject object;
+        if (!o.contains("model")) r.error(Reader::field(where, "model"), "required field is missing");
+        object.model = r.string(o["model"], Reader::field(where, "model"));
+        if (object.model.empty()) r.error(Reader::field(where, "model"), "the model path is empty");
+        if (o.contains("transform")) object.transform = read_transform(o["transform"], r, Reader::field(where, "transform"));
+        if (o.contains("params")) object.params = read_params(o["params"], r, Reader::field(where, "params"));
+        scene.objects.push_back(std::move(object));
+    }
+    if (root.contains("camera")) scene.camera = read_camera(root["camera"], r, "camera");
+    if (root.contains("camera_path")) {
+        const json& path = root["camera_path"];
+        if (!path.is_array() || path.empty()) r.error("camera_path", "expected a non-empty array of cameras");
+        for (size_t i = 0; i < path.size(); ++i)
+            scene.camera_path.push_back(read_camera(path[i], r, "camera_path[" + std::to_string(i) + "]"));
+    }
+    if (root.contains("light")) {
+        scene.light = r.vec3(root["light"], "light");
+        if (glm::length(scene.light) < 1e-6f) r.error("light", "the light direction must not be the zero vector");
+    }
+    if (root.contains("paper")) scene.paper = r.color(root["paper"], "paper");
+    if (root.contains("ink")) scene.ink = r.color(root["ink"], "ink");
+    return scene;
+}
+
+Scene load_scene(const std::string& path) {
+    if (std::filesystem::is_directory(path)) fail_file(path, "is a directory, not a scene file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail_file(path, "cannot open the scene file (missing or unreadable)");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::filesystem::path base = std::filesystem::absolute(path).parent_path();
+    Scene scene = parse_scene(text.str(), path, base);
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        std::string model = scene.model_path(i);
+        if (!std::filesystem::is_regular_file(model))
+            fail_file(path, "objects[" + std::to_string(i) + "].model: no such model file: " + model);
+    }
+    return scene;
+}
+
+std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_dir) {
+    json objects = json::array();
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        std::filesystem::path model = std::filesystem::absolute(scene.model_path(i)).lexically_normal();
+        std::filesystem::path relative = model.lexically_relative(std::filesystem::absolute(save_dir).lexically_normal());
+        json object = {{"model", relative.empty() ? model.string() : relative.string()}};
+        if (o.transform.matrix) {
+            json m = json::array();
+            for (int k = 0; k < 16; ++k) m.push_back(number((*o.transform.matrix)[k / 4][k % 4]));
+            object["transform"] = {{"matrix", m}};
+        } else {
+            object["transform"] = {{"translate", vec3_json(o.transform.translate)},
+                                   {"rotate_deg", vec3_json(o.transform.rotate_deg)},
+                                   {"scale", number(o.transform.scale)}};
+        }
+        json params = json::object();
+        for (const ParamField& f : param_fields()) params[f.name] = f.write(o.params);
+        object["params"] = params;
+        objects.push_back(object);
+    }
+    json root = {{"objects", objects}, {"camera", camera_json(scene.camera)}};
+    if (!scene.camera_path.empty()) {
+        json path = json::array();
+        for (const SceneCamera& c : scene.camera_path) path.push_back(camera_json(c));
+        root["camera_path"] = path;
+    }
+    root["light"] = vec3_json(scene.light);
+    root["paper"] = vec3_json(scene.paper);
+    root["ink"] = vec3_json(scene.ink);
+    return root.dump(2) + "\n";
+}
+
+void save_scene(const std::string& path, const Scene& scene) {
+    std::filesystem::path file = std::filesystem::absolute(path);
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    std::string text = scene_to_json(scene, file.parent_path());
+    // Write beside and rename, so a failed write never leaves a half scene where a good one was.
+    std::filesystem::path temporary = file;
+    temporary += ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) fail_file(path, "cannot write the scene file");
+        out << text;
+        if (!out.flush()) fail_file(path, "cannot write the scene file (disk full?)");
+    }
+    std::filesystem::rename(temporary, file, ec);
+    if (ec) fail_file(path, "cannot write the scene file: " + ec.message());
+}
+
+}  // namespace stipple

@@ -1,0 +1,303 @@
+// Scene files: a saved scene loads back to the same image; objects in one frame keep their own
+// parameters and their own distance enhancement (paper §2.3, Fig. 3); and every malformed file gets
+// one line naming the file, the field and the problem (API and command line alike).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/error.hpp"
+#include "io/png_io.hpp"
+#include "mesh/primitives.hpp"
+#include "scene/frame_sequence.hpp"
+#include "scene/scene_content.hpp"
+#include "scene/scene_json.hpp"
+#include "support/gpu_test.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::GpuTest;
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A unit sphere as an OBJ file: scenes refer to models by path.
+std::filesystem::path write_sphere_obj(const std::filesystem::path& dir) {
+    Mesh mesh = make_icosphere(4);
+    std::ostringstream obj;
+    obj.precision(9);
+    for (const glm::vec3& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    for (size_t t = 0; t < mesh.triangle_count(); ++t)
+        obj << "f " << mesh.indices[3 * t] + 1 << ' ' << mesh.indices[3 * t + 1] + 1 << ' ' << mesh.indices[3 * t + 2] + 1
+            << '\n';
+    write_text(dir / "sphere.obj", obj.str());
+    return dir / "sphere.obj";
+}
+
+RenderedFrame render_scene(const gpu::Context& context, const Scene& scene, VkExtent2D extent) {
+    SceneContent content = load_scene_content(scene);
+    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    add_scene_objects(renderer, scene, content.objects);
+    Sphere bounds = scene_bounds(scene, content.objects);
+    float aspect = float(extent.width) / float(extent.height);
+    OrbitCamera camera = frame_cameras(scene, bounds, aspect, 1, std::nullopt).at(0);
+    OffscreenTarget target(context, extent);
+    return target.render(renderer, scene_frame_view(scene, camera, bounds, extent));
+}
+
+// Mean darkness over the covered pixels left and right of column `split`.
+std::pair<double, double> tone_left_right(const RenderedFrame& frame, int split) {
+    double sum[2] = {0, 0};
+    size_t count[2] = {0, 0};
+    for (int y = 0; y < frame.color.height; ++y)
+        for (int x = 0; x < frame.color.width; ++x) {
+            size_t i = size_t(y) * frame.color.width + x;
+            if (frame.depth[i] >= 1.0f) continue;
+            int side = x < split ? 0 : 1;
+            sum[side] += 1.0 - frame.color.pixels[4 * i] / 255.0;
+            ++count[side];
+        }
+    EXPECT_GT(count[0], 1000u) << "left object not in the frame";
+    EXPECT_GT(count[1], 300u) << "right object not in the frame";
+    return {count[0] ? sum[0] / count[0] : 0.0, count[1] ? sum[1] / count[1] : 0.0};
+}
+
+Scene two_spheres(const std::filesystem::path& dir, float dmax_left, float dmax_right) {
+    Scene scene;
+    scene.base_dir = dir;
+    SceneObject left, right;
+    left.model = right.model = "sphere.obj";
+    left.transform.translate = {-1.25f, 0.0f, 0.0f};
+    right.transform.translate = {1.25f, 0.0f, 0.0f};
+    left.params.generation.dmax = dmax_left;
+    right.params.generation.dmax = dmax_right;
+    scene.objects = {left, right};
+    return scene;
+}
+
+TEST_F(GpuTest, SavedSceneLoadsBackToTheSameImage) {
+    auto dir = test::temp_dir("scene-roundtrip");
+    write_sphere_obj(dir);
+    Scene scene = two_spheres(dir, 0.08f, 0.2f);
+    scene.objects[0].transform.rotate_deg = {10.0f, 20.0f, 30.0f};
+    scene.objects[0].transform.scale = 0.9f;
+    ObjectParams& p = scene.objects[0].params;
+    p.generation.seed = 7;
+    p.generation.relax_iterations = 4;
+    p.generation.max_stipples = 200000;
+    p.shading_exponent = 2.5f;
+    p.pr = 1.5f;
+    p.min_area = 3.0f;
+    p.de = 1.25f;
+    p.point_size = 2.5f;
+    p.density_path = DensityPath::Cpu;
+    p.silhouette_width = 3.0f;
+    p.silhouette_thinning = false;
+    p.toon_sharpness = 8.0f;
+    scene.objects[1].transform.matrix =
+        glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.3f, 0.2f, -0.4f)), glm::vec3(0.5f));
+    scene.objects[1].params.intrinsic = false;
+    scene.objects[1].params.density_path = DensityPath::Indirect;
+    scene.camera.yaw_deg = 30.0f;
+    scene.camera.pitch_deg = 15.0f;
+    scene.camera.distance = 1.1f;
+    scene.camera_path = {scene.camera, SceneCamera{}};
+    scene.camera_path[1].world_distance = 9.0f;
+    scene.camera_path[1].target = glm::vec3(0.1f, 0.2f, 0.3f);
+    scene.light = {0.3f, 0.8f, 0.5f};
+    scene.paper = {1.0f, 0.95f, 0.9f};
+    scene.ink = {0.1f, 0.05f, 0.0f};
+
+    // Saved one folder down: the model path must be rewritten relative to the new file.
+    std::string file = (dir / "saved" / "scene.json").string();
+    save_scene(file, scene);
+    std::string text = read_text(file);
+    EXPECT_NE(text.find("\"../sphere.obj\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"dmax\": 0.08"), std::string::npos) << "floats are written in their short form\n" << text;
+    Scene loaded = load_scene(file);
+    ASSERT_EQ(loaded.objects.size(), 2u);
+    EXPECT_TRUE(std::filesystem::equivalent(loaded.model_path(0), scene.model_path(0)));
+    EXPECT_EQ(scene_to_json(loaded, dir), scene_to_json(scene, dir)) << "every field survives the round trip";
+
+    RenderedFrame original = render_scene(*context, scene, {400, 300});
+    RenderedFrame again = render_scene(*context, loaded, {400, 300});
+    EXPECT_EQ(fraction_differing(original.color, again.color, 0), 0.0) << "the loaded scene draws another image";
+    EXPECT_GT(test::measure_ink(original).inked_inside, 500u) << "the scene should draw stipples";
+}
+
+TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
+    auto dir = test::temp_dir("scene-text");
+    Scene scene = parse_scene(R"({"objects": [{"model": "a.obj", "params": {"silhouette": "toon", "shading": false,
+        "extrinsic": false, "silhouette_thinning": false, "density_path": "indirect"}}]})",
+                              "inline.json", dir);
+    Scene back = parse_scene(scene_to_json(scene, dir), "again.json", dir);
+    const ObjectParams& p = back.objects.at(0).params;
+    EXPECT_EQ(p.silhouette, SilhouetteMode::Toon);
+    EXPECT_FALSE(p.shading);
+    EXPECT_FALSE(p.extrinsic);
+    EXPECT_TRUE(p.intrinsic);
+    EXPECT_FALSE(p.silhouette_thinning);
+    EXPECT_EQ(p.density_path, DensityPath::Indirect);
+}
+
+TEST_F(GpuTest, ObjectsInOneFrameKeepTheirOwnDensity) {
+    auto dir = test::temp_dir("scene-two-objects");
+    write_sphere_obj(dir);
+    VkExtent2D extent{640, 320};
+    // Light and dark: each sphere draws with its own D_max; swapping the values swaps the tones.
+    auto [light_left, dark_right] = tone_left_right(render_scene(*context, two_spheres(dir, 0.03f, 0.25f), extent), 320);
+    auto [dark_left, light_right] = tone_left_right(render_scene(*context, two_spheres(dir, 0.25f, 0.03f), extent), 320);
+    std::printf("tone left/right: dmax 0.03|0.25 -> %.3f|%.3f, 0.25|0.03 -> %.3f|%.3f\n", light_left, dark_right,
+                dark_left, light_right);
+    EXPECT_LT(light_left, 0.6 * dark_right);
+    EXPECT_LT(light_right, 0.6 * dark_left);
+    EXPECT_NEAR(light_left, light_right, 0.25 * light_left) << "the same parameters should give the same tone";
+}
+
+TEST_F(GpuTest, ObjectsAtDifferentScalesKeepTheirTone) {
+    // Paper Fig. 3: a large and a small object in one image. The extrinsic enhancement works per
+    // object, from each one's own scale on screen, so both keep the tone their parameters ask for.
+    // Turning it off for the small object alone crams all its candidates into few pixels: it darkens,
+    // and the large object does not change.
+    auto dir = test::temp_dir("scene-scales");
+    write_sphere_obj(dir);
+    auto tones = [&](bool small_extrinsic) {
+        Scene scene = two_spheres(dir, 0.04f, 0.04f);
+        scene.objects[0].transform.translate = {-0.9f, 0.0f, 0.0f};
+        scene.objects[1].transform.translate = {1.0f, 0.0f, 0.0f};
+        scene.objects[1].transform.scale = 0.3f;
+        scene.objects[1].params.extrinsic = small_extrinsic;
+        auto [big, small] = tone_left_right(render_scene(*context, scene, {800, 400}), 560);
+        std::printf("small object's extrinsic %s: tone big %.3f, small %.3f\n", small_extrinsic ? "on" : "off", big,
+                    small);
+        return std::make_pair(big, small);
+    };
+    auto [big_on, small_on] = tones(true);
+    auto [big_off, small_off] = tones(false);
+    EXPECT_GT(small_on / big_on, 0.6) << "same parameters, different scales: the tone should hold";
+    EXPECT_LT(small_on / big_on, 1.6) << "same parameters, different scales: the tone should hold";
+    EXPECT_GT(small_off, 2.0 * small_on) << "without its enhancement the small object should darken";
+    EXPECT_NEAR(big_off, big_on, 0.02) << "the other object's enhancement is its own";
+}
+
+struct BadScene {
+    const char* name;
+    const char* json;
+    const char* field;    // expected in the message
+    const char* problem;  // expected in the message
+};
+
+class BadSceneFile : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(BadSceneFile, OneLineNamingFileFieldAndProblem) {
+    const BadScene& bad = GetParam();
+    auto dir = test::temp_dir(std::string("scene-bad-") + bad.name);
+    write_sphere_obj(dir);
+    write_text(dir / "broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+    std::string file = (dir / "scene.json").string();
+    write_text(file, bad.json);
+
+    // The library: load (and, for a broken model, load the content) throws one line.
+    std::string message;
+    try {
+        load_scene_content(load_scene(file));
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find(file), std::string::npos) << message;
+    EXPECT_NE(message.find(bad.field), std::string::npos) << message;
+    EXPECT_NE(message.find(bad.problem), std::string::npos) << message;
+
+    // The command line: render and view fail before drawing or opening a window, exit 1, one line.
+    for (const char* command : {"render", "view"}) {
+        std::vector<std::string> args{command, file};
+        if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
+        auto result = test::run_stipple(args);
+        EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+        EXPECT_NE(result.err.find(file), std::string::npos) << result.err;
+        EXPECT_NE(result.err.find(bad.field), std::string::npos) << result.err;
+        EXPECT_NE(result.err.find(bad.problem), std::string::npos) << result.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, BadSceneFile,
+    ::testing::Values(
+        BadScene{"not_json", "{\"objects\": [ {\"model\": ", "not valid JSON", "parse error"},
+        BadScene{"not_an_object", "[1, 2, 3]", "scene.json: expected an object", "got array"},
+        BadScene{"wrong_type", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": "dark"}}]})",
+                 "objects[0].params.dmax", "expected a number, got string"},
+        BadScene{"wrong_type_vector", R"({"objects": [{"model": "sphere.obj"}], "light": [1, 2]})", "light",
+                 "expected an array of 3 numbers"},
+        BadScene{"unknown_param", R"({"objects": [{"model": "sphere.obj", "params": {"dmx": 0.2}}]})",
+                 "objects[0].params.dmx", "unknown field"},
+        BadScene{"unknown_top_level", R"({"objects": [{"model": "sphere.obj"}], "lights": [1, 1, 1]})", "lights",
+                 "unknown field"},
+        BadScene{"missing_model_field", R"({"objects": [{"params": {}}]})", "objects[0].model",
+                 "required field is missing"},
+        BadScene{"missing_model_file", R"({"objects": [{"model": "sphere.obj"}, {"model": "nowhere.obj"}]})",
+                 "objects[1].model", "no such model file"},
+        BadScene{"broken_model", R"({"objects": [{"model": "broken.obj"}]})", "objects[0].model", "broken.obj"},
+        BadScene{"out_of_range", R"({"objects": [{"model": "sphere.obj"}, {"model": "sphere.obj", "params": {"dmax": 20}}]})",
+                 "objects[1].params.dmax", "out of range"},
+        BadScene{"negative_integer", R"({"objects": [{"model": "sphere.obj", "params": {"seed": -3}}]})",
+                 "objects[0].params.seed", "out of range"},
+        BadScene{"bad_enum", R"({"objects": [{"model": "sphere.obj", "params": {"density_path": "gpu"}}]})",
+                 "objects[0].params.density_path", "not one of vertex, cpu, indirect"},
+        BadScene{"bad_scale", R"({"objects": [{"model": "sphere.obj", "transform": {"scale": -1}}]})",
+                 "objects[0].transform.scale", "must be > 0"},
+        BadScene{"singular_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
+                 [1,0,0,0, 0,0,0,0, 0,0,1,0, 0,0,0,1]}}]})",
+                 "objects[0].transform.matrix", "singular"},
+        BadScene{"bad_colour", R"({"objects": [{"model": "sphere.obj"}], "paper": [1, 2, 0]})", "paper", "0..1"},
+        BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",
+                 "camera.distance", "must be in"},
+        BadScene{"empty_objects", R"({"objects": []})", "objects", "no objects"},
+        BadScene{"no_objects", R"({"camera": {"yaw": 3}})", "objects", "required field is missing"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Scene, ObjectOptionsAreNotMixedWithASceneFile) {
+    auto dir = test::temp_dir("scene-mixed-options");
+    write_sphere_obj(dir);
+    write_text(dir / "scene.json", R"({"objects": [{"model": "sphere.obj"}]})");
+    auto result = test::run_stipple({"render", (dir / "scene.json").string(), "--dmax", "0.3", "-o",
+                                     (dir / "out.png").string()});
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.err.find("--dmax cannot be combined with a scene file"), std::string::npos) << result.err;
+}
+
+TEST(Scene, ASceneOfOneModelRendersLikeTheModel) {
+    // `render SCENE.json` and `render MODEL` share one path: a scene holding the default model with
+    // default parameters and camera draws exactly the image of `render` with that model.
+    auto dir = test::temp_dir("scene-vs-model");
+    std::string model = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    write_text(dir / "scene.json", "{\"objects\": [{\"model\": \"" + model + "\"}]}");
+    auto a = test::run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "scene.png").string(),
+                                "--width", "480", "--height", "360", "--yaw", "25"});
+    auto b = test::run_stipple({"render", model, "-o", (dir / "model.png").string(), "--width", "480", "--height", "360",
+                                "--yaw", "25"});
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_EQ(read_text(dir / "scene.png"), read_text(dir / "model.png"));
+}
+
+}  // namespace
+}  // namespace stipple
