@@ -103,7 +103,7 @@ TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
     EXPECT_GT(drawn, 5000u);
 }
 
-TEST_F(GpuTest, ThreePathsDrawExactlyTheSameStipples) {
+TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
     ObjectParams params;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     RendererOptions options;
@@ -116,7 +116,7 @@ TEST_F(GpuTest, ThreePathsDrawExactlyTheSameStipples) {
     std::vector<RenderedFrame> frames;
     std::vector<std::vector<uint32_t>> masks;
     uint32_t cpu_draws = 0, gpu_draws = 0;
-    for (DensityPath path : {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect}) {
+    for (DensityPath path : kAllDensityPaths) {
         renderer.params(0).density_path = path;
         frames.push_back(target.render(renderer, view));
         masks.push_back(renderer.drawn_mask(0));
@@ -133,10 +133,15 @@ TEST_F(GpuTest, ThreePathsDrawExactlyTheSameStipples) {
     EXPECT_GT(test::popcount(masks[0]), 10000u);
     EXPECT_LT(test::popcount(masks[0]), blob.stipples.size());
     for (size_t i = 1; i < masks.size(); ++i) {
-        EXPECT_EQ(masks[i], masks[0]) << "path " << i << " drew a different set of stipples";
-        double differing = fraction_differing(frames[0].color, frames[i].color, 0);
-        std::printf("path %zu: %.4f%% of pixels differ from the vertex path\n", i, 100.0 * differing);
-        EXPECT_LE(differing, 0.001);
+        DensityPath path = kAllDensityPaths[i];
+        EXPECT_EQ(masks[i], masks[0]) << density_path_name(path) << " drew a different set of stipples";
+        // The rasterising paths blend in the same order; the compute splat composites in float and
+        // rounds once, so its pixels may differ from blending's 8-bit steps by a level or two.
+        bool splat = path == DensityPath::Splat;
+        double differing = fraction_differing(frames[0].color, frames[i].color, splat ? 2 : 0);
+        std::printf("%s path: %.4f%% of pixels differ from the vertex path\n", density_path_name(path),
+                    100.0 * differing);
+        EXPECT_LE(differing, splat ? 0.01 : 0.001);
     }
 }
 

@@ -201,6 +201,7 @@ StippleLayout create_stipple_layout(const Context& context) {
         {kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
     };
     StippleLayout layout;
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -221,7 +222,32 @@ StippleLayout create_stipple_layout(const Context& context) {
 void destroy_stipple_layout(const Context& context, StippleLayout& layout) {
     if (layout.pipeline_layout) vkDestroyPipelineLayout(context.device, layout.pipeline_layout, nullptr);
     if (layout.set_layout) vkDestroyDescriptorSetLayout(context.device, layout.set_layout, nullptr);
+    if (layout.image_set_layout) vkDestroyDescriptorSetLayout(context.device, layout.image_set_layout, nullptr);
     layout = {};
+}
+
+StippleLayout create_splat_layout(const Context& context, VkDescriptorSetLayout object_set_layout) {
+    const VkShaderStageFlags stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    VkDescriptorSetLayoutBinding bindings[] = {
+        {kBindingInkAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
+        {kBindingSceneDepth, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
+        {kBindingColorBuffer, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
+    };
+    StippleLayout layout;
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = uint32_t(std::size(bindings));
+    set_info.pBindings = bindings;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &layout.image_set_layout));
+    VkDescriptorSetLayout sets[] = {object_set_layout, layout.image_set_layout};
+    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                             kPushConstantBytes};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 2;
+    layout_info.pSetLayouts = sets;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout.pipeline_layout));
+    return layout;  // set_layout stays null: the object set layout belongs to the stipple layout
 }
 
 }  // namespace stipple::gpu

@@ -17,6 +17,7 @@ using glm::dot;
 using glm::exp;
 using glm::floor;
 using glm::length;
+using glm::log;
 using glm::mat3;
 using glm::max;
 using glm::min;

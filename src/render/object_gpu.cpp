@@ -54,6 +54,7 @@ void write_descriptors(VkDevice device, VkDescriptorSet set, const Buffer& frame
         {gpu::kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.triangle_info.handle()},
         {gpu::kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.gpu_commands.handle()},
         {gpu::kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.debug.handle()},
+        {gpu::kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.stipples.handle()},
     };
     VkDescriptorBufferInfo infos[std::size(entries)];
     VkWriteDescriptorSet writes[std::size(entries)];
@@ -107,7 +108,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->normals = gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     object->indices = gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     object->stipples = gpu::create_device_buffer(context, std::span<const gpu::StippleVertex>(vertices),
-                                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+                                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
     object->triangle_info =
         gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(object->triangles), storage);
     object->triangle_draw = gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
@@ -122,7 +123,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->object_uniforms =
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = uint32_t(std::size(sizes));

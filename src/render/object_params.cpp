@@ -26,12 +26,13 @@ const char* density_path_name(DensityPath path) {
         case DensityPath::Vertex: return "vertex";
         case DensityPath::Cpu: return "cpu";
         case DensityPath::Indirect: return "indirect";
+        case DensityPath::Splat: return "splat";
     }
     return "?";
 }
 
 std::optional<DensityPath> parse_density_path(const std::string& name) {
-    for (DensityPath p : {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect})
+    for (DensityPath p : kAllDensityPaths)
         if (name == density_path_name(p)) return p;
     return std::nullopt;
 }

@@ -12,7 +12,11 @@ enum class DensityPath {
     Vertex,    // compute pass writes densities; every candidate drawn, vertex shader culls (§3.2)
     Cpu,       // CPU computes densities; only surviving ranges are submitted (the "no vertex program" path)
     Indirect,  // compute pass also writes compacted draws; vkCmdDrawIndirectCount
+    Splat,     // compute pass densities, then a compute pass draws the stipples itself (no rasteriser)
 };
+
+inline constexpr DensityPath kAllDensityPaths[] = {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect,
+                                                   DensityPath::Splat};
 
 const char* density_path_name(DensityPath path);
 std::optional<DensityPath> parse_density_path(const std::string& name);

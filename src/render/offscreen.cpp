@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "gpu/vk_check.hpp"
 
 namespace stipple {
 
@@ -24,7 +25,8 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent)
         fail("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
              " is out of range: 1.." + std::to_string(context.properties.limits.maxImageDimension2D) + " per side");
     color_ = gpu::Image(context, extent, kColorFormat,
-                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                        VK_IMAGE_ASPECT_COLOR_BIT);
     depth_ = gpu::Image(context, extent, kDepthFormat,
                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, kDepthAspect);
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
@@ -33,7 +35,7 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent)
 }
 
 RenderTargets OffscreenTarget::targets() const {
-    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_};
+    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true};
 }
 
 double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) {

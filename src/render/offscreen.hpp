@@ -24,6 +24,8 @@ struct RenderedFrame {
 class OffscreenTarget {
 public:
     OffscreenTarget(const gpu::Context& context, VkExtent2D extent);
+    OffscreenTarget(const OffscreenTarget&) = delete;
+    OffscreenTarget& operator=(const OffscreenTarget&) = delete;
     VkExtent2D extent() const { return extent_; }
     RenderTargets targets() const;
     // Prepares, records, submits and waits; reads back colour and depth.

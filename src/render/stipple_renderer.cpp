@@ -16,7 +16,7 @@ using gpu::MemoryUse;
 
 StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_format, VkFormat depth_format,
                                  RendererOptions options)
-    : context_(context), options_(options), depth_format_(depth_format), timer_(context) {
+    : context_(context), options_(options), depth_format_(depth_format), timer_(context), color_format_(color_format) {
     layout_ = gpu::create_stipple_layout(context);
     create_pipelines(color_format, depth_format);
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
@@ -26,8 +26,10 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, draw_commands_pipeline_,
-                         toon_pipeline_, silhouette_pipeline_})
+                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_, resolve_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
+    if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
+    gpu::destroy_stipple_layout(context_, splat_layout_);
     gpu::destroy_stipple_layout(context_, layout_);
 }
 
@@ -84,6 +86,24 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layout_.pipeline_layout);
 
     density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout);
+
+    splat_layout_ = gpu::create_splat_layout(context_, layout_.set_layout);
+    const uint32_t count = options_.count_drawn ? 1u : 0u;
+    splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
+                                                   {{{0u, count}, {1u, 0u}}});
+    resolve_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
+                                                     {{{0u, 0u}, {1u, 1u}}});
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
+    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool.maxSets = 1;
+    pool.poolSizeCount = uint32_t(std::size(sizes));
+    pool.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(context_.device, &pool, nullptr, &image_pool_));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = image_pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &splat_layout_.image_set_layout;
+    VK_CHECK(vkAllocateDescriptorSets(context_.device, &alloc, &image_set_));
     draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layout_.pipeline_layout);
 }
 
@@ -134,6 +154,10 @@ void StippleRenderer::prepare(const FrameView& view) {
         stats_.candidate_stipples += object->stipple_count;
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+}
+
+bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
+    return object.params.density_path == DensityPath::Splat && splat_targets_;
 }
 
 void StippleRenderer::record_density(VkCommandBuffer cb) {
@@ -219,7 +243,7 @@ void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
 void StippleRenderer::record_stipples(VkCommandBuffer cb) {
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, stipple_pipeline_);
     for (const auto& object : objects_) {
-        if (object->stipple_count == 0) continue;
+        if (object->stipple_count == 0 || uses_splat(*object)) continue;
         VkDeviceSize offset = 0;
         VkBuffer vb = object->stipples.handle();
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
@@ -227,6 +251,7 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
         switch (object->params.density_path) {
             case DensityPath::Vertex:  // every candidate; the vertex shader culls (§3.2)
+            case DensityPath::Splat:   // targets without storage images: drawn as the vertex path
                 vkCmdDraw(cb, object->stipple_count, 1, 0, 0);
                 break;
             case DensityPath::Cpu:
@@ -243,6 +268,9 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
 }
 
 void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
+    const bool packed_color = color_format_ == VK_FORMAT_R8G8B8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_UNORM ||
+                              color_format_ == VK_FORMAT_R8G8B8A8_SRGB || color_format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    splat_targets_ = packed_color && targets.splat_transfers;
     timer_.begin_frame(cb);
     record_density(cb);
     timer_.mark(cb, "density");
@@ -274,6 +302,10 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     record_stipples(cb);
     vkCmdEndRendering(cb);
     timer_.mark(cb, "stipples");
+    if (std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); })) {
+        record_splat(cb, targets);
+        timer_.mark(cb, "resolve");
+    }
     if (any_lines) {  // extra pipelines cost nothing when off: not even a pass is recorded
         begin_rendering(cb, targets, false);
         record_silhouette_lines(cb);
@@ -322,6 +354,103 @@ void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& t
     VkRect2D scissor{{0, 0}, targets.extent};
     vkCmdSetViewport(cb, 0, 1, &viewport);
     vkCmdSetScissor(cb, 0, 1, &scissor);
+}
+
+void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targets) {
+    const VkDeviceSize pixels = VkDeviceSize(targets.extent.width) * targets.extent.height;
+    const bool fresh = splat_extent_.width != targets.extent.width || splat_extent_.height != targets.extent.height;
+    if (fresh) {
+        const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        ink_accumulation_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                   gpu::MemoryUse::DeviceLocal);
+        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_extent_ = targets.extent;
+    }
+    VkDescriptorBufferInfo accumulation{ink_accumulation_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo depth{splat_depth_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo color{splat_color_.handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[3];
+    const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                      VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    const uint32_t bindings[] = {gpu::kBindingInkAccumulation, gpu::kBindingSceneDepth, gpu::kBindingColorBuffer};
+    for (int i = 0; i < 3; ++i) {
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = image_set_;
+        writes[i].dstBinding = bindings[i];
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = types[i];
+    }
+    writes[0].pBufferInfo = &accumulation;
+    writes[1].pBufferInfo = &depth;
+    writes[2].pBufferInfo = &color;
+    vkUpdateDescriptorSets(context_.device, 3, writes, 0, nullptr);  // the previous frame has completed
+
+    const bool stencil = gpu::format_has_stencil(depth_format_);
+    const VkImageAspectFlags depth_aspect =
+        stencil ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
+    const VkImageLayout depth_attachment =
+        stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {targets.extent.width, targets.extent.height, 1};
+
+    // The colour so far (paper, toon surfaces, other objects' stipples) into the buffer.
+    if (fresh) vkCmdFillBuffer(cb, ink_accumulation_.handle(), 0, VK_WHOLE_SIZE, 0);  // afterwards kept zero
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                       VK_ACCESS_2_TRANSFER_READ_BIT);
+    vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_color_.handle(), 1, &region);
+    gpu::image_barrier(cb, targets.depth, depth_aspect, depth_attachment, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    VkBufferImageCopy depth_region = region;
+    depth_region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    vkCmdCopyImageToBuffer(cb, targets.depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_depth_.handle(), 1,
+                           &depth_region);
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    const uint32_t blue_first =
+        color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    auto dispatch_all = [&](VkPipeline pipeline) {
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+        vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
+                           VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, 4, &blue_first);
+        for (const auto& object : objects_) {
+            if (!uses_splat(*object) || object->triangle_count == 0) continue;
+            VkDescriptorSet sets[] = {object->set, image_set_};
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
+                                    nullptr);
+            vkCmdDispatch(cb, (object->triangle_count + group - 1) / group, 1, 1);
+        }
+    };
+    dispatch_all(splat_pipeline_);
+    timer_.mark(cb, "splat");
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    dispatch_all(resolve_pipeline_);
+
+    // Back into the colour image, and both images back to attachments for what follows.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdCopyBufferToImage(cb, splat_color_.handle(), targets.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    gpu::image_barrier(cb, targets.depth, depth_aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth_attachment,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
 void StippleRenderer::collect() {

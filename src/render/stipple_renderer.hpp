@@ -43,6 +43,9 @@ struct RenderTargets {
     VkImage depth = VK_NULL_HANDLE;
     VkImageView depth_view = VK_NULL_HANDLE;
     VkExtent2D extent{};
+    // For the compute splat: colour and depth images with TRANSFER_SRC usage, the colour also with
+    // TRANSFER_DST (8-bit RGBA or BGRA). Without them, splat objects are drawn by the vertex path.
+    bool splat_transfers = false;
 };
 
 struct RendererOptions {
@@ -93,6 +96,8 @@ private:
     void record_stipples(VkCommandBuffer cb);
     void record_silhouette_lines(VkCommandBuffer cb);
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
+    void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
+    bool uses_splat(const ObjectGpu& object) const;
 
     const gpu::Context& context_;
     RendererOptions options_;
@@ -104,6 +109,18 @@ private:
     VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
+    // Compute splat: its layout (object set + frame images), pipelines, and frame images.
+    gpu::StippleLayout splat_layout_;
+    VkPipeline splat_pipeline_ = VK_NULL_HANDLE;    // pass 0: full stipples stored, fractional ones summed
+    VkPipeline resolve_pipeline_ = VK_NULL_HANDLE;  // pass 1: fractional sums composited (and reset)
+    VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet image_set_ = VK_NULL_HANDLE;
+    gpu::Buffer ink_accumulation_;  // zero between frames: the resolve resets what the splat added
+    gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it
+    gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's depth test
+    VkExtent2D splat_extent_{};
+    VkFormat color_format_;
+    bool splat_targets_ = false;  // this frame's targets support the splat
     gpu::Buffer frame_uniforms_;
     gpu::FrameUniforms frame_{};
     gpu::GpuTimer timer_;
