@@ -18,24 +18,11 @@
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple {
 
 namespace {
-
-// tinygltf reports several problems, one per line, and quotes file bytes; our errors are one line.
-std::string one_line(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '\n' || c == '\r') {
-            if (!out.empty() && out.back() != ' ') out += "; ";
-        } else {
-            out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
-        }
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-    return out;
-}
 
 // Images play no part in stippling: skip decoding them (and any failure to).
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {

@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple {
 
@@ -462,20 +463,6 @@ void read_body(Reader& r, const Header& h, Target& t) {
                                   std::to_string(done));
         }
     }
-}
-
-// The whole file in one read: the binary parser then works on plain memory.
-std::string read_file(const std::string& path) {
-    std::error_code ec;
-    const uintmax_t size = std::filesystem::file_size(path, ec);
-    if (ec) fail_file(path, "cannot read: " + ec.message());
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) fail_file(path, std::string("cannot open: ") + std::strerror(errno));
-    std::string data(size, '\0');
-    const size_t got = std::fread(data.data(), 1, data.size(), f);
-    std::fclose(f);
-    if (got != size) fail_file(path, "read error after " + std::to_string(got) + " of " + std::to_string(size) + " bytes");
-    return data;
 }
 
 }  // namespace

@@ -36,6 +36,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "stipple/progressive_order.hpp"
@@ -48,15 +49,6 @@ namespace {
 
 constexpr size_t kTriangleChunk = 16384;
 constexpr size_t kPointChunk = 16384;
-
-uint64_t mix64(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27;
-    x *= 0x94D049BB133111EBull;
-    x ^= x >> 31;
-    return x;
-}
 
 // The name errors start with: the file the mesh came from, or its generator's name.
 std::string source_name(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh") : mesh.source; }

@@ -1,3 +1,4 @@
+#include "core/hash.hpp"
 #include "stipple/progressive_order.hpp"
 
 #include <algorithm>
@@ -45,15 +46,6 @@ constexpr int kLevels = 4;          // cell levels: s(tau) from kSearch to 8 * k
 // query reads 2-3 cells per axis. (Smaller cells read fewer stipples but cost more in cell
 // lookups, larger ones the reverse; 3 measured fastest.)
 constexpr double kCellFactor = 3.0;
-
-uint64_t mix64(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 27;
-    x *= 0x94D049BB133111EBull;
-    x ^= x >> 31;
-    return x;
-}
 
 // Placed stipples of one slab (and its halo), on kLevels levels of cells of size cell0 * 2^level.
 // All stipples that may ever be placed are known beforehand, so each level is a counting-sort

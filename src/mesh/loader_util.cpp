@@ -1,0 +1,38 @@
+#include "mesh/loader_util.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/error.hpp"
+
+namespace stipple {
+
+std::string read_file(const std::string& path) {
+    std::error_code ec;
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) fail_file(path, "cannot read: " + ec.message());
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) fail_file(path, std::string("cannot open: ") + std::strerror(errno));
+    std::string data(size, '\0');
+    const size_t got = std::fread(data.data(), 1, data.size(), f);
+    std::fclose(f);
+    if (got != size) fail_file(path, "read error after " + std::to_string(got) + " of " + std::to_string(size) + " bytes");
+    return data;
+}
+
+std::string one_line(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') {
+            if (!out.empty() && out.back() != ' ') out += "; ";
+        } else {
+            out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
+        }
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    return out;
+}
+
+}  // namespace stipple
