@@ -1,4 +1,3 @@
-#include "core/hash.hpp"
 #include "stipple/progressive_order.hpp"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/hash.hpp"
 #include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 
