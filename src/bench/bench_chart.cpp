@@ -1,0 +1,216 @@
+// chart.svg: frames per second against polygon count, log-log; one series per column of ours (solid)
+// and per column of the paper's Table 1 (dashed, in the colour of our matching path). Hand-written SVG.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "bench/bench_output.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+constexpr double kWidth = 960, kHeight = 600;
+constexpr double kLeft = 80, kRight = 280, kTop = 50, kBottom = 70;  // margins; the legend sits on the right
+
+std::string format(const char* fmt, auto... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+}
+
+std::string escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '&') out += "&amp;";
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '"') out += "&quot;";
+        else out += c;
+    }
+    return out;
+}
+
+const char* path_colour(DensityPath path) {
+    switch (path) {
+        case DensityPath::Vertex: return "#1f77b4";
+        case DensityPath::Cpu: return "#d62728";
+        case DensityPath::Indirect: return "#2ca02c";
+        default: return "#9467bd";
+    }
+}
+
+struct Series {
+    std::string label;
+    std::string colour;
+    bool dashed = false;
+    bool square = false;  // marker: squares for "+ lines", circles otherwise
+    std::vector<std::pair<double, double>> points;  // (polygons, fps), sorted by polygons
+};
+
+// A log axis from the largest 1-2-5 step at or below `lo` to the smallest at or above `hi`.
+struct LogAxis {
+    double lo = 1, hi = 10;
+    double from = 0, to = 1;  // pixel positions of lo and hi
+    LogAxis(double lo_value, double hi_value, double from_px, double to_px) : from(from_px), to(to_px) {
+        lo = step_at_or_below(lo_value);
+        hi = step_at_or_above(hi_value);
+        if (hi <= lo) hi = step_at_or_above(lo * 1.5);
+    }
+    double map(double v) const { return from + (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) * (to - from); }
+    // Every k * 10^e in range (k = 1..9); `labelled` are the 1-2-5 ones.
+    std::vector<std::pair<double, bool>> ticks() const {
+        std::vector<std::pair<double, bool>> out;
+        for (int e = int(std::floor(std::log10(lo))) - 1; e <= int(std::ceil(std::log10(hi))); ++e)
+            for (int k = 1; k <= 9; ++k) {
+                double v = k * std::pow(10.0, e);
+                if (v >= lo * 0.999 && v <= hi * 1.001) out.emplace_back(v, k == 1 || k == 2 || k == 5);
+            }
+        return out;
+    }
+    static double step_at_or_below(double v) {
+        double decade = std::pow(10.0, std::floor(std::log10(v) + 1e-9));
+        for (double k : {5.0, 2.0, 1.0})
+            if (k * decade <= v * (1 + 1e-9)) return k * decade;
+        return decade;
+    }
+    static double step_at_or_above(double v) {
+        double decade = std::pow(10.0, std::floor(std::log10(v) - 1e-9));
+        for (double k : {1.0, 2.0, 5.0, 10.0})
+            if (k * decade >= v * (1 - 1e-9)) return k * decade;
+        return 10 * decade;
+    }
+};
+
+std::string tick_label(double v, bool polygons) {
+    if (polygons && v >= 1e6) return format("%gM", v / 1e6);
+    if (polygons && v >= 1e3) return format("%gk", v / 1e3);
+    return format("%g", v);
+}
+
+std::vector<Series> collect_series(const BenchResults& r) {
+    std::vector<Series> series;
+    for (const Column& c : r.columns) {
+        Series s{"ours: " + c.name(), path_colour(c.path), false, c.lines, {}};
+        for (const ModelResult& m : r.models)
+            for (const CellResult& cell : m.cells)
+                if (cell.column.path == c.path && cell.column.lines == c.lines && cell.median_fps > 0)
+                    s.points.emplace_back(double(m.entry.triangles), cell.median_fps);
+        std::sort(s.points.begin(), s.points.end());
+        if (!s.points.empty()) series.push_back(std::move(s));
+    }
+    // The paper's columns, over the rows this run measured (all rows when it measured none).
+    for (DensityPath path : {DensityPath::Vertex, DensityPath::Cpu})
+        for (bool lines : {false, true}) {
+            Column c{path, lines};
+            std::string label = std::string("paper: ") + (path == DensityPath::Vertex ? "vertex program" : "no vertex program");
+            Series s{label + (lines ? " + lines" : ""), path_colour(path), true, lines, {}};
+            for (const PaperRow& row : kPaperTable) {
+                bool measured = r.models.empty();
+                for (const ModelResult& m : r.models) measured |= m.entry.name == row.name;
+                if (measured) s.points.emplace_back(double(row.polygons), *paper_fps(row, c));
+            }
+            if (!s.points.empty()) series.push_back(std::move(s));
+        }
+    return series;
+}
+
+void marker(std::ostringstream& svg, const Series& s, double x, double y) {
+    if (s.square)
+        svg << format("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"%s\"/>\n", x - 3.5, y - 3.5,
+                      s.dashed ? "white" : s.colour.c_str());
+    else
+        svg << format("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", x, y,
+                      s.dashed ? "white" : s.colour.c_str());
+    if (s.dashed) {  // hollow markers for the paper
+        if (s.square)
+            svg << format("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"%s\"/>\n",
+                          x - 3.5, y - 3.5, s.colour.c_str());
+        else
+            svg << format("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"none\" stroke=\"%s\"/>\n", x, y,
+                          s.colour.c_str());
+    }
+}
+
+}  // namespace
+
+std::string svg_chart(const BenchResults& r) {
+    std::vector<Series> series = collect_series(r);
+    double x_lo = 1e4, x_hi = 1e6, y_lo = 1.0, y_hi = 100.0;
+    bool first = true;
+    for (const Series& s : series)
+        for (auto [x, y] : s.points) {
+            if (first) x_lo = x_hi = x, y_lo = y_hi = y, first = false;
+            x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+        }
+    const double plot_right = kWidth - kRight, plot_bottom = kHeight - kBottom;
+    LogAxis xa(x_lo, x_hi, kLeft, plot_right), ya(y_lo, y_hi, plot_bottom, kTop);
+
+    std::ostringstream svg;
+    svg << format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
+                  "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n",
+                  kWidth, kHeight, kWidth, kHeight);
+    svg << format("<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", kWidth, kHeight);
+    svg << format("<text x=\"%.0f\" y=\"24\" font-size=\"15\" font-weight=\"bold\">%s</text>\n", kLeft,
+                  escape(format("Frames per second against polygon count, %ux%u", r.width, r.height)).c_str());
+    svg << format("<text x=\"%.0f\" y=\"40\" fill=\"#555\">%s</text>\n", kLeft,
+                  escape("ours: " + r.device + " (solid); paper: GeForce3 Ti 500, 2002 (dashed)").c_str());
+
+    // Grid, ticks and tick labels: 1-2-5 steps labelled, the rest as minor ticks; decades darker.
+    for (auto [v, labelled] : xa.ticks()) {
+        double x = xa.map(v);
+        bool decade = std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9;
+        svg << format("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"%s\"/>\n", x, kTop, x, plot_bottom,
+                      decade ? "#bbb" : "#eee");
+        svg << format("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"black\"/>\n", x, plot_bottom, x,
+                      plot_bottom + (labelled ? 6 : 3));
+        if (labelled)
+            svg << format("<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%s</text>\n", x, plot_bottom + 20,
+                          tick_label(v, true).c_str());
+    }
+    for (auto [v, labelled] : ya.ticks()) {
+        double y = ya.map(v);
+        bool decade = std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9;
+        svg << format("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"%s\"/>\n", kLeft, y, plot_right, y,
+                      decade ? "#bbb" : "#eee");
+        svg << format("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"black\"/>\n",
+                      kLeft - (labelled ? 6 : 3), y, kLeft, y);
+        if (labelled)
+            svg << format("<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", kLeft - 9, y + 4,
+                          tick_label(v, false).c_str());
+    }
+    svg << format("<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" fill=\"none\" stroke=\"black\"/>\n",
+                  kLeft, kTop, plot_right - kLeft, plot_bottom - kTop);
+    svg << format("<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">polygons (triangles), log scale</text>\n",
+                  (kLeft + plot_right) / 2, kHeight - 25);
+    svg << format("<text transform=\"translate(24 %.0f) rotate(-90)\" text-anchor=\"middle\">frames per second, "
+                  "log scale</text>\n",
+                  (kTop + plot_bottom) / 2);
+
+    // The series.
+    for (const Series& s : series) {
+        std::string points;
+        for (auto [x, y] : s.points) points += format("%.1f,%.1f ", xa.map(x), ya.map(y));
+        svg << format("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%s\"%s/>\n", points.c_str(),
+                      s.colour.c_str(), s.square ? "1.5" : "2", s.dashed ? " stroke-dasharray=\"6 4\"" : "");
+        for (auto [x, y] : s.points) marker(svg, s, xa.map(x), ya.map(y));
+    }
+
+    // The legend.
+    double lx = plot_right + 20, ly = kTop + 8;
+    for (const Series& s : series) {
+        svg << format("<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"%s\" stroke-width=\"2\"%s/>\n",
+                      lx, ly, lx + 28, ly, s.colour.c_str(), s.dashed ? " stroke-dasharray=\"6 4\"" : "");
+        marker(svg, s, lx + 14, ly);
+        svg << format("<text x=\"%.0f\" y=\"%.0f\" font-size=\"11\">%s</text>\n", lx + 36, ly + 4,
+                      escape(s.label).c_str());
+        ly += 20;
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+}  // namespace stipple::bench

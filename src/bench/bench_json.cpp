@@ -1,0 +1,109 @@
+// results.json: every figure of the run, raw frame times included, for scripts and the tests.
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/bench_output.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+using nlohmann::json;
+
+json cell_json(const CellResult& cell) {
+    json passes = json::array();
+    for (const auto& [pass, ms] : cell.gpu_ms) passes.push_back({{"pass", pass}, {"ms", ms}});
+    json j = {
+        {"path", density_path_name(cell.column.path)},
+        {"silhouettes", cell.column.lines ? "lines" : "none"},
+        {"column", cell.column.name()},
+        {"median_fps", cell.median_fps},
+        {"min_fps", cell.min_fps},
+        {"max_fps", cell.max_fps},
+        {"median_frame_ms", cell.median_frame_ms},
+        {"frame_ms", cell.frame_ms},
+        {"gpu_ms", passes},
+        {"gpu_total_ms", cell.gpu_total_ms},
+        {"candidate_stipples", cell.candidates},
+        {"drawn_stipples", cell.drawn},
+        {"cpu_density_ms", cell.cpu_density_ms},
+        {"cpu_draw_commands", cell.cpu_draws},
+    };
+    j["paper_fps"] = cell.paper_fps ? json(*cell.paper_fps) : json(nullptr);
+    j["ratio_to_paper"] = cell.paper_fps ? json(cell.median_fps / *cell.paper_fps) : json(nullptr);
+    return j;
+}
+
+json model_json(const ModelResult& m) {
+    json buffers = json::object();
+    for (const auto& [name, bytes] : m.buffers) buffers[name] = bytes;
+    json cells = json::array();
+    for (const CellResult& cell : m.cells) cells.push_back(cell_json(cell));
+    return {
+        {"name", m.entry.name},
+        {"paper_polygons", m.entry.target},
+        {"triangles", m.entry.triangles},
+        {"procedural", m.entry.procedural},
+        {"source", m.entry.source},
+        {"file", m.entry.path.string()},
+        {"load_seconds", m.load_seconds},
+        {"preprocessing_seconds", m.generation_seconds},
+        {"upload_seconds", m.upload_seconds},
+        {"candidate_stipples", m.candidates},
+        {"drawn_stipples", m.drawn},
+        {"covered_pixels", m.covered_pixels},
+        {"ink_fraction", m.ink_fraction},
+        {"gpu_buffers", buffers},
+        {"gpu_bytes", m.gpu_bytes},
+        {"gpu_mesh_bytes", m.mesh_bytes},
+        {"gpu_bytes_per_candidate", m.bytes_per_candidate()},
+        {"gpu_bytes_per_candidate_without_mesh", m.stipple_bytes_per_candidate()},
+        {"image", m.image},
+        {"cells", cells},
+    };
+}
+
+}  // namespace
+
+std::string json_report(const BenchResults& r) {
+    json columns = json::array();
+    for (const Column& c : r.columns)
+        columns.push_back({{"name", c.name()},
+                           {"path", density_path_name(c.path)},
+                           {"silhouettes", c.lines ? "lines" : "none"},
+                           {"paper_column", paper_column_name(c)}});
+    json paper = json::array();
+    for (const PaperRow& row : kPaperTable)
+        paper.push_back({{"name", row.name},
+                         {"polygons", row.polygons},
+                         {"vertex", row.vertex},
+                         {"cpu", row.cpu},
+                         {"vertex_lines", row.vertex_lines},
+                         {"cpu_lines", row.cpu_lines}});
+    json models = json::array();
+    for (const ModelResult& m : r.models) models.push_back(model_json(m));
+    json j = {
+        {"command", r.command},
+        {"device", r.device},
+        {"date", r.date},
+        {"width", r.width},
+        {"height", r.height},
+        {"warmup_frames", r.warmup},
+        {"timed_frames", r.frames},
+        {"quick", r.quick},
+        {"view", {{"yaw_deg", kViewYawDeg}, {"pitch_deg", kViewPitchDeg}, {"distance", kViewDistance}}},
+        {"models_dir", r.models_dir},
+        {"scans_found", r.scans_found},
+        {"cache_dir", r.cache_dir},
+        {"columns", columns},
+        {"paper_table", paper},
+        {"models", models},
+        {"total_seconds", r.total_seconds},
+        {"validation_messages", r.validation_messages},
+        {"notes", r.notes},
+    };
+    return j.dump(2) + "\n";
+}
+
+}  // namespace stipple::bench

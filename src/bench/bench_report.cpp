@@ -1,0 +1,161 @@
+// The Markdown report: the paper's Table 1 beside ours, then every cell's figures, then per model.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bench/bench_output.hpp"
+#include "core/error.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+}
+
+const CellResult* find_cell(const ModelResult& model, const Column& column) {
+    for (const CellResult& cell : model.cells)
+        if (cell.column.path == column.path && cell.column.lines == column.lines) return &cell;
+    return nullptr;
+}
+
+std::string drawn_text(int64_t drawn) { return drawn < 0 ? "n/a" : with_commas(uint64_t(drawn)); }
+
+void header_lines(std::ostringstream& md, const BenchResults& r) {
+    md << "# stipple bench: the paper's Table 1 on this machine\n\n";
+    md << "- device: " << r.device << "\n";
+    md << "- image: " << r.width << "x" << r.height << "; standard view: the model framed, yaw " << kViewYawDeg
+       << "°, pitch " << kViewPitchDeg << "°, the default light; default parameters (the README's look)\n";
+    md << "- frames: " << r.warmup << " warm-up + " << r.frames
+       << " timed per cell; fps = 1000 / median wall time of a frame (prepare, record, submit, wait; no read-back); "
+          "GPU ms: median of each pass's timestamps\n";
+    md << "- models: "
+       << (r.scans_found ? "derived from the scans in " + r.models_dir + " (cache: " + r.cache_dir + ")"
+                         : "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " +
+                               r.models_dir + ")")
+       << "\n";
+    md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set)" : "") << "; total " << format("%.0f", r.total_seconds)
+       << " s\n";
+    if (!r.command.empty()) md << "- command: `" << r.command << "`\n";
+    md << "\n";
+}
+
+void comparison_table(std::ostringstream& md, const BenchResults& r) {
+    md << "## Frames per second, ours against the paper's\n\n";
+    md << "Each cell: our median fps / the paper's (GeForce3 Ti 500, 2002) = the ratio ours/paper, **bold** where we "
+          "are below the paper. The paper's \"vertex program\" is our vertex path, its \"no vertex program\" our cpu "
+          "path; \"+ lines\" adds Raskar-Cohen silhouettes. Other paths have no paper figure.\n\n";
+    md << "| model | polygons (paper) | triangles (ours) |";
+    for (const Column& c : r.columns) md << " " << c.name() << " |";
+    md << "\n|---|---:|---:|";
+    for (size_t i = 0; i < r.columns.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const ModelResult& m : r.models) {
+        md << "| " << m.entry.name << (m.entry.procedural ? " (sphere)" : "") << " | " << with_commas(m.entry.target)
+           << " | " << with_commas(m.entry.triangles) << " |";
+        for (const Column& c : r.columns) {
+            const CellResult* cell = find_cell(m, c);
+            if (!cell) {
+                md << " – |";
+            } else if (cell->paper_fps) {
+                double ratio = cell->median_fps / *cell->paper_fps;
+                std::string ratio_text = format("%.2f×", ratio);
+                md << " " << fps_text(cell->median_fps) << " / " << format("%.2f", *cell->paper_fps) << " = "
+                   << (ratio < 1.0 ? "**" + ratio_text + "**" : ratio_text) << " |";
+            } else {
+                md << " " << fps_text(cell->median_fps) << " |";
+            }
+        }
+        md << "\n";
+    }
+    md << "\n";
+}
+
+void cell_table(std::ostringstream& md, const BenchResults& r) {
+    md << "## Every cell\n\n";
+    md << "| model | column | median fps | min–max fps | frame ms | GPU ms per pass (median) | GPU ms total | "
+          "candidates | drawn | CPU density ms, draws |\n";
+    md << "|---|---|---:|---:|---:|---|---:|---:|---:|---:|\n";
+    for (const ModelResult& m : r.models)
+        for (const CellResult& cell : m.cells) {
+            std::string passes;
+            for (const auto& [pass, ms] : cell.gpu_ms) passes += format("%s%s %.2f", passes.empty() ? "" : ", ", pass.c_str(), ms);
+            std::string cpu = cell.column.path == DensityPath::Cpu
+                                  ? format("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws)
+                                  : "–";
+            md << "| " << m.entry.name << " | " << cell.column.name() << " | " << fps_text(cell.median_fps) << " | "
+               << fps_text(cell.min_fps) << "–" << fps_text(cell.max_fps) << " | "
+               << format("%.2f", cell.median_frame_ms) << " | " << (passes.empty() ? "–" : passes) << " | "
+               << format("%.2f", cell.gpu_total_ms) << " | " << with_commas(cell.candidates) << " | "
+               << drawn_text(cell.drawn) << " | " << cpu << " |\n";
+        }
+    md << "\n";
+}
+
+void model_table(std::ostringstream& md, const BenchResults& r) {
+    md << "## Per model\n\n";
+    md << "Preprocessing is stipple generation (placement, relaxation, progressive order). Drawn stipples and ink "
+          "come from the standard frame with the default parameters (as in the README image); ink is the share "
+          "of the covered pixels with red < 128. GPU bytes per candidate: all the object's buffers, and without the "
+          "mesh (positions, normals, indices).\n\n";
+    md << "| model | source | triangles | load s | preprocessing s | candidates | drawn | ink | GPU MiB | "
+          "bytes / candidate (without mesh) |\n";
+    md << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModelResult& m : r.models)
+        md << "| " << m.entry.name << " | " << m.entry.source << " | " << with_commas(m.entry.triangles) << " | "
+           << format("%.2f", m.load_seconds) << " | " << format("%.2f", m.generation_seconds) << " | "
+           << with_commas(m.candidates) << " | " << drawn_text(m.drawn) << " | "
+           << format("%.1f%%", 100.0 * m.ink_fraction) << " | "
+           << format("%.1f", double(m.gpu_bytes) / (1024.0 * 1024.0)) << " | "
+           << format("%.1f (%.1f)", m.bytes_per_candidate(), m.stipple_bytes_per_candidate()) << " |\n";
+    md << "\n";
+}
+
+}  // namespace
+
+std::string with_commas(uint64_t n) {
+    std::string digits = std::to_string(n), out;
+    for (size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+std::string fps_text(double fps) {
+    if (!std::isfinite(fps)) return "–";
+    if (fps >= 100.0) return format("%.0f", fps);
+    if (fps >= 10.0) return format("%.1f", fps);
+    return format("%.2f", fps);
+}
+
+std::string markdown_report(const BenchResults& results) {
+    std::ostringstream md;
+    header_lines(md, results);
+    comparison_table(md, results);
+    cell_table(md, results);
+    model_table(md, results);
+    for (const std::string& note : results.notes) md << "**Note:** " << note << "\n\n";
+    if (results.validation_messages > 0)
+        md << "**" << results.validation_messages << " Vulkan validation message(s) during the run: the figures are "
+           << "not trustworthy.**\n";
+    return md.str();
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+    std::filesystem::path p(path);
+    std::error_code ec;
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+    if (ec) fail_file(path, "cannot create its folder: " + ec.message());
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) fail_file(path, "cannot open for writing");
+    out << text;
+    if (!out.flush()) fail_file(path, "write failed");
+}
+
+}  // namespace stipple::bench

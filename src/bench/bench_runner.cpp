@@ -1,0 +1,263 @@
+#include "bench/bench_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <memory>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "io/png_io.hpp"
+#include "render/camera.hpp"
+#include "render/offscreen.hpp"
+#include "render/stipple_renderer.hpp"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string format(const char* fmt, auto... args) {
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+}
+
+std::string utc_now() {
+    std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+std::string file_slug(const std::string& name) {
+    std::string s;
+    for (char c : name) s += c == ' ' ? '-' : c;
+    return s;
+}
+
+FrameView standard_view(const Sphere& bounds, VkExtent2D extent) {
+    float aspect = float(extent.width) / float(extent.height);
+    FrameView view;  // default light, ink and paper
+    view.extent = extent;
+    view.camera = camera_matrices(frame_sphere(bounds, aspect, kViewDistance, kViewYawDeg, kViewPitchDeg), aspect, bounds);
+    return view;
+}
+
+void set_column(StippleRenderer& renderer, const Column& column) {
+    ObjectParams& params = renderer.params(0);
+    params.density_path = column.path;
+    params.silhouette = column.lines ? SilhouetteMode::Lines : SilhouetteMode::None;
+}
+
+// Share of covered pixels (depth < 1) whose red channel is below 128.
+double ink_inside(const RenderedFrame& frame, uint64_t* covered_out) {
+    uint64_t covered = 0, inked = 0;
+    for (size_t i = 0; i < frame.depth.size(); ++i) {
+        if (frame.depth[i] >= 1.0f) continue;
+        ++covered;
+        inked += frame.color.pixels[4 * i] < 128;
+    }
+    *covered_out = covered;
+    return covered ? double(inked) / double(covered) : 0.0;
+}
+
+// The standard frame's figures and one counting frame per column, on a renderer that counts drawn
+// stipples (the counting shader variant is never timed).
+void count_frames(const gpu::Context& context, OffscreenTarget& target, const Mesh& mesh, const StippleSet& stipples,
+                  const FrameView& view, const BenchOptions& options, const std::vector<Column>& columns,
+                  ModelResult& model) {
+    RendererOptions counting;
+    counting.count_drawn = true;
+    StippleRenderer renderer(context, kColorFormat, kDepthFormat, counting);
+    renderer.add_object(mesh, stipples, glm::mat4(1.0f), ObjectParams{});
+    RenderedFrame frame = target.render(renderer, view);
+    model.drawn = renderer.stats().drawn_stipples;
+    model.candidates = renderer.stats().candidate_stipples;
+    model.ink_fraction = ink_inside(frame, &model.covered_pixels);
+    if (!options.image_dir.empty()) {
+        std::filesystem::path png = options.image_dir / (file_slug(model.entry.name) + ".png");
+        write_png(png.string(), frame.color);
+        model.image = png.string();
+    }
+    for (const Column& column : columns) {
+        set_column(renderer, column);
+        target.draw(renderer, view);
+        CellResult cell;
+        cell.column = column;
+        cell.drawn = renderer.stats().drawn_stipples;
+        model.cells.push_back(cell);
+    }
+}
+
+void time_cell(OffscreenTarget& target, StippleRenderer& renderer, const FrameView& view, const BenchOptions& options,
+               CellResult& cell) {
+    set_column(renderer, cell.column);
+    for (int i = 0; i < options.warmup; ++i) target.draw(renderer, view);
+    std::map<std::string, std::vector<double>> pass_ms;
+    std::vector<std::string> pass_order;
+    std::vector<double> cpu_ms;
+    for (int i = 0; i < options.frames; ++i) {
+        cell.frame_ms.push_back(target.draw(renderer, view));
+        const FrameStats& stats = renderer.stats();
+        for (const auto& [pass, ms] : stats.gpu_ms) {
+            if (!pass_ms.count(pass)) pass_order.push_back(pass);
+            pass_ms[pass].push_back(ms);
+        }
+        cpu_ms.push_back(stats.cpu_density_ms);
+        cell.candidates = stats.candidate_stipples;
+        cell.cpu_draws = stats.cpu_draw_commands;
+    }
+    cell.median_frame_ms = median(cell.frame_ms);
+    auto [fastest, slowest] = std::minmax_element(cell.frame_ms.begin(), cell.frame_ms.end());
+    cell.median_fps = 1000.0 / cell.median_frame_ms;
+    cell.min_fps = 1000.0 / *slowest;
+    cell.max_fps = 1000.0 / *fastest;
+    for (const std::string& pass : pass_order) {
+        double ms = median(pass_ms[pass]);
+        cell.gpu_ms.emplace_back(pass, ms);
+        cell.gpu_total_ms += ms;
+    }
+    cell.cpu_density_ms = median(cpu_ms);
+}
+
+std::string passes_text(const CellResult& cell) {
+    std::string text;
+    for (const auto& [pass, ms] : cell.gpu_ms) text += format(" %s %.2f", pass.c_str(), ms);
+    return text.empty() ? " (no timestamps)" : text;
+}
+
+}  // namespace
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object) {
+    return {
+        {"positions", object.positions.size()},         {"normals", object.normals.size()},
+        {"indices", object.indices.size()},             {"stipples", object.stipples.size()},
+        {"triangle_info", object.triangle_info.size()}, {"triangle_draw", object.triangle_draw.size()},
+        {"draw_staging", object.draw_staging.size()},   {"gpu_commands", object.gpu_commands.size()},
+        {"cpu_commands", object.cpu_commands.size()},   {"debug", object.debug.size()},
+        {"object_uniforms", object.object_uniforms.size()},
+    };
+}
+
+std::string look_note(const ModelResult& model) {
+    if (model.entry.name != "bunny" || model.entry.procedural) return "";
+    bool drawn_ok = model.drawn >= 50'000 && model.drawn <= 150'000;
+    bool ink_ok = model.ink_fraction >= 0.15 && model.ink_fraction <= 0.35;
+    if (drawn_ok && ink_ok) return "";
+    return format("the bunny's standard frame holds %lld drawn stipples and %.1f%% ink inside its footprint; "
+                  "the default look should give 50k-150k and 15-35%%",
+                  (long long)model.drawn, 100.0 * model.ink_fraction);
+}
+
+BenchResults run_bench(const BenchOptions& options, const Logger& log) {
+    auto run_start = Clock::now();
+    BenchResults results;
+    results.command = options.command;
+    results.date = utc_now();
+    results.width = options.width;
+    results.height = options.height;
+    results.frames = options.frames;
+    results.warmup = options.warmup;
+    results.quick = options.quick;
+    results.models_dir = options.models_dir.string();
+    results.cache_dir = options.cache_dir.string();
+    results.scans_found = scans_available(options.models_dir);
+    results.columns = make_columns(options.paths.empty() ? all_density_paths() : options.paths);
+
+    // The device first: a bad --device fails before any model is derived.
+    gpu::ContextOptions context_options;
+    context_options.device_index = options.device;
+    gpu::Context context(context_options);
+    results.device = context.device_name;
+
+    if (!results.scans_found)
+        log("NOTE: the scanned models are not in " + results.models_dir +
+            ": benchmarking procedural UV spheres with each row's polygon count instead");
+    ModelSetOptions set_options;
+    set_options.models_dir = options.models_dir;
+    set_options.cache_dir = options.cache_dir;
+    set_options.only = options.models;
+    set_options.log = log;
+    std::vector<ModelEntry> entries = prepare_model_set(set_options);
+
+    const VkExtent2D extent{options.width, options.height};
+    auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
+    OffscreenTarget& target = *target_holder;
+    log(format("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
+               context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
+               double(kViewYawDeg), double(kViewPitchDeg)));
+
+    for (const ModelEntry& entry : entries) {
+        ModelResult model;
+        model.entry = entry;
+        auto start = Clock::now();
+        Mesh mesh = load_model(entry);
+        model.load_seconds = seconds_since(start);
+        ObjectParams params;  // the defaults: the README's look
+        GenerationParams generation = params.generation;
+        generation.progress = mesh.triangle_count() > 200'000;
+        start = Clock::now();
+        StippleSet stipples = generate_stipples(mesh, generation);
+        model.generation_seconds = seconds_since(start);
+        const FrameView view = standard_view(compute_bounding_sphere(mesh), extent);
+
+        count_frames(context, target, mesh, stipples, view, options, results.columns, model);
+        log(format("%s: %zu triangles (%s); load %.2f s, stipple generation %.2f s; %llu candidates, "
+                   "%lld drawn, ink %.1f%% of %llu covered pixels",
+                   entry.name.c_str(), mesh.triangle_count(), entry.source.c_str(), model.load_seconds,
+                   model.generation_seconds, (unsigned long long)model.candidates, (long long)model.drawn,
+                   100.0 * model.ink_fraction, (unsigned long long)model.covered_pixels));
+
+        if (std::string note = look_note(model); !note.empty()) {
+            log("NOTE: " + note);
+            results.notes.push_back(note);
+        }
+
+        StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+        start = Clock::now();
+        renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
+        model.upload_seconds = seconds_since(start);
+        model.buffers = object_buffers(renderer.object(0));
+        for (const auto& [name, bytes] : model.buffers) {
+            model.gpu_bytes += bytes;
+            if (name == "positions" || name == "normals" || name == "indices") model.mesh_bytes += bytes;
+        }
+        const PaperRow* row = find_paper_row(entry.name);
+        for (CellResult& cell : model.cells) {
+            time_cell(target, renderer, view, options, cell);
+            if (row) cell.paper_fps = paper_fps(*row, cell.column);
+            std::string paper = cell.paper_fps ? format(" (paper %.2f, x%.2f)", *cell.paper_fps,
+                                                        cell.median_fps / *cell.paper_fps)
+                                               : std::string();
+            log(format("  %-18s %8.2f fps%s, min-max %.2f-%.2f; gpu ms:%s; drawn %lld of %llu",
+                       cell.column.name().c_str(), cell.median_fps, paper.c_str(), cell.min_fps, cell.max_fps,
+                       passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
+        }
+        log(format("  GPU memory: %.1f MiB, %.1f bytes per candidate (%.1f without the mesh)",
+                   double(model.gpu_bytes) / (1024.0 * 1024.0), model.bytes_per_candidate(),
+                   model.stipple_bytes_per_candidate()));
+        results.models.push_back(std::move(model));
+    }
+    target_holder.reset();  // everything but the context is gone: destruction messages are counted too
+    results.validation_messages = context.validation_message_count();
+    results.total_seconds = seconds_since(run_start);
+    return results;
+}
+
+}  // namespace stipple::bench

@@ -1,0 +1,112 @@
+#pragma once
+// The benchmark run: for each model of the set, stipple generation (timed), a counting frame per
+// column (drawn stipples), a read-back frame of the standard view (ink coverage), then per column
+// warm-up frames and timed frames (wall clock per frame and GPU time per pass from timestamps).
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bench/model_set.hpp"
+#include "bench/table1.hpp"
+#include "render/object_params.hpp"
+
+namespace stipple {
+struct ObjectGpu;
+}
+
+namespace stipple::bench {
+
+// The standard view: the model framed (its bounding sphere fills the view), seen from a little to
+// the right and above, with the renderer's default light (upper left, in front, moving with the camera).
+inline constexpr float kViewYawDeg = 30.0f;
+inline constexpr float kViewPitchDeg = 15.0f;
+inline constexpr float kViewDistance = 1.0f;  // multiple of the framing distance
+
+struct BenchOptions {
+    std::vector<std::string> models;  // Table 1 row names; empty: all
+    std::vector<DensityPath> paths;   // empty: all
+    int frames = 20;                  // timed frames per cell
+    int warmup = 3;                   // untimed frames before them
+    uint32_t width = 1280, height = 1024;
+    int device = -1;                  // Vulkan device index (-1: the best)
+    bool quick = false;               // recorded in the results (the caller picks the reduced set)
+    std::filesystem::path models_dir = ModelSetOptions::default_models_dir();
+    std::filesystem::path cache_dir = ModelSetOptions::default_cache_dir();
+    std::filesystem::path image_dir;  // where to write each model's standard frame as PNG ("" = none)
+    std::string command;              // the command line, recorded in the results
+};
+
+struct CellResult {
+    Column column;
+    std::vector<double> frame_ms;  // each timed frame, wall clock (prepare + record + submit + wait)
+    double median_fps = 0.0, min_fps = 0.0, max_fps = 0.0;
+    double median_frame_ms = 0.0;
+    std::vector<std::pair<std::string, double>> gpu_ms;  // median GPU time per pass, in pass order
+    double gpu_total_ms = 0.0;                           // sum of those medians
+    double cpu_density_ms = 0.0;                         // median CPU density time (cpu path)
+    uint64_t cpu_draws = 0;                              // indirect draws the cpu path submitted
+    uint64_t candidates = 0;
+    int64_t drawn = -1;  // from the counting frame of this column; -1 when the path does not count
+    std::optional<double> paper_fps;
+};
+
+struct ModelResult {
+    ModelEntry entry;
+    double load_seconds = 0.0;
+    double generation_seconds = 0.0;  // preprocessing: stipple generation (relaxation, progressive order)
+    double upload_seconds = 0.0;      // add_object: GPU buffers created and filled
+    uint64_t candidates = 0;
+    int64_t drawn = -1;               // standard frame (default parameters)
+    uint64_t covered_pixels = 0;
+    double ink_fraction = 0.0;        // share of covered pixels with red < 128
+    std::vector<std::pair<std::string, uint64_t>> buffers;  // the object's GPU buffers, bytes
+    uint64_t gpu_bytes = 0;           // all of them
+    uint64_t mesh_bytes = 0;          // positions, normals, indices (the depth pass's)
+    std::string image;                // the standard frame's PNG, when written
+    std::vector<CellResult> cells;
+
+    double bytes_per_candidate() const { return candidates ? double(gpu_bytes) / double(candidates) : 0.0; }
+    double stipple_bytes_per_candidate() const {
+        return candidates ? double(gpu_bytes - mesh_bytes) / double(candidates) : 0.0;
+    }
+};
+
+struct BenchResults {
+    std::string command;
+    std::string device;
+    std::string date;  // UTC, ISO 8601
+    uint32_t width = 0, height = 0;
+    int frames = 0, warmup = 0;
+    bool quick = false;
+    std::string models_dir;
+    bool scans_found = false;
+    std::string cache_dir;
+    std::vector<Column> columns;
+    std::vector<ModelResult> models;
+    double total_seconds = 0.0;
+    uint32_t validation_messages = 0;
+    std::vector<std::string> notes;  // checks that did not hold (printed and written with the tables)
+};
+
+// The check of the default look: the bunny's standard frame holds 50k-150k drawn stipples and
+// 15-35% ink inside its footprint. Returns "" when it holds (or for other models), else a note.
+std::string look_note(const ModelResult& model);
+
+using Logger = std::function<void(const std::string&)>;
+
+// Runs the benchmark. Throws stipple::Error on a bad model name, a failed load or a Vulkan failure.
+BenchResults run_bench(const BenchOptions& options, const Logger& log);
+
+// The object's GPU buffers by name and size (what "GPU bytes per candidate" sums).
+std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object);
+
+// Median of the values (the mean of the middle two for an even count); 0 for none.
+double median(std::vector<double> values);
+
+}  // namespace stipple::bench

@@ -1,0 +1,156 @@
+#include "bench/mesh_derive.hpp"
+
+#include <unistd.h>
+
+#include <bit>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <meshoptimizer.h>
+
+#include "core/error.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+// Keeps only the vertices the triangles use, in first-use order (deterministic).
+Mesh compact(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices, const std::string& source) {
+    Mesh out;
+    out.source = source;
+    std::vector<uint32_t> remap(positions.size(), UINT32_MAX);
+    out.indices.reserve(indices.size());
+    for (uint32_t i : indices) {
+        if (remap[i] == UINT32_MAX) {
+            remap[i] = uint32_t(out.positions.size());
+            out.positions.push_back(positions[i]);
+        }
+        out.indices.push_back(remap[i]);
+    }
+    compute_vertex_normals(out);
+    return out;
+}
+
+}  // namespace
+
+Mesh weld_positions(const Mesh& mesh) {
+    std::vector<uint32_t> remap(mesh.positions.size());
+    size_t unique = meshopt_generateVertexRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
+                                                mesh.positions.data(), mesh.positions.size(), sizeof(glm::vec3));
+    std::vector<glm::vec3> positions(unique);
+    meshopt_remapVertexBuffer(positions.data(), mesh.positions.data(), mesh.positions.size(), sizeof(glm::vec3),
+                              remap.data());
+    std::vector<uint32_t> indices(mesh.indices.size());
+    meshopt_remapIndexBuffer(indices.data(), mesh.indices.data(), mesh.indices.size(), remap.data());
+    return compact(positions, indices, mesh.source);
+}
+
+Mesh subdivide_midpoints(const Mesh& mesh) {
+    Mesh out;
+    out.source = mesh.source;
+    out.positions = mesh.positions;
+    out.positions.reserve(mesh.positions.size() + mesh.indices.size() / 2 + 16);
+    out.indices.reserve(mesh.indices.size() * 4);
+    std::unordered_map<uint64_t, uint32_t> midpoints;
+    midpoints.reserve(mesh.indices.size());
+    auto midpoint = [&](uint32_t a, uint32_t b) {
+        uint64_t key = a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
+        auto [it, inserted] = midpoints.try_emplace(key, uint32_t(out.positions.size()));
+        if (inserted) out.positions.push_back(0.5f * (mesh.positions[a] + mesh.positions[b]));
+        return it->second;
+    };
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+        out.indices.insert(out.indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+    }
+    compute_vertex_normals(out);
+    return out;
+}
+
+SimplifyResult simplify_to(const Mesh& mesh, size_t target, double tolerance) {
+    const size_t count = mesh.triangle_count();
+    if (within(count, target, tolerance)) return {mesh, "as is", 0.0f};
+    if (count < target)
+        fail(mesh.source + ": " + std::to_string(count) + " triangles cannot be simplified up to " +
+             std::to_string(target) + " (subdivide first)");
+    const size_t target_indices = 3 * target;
+    const size_t limit = size_t(double(target) * (1.0 + tolerance));
+    std::vector<uint32_t> indices(mesh.indices.size());
+    SimplifyResult result;
+    // Errors are relative to the mesh's extent; 1 allows any collapse the topology permits.
+    for (float error : {0.001f, 0.004f, 0.016f, 0.064f, 0.25f, 1.0f}) {
+        float reached = 0.0f;
+        size_t n = meshopt_simplify(indices.data(), mesh.indices.data(), mesh.indices.size(),
+                                    &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3), target_indices,
+                                    error, 0, &reached);
+        if (n / 3 <= limit) {
+            indices.resize(n);
+            char method[64];
+            std::snprintf(method, sizeof method, "simplify (error bound %g)", double(error));
+            result.method = method;
+            result.error = reached;
+            break;
+        }
+    }
+    if (result.method.empty()) {
+        float reached = 0.0f;
+        size_t n = meshopt_simplifySloppy(indices.data(), mesh.indices.data(), mesh.indices.size(),
+                                          &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
+                                          target_indices, 1.0f, &reached);
+        indices.resize(n);
+        result.method = "simplifySloppy";
+        result.error = reached;
+    }
+    if (!within(indices.size() / 3, target, tolerance))
+        fail(mesh.source + ": simplification reached " + std::to_string(indices.size() / 3) +
+             " triangles, not within " + std::to_string(int(tolerance * 100)) + "% of " + std::to_string(target));
+    result.mesh = compact(mesh.positions, indices, mesh.source);
+    return result;
+}
+
+void write_ply_binary(const std::string& path, const Mesh& mesh) {
+    static_assert(std::endian::native == std::endian::little, "the PLY writer assumes a little-endian host");
+    std::filesystem::path target(path);
+    if (target.has_parent_path()) {
+        std::error_code ec;
+        std::filesystem::create_directories(target.parent_path(), ec);
+        if (ec) fail_file(path, "cannot create its folder: " + ec.message());
+    }
+    // A temporary name unique to this process: two processes deriving the same model do not collide.
+    std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) fail_file(temporary, "cannot open for writing");
+        out << "ply\nformat binary_little_endian 1.0\ncomment stipple benchmark model (" << mesh.source << ")\n"
+            << "element vertex " << mesh.positions.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+            << "element face " << mesh.triangle_count() << "\nproperty list uchar int vertex_indices\nend_header\n";
+        out.write(reinterpret_cast<const char*>(mesh.positions.data()),
+                  std::streamsize(mesh.positions.size() * sizeof(glm::vec3)));
+        std::vector<char> faces(mesh.triangle_count() * 13);
+        for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+            faces[13 * t] = 3;
+            std::memcpy(&faces[13 * t + 1], &mesh.indices[3 * t], 12);
+        }
+        out.write(faces.data(), std::streamsize(faces.size()));
+        out.flush();
+        if (!out) {
+            out.close();
+            std::filesystem::remove(temporary);
+            fail_file(path, "write failed (disk full?)");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, target, ec);
+    if (ec) {
+        std::filesystem::remove(temporary);
+        fail_file(path, "cannot move the new file into place: " + ec.message());
+    }
+}
+
+}  // namespace stipple::bench

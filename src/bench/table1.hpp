@@ -1,0 +1,59 @@
+#pragma once
+// The paper's Table 1 (Lu et al., VMV 2002: 1280x1024, GeForce3 Ti 500) and the benchmark's columns:
+// every density path, without and with Raskar-Cohen silhouette lines.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/object_params.hpp"
+
+namespace stipple::bench {
+
+// One row of Table 1: the model, its polygon count and the four frame rates (fps).
+struct PaperRow {
+    const char* name;
+    uint32_t polygons;
+    double vertex;        // stipple only, vertex program
+    double cpu;           // stipple only, no vertex program
+    double vertex_lines;  // stipple & silhouette, vertex program
+    double cpu_lines;     // stipple & silhouette, no vertex program
+};
+
+inline constexpr std::array<PaperRow, 7> kPaperTable{{
+    {"horse", 13'352, 60.39, 60.39, 30.19, 30.19},
+    {"low-res dragon", 45'106, 32.05, 30.4, 15.60, 15.24},
+    {"bunny", 69'451, 30.12, 20.07, 12.03, 11.89},
+    {"skeleton1", 124'018, 20.66, 12.08, 10.16, 7.53},
+    {"skeleton2", 522'567, 4.65, 2.60, 1.94, 1.50},
+    {"hand", 654'666, 4.00, 2.07, 1.88, 1.32},
+    {"dragon", 871'414, 2.99, 1.50, 1.32, 0.91},
+}};
+
+// The row named `name`, or nullptr.
+const PaperRow* find_paper_row(const std::string& name);
+// Names of all rows, comma separated (for messages).
+std::string paper_row_names();
+
+// A column of our table: a density path, without or with Raskar-Cohen lines (§3.1).
+struct Column {
+    DensityPath path = DensityPath::Vertex;
+    bool lines = false;
+
+    std::string name() const;  // "vertex", "vertex + lines"
+};
+
+// The paper's figure for the matching column: its "vertex program" is our vertex path, its "no vertex
+// program" our cpu path. Other paths (indirect, splat) have no paper figure.
+std::optional<double> paper_fps(const PaperRow& row, const Column& column);
+// The paper's column title for our column, or "" when it has none.
+std::string paper_column_name(const Column& column);
+
+// The columns for these paths: each path without lines, then each with lines.
+std::vector<Column> make_columns(const std::vector<DensityPath>& paths);
+
+// Every density path the renderer has (kAllDensityPaths), in its order.
+std::vector<DensityPath> all_density_paths();
+
+}  // namespace stipple::bench

@@ -1,0 +1,109 @@
+// stipple bench: the paper's Table 1 on this machine (see src/bench/).
+#include <cstdio>
+#include <filesystem>
+
+#include "bench/bench_output.hpp"
+#include "bench/bench_runner.hpp"
+#include "bench/table1.hpp"
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+
+namespace stipple::cli {
+
+namespace {
+
+std::vector<std::string> split_list(const std::string& option, const std::string& list) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= list.size()) {
+        size_t end = list.find(',', start);
+        if (end == std::string::npos) end = list.size();
+        std::string item = list.substr(start, end - start);
+        if (item.empty()) fail(option + " '" + list + "' has an empty entry");
+        items.push_back(item);
+        start = end + 1;
+    }
+    return items;
+}
+
+long long bounded(const Args& args, const std::string& name, long long fallback, long long lo, long long hi) {
+    long long value = args.integer(name, fallback);
+    if (value < lo || value > hi)
+        fail(name + " = " + std::to_string(value) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi));
+    return value;
+}
+
+}  // namespace
+
+int run_bench(const std::vector<std::string>& argv) {
+    Args args(argv, {"--quick", "--list-devices"},
+              {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
+               "--models-dir", "--cache-dir"});
+    if (args.flag("--list-devices")) {
+        for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
+        return 0;
+    }
+    if (!args.positionals().empty()) fail("bench takes no MODEL (it runs its own model set; see --models)");
+
+    bench::BenchOptions options;
+    options.quick = args.flag("--quick");
+    // --quick: the two smallest rows, the paper's two paths with and without lines, 5 timed frames.
+    options.frames = int(bounded(args, "--frames", options.quick ? 5 : 20, 1, 100000));
+    options.warmup = int(bounded(args, "--warmup", 3, 0, 1000));
+    options.width = uint32_t(bounded(args, "--width", 1280, 1, 16384));
+    options.height = uint32_t(bounded(args, "--height", 1024, 1, 16384));
+    options.device = int(args.integer("--device", -1));
+    if (args.has("--models")) {
+        for (const std::string& name : split_list("--models", args.get("--models", "")))
+            if (!bench::find_paper_row(name))
+                fail("--models: unknown model '" + name + "' (the rows of Table 1 are: " + bench::paper_row_names() + ")");
+        options.models = split_list("--models", args.get("--models", ""));
+    } else if (options.quick) {
+        options.models = {bench::kPaperTable[0].name, bench::kPaperTable[1].name};
+    }
+    if (args.has("--paths")) {
+        std::string list = args.get("--paths", "");
+        if (list != "all")
+            for (const std::string& name : split_list("--paths", list)) {
+                auto path = parse_density_path(name);
+                if (!path) {
+                    std::string known;
+                    for (DensityPath p : bench::all_density_paths()) known += std::string(known.empty() ? "" : ", ") + density_path_name(p);
+                    fail("--paths: unknown density path '" + name + "' (one of: " + known + ", or all)");
+                }
+                options.paths.push_back(*path);
+            }
+    } else if (options.quick) {
+        options.paths = {DensityPath::Vertex, DensityPath::Cpu};
+    }
+    if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
+    if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
+    const std::filesystem::path out = args.get("--out", "bench-results");
+    options.image_dir = out / "images";
+    options.command = "stipple bench";
+    for (const std::string& a : argv) options.command += " " + a;
+
+    bench::BenchResults results = bench::run_bench(options, [](const std::string& line) {
+        std::printf("%s\n", line.c_str());
+        std::fflush(stdout);
+    });
+
+    const std::string markdown = bench::markdown_report(results);
+    bench::write_text_file((out / "results.md").string(), markdown);
+    bench::write_text_file((out / "results.json").string(), bench::json_report(results));
+    bench::write_text_file((out / "chart.svg").string(), bench::svg_chart(results));
+    std::printf("\n%s", markdown.c_str());
+    std::printf("wrote %s, %s, %s and the standard frames in %s (%.0f s)\n", (out / "results.md").c_str(),
+                (out / "results.json").c_str(), (out / "chart.svg").c_str(), (out / "images").c_str(),
+                results.total_seconds);
+    if (results.validation_messages > 0) {
+        std::fprintf(stderr, "stipple: %u Vulkan validation message(s) during the benchmark: its figures are not trustworthy\n",
+                     results.validation_messages);
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace stipple::cli

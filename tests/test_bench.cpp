@@ -1,0 +1,334 @@
+// The benchmark (issue 6): the model set has Table 1's polygon counts (derived deterministically from
+// the scans, or procedural spheres without them), the mesh operations behind it, the report writers,
+// and `stipple bench --quick` end to end (its figures are printed, never asserted against time).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/bench_output.hpp"
+#include "bench/bench_runner.hpp"
+#include "bench/mesh_derive.hpp"
+#include "bench/model_set.hpp"
+#include "bench/table1.hpp"
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+#include "mesh/primitives.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_stipple;
+
+std::string read_bytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool have_scans() { return bench::scans_available(bench::ModelSetOptions::default_models_dir()); }
+
+#define SKIP_WITHOUT_SCANS()                                                                            \
+    do {                                                                                                \
+        if (!have_scans())                                                                              \
+            GTEST_SKIP() << "the scanned models are not in "                                            \
+                         << bench::ModelSetOptions::default_models_dir().string()                      \
+                         << " (horse.ply, igea.ply, stanford-bunny.obj, ogre.obj): skipping";         \
+    } while (0)
+
+// --- mesh operations -----------------------------------------------------------------------------
+
+TEST(BenchMesh, MidpointSubdivisionQuadruplesAndWeldsMidpoints) {
+    Mesh sphere = bench::weld_positions(make_icosphere(2));  // closed: V - E + F = 2
+    size_t v = sphere.vertex_count(), f = sphere.triangle_count(), e = f * 3 / 2;
+    Mesh fine = bench::subdivide_midpoints(sphere);
+    EXPECT_EQ(fine.triangle_count(), 4 * f);
+    EXPECT_EQ(fine.vertex_count(), v + e);  // one vertex per edge: shared midpoints are welded
+    EXPECT_NEAR(total_area(fine), total_area(sphere), 1e-4 * total_area(sphere));  // flat split: same surface
+    EXPECT_NO_THROW(validate_mesh(fine));
+}
+
+TEST(BenchMesh, WeldingMergesVerticesAtTheSamePosition) {
+    Mesh soup;
+    soup.source = "soup";
+    soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    soup.indices = {0, 1, 2, 3, 4, 5};
+    compute_vertex_normals(soup);
+    Mesh welded = bench::weld_positions(soup);
+    EXPECT_EQ(welded.vertex_count(), 4u);
+    EXPECT_EQ(welded.triangle_count(), 2u);
+    EXPECT_EQ(welded.indices[1], welded.indices[3]);  // the shared edge's ends are one vertex each
+    EXPECT_EQ(welded.indices[2], welded.indices[5]);
+}
+
+TEST(BenchMesh, SimplificationHitsTheTargetWithinTolerance) {
+    Mesh sphere = bench::weld_positions(make_uv_sphere(40'000));
+    for (size_t target : {20'000u, 7'321u, 1'000u}) {
+        bench::SimplifyResult r = bench::simplify_to(sphere, target, 0.02);
+        std::printf("%zu -> %zu triangles (target %zu) by %s\n", sphere.triangle_count(), r.mesh.triangle_count(),
+                    target, r.method.c_str());
+        EXPECT_TRUE(bench::within(r.mesh.triangle_count(), target, 0.02)) << r.mesh.triangle_count();
+        EXPECT_NO_THROW(validate_mesh(r.mesh));
+    }
+    EXPECT_THROW(bench::simplify_to(sphere, 100'000, 0.02), Error);  // cannot simplify upward
+}
+
+TEST(BenchMesh, InsideOutMeshesAreTurnedOutward) {
+    Mesh sphere = make_icosphere(2);
+    EXPECT_GT(signed_volume(sphere), 0.0);
+    EXPECT_FALSE(orient_outward(sphere));
+    for (size_t t = 0; t < sphere.triangle_count(); ++t) std::swap(sphere.indices[3 * t + 1], sphere.indices[3 * t + 2]);
+    EXPECT_LT(signed_volume(sphere), 0.0);
+    EXPECT_TRUE(orient_outward(sphere));
+    EXPECT_NEAR(signed_volume(sphere), 4.0 / 3.0 * 3.14159265, 0.2);  // inscribed: a little less than the ball
+}
+
+TEST(BenchMesh, BinaryPlyRoundTrips) {
+    Mesh sphere = bench::weld_positions(make_uv_sphere(2'000));
+    fs::path path = test::temp_dir("bench_ply") / "sphere.ply";
+    bench::write_ply_binary(path.string(), sphere);
+    Mesh back = load_mesh(path.string());
+    ASSERT_EQ(back.vertex_count(), sphere.vertex_count());
+    EXPECT_EQ(back.indices, sphere.indices);
+    for (size_t i = 0; i < sphere.vertex_count(); ++i) EXPECT_EQ(back.positions[i], sphere.positions[i]);
+    EXPECT_THROW(bench::write_ply_binary("/proc/no/such/folder/x.ply", sphere), Error);
+}
+
+// --- the model set -----------------------------------------------------------------------------
+
+TEST(ModelSet, EveryRowHasItsPolygonCountWithinTwoPercent) {
+    SKIP_WITHOUT_SCANS();
+    bench::ModelSetOptions options;  // the build's cache: derived once, reused by later runs and the bench
+    options.log = [](const std::string& line) { std::printf("%s\n", line.c_str()); };
+    std::vector<bench::ModelEntry> entries = bench::prepare_model_set(options);
+    ASSERT_EQ(entries.size(), bench::kPaperTable.size());
+    const std::string build = fs::path(STIPPLE_SHADER_DIR).parent_path().string() + "/";
+    const std::string cache = options.cache_dir.string() + "/";
+    EXPECT_TRUE(cache.rfind(build, 0) == 0 || cache.rfind(std::string(STIPPLE_SOURCE_DIR) + "/", 0) != 0)
+        << "the model cache " << cache << " is inside the sources but not in the build folder";
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const bench::ModelEntry& e = entries[i];
+        EXPECT_EQ(e.name, bench::kPaperTable[i].name);
+        EXPECT_FALSE(e.procedural) << e.name;
+        Mesh mesh = bench::load_model(e);  // the file on disk, not just the key's figure
+        std::printf("%-15s %8zu triangles, row %8zu (%+.3f%%): %s\n", e.name.c_str(), mesh.triangle_count(), e.target,
+                    100.0 * (double(mesh.triangle_count()) - double(e.target)) / double(e.target), e.source.c_str());
+        EXPECT_EQ(mesh.triangle_count(), e.triangles) << e.name;
+        EXPECT_TRUE(bench::within(mesh.triangle_count(), bench::kPaperTable[i].polygons, 0.02))
+            << e.name << ": " << mesh.triangle_count() << " triangles against the row's " << bench::kPaperTable[i].polygons;
+        EXPECT_GT(signed_volume(mesh), 0.0) << e.name << " is inside out";
+        if (e.name == "bunny") {
+            EXPECT_EQ(mesh.triangle_count(), 69'451u);  // exactly the paper's bunny
+            EXPECT_EQ(e.path.filename(), "stanford-bunny.obj");
+        }
+        if (e.name == "skeleton1") {
+            EXPECT_EQ(e.path.filename(), "ogre.obj");  // 124,008: used as is
+        }
+        // Derived files live in the cache (the build folder's, or $STIPPLE_CACHE_DIR's), never in the sources.
+        if (e.path.parent_path() != options.models_dir) {
+            EXPECT_EQ(e.path.parent_path(), options.cache_dir) << e.path;
+        }
+    }
+}
+
+TEST(ModelSet, DerivationIsDeterministicAndCached) {
+    SKIP_WITHOUT_SCANS();
+    fs::path a = test::temp_dir("bench_models_a"), b = test::temp_dir("bench_models_b");
+    bench::ModelSetOptions options;
+    options.only = {"horse", "low-res dragon"};
+    options.cache_dir = a;
+    std::vector<bench::ModelEntry> first = bench::prepare_model_set(options);
+    options.cache_dir = b;
+    std::vector<bench::ModelEntry> second = bench::prepare_model_set(options);
+    ASSERT_EQ(first.size(), 2u);
+    for (size_t i = 0; i < first.size(); ++i) {
+        EXPECT_TRUE(first[i].derived_now);
+        EXPECT_EQ(read_bytes(first[i].path), read_bytes(second[i].path)) << first[i].name << " differs between runs";
+    }
+    // Again into the same folder: taken from the cache, not derived.
+    options.cache_dir = a;
+    auto stamp = fs::last_write_time(first[0].path);
+    std::vector<bench::ModelEntry> again = bench::prepare_model_set(options);
+    EXPECT_FALSE(again[0].derived_now);
+    EXPECT_EQ(again[0].triangles, first[0].triangles);
+    EXPECT_EQ(fs::last_write_time(first[0].path), stamp);
+    // A damaged key (as after a source change) makes it derive again.
+    std::ofstream(a / "horse.key") << "stipple bench model v0\n";
+    EXPECT_TRUE(bench::prepare_model_set(options)[0].derived_now);
+}
+
+TEST(ModelSet, WithoutScansEveryRowIsAProceduralSphere) {
+    bench::ModelSetOptions options;
+    options.models_dir = "/nonexistent/stipple/models";
+    options.cache_dir = test::temp_dir("bench_models_none");
+    EXPECT_FALSE(bench::scans_available(options.models_dir));
+    std::vector<bench::ModelEntry> entries = bench::prepare_model_set(options);
+    ASSERT_EQ(entries.size(), bench::kPaperTable.size());
+    for (const bench::ModelEntry& e : entries) {
+        EXPECT_TRUE(e.procedural);
+        EXPECT_NE(e.source.find("procedural"), std::string::npos) << e.source;
+        EXPECT_TRUE(bench::within(e.triangles, e.target, 0.02)) << e.name << ": " << e.triangles;
+    }
+    EXPECT_EQ(bench::load_model(entries[0]).triangle_count(), entries[0].triangles);
+    EXPECT_TRUE(fs::is_empty(options.cache_dir));  // nothing written for spheres
+    options.only = {"no such model"};
+    EXPECT_THROW(bench::prepare_model_set(options), Error);
+}
+
+// --- the report writers ------------------------------------------------------------------------
+
+bench::BenchResults synthetic_results() {
+    bench::BenchResults r;
+    r.device = "test device";
+    r.width = 1280;
+    r.height = 1024;
+    r.frames = 20;
+    r.warmup = 3;
+    r.scans_found = true;
+    r.columns = bench::make_columns({DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect});
+    for (const char* name : {"horse", "dragon"}) {
+        bench::ModelResult m;
+        m.entry.name = name;
+        m.entry.target = bench::find_paper_row(name)->polygons;
+        m.entry.triangles = m.entry.target;
+        m.entry.source = "test";
+        m.candidates = 1000;
+        m.gpu_bytes = 20000;
+        m.mesh_bytes = 4000;
+        for (const bench::Column& c : r.columns) {
+            bench::CellResult cell;
+            cell.column = c;
+            cell.paper_fps = bench::paper_fps(*bench::find_paper_row(name), c);
+            // Exactly the paper's rate on the vertex path, half of it on the cpu path.
+            cell.median_fps = cell.paper_fps ? *cell.paper_fps * (c.path == DensityPath::Vertex ? 1.0 : 0.5) : 99.0;
+            cell.min_fps = cell.max_fps = cell.median_fps;
+            cell.gpu_ms = {{"depth", 1.0}, {"stipples", 2.0}};
+            cell.drawn = 500;
+            m.cells.push_back(cell);
+        }
+        r.models.push_back(m);
+    }
+    return r;
+}
+
+TEST(BenchReport, MarkdownPutsThePapersFiguresAndRatiosBesideOurs) {
+    std::string md = bench::markdown_report(synthetic_results());
+    std::printf("%s", md.c_str());
+    EXPECT_NE(md.find("| horse | 13,352 | 13,352 | 60.4 / 60.39 = 1.00× | 30.2 / 60.39 = **0.50×** | 99.0 |"),
+              std::string::npos);
+    EXPECT_NE(md.find("| dragon | 871,414 | 871,414 | 2.99 / 2.99 = 1.00×"), std::string::npos);
+    EXPECT_NE(md.find("| vertex + lines |"), std::string::npos);  // the column header
+    EXPECT_NE(md.find("20.0 (16.0)"), std::string::npos);         // bytes per candidate, all (without mesh)
+}
+
+TEST(BenchReport, JsonHoldsEveryCell) {
+    nlohmann::json j = nlohmann::json::parse(bench::json_report(synthetic_results()));
+    ASSERT_EQ(j["models"].size(), 2u);
+    EXPECT_EQ(j["models"][0]["cells"].size(), 6u);
+    EXPECT_EQ(j["paper_table"].size(), 7u);
+    const auto& cell = j["models"][1]["cells"][1];  // dragon, cpu
+    EXPECT_EQ(cell["path"], "cpu");
+    EXPECT_EQ(cell["silhouettes"], "none");
+    EXPECT_DOUBLE_EQ(cell["paper_fps"].get<double>(), 1.50);
+    EXPECT_DOUBLE_EQ(cell["ratio_to_paper"].get<double>(), 0.5);
+    EXPECT_TRUE(j["models"][1]["cells"][2]["paper_fps"].is_null());  // indirect: no paper figure
+}
+
+TEST(BenchReport, ChartHasAxesLegendAndOneSeriesPerColumn) {
+    std::string svg = bench::svg_chart(synthetic_results());
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    auto count = [&](const std::string& what) {
+        size_t n = 0;
+        for (size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1)) ++n;
+        return n;
+    };
+    EXPECT_EQ(count("<polyline"), 6u + 4u);  // our 6 columns, the paper's 4
+    EXPECT_EQ(count("stroke-dasharray"), 2u * 4u);  // the paper's series and their legend entries
+    for (const char* label : {"ours: vertex", "ours: cpu + lines", "ours: indirect", "paper: vertex program",
+                              "paper: no vertex program + lines", "frames per second", "polygons", ">10k<", ">1M<"})
+        EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+// --- stipple bench ----------------------------------------------------------------------------
+
+TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
+    fs::path out = test::temp_dir("bench_quick");
+    test::CommandResult r = run_stipple({"bench", "--quick", "--out", out.string()});
+    std::printf("%s", r.out.c_str());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* file : {"results.md", "results.json", "chart.svg"}) EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+    nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
+    EXPECT_EQ(j["validation_messages"], 0);
+    EXPECT_EQ(j["width"], 1280);
+    EXPECT_EQ(j["height"], 1024);
+    ASSERT_EQ(j["models"].size(), 2u);
+    EXPECT_EQ(j["models"][0]["name"], "horse");
+    EXPECT_EQ(j["models"][1]["name"], "low-res dragon");
+    for (const auto& model : j["models"]) {
+        std::set<std::pair<std::string, std::string>> cells;
+        for (const auto& cell : model["cells"]) {
+            cells.insert({cell["path"].get<std::string>(), cell["silhouettes"].get<std::string>()});
+            EXPECT_GT(cell["median_fps"].get<double>(), 0.0);
+            EXPECT_GT(cell["drawn_stipples"].get<int64_t>(), 0);
+            EXPECT_GT(cell["candidate_stipples"].get<int64_t>(), cell["drawn_stipples"].get<int64_t>());
+            EXPECT_EQ(cell["frame_ms"].size(), 5u);
+            EXPECT_FALSE(cell["gpu_ms"].empty());
+            EXPECT_FALSE(cell["paper_fps"].is_null());
+        }
+        std::set<std::pair<std::string, std::string>> expected = {
+            {"vertex", "none"}, {"cpu", "none"}, {"vertex", "lines"}, {"cpu", "lines"}};
+        EXPECT_EQ(cells, expected) << model["name"];
+        EXPECT_GT(model["drawn_stipples"].get<int64_t>(), 0);
+        EXPECT_GT(model["ink_fraction"].get<double>(), 0.0);
+        EXPECT_GT(model["gpu_bytes_per_candidate"].get<double>(), 0.0);
+        EXPECT_EQ(model["procedural"].get<bool>(), !have_scans());
+        EXPECT_TRUE(fs::is_regular_file(model["image"].get<std::string>()));
+    }
+    std::string md = read_bytes(out / "results.md");
+    EXPECT_NE(md.find("| horse"), std::string::npos);
+    EXPECT_NE(md.find("| low-res dragon"), std::string::npos);
+    EXPECT_NE(r.out.find("## Frames per second"), std::string::npos);  // the table is printed too
+    EXPECT_NE(read_bytes(out / "chart.svg").find("</svg>"), std::string::npos);
+}
+
+TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
+    fs::path out = test::temp_dir("bench_no_scans");
+    test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1",
+                                         "--warmup", "0", "--width", "320", "--height", "256", "--models-dir",
+                                         "/nonexistent/stipple/models", "--out", out.string()});
+    std::printf("%s", r.out.c_str());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("not in /nonexistent/stipple/models"), std::string::npos);
+    EXPECT_NE(r.out.find("procedural UV sphere"), std::string::npos);
+    nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
+    EXPECT_FALSE(j["scans_found"].get<bool>());
+    ASSERT_EQ(j["models"].size(), 1u);
+    EXPECT_TRUE(j["models"][0]["procedural"].get<bool>());
+    EXPECT_EQ(j["models"][0]["cells"].size(), 2u);  // indirect, without and with lines
+    EXPECT_TRUE(j["models"][0]["cells"][0]["paper_fps"].is_null());
+}
+
+TEST(BenchCommand, BadArgumentsFailWithOneLine) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"bench", "--models", "teapot"}, {"bench", "--paths", "vertex,raytrace"},
+          {"bench", "--frames", "0"}, {"bench", "--width", "0"}, {"bench", "--paths", "vertex,,cpu"},
+          {"bench", "model.obj"}, {"bench", "--no-such-option"}}) {
+        test::CommandResult r = run_stipple(args);
+        EXPECT_EQ(r.exit_code, 1) << args.back();
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("stipple: ", 0), 0u) << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace stipple
