@@ -431,4 +431,23 @@ TEST(RealModels, HorsePlyWithNormals) { load_real_model("horse.ply", 96'966, 48'
 TEST(RealModels, OgreObj) { load_real_model("ogre.obj", 124'008, 0); }
 TEST(RealModels, SpotObj) { load_real_model("spot.obj", 5'856, 0); }
 
+// A closed tetrahedron wound inside out loads wound outward, normals outward too.
+TEST(LoadMesh, InsideOutClosedMeshIsTurnedOutward) {
+    const auto dir = temp_dir("loaders_inside_out");
+    const std::string path = (dir / "inside_out.obj").string();
+    // Outward would be 1 3 2 / 1 2 4 / 1 4 3 / 2 3 4; every face here is reversed.
+    write_file(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+    const Mesh mesh = load_mesh(path);
+    EXPECT_GT(stipple::signed_volume(mesh), 0.0);
+    const glm::vec3 centroid(0.25f);
+    for (size_t v = 0; v < mesh.vertex_count(); ++v)
+        EXPECT_GT(glm::dot(mesh.normals[v], mesh.positions[v] - centroid), 0.0f) << "vertex " << v;
+    // An open sheet is left as it is, whichever way it faces.
+    Mesh sheet;
+    sheet.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    sheet.indices = {0, 2, 1};
+    stipple::compute_vertex_normals(sheet);
+    EXPECT_FALSE(stipple::orient_outward(sheet));
+}
+
 }  // namespace

@@ -64,6 +64,7 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
         compute_vertex_normals(mesh);  // tolerates bad indices; validate_mesh reports them
     }
     validate_mesh(mesh);
+    orient_outward(mesh);
     return mesh;
 }
 

@@ -13,7 +13,8 @@ struct LoadOptions {
 };
 
 // Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
-// (validate_mesh) and computes normals where the file has none.
+// (validate_mesh), computes normals where the file has none, and turns inside-out closed meshes
+// outward (orient_outward).
 // Every problem throws stipple::Error with one line "<path>: <problem>".
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 

@@ -44,6 +44,15 @@ Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains eve
 double triangle_area(const Mesh& mesh, size_t triangle);
 double total_area(const Mesh& mesh);
 
+// Signed volume enclosed by the triangles (positive when they are wound counter-clockwise seen from
+// outside); about zero for an open sheet.
+double signed_volume(const Mesh& mesh);
+
+// Scanned models are sometimes wound inside out (the Cyberware horse is): their faces would count as
+// back faces and get no stipples. When the signed volume is clearly negative, flips every triangle's
+// winding, and the vertex normals too if they then disagree with the faces. Returns true if it flipped.
+bool orient_outward(Mesh& mesh);
+
 // Appends b to a (for scenes and multi-primitive files).
 void append_mesh(Mesh& a, const Mesh& b);
 
