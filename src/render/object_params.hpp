@@ -38,7 +38,7 @@ struct ObjectParams {
     float min_area = 4.0f;          // minimum stipple screen area in px^2 (2..9 in the paper)
     bool intrinsic = true;          // §2.3 intrinsic depth enhancement
     float de = 2.0f;                // intrinsic rate
-    float point_size = 2.0f;        // stipple diameter in pixels
+    float point_size = 1.5f;        // stipple diameter in pixels
     DensityPath density_path = DensityPath::Vertex;
     SilhouetteMode silhouette = SilhouetteMode::None;
     float silhouette_width = 4.0f;    // Raskar-Cohen line width in pixels at the object's reference size

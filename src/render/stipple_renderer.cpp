@@ -16,7 +16,11 @@ using gpu::MemoryUse;
 
 StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_format, VkFormat depth_format,
                                  RendererOptions options)
-    : context_(context), options_(options), depth_format_(depth_format), timer_(context), color_format_(color_format) {
+    : context_(context),
+      options_(options),
+      color_format_(color_format),
+      depth_format_(depth_format),
+      timer_(context) {
     layout_ = gpu::create_stipple_layout(context);
     create_pipelines(color_format, depth_format);
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);

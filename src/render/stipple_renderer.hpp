@@ -101,6 +101,7 @@ private:
 
     const gpu::Context& context_;
     RendererOptions options_;
+    VkFormat color_format_;
     VkFormat depth_format_;
     gpu::StippleLayout layout_;
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
@@ -119,7 +120,6 @@ private:
     gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's depth test
     VkExtent2D splat_extent_{};
-    VkFormat color_format_;
     bool splat_targets_ = false;  // this frame's targets support the splat
     gpu::Buffer frame_uniforms_;
     gpu::FrameUniforms frame_{};

@@ -17,7 +17,7 @@ inline constexpr float kReferenceHeight = 1280.0f;
 
 struct GenerationParams {
     // D_max: the maximum stipple density, in stipples per reference pixel^2 (see docs/paper-reading.md).
-    float dmax = 0.15f;
+    float dmax = 0.25f;
     // Object_max: the object's stipple budget. The density actually used is
     // min(D_max, Object_max / total reference area), so the budget lowers the density evenly.
     uint64_t max_stipples = 8'000'000;
