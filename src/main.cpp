@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
         if (command == "render") return stipple::cli::run_render(args);
         if (command == "info") return stipple::cli::run_info(args);
         if (command == "view") return stipple::cli::run_view(args);
+        if (command == "bench") return stipple::cli::run_bench(args);
         std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
         return 2;
     } catch (const stipple::Error& e) {

@@ -17,13 +17,21 @@ void print_usage() {
 Stipple Drawing of Polygonal Objects", VMV 2002)
 
 Usage:
-  stipple render [MODEL] [-o OUT.png] [options]   render one frame offscreen to a PNG
-  stipple info MODEL [--json] [options]           load a model, generate its stipples, print figures
-  stipple --help                                  this text
+  stipple render [MODEL | SCENE.json] [-o OUT.png] [options]
+                                  render one frame (or a numbered frame sequence) offscreen to PNG
+  stipple view [SCENE.json | MODEL ...] [options]
+                                  open a window: turn, move and tune the drawing interactively
+  stipple info MODEL [--json] [options]
+                                  load a model, generate its stipples, print figures
+  stipple bench [--quick] [options]
+                                  the paper's Table 1 on this machine: results.md, .json, chart.svg
+  stipple --help                  this text
 
-MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file. Without MODEL,
-render draws the built-in default scene (assets/blobby.glb, a blobby metaball surface made by
-tools/make_blobby).
+MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file. Without MODEL or
+scene, render and view draw the built-in default scene (assets/blobby.glb, a blobby metaball surface
+made by tools/make_blobby). Several MODELs given to view are set side by side, each scaled to the
+first one's size. The stipple options below apply to MODELs; a SCENE.json sets them per object
+(combining the two is an error).
 
 Render options:
   -o, --output PATH       PNG to write (default: stipple.png)
@@ -33,17 +41,61 @@ Render options:
   --distance D            camera distance as a multiple of the framing distance (default 1 = framed)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
-  --point-size PX         stipple diameter in pixels, 1..64 (default 2; above 2.5 dots are round)
+  --point-size PX         stipple diameter in pixels, 1..64 (default 1.5; above 2.5 dots are round)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), ink
                           coverage, and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
                           frame time and GPU time per pass
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
+  --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at
+                          N evenly spaced points (a camera_path alone gives one frame per keyframe)
+  --orbit DEG             turn the camera by DEG in total around the scene's centre, DEG*i/N at
+                          frame i (so 360 loops without a repeated frame); needs --frames
 
-Stipple options (render and info):
+  With several frames, -o (and --mask) must hold a frame number in printf style: -o frames/%%04d.png
+  writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%). A progress bar shows on a
+  terminal; the same command always writes the same files. With a SCENE.json, --yaw, --pitch,
+  --distance and --light override the scene's camera and light.
+
+View options (view also takes --yaw, --pitch, --distance, --light, --device and the stipple options):
+  --width N, --height N   window size (default 1280 x 1024)
+  --no-vsync              present without waiting for the display (MAILBOX or IMMEDIATE) from the start
+  --no-panel              start with the panel hidden
+  --no-count-drawn        do not count drawn stipples on the GPU (saves an atomic per stipple)
+  --screenshot-dir DIR    where S writes screenshots, stipple-0001.png, ... (default: .)
+  --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
+                          stipple-scene.json)
+  --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
+  --verbose               print the device and every swapchain (re)creation
+
+  Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
+  window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
+  H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
+  vsync, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
+  (generation parameters take effect on release or Enter, they make new stipples), the light,
+  paper and ink colours, and shows fps, CPU frame time, GPU time per pass and stipple counts.
+
+Scene files (JSON; model paths relative to the file; unknown fields are errors):
+  {"objects": [{"model": "blobby.glb",
+                "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s}
+                             (or {"matrix": [16 numbers, column-major]}),
+                "params": {"dmax": 0.15, "max_stipples": 8000000, "seed": 1, "relax_iterations": 6,
+                           "shading": true, "shading_exponent": 1, "extrinsic": true, "pr": 2,
+                           "min_area": 4, "intrinsic": true, "de": 2, "point_size": 2,
+                           "density_path": "vertex", "silhouette": "none", "silhouette_width": 4,
+                           "silhouette_thinning": true, "toon_sharpness": 4}}],
+   "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
+              "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
+   "camera_path": [camera, camera, ...],
+   "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]}
+  Every field is optional except objects and their model (the values above are examples); params
+  take the stipple options' ranges and defaults.
+
+Stipple options (render, view and info; a SCENE.json sets them per object instead):
   --dmax F                D_max, the maximum stipple density in stipples per reference pixel^2
-                          (the object framed in a 1024-pixel-high view), 0 < F <= 16 (default 0.2)
+                          (the object framed in a 1280-pixel-high reference view), 0 < F <= 16
+                          (default 0.25; with --pr 2 also the stipples per screen pixel^2)
   --max-stipples N        Object_max, the object's stipple budget (default 8000000); the density
                           is lowered evenly when D_max would exceed it
   --seed N                seed of the stipple placement (default 1)
@@ -59,7 +111,8 @@ Stipple options (render and info):
   --no-intrinsic          no intrinsic depth enhancement
   --density-path P        vertex: compute pass + vertex-shader cull (the paper's vertex program);
                           cpu: CPU densities, only surviving stipples submitted; indirect: compute
-                          pass writes compacted draws (vkCmdDrawIndirectCount). Default: vertex
+                          pass writes compacted draws (vkCmdDrawIndirectCount); splat: a compute
+                          pass draws the stipples itself, without the rasteriser. Default: vertex
   --silhouette MODE       none, lines (Raskar-Cohen back-face lines), toon (N.E ramp: surfaces
                           darken edge-on, stipples fade there) or both (default none)
   --silhouette-width PX   line width at the object's reference size, 1..64 (default 4)
@@ -69,11 +122,20 @@ Stipple options (render and info):
 Info options:
   --json                  print the figures as JSON
 
+Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
+  --quick                 horse and low-res dragon, vertex and cpu paths, 5 timed frames
+  --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
+  --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
+  --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
+
 Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any
                           validation message makes the command fail
   STIPPLE_SHADER_DIR      where the compiled shaders (*.spv) are (default: the build folder)
   STIPPLE_ASSET_DIR       where the default scene is (default: the source folder's assets/)
+  STIPPLE_SHARED_MODELS   where bench finds the scans (default: the source folder's ../shared/models)
+  STIPPLE_CACHE_DIR       bench's derived models go to $STIPPLE_CACHE_DIR/bench-models (default:
+                          the build folder's bench-models)
 
 Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the
 file and the problem), 2 on a bad command line or Vulkan validation messages.
