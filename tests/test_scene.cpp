@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/live_scene.hpp"
 #include "core/error.hpp"
 #include "io/png_io.hpp"
 #include "mesh/primitives.hpp"
@@ -161,7 +162,9 @@ TEST_F(GpuTest, ObjectsInOneFrameKeepTheirOwnDensity) {
     write_sphere_obj(dir);
     VkExtent2D extent{640, 320};
     // Light and dark: each sphere draws with its own D_max; swapping the values swaps the tones.
-    auto [light_left, dark_right] = tone_left_right(render_scene(*context, two_spheres(dir, 0.03f, 0.25f), extent), 320);
+    RenderedFrame first = render_scene(*context, two_spheres(dir, 0.03f, 0.25f), extent);
+    write_png(test::output_path("scene_two_objects.png").string(), first.color);
+    auto [light_left, dark_right] = tone_left_right(first, 320);
     auto [dark_left, light_right] = tone_left_right(render_scene(*context, two_spheres(dir, 0.25f, 0.03f), extent), 320);
     std::printf("tone left/right: dmax 0.03|0.25 -> %.3f|%.3f, 0.25|0.03 -> %.3f|%.3f\n", light_left, dark_right,
                 dark_left, light_right);
@@ -180,10 +183,10 @@ TEST_F(GpuTest, ObjectsAtDifferentScalesKeepTheirTone) {
     auto tones = [&](bool small_extrinsic) {
         Scene scene = two_spheres(dir, 0.04f, 0.04f);
         scene.objects[0].transform.translate = {-0.9f, 0.0f, 0.0f};
-        scene.objects[1].transform.translate = {1.0f, 0.0f, 0.0f};
+        scene.objects[1].transform.translate = {1.6f, 0.0f, 0.0f};  // a wide gap: column 475 parts them
         scene.objects[1].transform.scale = 0.3f;
         scene.objects[1].params.extrinsic = small_extrinsic;
-        auto [big, small] = tone_left_right(render_scene(*context, scene, {800, 400}), 560);
+        auto [big, small] = tone_left_right(render_scene(*context, scene, {800, 400}), 475);
         std::printf("small object's extrinsic %s: tone big %.3f, small %.3f\n", small_extrinsic ? "on" : "off", big,
                     small);
         return std::make_pair(big, small);
@@ -194,6 +197,65 @@ TEST_F(GpuTest, ObjectsAtDifferentScalesKeepTheirTone) {
     EXPECT_LT(small_on / big_on, 1.6) << "same parameters, different scales: the tone should hold";
     EXPECT_GT(small_off, 2.0 * small_on) << "without its enhancement the small object should darken";
     EXPECT_NEAR(big_off, big_on, 0.02) << "the other object's enhancement is its own";
+}
+
+TEST_F(GpuTest, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
+    // What the viewer does with a drop and with the panel's generation parameters, without a window.
+    auto dir = test::temp_dir("scene-live");
+    std::string sphere = write_sphere_obj(dir).string();
+    write_text(dir / "broken.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+    Scene scene;
+    scene.base_dir = dir;
+    scene.objects.push_back({"sphere.obj", {}, {}});
+    scene.objects[0].params.generation.dmax = 0.02f;
+    SceneContent content = load_scene_content(scene);
+    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    app::LiveScene live(scene, std::move(content), renderer);
+    ASSERT_EQ(renderer.object_count(), 1u);
+
+    // Bad drops are errors to report; nothing changes.
+    for (std::string bad : {(dir / "broken.obj").string(), (dir / "missing.obj").string(), (dir / "x.json").string()})
+        EXPECT_THROW(live.add_model(bad), Error) << bad;
+    EXPECT_EQ(renderer.object_count(), 1u);
+    EXPECT_EQ(live.size(), 1u);
+
+    // A good one lands beside the others, at the first one's size.
+    Sphere before = live.bounds();
+    live.add_model(sphere);
+    ASSERT_EQ(renderer.object_count(), 2u);
+    Sphere a = transform_sphere(compute_bounding_sphere(make_icosphere(4)), live.scene().objects[0].transform.to_matrix());
+    Sphere b = transform_sphere(compute_bounding_sphere(make_icosphere(4)), live.scene().objects[1].transform.to_matrix());
+    EXPECT_GT(glm::length(a.center - b.center), a.radius + b.radius) << "the dropped model overlaps the scene";
+    EXPECT_NEAR(b.radius, a.radius, 1e-3f);
+    EXPECT_GT(live.bounds().radius, 1.5f * before.radius);
+
+    // D_max acts when committed, on that object only, and the objects keep their order.
+    uint32_t first = renderer.object(0).stipple_count, second = renderer.object(1).stipple_count;
+    live.scene().objects[0].params.generation.dmax = 0.04f;
+    live.sync();
+    EXPECT_EQ(renderer.object(0).stipple_count, first) << "regenerated before the edit was committed";
+    EXPECT_TRUE(live.regenerate_if_changed(0));
+    EXPECT_FALSE(live.regenerate_if_changed(1));
+    EXPECT_NEAR(double(renderer.object(0).stipple_count), 2.0 * first, 0.02 * first);
+    EXPECT_EQ(renderer.object(1).stipple_count, second);
+    // The rebuilt renderer still draws both (sparse at these densities: a few hundred dots).
+    OffscreenTarget target(*context, {480, 360});
+    live.sync();
+    OrbitCamera camera = resolve_camera(live.scene().camera, live.bounds(), 480.0f / 360.0f);
+    EXPECT_GT(test::measure_ink(target.render(renderer, scene_frame_view(live.scene(), camera, live.bounds(), {480, 360})))
+                  .inked_inside,
+              100u);
+
+    // Saved as the viewer's Ctrl+S does: both objects, the new D_max, the viewer's camera.
+    camera.yaw_deg = 33.0f;
+    live.save((dir / "saved.json").string(), camera);
+    Scene saved = load_scene((dir / "saved.json").string());
+    ASSERT_EQ(saved.objects.size(), 2u);
+    EXPECT_FLOAT_EQ(saved.objects[0].params.generation.dmax, 0.04f);
+    EXPECT_FLOAT_EQ(saved.camera.yaw_deg, 33.0f);
+    live.remove(1);
+    live.remove(0);  // the last object stays
+    EXPECT_EQ(renderer.object_count(), 1u);
 }
 
 struct BadScene {
@@ -261,7 +323,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"negative_integer", R"({"objects": [{"model": "sphere.obj", "params": {"seed": -3}}]})",
                  "objects[0].params.seed", "out of range"},
         BadScene{"bad_enum", R"({"objects": [{"model": "sphere.obj", "params": {"density_path": "gpu"}}]})",
-                 "objects[0].params.density_path", "not one of vertex, cpu, indirect"},
+                 "objects[0].params.density_path", "'gpu' is not one of vertex, cpu"},
         BadScene{"bad_scale", R"({"objects": [{"model": "sphere.obj", "transform": {"scale": -1}}]})",
                  "objects[0].transform.scale", "must be > 0"},
         BadScene{"singular_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":

@@ -153,6 +153,8 @@ void Overlay::record(VkCommandBuffer cb, uint32_t image_index) {
 }
 
 bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
-bool Overlay::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+// Not WantCaptureKeyboard: that also holds while a window is dragged, and a key pressed just after the
+// release (before the next frame updates it) would be lost. Only text fields use keys in this panel.
+bool Overlay::wants_text() const { return ImGui::GetIO().WantTextInput; }
 
 }  // namespace stipple::app

@@ -32,9 +32,10 @@ public:
     // COLOR_ATTACHMENT_OPTIMAL; it leaves it in PRESENT_SRC_KHR.
     void record(VkCommandBuffer cb, uint32_t image_index);
 
-    // Whether the last frame's panel wants the mouse / keyboard (then the viewer ignores them).
+    // Whether the last frame's panel wants the mouse (a widget is being dragged, a popup is open, the
+    // cursor was over it) / is editing text (then single-letter shortcuts are typing, not commands).
     bool wants_mouse() const;
-    bool wants_keyboard() const;
+    bool wants_text() const;
 
 private:
     void destroy_framebuffers();

@@ -98,9 +98,13 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
         ImGui::SliderFloat("de", &p.de, 0.05f, 16.0f, "%.2f", kLog);
         help("Depth enhancement rate (paper §2.3): smaller exaggerates near/far.");
         ImGui::SliderFloat("point size", &p.point_size, 1.0f, std::min(64.0f, f.max_point_size), "%.1f px", kClamp);
-        int path = int(p.density_path);
-        const char* paths[] = {"vertex (§3.2 vertex program)", "cpu (no vertex program)", "indirect (compute draws)"};
-        if (ImGui::Combo("density path", &path, paths, 3)) p.density_path = DensityPath(path);
+        if (ImGui::BeginCombo("density path", density_path_name(p.density_path))) {
+            for (DensityPath path : kAllDensityPaths)
+                if (ImGui::Selectable(density_path_name(path), path == p.density_path)) p.density_path = path;
+            ImGui::EndCombo();
+        }
+        help("vertex: compute densities, the vertex shader culls (§3.2); cpu: CPU densities, only survivors drawn; "
+             "indirect: compute-written draws; splat: drawn by a compute pass where the target allows it.");
         int mode = int(p.silhouette);
         const char* modes[] = {"none", "lines", "toon", "both"};
         if (ImGui::Combo("silhouette", &mode, modes, 4)) p.silhouette = SilhouetteMode(mode);
@@ -133,7 +137,10 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(800, std::max(200.0f, float(figures.extent.height) - 20)));
-    if (ImGui::Begin("stipple")) {
+    bool open = ImGui::Begin("stipple");
+    ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    requests.rect = {pos.x, pos.y, size.x, size.y};
+    if (open) {
         ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
         figures_section(figures, requests);
         ImGui::Separator();

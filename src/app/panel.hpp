@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
 #include "render/stipple_renderer.hpp"
@@ -36,6 +37,7 @@ struct PanelRequests {
     bool hide = false;
     std::vector<size_t> regenerate;  // objects whose generation parameters were committed
     std::optional<size_t> remove;
+    glm::vec4 rect{0.0f};  // the panel's x, y, width, height in window pixels this frame
 };
 
 // `names`: one label per scene object (its model file).

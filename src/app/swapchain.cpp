@@ -83,6 +83,8 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
     min_image_count_ = caps.minImageCount + 1;
     if (caps.maxImageCount > 0) min_image_count_ = std::min(min_image_count_, caps.maxImageCount);
     copyable_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    // Copies both ways also let the compute splat draw into the window's images (see RenderTargets).
+    writable_ = copyable_ && (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) != 0;
 
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     info.surface = surface_;
@@ -91,7 +93,9 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
     info.imageColorSpace = format_.colorSpace;
     info.imageExtent = extent;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (copyable_ ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : 0u);
+    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                      (copyable_ ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : 0u) |
+                      (writable_ ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_DST_BIT) : 0u);
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = caps.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -130,8 +134,8 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
         VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &s));
         rendering_done_.push_back(s);
     }
-    depth_ = gpu::Image(context_, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                        VK_IMAGE_ASPECT_DEPTH_BIT);
+    depth_ = gpu::Image(context_, extent, kDepthFormat,
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, kDepthAspect);
     return true;
 }
 

@@ -40,6 +40,7 @@ public:
     VkSemaphore rendering_done(uint32_t i) const { return rendering_done_.at(i); }
     // Swapchain images can be copied from (screenshots of the current frame).
     bool copyable() const { return copyable_; }
+    bool writable() const { return writable_; }  // images can also be copied into
     // Whether vsync off can mean anything here (MAILBOX or IMMEDIATE exists).
     bool can_disable_vsync() const;
 
@@ -59,6 +60,7 @@ private:
     VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
     uint32_t min_image_count_ = 2;
     bool copyable_ = false;
+    bool writable_ = false;
     std::vector<VkPresentModeKHR> modes_;
     std::vector<VkImage> images_;
     std::vector<VkImageView> views_;

@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
 #include <deque>
+#include <map>
 #include <memory>
 
 #include "app/camera_control.hpp"
@@ -22,6 +24,8 @@ namespace stipple::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr long long kWarmupFrames = 10;  // --benchmark-frames: the first frames compile shaders, fault in memory
 
 double ms_between(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
@@ -75,9 +79,17 @@ public:
           vsync_(options.vsync),
           panel_visible_(options.panel) {
         swapchain_.recreate(window_.framebuffer_size(), vsync_);
+        if (options.verbose) print_swapchain();
         overlay_ = std::make_unique<Overlay>(context_, window_.handle(), swapchain_);
-        window_.set_capture_queries([this] { return panel_visible_ && overlay_->wants_mouse(); },
-                                    [this] { return panel_visible_ && overlay_->wants_keyboard(); });
+        // ImGui 1.86 updates its capture flags once per frame; the panel's rectangle makes a press on the
+        // panel the panel's even when it comes before the frame that would have noticed the cursor there.
+        window_.set_capture_queries(
+            [this](glm::dvec2 cursor) {
+                const glm::vec4& r = panel_rect_;
+                bool over_panel = cursor.x >= r.x && cursor.y >= r.y && cursor.x < r.x + r.z && cursor.y < r.y + r.w;
+                return panel_visible_ && (over_panel || overlay_->wants_mouse());
+            },
+            [this] { return panel_visible_ && overlay_->wants_text(); });
         VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         alloc.commandPool = context_.command_pool;
         alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -112,6 +124,7 @@ private:
     void record(uint32_t image_index);
     void message(const std::string& text, bool error = false);
     void save_scene();
+    void print_swapchain() const;
 
     ViewerOptions options_;
     Window window_;
@@ -133,10 +146,13 @@ private:
     bool submitted_ = false;  // a frame is in flight (its fence is pending)
     bool paused_ = false;
     PanelFigures figures_;
+    glm::vec4 panel_rect_{0.0f};
     std::deque<std::string> messages_;
     std::vector<size_t> pending_regeneration_;
     std::optional<size_t> pending_removal_;
     long long frames_drawn_ = 0;
+    std::map<std::string, double> bench_gpu_ms_;  // summed over the benchmark's frames
+    int bench_samples_ = 0;
     Clock::time_point fps_start_ = Clock::now();
     int fps_frames_ = 0;
 };
@@ -159,7 +175,6 @@ void Viewer::save_scene() {
 }
 
 int Viewer::run() {
-    const long long warmup = 10;  // the first frames compile shaders and fault in memory
     Clock::time_point bench_start;
     while (!window_.should_close()) {
         if (window_.hidden()) {
@@ -177,17 +192,23 @@ int Viewer::run() {
         if (window_.should_close()) break;
         frame();
         if (options_.benchmark_frames > 0) {
-            if (frames_drawn_ == warmup) bench_start = Clock::now();
-            if (frames_drawn_ == warmup + options_.benchmark_frames) break;
+            if (frames_drawn_ == kWarmupFrames) bench_start = Clock::now();
+            if (frames_drawn_ == kWarmupFrames + options_.benchmark_frames) break;
         }
     }
     VK_CHECK(vkDeviceWaitIdle(context_.device));
-    if (options_.benchmark_frames > 0 && frames_drawn_ >= warmup + options_.benchmark_frames) {
+    if (options_.benchmark_frames > 0 && frames_drawn_ >= kWarmupFrames + options_.benchmark_frames) {
         double ms = ms_between(bench_start, Clock::now()) / double(options_.benchmark_frames);
         VkExtent2D e = swapchain_.extent();
         std::printf("benchmark: %lld frames at %ux%u, panel %s, %s: mean %.2f fps (%.2f ms per frame)\n",
                     options_.benchmark_frames, e.width, e.height, panel_visible_ ? "on" : "off",
                     present_mode_name(swapchain_.present_mode()), 1000.0 / ms, ms);
+        const FrameStats& st = figures_.stats;
+        std::printf("benchmark: %zu objects, %llu polygons, %llu candidate stipples, %lld drawn (last frame)\n",
+                    live_.size(), (unsigned long long)st.triangles, (unsigned long long)st.candidate_stipples,
+                    (long long)st.drawn_stipples);
+        for (const auto& [pass, total] : bench_gpu_ms_)
+            std::printf("benchmark: gpu %-12s mean %.3f ms\n", pass.c_str(), total / std::max(bench_samples_, 1));
     }
     if (uint32_t n = context_.validation_message_count()) {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s)\n", n);
@@ -202,6 +223,10 @@ void Viewer::finish_previous_frame() {
     submitted_ = false;
     renderer_.collect();
     figures_.stats = renderer_.stats();
+    if (options_.benchmark_frames > 0 && frames_drawn_ > kWarmupFrames) {
+        for (const auto& [pass, ms] : figures_.stats.gpu_ms) bench_gpu_ms_[pass] += ms;
+        ++bench_samples_;
+    }
     try {
         std::string path = screenshot_.write_pending(options_.screenshot_dir);
         if (!path.empty()) message("screenshot: " + path);
@@ -218,10 +243,14 @@ bool Viewer::ensure_swapchain() {
     recreate_ = false;
     bool ok = swapchain_.recreate(size, vsync_);
     overlay_->rebuild(swapchain_);
-    if (ok && options_.verbose)
-        std::printf("stipple: swapchain %ux%u, %u images, %s\n", swapchain_.extent().width, swapchain_.extent().height,
-                    swapchain_.image_count(), present_mode_name(swapchain_.present_mode()));
+    if (ok && options_.verbose) print_swapchain();
     return ok;
+}
+
+void Viewer::print_swapchain() const {
+    std::printf("stipple: swapchain %ux%u, %u images, %s\n", swapchain_.extent().width, swapchain_.extent().height,
+                swapchain_.image_count(), present_mode_name(swapchain_.present_mode()));
+    std::fflush(stdout);
 }
 
 void Viewer::handle_input(const Input& input, float aspect) {
@@ -259,6 +288,7 @@ void Viewer::handle_input(const Input& input, float aspect) {
 }
 
 void Viewer::handle_requests(const PanelRequests& r, float aspect) {
+    panel_rect_ = r.rect;
     if (r.screenshot) screenshot_.request();
     if (r.save_scene) save_scene();
     if (r.frame_all) frame_all(camera_, live_.bounds(), aspect);
@@ -353,7 +383,7 @@ void Viewer::record(uint32_t image) {
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(cb_, &begin));
     RenderTargets targets{swapchain_.image(image), swapchain_.view(image), swapchain_.depth().handle(),
-                          swapchain_.depth().view(), swapchain_.extent()};
+                          swapchain_.depth().view(), swapchain_.extent(), swapchain_.writable()};
     renderer_.record(cb_, targets);
     if (screenshot_.requested()) {
         if (swapchain_.copyable())

@@ -92,7 +92,7 @@ Input Window::take_input() {
     return input;
 }
 
-void Window::set_capture_queries(std::function<bool()> wants_mouse, std::function<bool()> wants_keyboard) {
+void Window::set_capture_queries(std::function<bool(glm::dvec2)> wants_mouse, std::function<bool()> wants_keyboard) {
     wants_mouse_ = std::move(wants_mouse);
     wants_keyboard_ = std::move(wants_keyboard);
 }
@@ -109,15 +109,15 @@ void Window::on_button(GLFWwindow* w, int button, int action, int) {
     Window* me = self(w);
     // A drag belongs to whoever got its press: one starting over the panel is the panel's.
     bool press = action == GLFW_PRESS;
-    if (press && me->wants_mouse_()) return;
+    if (press) glfwGetCursorPos(w, &me->cursor_.x, &me->cursor_.y);
+    if (press && me->wants_mouse_(me->cursor_)) return;
     if (button == GLFW_MOUSE_BUTTON_LEFT) me->orbiting_ = press;
     if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) me->panning_ = press;
-    if (press) glfwGetCursorPos(w, &me->cursor_.x, &me->cursor_.y);
 }
 
 void Window::on_scroll(GLFWwindow* w, double, double dy) {
     Window* me = self(w);
-    if (!me->wants_mouse_()) me->pending_.scroll += dy;
+    if (!me->wants_mouse_(me->cursor_)) me->pending_.scroll += dy;
 }
 
 void Window::on_key(GLFWwindow* w, int key, int, int action, int mods) {

@@ -50,8 +50,9 @@ public:
 
     // Input since the last take_input(); the queues are emptied.
     Input take_input();
-    // Whether the panel has the mouse / the keyboard (input it has is not the viewer's).
-    void set_capture_queries(std::function<bool()> wants_mouse, std::function<bool()> wants_keyboard);
+    // Whether the panel has the mouse (asked with the cursor position of a press or wheel step) or the
+    // keyboard: input it has is not the viewer's.
+    void set_capture_queries(std::function<bool(glm::dvec2)> wants_mouse, std::function<bool()> wants_keyboard);
 
 private:
     static void on_cursor(GLFWwindow* w, double x, double y);
@@ -66,7 +67,7 @@ private:
     glm::dvec2 cursor_{0.0};
     bool orbiting_ = false;
     bool panning_ = false;
-    std::function<bool()> wants_mouse_ = [] { return false; };
+    std::function<bool(glm::dvec2)> wants_mouse_ = [](glm::dvec2) { return false; };
     std::function<bool()> wants_keyboard_ = [] { return false; };
 };
 

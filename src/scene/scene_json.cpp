@@ -142,7 +142,11 @@ const std::vector<ParamField>& param_fields() {
          [](P& p, const json& j, const Reader& r, const std::string& w) {
              std::string name = r.string(j, w);
              auto path = parse_density_path(name);
-             if (!path) r.error(w, "'" + name + "' is not one of vertex, cpu, indirect");
+             if (!path) {
+                 std::string names;
+                 for (DensityPath d : kAllDensityPaths) names += std::string(names.empty() ? "" : ", ") + density_path_name(d);
+                 r.error(w, "'" + name + "' is not one of " + names);
+             }
              p.density_path = *path;
          },
          [](const P& p) { return json(density_path_name(p.density_path)); }},
@@ -253,6 +257,45 @@ json camera_json(const SceneCamera& c) {
     return j;
 }
 
+// Like dump(2), but arrays of numbers stay on one line ("translate": [0, 1.5, 0]): scene files
+// are meant to be read and edited by hand.
+void write_pretty(const json& j, int indent, std::string& out) {
+    const std::string pad(size_t(indent + 2), ' ');
+    if (j.is_object() && !j.empty()) {
+        out += "{\n";
+        size_t i = 0;
+        for (const auto& [key, value] : j.items()) {
+            out += pad + json(key).dump() + ": ";
+            write_pretty(value, indent + 2, out);
+            out += ++i < j.size() ? ",\n" : "\n";
+        }
+        out += std::string(size_t(indent), ' ') + "}";
+    } else if (j.is_array() && !j.empty() && !std::all_of(j.begin(), j.end(), [](const json& e) { return e.is_primitive(); })) {
+        out += "[\n";
+        for (size_t i = 0; i < j.size(); ++i) {
+            out += pad;
+            write_pretty(j[i], indent + 2, out);
+            out += i + 1 < j.size() ? ",\n" : "\n";
+        }
+        out += std::string(size_t(indent), ' ') + "]";
+    } else if (j.is_array()) {
+        out += "[";
+        for (size_t i = 0; i < j.size(); ++i) out += (i ? ", " : "") + j[i].dump();
+        out += "]";
+    } else {
+        out += j.dump();
+    }
+}
+
+// Relative to the scene file when the model is near it (the pair can move together), absolute when
+// the relative path would climb far up the tree (a scene saved in /tmp about a model in a checkout).
+std::string model_reference(const std::filesystem::path& model, const std::filesystem::path& save_dir) {
+    std::filesystem::path relative = model.lexically_relative(std::filesystem::absolute(save_dir).lexically_normal());
+    int ups = 0;
+    for (const auto& part : relative) ups += part == "..";
+    return relative.empty() || ups > 2 ? model.string() : relative.string();
+}
+
 }  // namespace
 
 std::vector<std::string> scene_param_names() {
@@ -331,8 +374,7 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         std::filesystem::path model = std::filesystem::absolute(scene.model_path(i)).lexically_normal();
-        std::filesystem::path relative = model.lexically_relative(std::filesystem::absolute(save_dir).lexically_normal());
-        json object = {{"model", relative.empty() ? model.string() : relative.string()}};
+        json object = {{"model", model_reference(model, save_dir)}};
         if (o.transform.matrix) {
             json m = json::array();
             for (int k = 0; k < 16; ++k) m.push_back(number((*o.transform.matrix)[k / 4][k % 4]));
@@ -356,7 +398,9 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
     root["light"] = vec3_json(scene.light);
     root["paper"] = vec3_json(scene.paper);
     root["ink"] = vec3_json(scene.ink);
-    return root.dump(2) + "\n";
+    std::string text;
+    write_pretty(root, 0, text);
+    return text + "\n";
 }
 
 void save_scene(const std::string& path, const Scene& scene) {

@@ -1,0 +1,119 @@
+// Frame sequences from `stipple render`: an orbit as numbered PNGs (all written, each a new view,
+// identical from run to run), a scene's camera path, and clear errors for sequences that cannot be.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "io/png_io.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::run_stipple;
+
+std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string frame_name(int i) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "%04d.png", i);
+    return name;
+}
+
+size_t ink_pixels(const Image& image) {
+    size_t n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) n += luminance(image, x, y) < 128;
+    return n;
+}
+
+// 8 frames of a 90-degree orbit of the default scene, small so that the test stays quick.
+test::CommandResult render_orbit(const std::filesystem::path& dir) {
+    return run_stipple({"render", "-o", (dir / "frames" / "%04d.png").string(), "--frames", "8", "--orbit", "90",
+                        "--width", "320", "--height", "256", "--pitch", "15"});
+}
+
+TEST(CliFrames, OrbitWritesEveryFrameEachANewViewAndRepeatsExactly) {
+    auto first = test::temp_dir("frames-orbit-1");
+    auto second = test::temp_dir("frames-orbit-2");
+    auto a = render_orbit(first);
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    EXPECT_EQ(a.err.find("validation"), std::string::npos) << a.err;
+    EXPECT_TRUE(a.err.empty()) << "no progress bar unless stderr is a terminal: " << a.err;
+    EXPECT_NE(a.out.find("wrote 8 frames"), std::string::npos) << a.out;
+    auto b = render_orbit(second);
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+
+    std::vector<Image> frames;
+    for (int i = 0; i < 8; ++i) {
+        auto path = first / "frames" / frame_name(i);
+        ASSERT_TRUE(std::filesystem::exists(path)) << path;
+        frames.push_back(read_png(path.string()));
+        EXPECT_EQ(frames.back().width, 320);
+        EXPECT_EQ(frames.back().height, 256);
+        EXPECT_GT(ink_pixels(frames.back()), 1000u) << "frame " << i << " has no stipples";
+        EXPECT_EQ(read_bytes(path), read_bytes(second / "frames" / frame_name(i)))
+            << "frame " << i << " differs between two runs of the same command";
+    }
+    EXPECT_FALSE(std::filesystem::exists(first / "frames" / frame_name(8))) << "one frame too many";
+    for (int i = 1; i < 8; ++i)
+        EXPECT_GT(fraction_differing(frames[i - 1], frames[i], 8), 0.01) << "frames " << i - 1 << " and " << i;
+}
+
+TEST(CliFrames, CameraPathFromTheSceneFile) {
+    auto dir = test::temp_dir("frames-path");
+    std::string model = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    std::ofstream(dir / "scene.json") << "{\"objects\": [{\"model\": \"" << model << "\"}],\n"
+                                      << " \"camera_path\": [{\"yaw\": 0, \"pitch\": 10}, {\"yaw\": 60, \"pitch\": 10,"
+                                      << " \"distance\": 1.5}]}";
+    auto r = run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "f%d.png").string(), "--frames", "3",
+                          "--width", "240", "--height", "200"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::filesystem::exists(dir / ("f" + std::to_string(i) + ".png"))) << i;
+    // The first frame sits on the first keyframe and the last on the last one.
+    auto key0 = run_stipple({"render", model, "-o", (dir / "key0.png").string(), "--width", "240", "--height", "200",
+                             "--yaw", "0", "--pitch", "10"});
+    auto key1 = run_stipple({"render", model, "-o", (dir / "key1.png").string(), "--width", "240", "--height", "200",
+                             "--yaw", "60", "--pitch", "10", "--distance", "1.5"});
+    ASSERT_EQ(key0.exit_code, 0) << key0.err;
+    ASSERT_EQ(key1.exit_code, 0) << key1.err;
+    EXPECT_EQ(read_bytes(dir / "f0.png"), read_bytes(dir / "key0.png"));
+    EXPECT_EQ(read_bytes(dir / "f2.png"), read_bytes(dir / "key1.png"));
+    EXPECT_GT(fraction_differing(read_png((dir / "f0.png").string()), read_png((dir / "f1.png").string()), 8), 0.01);
+}
+
+TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
+    auto dir = test::temp_dir("frames-bad");
+    struct Case {
+        std::vector<std::string> args;
+        const char* expect;
+    };
+    const std::string out = (dir / "x.png").string();
+    const Case cases[] = {
+        {{"render", "-o", out, "--frames", "4", "--orbit", "90"}, "no frame number"},
+        {{"render", "-o", (dir / "%04d.png").string(), "--frames", "4"}, "--orbit"},
+        {{"render", "-o", (dir / "%04d.png").string(), "--orbit", "90"}, "--frames"},
+        {{"render", "-o", (dir / "%s.png").string(), "--frames", "2", "--orbit", "90"}, "%0Nd"},
+        {{"render", "-o", (dir / "%d_%d.png").string(), "--frames", "2", "--orbit", "90"}, "more than one"},
+        {{"render", "-o", (dir / "%d.png").string(), "--frames", "0", "--orbit", "90"}, "--frames"},
+        {{"render", "-o", (dir / "%d.png").string(), "--frames", "3", "--orbit", "90", "--repeat", "2"}, "--repeat"},
+    };
+    for (const Case& c : cases) {
+        auto r = run_stipple(c.args);
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << "nothing should be written";
+}
+
+}  // namespace
+}  // namespace stipple

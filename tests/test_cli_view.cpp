@@ -1,0 +1,288 @@
+// `stipple view` end to end, as a person would use it: the default scene in a real X11 window (Xvfb,
+// drawn by lavapipe) driven by real input events from xdotool. A drag orbits, the wheel zooms, S saves
+// screenshots, Ctrl+S saves the scene, a drag on the panel leaves the camera alone, H and V hide the
+// panel and switch vsync; the window survives 20 rapid resizes and a minimize/restore;
+// Q quits with exit code 0 and without a single Vulkan validation message.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
+
+#include "io/png_io.hpp"
+#include "scene/scene_json.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using namespace std::chrono_literals;
+
+bool have_tool(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
+
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A child process with its own environment additions and output files, killed if the test ends early.
+class Child {
+public:
+    Child(const std::vector<std::string>& argv, const std::vector<std::pair<std::string, std::string>>& env,
+          const std::filesystem::path& out, const std::filesystem::path& err) {
+        pid_ = fork();
+        if (pid_ == 0) {
+            for (const auto& [k, v] : env) setenv(k.c_str(), v.c_str(), 1);
+            int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            int n = open("/dev/null", O_RDONLY);
+            dup2(n, 0), dup2(o, 1), dup2(e, 2);
+            std::vector<char*> args;
+            for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+            args.push_back(nullptr);
+            execvp(args[0], args.data());
+            _exit(127);
+        }
+    }
+    ~Child() {
+        if (running()) {
+            kill(pid_, SIGKILL);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    bool running() {
+        if (pid_ <= 0 || exited_) return false;
+        int status = 0;
+        if (waitpid(pid_, &status, WNOHANG) == pid_) {
+            exited_ = true;
+            status_ = status;
+        }
+        return !exited_;
+    }
+    // Exit code after waiting up to `timeout`; -1 if it is still running (then it is killed).
+    int wait_exit(std::chrono::seconds timeout) {
+        auto end = std::chrono::steady_clock::now() + timeout;
+        while (running() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(50ms);
+        if (running()) return -1;
+        return WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
+    }
+    void terminate() {
+        if (running()) kill(pid_, SIGTERM);
+    }
+
+private:
+    pid_t pid_ = -1;
+    bool exited_ = false;
+    int status_ = 0;
+};
+
+bool wait_for(const std::function<bool()>& condition, std::chrono::milliseconds timeout) {
+    auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+        if (condition()) return true;
+        std::this_thread::sleep_for(100ms);
+    }
+    return condition();
+}
+
+size_t count_of(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+size_t ink_pixels(const Image& image) {
+    size_t n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) n += luminance(image, x, y) < 128;
+    return n;
+}
+
+class ViewerSession {
+public:
+    explicit ViewerSession(const std::filesystem::path& dir) : dir_(dir) {}
+
+    // An unused display number: no socket and no lock file.
+    bool start_x() {
+        for (int n = 87; n < 200; ++n) {
+            if (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(n)) ||
+                std::filesystem::exists("/tmp/.X" + std::to_string(n) + "-lock"))
+                continue;
+            display_ = ":" + std::to_string(n);
+            xvfb_ = std::make_unique<Child>(
+                std::vector<std::string>{"Xvfb", display_, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"},
+                std::vector<std::pair<std::string, std::string>>{}, dir_ / "xvfb.out", dir_ / "xvfb.err");
+            if (wait_for([&] { return xdotool("getmouselocation").find("x:") != std::string::npos; }, 10s)) return true;
+            xvfb_.reset();
+        }
+        return false;
+    }
+
+    void start_viewer(const std::vector<std::string>& args) {
+        std::vector<std::pair<std::string, std::string>> env{{"DISPLAY", display_}, {"STIPPLE_VALIDATION", "1"}};
+        if (!std::getenv("XDG_RUNTIME_DIR")) {
+            std::filesystem::create_directories(dir_ / "xdg");
+            chmod((dir_ / "xdg").c_str(), 0700);
+            env.push_back({"XDG_RUNTIME_DIR", (dir_ / "xdg").string()});
+        }
+        std::vector<std::string> argv{STIPPLE_EXECUTABLE, "view"};
+        argv.insert(argv.end(), args.begin(), args.end());
+        viewer_ = std::make_unique<Child>(argv, env, dir_ / "view.out", dir_ / "view.err");
+    }
+
+    std::string xdotool(const std::string& args) {
+        std::string cmd = "DISPLAY=" + display_ + " xdotool " + args + " 2>/dev/null";
+        std::string out;
+        if (FILE* p = popen(cmd.c_str(), "r")) {
+            char buffer[256];
+            while (fgets(buffer, sizeof(buffer), p)) out += buffer;
+            pclose(p);
+        }
+        return out;
+    }
+
+    std::string out() const { return slurp(dir_ / "view.out"); }
+    std::string err() const { return slurp(dir_ / "view.err"); }
+    Child& viewer() { return *viewer_; }
+
+    // Keys reach the focused window; without a window manager the test gives the focus itself.
+    void focus() {
+        xdotool("windowfocus " + window_ + " mousemove --window " + window_ + " 900 500");
+        std::this_thread::sleep_for(200ms);
+    }
+
+    bool find_window() {
+        return wait_for(
+            [&] {
+                std::string found = xdotool("search --name '^stipple - '");
+                window_ = found.substr(0, found.find('\n'));
+                return !window_.empty() || !viewer_->running();
+            },
+            40s) &&
+               !window_.empty();
+    }
+    const std::string& window() const { return window_; }
+
+    // Presses S and waits for the viewer to report the PNG it wrote.
+    std::string screenshot() {
+        size_t before = count_of(out(), "screenshot: ");
+        xdotool("key s");
+        if (!wait_for([&] { return count_of(out(), "screenshot: ") > before; }, 20s)) return "";
+        std::string text = out();
+        size_t at = text.rfind("screenshot: ") + 12;
+        return text.substr(at, text.find('\n', at) - at);
+    }
+
+private:
+    std::filesystem::path dir_;
+    std::string display_;
+    std::string window_;
+    std::unique_ptr<Child> xvfb_;   // declared first: destroyed last
+    std::unique_ptr<Child> viewer_;
+};
+
+TEST(CliView, DrivenByRealInputUnderXvfb) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view");
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({"--screenshot-dir", (dir / "shots").string(), "--save-scene", (dir / "saved.json").string()});
+    ASSERT_TRUE(session.find_window()) << "no window appeared\n" << session.err();
+    session.focus();
+
+    // The default scene, drawn: a screenshot at window resolution with stipples on paper.
+    std::string shot1 = session.screenshot();
+    ASSERT_FALSE(shot1.empty()) << "no screenshot\n" << session.out() << session.err();
+    Image before = read_png(shot1);
+    EXPECT_EQ(before.width, 1280);
+    EXPECT_EQ(before.height, 1024);
+    size_t ink_before = ink_pixels(before);
+    EXPECT_GT(ink_before, 20000u) << "the screenshot shows no stipples";
+    EXPECT_LT(ink_before, size_t(before.width) * before.height / 2) << "mostly ink: not a stipple drawing";
+
+    // A left drag orbits: another view of the object.
+    std::string drag = "mousedown 1";
+    for (int i = 0; i < 8; ++i) drag += " sleep 0.05 mousemove_relative -- 25 6";
+    session.xdotool(drag + " sleep 0.1 mouseup 1");
+    std::string shot2 = session.screenshot();
+    ASSERT_FALSE(shot2.empty());
+    Image orbited = read_png(shot2);
+    EXPECT_GT(fraction_differing(before, orbited, 8), 0.03) << "the drag did not change the view";
+
+    // The wheel zooms in: the object grows on screen, and with it the inked area (tone stays, §2.3).
+    session.xdotool("click --repeat 3 --delay 80 4");
+    std::string shot3 = session.screenshot();
+    ASSERT_FALSE(shot3.empty());
+    Image zoomed = read_png(shot3);
+    EXPECT_GT(fraction_differing(orbited, zoomed, 8), 0.03) << "the wheel did not change the view";
+    EXPECT_GT(ink_pixels(zoomed), ink_pixels(orbited) * 11 / 10) << "zooming in should enlarge the object";
+
+    // Ctrl+S: the current state as a scene file that loads again.
+    session.xdotool("key ctrl+s");
+    ASSERT_TRUE(wait_for([&] { return session.out().find("scene saved: ") != std::string::npos; }, 10s)) << session.err();
+    Scene saved = load_scene((dir / "saved.json").string());
+    ASSERT_EQ(saved.objects.size(), 1u);
+    EXPECT_TRUE(saved.camera.world_distance.has_value());
+    EXPECT_NE(saved.camera.yaw_deg, 0.0f) << "the orbit should be in the saved camera";
+
+    // A drag that starts on the panel's title bar moves the panel, not the camera (input ImGui wants is
+    // not the viewer's): the drawing stays exactly as it was.
+    session.xdotool("mousemove --window " + session.window() +
+                    " 150 18 sleep 0.7 mousedown 1 sleep 0.2 mousemove_relative -- 60 0 sleep 0.2 mousemove_relative -- "
+                    "90 30 sleep 0.2 mouseup 1 sleep 0.2 mousemove --window " +
+                    session.window() + " 900 500");
+    std::string shot_panel = session.screenshot();
+    ASSERT_FALSE(shot_panel.empty());
+    EXPECT_EQ(fraction_differing(zoomed, read_png(shot_panel), 0), 0.0) << "a drag on the panel moved the camera";
+
+    // H hides the panel, V switches vsync off (a new swapchain in another present mode).
+    session.xdotool("key h sleep 0.3 key v");
+
+    // 20 rapid resizes, then a minimize and restore (what a window manager does: iconify, unmap, map).
+    std::string resizes;
+    for (int i = 0; i < 20; ++i)
+        resizes += " windowsize " + session.window() + " " + std::to_string(500 + 37 * i) + " " +
+                   std::to_string(400 + 23 * (i % 7)) + " sleep 0.02";
+    session.xdotool(resizes + " windowsize " + session.window() + " 1000 760");
+    session.xdotool("windowminimize " + session.window() + " windowunmap " + session.window());
+    EXPECT_TRUE(wait_for([&] { return session.out().find("drawing paused") != std::string::npos; }, 10s))
+        << "the viewer did not notice it was hidden\n" << session.out();
+    std::this_thread::sleep_for(500ms);
+    session.xdotool("windowmap " + session.window());
+    EXPECT_TRUE(wait_for([&] { return session.out().find("drawing resumed") != std::string::npos; }, 10s))
+        << session.out();
+    ASSERT_TRUE(session.viewer().running()) << "the viewer died\n" << session.err();
+    session.focus();
+
+    // Still drawing, at the new window size.
+    std::string shot4 = session.screenshot();
+    ASSERT_FALSE(shot4.empty()) << session.out() << session.err();
+    Image resized = read_png(shot4);
+    EXPECT_EQ(resized.width, 1000);
+    EXPECT_EQ(resized.height, 760);
+    EXPECT_GT(ink_pixels(resized), 10000u);
+
+    // Q quits cleanly.
+    session.xdotool("key q");
+    int code = session.viewer().wait_exit(30s);
+    EXPECT_EQ(code, 0) << session.err();
+    std::string err = session.err();
+    EXPECT_EQ(err.find("validation"), std::string::npos) << err;
+    EXPECT_EQ(err.find("error"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace stipple
