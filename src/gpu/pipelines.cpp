@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <span>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -191,31 +192,47 @@ VkPipeline create_compute_pipeline(const Context& context, const std::string& sh
     return pipeline;
 }
 
+namespace {
+
+const VkShaderStageFlags kAllStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+
+VkDescriptorSetLayout create_set_layout(const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings) {
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.bindingCount = uint32_t(bindings.size());
+    info.pBindings = bindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
+    return layout;
+}
+
+VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> sets) {
+    VkPushConstantRange push{kAllStages, 0, kPushConstantBytes};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = uint32_t(sets.size());
+    info.pSetLayouts = sets.data();
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &push;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
+    return layout;
+}
+
+}  // namespace
+
 StippleLayout create_stipple_layout(const Context& context) {
-    const VkShaderStageFlags stages =
-        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
-    VkDescriptorSetLayoutBinding bindings[] = {
-        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
-        {kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr},
-        {kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
-        {kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
-        {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
-        {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
-        {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
+        {kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
+        {kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
     };
     StippleLayout layout;
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = uint32_t(std::size(bindings));
-    set_info.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &layout.set_layout));
-
-    VkPushConstantRange push{stages, 0, kPushConstantBytes};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &layout.set_layout;
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout.pipeline_layout));
+    layout.set_layout = create_set_layout(context, bindings);
+    layout.pipeline_layout = create_pipeline_layout(context, std::span(&layout.set_layout, 1));
     return layout;
 }
 
@@ -228,26 +245,16 @@ void destroy_stipple_layout(const Context& context, StippleLayout& layout) {
 
 StippleLayout create_splat_layout(const Context& context, VkDescriptorSetLayout object_set_layout) {
     const VkShaderStageFlags stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    VkDescriptorSetLayoutBinding bindings[] = {
+    const VkDescriptorSetLayoutBinding bindings[] = {
         {kBindingInkAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
         {kBindingSceneDepth, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
         {kBindingColorBuffer, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
     };
-    StippleLayout layout;
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = uint32_t(std::size(bindings));
-    set_info.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &layout.image_set_layout));
-    VkDescriptorSetLayout sets[] = {object_set_layout, layout.image_set_layout};
-    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                             kPushConstantBytes};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 2;
-    layout_info.pSetLayouts = sets;
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout.pipeline_layout));
-    return layout;  // set_layout stays null: the object set layout belongs to the stipple layout
+    StippleLayout layout;  // set_layout stays null: the object set layout belongs to the stipple layout
+    layout.image_set_layout = create_set_layout(context, bindings);
+    const VkDescriptorSetLayout sets[] = {object_set_layout, layout.image_set_layout};
+    layout.pipeline_layout = create_pipeline_layout(context, sets);
+    return layout;
 }
 
 }  // namespace stipple::gpu
