@@ -39,7 +39,7 @@ struct ObjectParams {
     bool intrinsic = true;          // §2.3 intrinsic depth enhancement
     float de = 2.0f;                // intrinsic rate
     float point_size = 1.5f;        // stipple diameter in pixels
-    DensityPath density_path = DensityPath::Vertex;
+    DensityPath density_path = DensityPath::Splat;  // the fastest correct path on lavapipe (stipple bench)
     SilhouetteMode silhouette = SilhouetteMode::None;
     float silhouette_width = 4.0f;    // Raskar-Cohen line width in pixels at the object's reference size
     bool silhouette_thinning = true;  // lines thin as the projected bounding sphere shrinks (Fig. 8)
