@@ -28,12 +28,13 @@ int run_info(const std::vector<std::string>& argv) {
             "\"surface_area\": %.9g, \"bounds_min\": [%.9g, %.9g, %.9g], \"bounds_max\": [%.9g, %.9g, %.9g], "
             "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
-            "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f}\n",
+            "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
+            "\"from_cache\": %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), object.stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds_sphere.center.x,
             object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius,
             object.stipples.density_per_area, object.stipples.poisson_radius, object.load_seconds,
-            object.stipples.generation_seconds, stipples_per_second);
+            object.stipples.generation_seconds, stipples_per_second, object.stipples.from_cache ? "true" : "false");
     } else {
         std::printf("model:               %s\n", path.c_str());
         std::printf("triangles:           %zu\n", mesh.triangle_count());
@@ -46,8 +47,12 @@ int run_info(const std::vector<std::string>& argv) {
                     object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius);
         std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
                     object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);
-        std::printf("generation time:     %.3f s (%.0f stipples/s)\n", object.stipples.generation_seconds,
-                    stipples_per_second);
+        if (object.stipples.from_cache)
+            std::printf("generation time:     %.3f s (read from the stipple cache; STIPPLE_NO_CACHE=1 regenerates)\n",
+                        object.stipples.generation_seconds);
+        else
+            std::printf("generation time:     %.3f s (%.0f stipples/s)\n", object.stipples.generation_seconds,
+                        stipples_per_second);
     }
     return 0;
 }

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "mesh/load_mesh.hpp"
+#include "stipple/stipple_cache.hpp"
 
 namespace stipple::cli {
 
@@ -15,7 +16,7 @@ LoadedObject load_object(const std::string& path, const ObjectParams& params) {
     object.bounds_sphere = compute_bounding_sphere(object.mesh);
     GenerationParams generation = params.generation;
     generation.progress = object.mesh.triangle_count() > 200'000;
-    object.stipples = generate_stipples(object.mesh, generation);
+    object.stipples = generate_stipples_cached(object.mesh, generation);
     return object;
 }
 

@@ -136,7 +136,10 @@ Environment:
   STIPPLE_ASSET_DIR       where the default scene is (default: the source folder's assets/)
   STIPPLE_SHARED_MODELS   where bench finds the scans (default: the source folder's ../shared/models)
   STIPPLE_CACHE_DIR       bench's derived models go to $STIPPLE_CACHE_DIR/bench-models (default:
-                          the build folder's bench-models)
+                          the build folder's bench-models); generated stipples are cached in
+                          $STIPPLE_CACHE_DIR/stipples (default: ~/.cache/stipple/stipples), so a
+                          model reopened with the same parameters skips generation
+  STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
 
 Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the
 file and the problem), 2 on a bad command line or Vulkan validation messages.

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "stipple/stipple_cache.hpp"
 
 namespace stipple {
 
@@ -18,7 +19,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 std::shared_ptr<const StippleSet> generate(const Mesh& mesh, const ObjectParams& params) {
     GenerationParams generation = params.generation;
     generation.progress = mesh.triangle_count() > 200'000;  // big models take seconds: show it
-    return std::make_shared<const StippleSet>(generate_stipples(mesh, generation));
+    return std::make_shared<const StippleSet>(generate_stipples_cached(mesh, generation));
 }
 
 // The generation parameters as a key: objects with equal keys on one mesh share their stipples.

@@ -34,7 +34,8 @@ struct StippleSet {
     std::vector<uint32_t> first;
     double density_per_area = 0.0;  // stipples per object-space unit area actually used
     double poisson_radius = 0.0;    // hexagonal-packing spacing at that density (object units)
-    double generation_seconds = 0.0;
+    double generation_seconds = 0.0;  // or the time to read it back from the cache
+    bool from_cache = false;          // read from the stipple cache (stipple_cache.hpp), not generated
 
     size_t size() const { return positions.size(); }
     uint32_t count(size_t t) const { return first[t + 1] - first[t]; }
