@@ -17,6 +17,8 @@
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = 0) const bool kCountDrawn = false;
 layout(constant_id = 1) const uint kPass = 0;
+// The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
+layout(constant_id = 2) const bool kDepthUnorm24 = true;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -28,7 +30,7 @@ layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
     uint drawn_mask[];
 };
 layout(set = 1, binding = kBindingInkAccumulation, std430) coherent buffer InkAccumulation { uint ink[]; };
-layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { float scene_depth[]; };
+layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
 layout(set = 1, binding = kBindingColorBuffer, std430) coherent buffer ColorBuffer { uint color[]; };
 layout(push_constant) uniform Push { uint blue_first; };  // the colour format stores B, G, R, A
 
@@ -39,6 +41,17 @@ uint pack_color(vec3 rgb) {
 vec3 unpack_color(uint packed) {
     vec4 c = unpackUnorm4x8(packed);
     return blue_first != 0u ? c.bgr : c.rgb;
+}
+
+// Whether a stipple at window depth z is hidden at a pixel whose depth-pass word is given, or no
+// surface covers the pixel; compared as the rasteriser's LESS_OR_EQUAL test sees it (quantised).
+bool hidden_or_uncovered(float z, uint word) {
+    if (kDepthUnorm24) {
+        uint surface = word & 0xFFFFFFu;
+        return surface == 0xFFFFFFu || uint(z * 16777215.0 + 0.5) > surface;
+    }
+    float surface = uintBitsToFloat(word);
+    return surface >= 1.0 || z > surface;
 }
 
 void splat(uint index, float intensity, mat4 model_view_proj) {
@@ -76,8 +89,7 @@ void splat(uint index, float intensity, mat4 model_view_proj) {
                 color[at] = pack_color(frame.ink_color.rgb + (c - frame.ink_color.rgb) * transmittance);
                 continue;
             }
-            float surface = scene_depth[at];
-            if (surface >= 1.0 || ndc.z > surface) continue;  // no surface there, or hidden
+            if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
             if (full)
                 color[at] = ink_packed;
             else

@@ -49,7 +49,7 @@ Prepared random_polygons(size_t count, std::mt19937& rng) {
 TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
     std::mt19937 rng(7);
     Prepared polygons = random_polygons(10000, rng);
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     renderer.add_object(polygons.mesh, polygons.stipples, glm::mat4(1.0f), ObjectParams{});
     OffscreenTarget target(*context, {320, 256});
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -108,7 +108,7 @@ TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     RendererOptions options;
     options.count_drawn = true;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
     renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), 1.5f);
@@ -161,7 +161,7 @@ TEST_F(GpuTest, LastStippleCarriesTheFractionalDensity) {
     params.extrinsic = false;
     params.intrinsic = false;
     params.point_size = 5.0f;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {256, 256});
     FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
@@ -191,7 +191,7 @@ TEST_F(GpuTest, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
     Prepared grid = test::prepare(make_grid(200), params);  // 80,000 small triangles
     RendererOptions options;
     options.count_drawn = true;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
     renderer.add_object(grid.mesh, grid.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     FrameView view = test::framed_view(compute_bounding_sphere(grid.mesh), target.extent(), 10.0f, 15.0f, 20.0f);

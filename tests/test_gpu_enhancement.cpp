@@ -19,7 +19,7 @@ using test::Prepared;
 double tone_variation(gpu::Context& context, const Prepared& object, bool extrinsic, const char* name) {
     ObjectParams params;
     params.extrinsic = extrinsic;
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
     renderer.add_object(object.mesh, object.stipples, object.model, params);
     OffscreenTarget target(context, {1280, 1024});
     Sphere sphere = compute_bounding_sphere(object.mesh);
@@ -62,7 +62,7 @@ TEST_F(GpuTest, ShadingDarkensMonotonicallyTowardTheTerminator) {
     Prepared sphere = test::prepare(make_icosphere(5), params);
     RendererOptions options;
     options.count_drawn = true;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
     renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1024, 1024});
     FrameView view = test::framed_view({glm::vec3(0.0f), 1.0f}, target.extent(), 1.0f, 0.0f, 0.0f);
@@ -117,7 +117,7 @@ TEST_F(GpuTest, FramesHalfADegreeApartShareTheirStipples) {
     Prepared object = test::prepare(path.empty() ? make_icosphere(5) : load_mesh(path), params);
     RendererOptions options;
     options.count_drawn = true;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat, options);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
     renderer.add_object(object.mesh, object.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     Sphere sphere = compute_bounding_sphere(object.mesh);

@@ -35,7 +35,7 @@ struct Frame {
 Frame render(gpu::Context& context, const Prepared& object, ObjectParams params, float distance,
              std::vector<std::pair<std::string, double>>* passes = nullptr,
              glm::vec3 light = FrameView{}.light_view) {
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
     renderer.add_object(object.mesh, object.stipples, object.model, params);
     OffscreenTarget target(context, {1280, 1024});
     Frame f;
@@ -201,7 +201,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     // with toon over its density without is exactly toon_stipple_fade(N.E).
     params.extrinsic = false;
     params.intrinsic = false;
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     FrameView view = test::framed_view({glm::vec3(0.0f), 1.0f}, target.extent());

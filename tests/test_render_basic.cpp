@@ -30,7 +30,7 @@ Prepared prepare(Mesh mesh, const ObjectParams& params, glm::mat4 model = glm::m
 
 RenderedFrame render(gpu::Context& context, const std::vector<const Prepared*>& objects, const ObjectParams& params,
                      const Sphere& frame_on, VkExtent2D extent = {640, 512}) {
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
     for (const Prepared* p : objects) renderer.add_object(p->mesh, p->stipples, p->model, params);
     OffscreenTarget target(context, extent);
     float aspect = float(extent.width) / float(extent.height);

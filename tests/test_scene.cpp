@@ -53,7 +53,7 @@ std::filesystem::path write_sphere_obj(const std::filesystem::path& dir) {
 
 RenderedFrame render_scene(const gpu::Context& context, const Scene& scene, VkExtent2D extent) {
     SceneContent content = load_scene_content(scene);
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
     add_scene_objects(renderer, scene, content.objects);
     Sphere bounds = scene_bounds(scene, content.objects);
     float aspect = float(extent.width) / float(extent.height);
@@ -209,7 +209,7 @@ TEST_F(GpuTest, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
     scene.objects.push_back({"sphere.obj", {}, {}});
     scene.objects[0].params.generation.dmax = 0.02f;
     SceneContent content = load_scene_content(scene);
-    StippleRenderer renderer(*context, kColorFormat, kDepthFormat);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     app::LiveScene live(scene, std::move(content), renderer);
     ASSERT_EQ(renderer.object_count(), 1u);
 

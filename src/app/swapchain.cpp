@@ -134,8 +134,8 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
         VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &s));
         rendering_done_.push_back(s);
     }
-    depth_ = gpu::Image(context_, extent, kDepthFormat,
-                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, kDepthAspect);
+    depth_ = gpu::Image(context_, extent, context_.depth_format,
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
     return true;
 }
 

@@ -73,7 +73,7 @@ public:
           context_(context_options(options)),
           surface_(context_, window_),
           swapchain_(context_, surface_.handle),
-          renderer_(context_, swapchain_.format(), kDepthFormat, RendererOptions{options.count_drawn}),
+          renderer_(context_, swapchain_.format(), context_.depth_format, RendererOptions{options.count_drawn}),
           live_(std::move(scene), std::move(content), renderer_),
           screenshot_(context_),
           vsync_(options.vsync),

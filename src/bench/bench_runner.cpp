@@ -77,7 +77,7 @@ void count_frames(const gpu::Context& context, OffscreenTarget& target, const Me
                   ModelResult& model) {
     RendererOptions counting;
     counting.count_drawn = true;
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat, counting);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, counting);
     renderer.add_object(mesh, stipples, glm::mat4(1.0f), ObjectParams{});
     RenderedFrame frame = target.render(renderer, view);
     model.drawn = renderer.stats().drawn_stipples;
@@ -229,7 +229,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
             results.notes.push_back(note);
         }
 
-        StippleRenderer renderer(context, kColorFormat, kDepthFormat);
+        StippleRenderer renderer(context, kColorFormat, context.depth_format);
         start = Clock::now();
         renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
         model.upload_seconds = seconds_since(start);

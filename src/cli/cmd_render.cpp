@@ -148,7 +148,7 @@ int run_render(const std::vector<std::string>& argv) {
 
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
-    StippleRenderer renderer(context, kColorFormat, kDepthFormat, renderer_options);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     add_scene_objects(renderer, scene, content.objects);
     OffscreenTarget target(context, extent);
 

@@ -181,6 +181,20 @@ void Context::pick_physical_device(const ContextOptions& options) {
                      device_type_name(properties.deviceType));
 }
 
+// A depth format with a stencil (the coverage stencil) that can be copied out (the compute splat).
+// 24-bit unorm first: it is what the paper's hardware had, and on lavapipe a 32-bit float depth with
+// a stencil is stored in 8 bytes per pixel, which made every depth pass about 4 ms slower at 1280x1024.
+static VkFormat choose_depth_format(VkPhysicalDevice physical_device) {
+    const VkFormatFeatureFlags needed =
+        VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+    for (VkFormat format : {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT}) {
+        VkFormatProperties properties{};
+        vkGetPhysicalDeviceFormatProperties(physical_device, format, &properties);
+        if ((properties.optimalTilingFeatures & needed) == needed) return format;
+    }
+    fail("the device has no depth format with a stencil that can be drawn to and copied");
+}
+
 void Context::create_device(const ContextOptions& options) {
     VkPhysicalDeviceFeatures supported{};
     vkGetPhysicalDeviceFeatures(physical_device, &supported);
@@ -220,6 +234,7 @@ void Context::create_device(const ContextOptions& options) {
     features.max_line_width = supported.wideLines ? properties.limits.lineWidthRange[1] : 1.0f;
     features.timestamp_period_ns = properties.limits.timestampPeriod;
     features.timestamps = features.timestamps && properties.limits.timestampComputeAndGraphics;
+    depth_format = choose_depth_format(physical_device);
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -2,6 +2,8 @@
 // The Vulkan instance, the chosen physical device, the logical device and its one queue.
 // Headless by default; the viewer asks for the surface extensions it needs.
 #include <atomic>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,19 @@ struct DeviceFeatures {
     double timestamp_period_ns = 1.0;
 };
 
+inline constexpr VkImageAspectFlags kDepthStencilAspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+
+// A depth aspect copied to a buffer holds 32-bit words: floats for D32_SFLOAT(_S8_UINT), or 24-bit
+// unorm in the low bits (X8_D24) for D24_UNORM_S8_UINT. Window depth in [0, 1].
+inline float depth_to_float(VkFormat format, uint32_t word) {
+    if (format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_X8_D24_UNORM_PACK32)
+        return float(word & 0xFFFFFFu) / 16777215.0f;
+    float value;
+    static_assert(sizeof value == sizeof word);
+    std::memcpy(&value, &word, sizeof value);
+    return value;
+}
+
 class Context {
 public:
     explicit Context(const ContextOptions& options = {});
@@ -50,6 +65,10 @@ public:
     VkPhysicalDeviceMemoryProperties memory_properties{};
     DeviceFeatures features;
     std::string device_name;
+    // Depth with a stencil (the stencil marks covered pixels, see gpu::CoverageStencil):
+    // D24_UNORM_S8_UINT where supported, else D32_SFLOAT_S8_UINT. Create depth images with
+    // kDepthStencilAspect; read back only the depth aspect (see depth_to_float).
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
 
     // Validation messages (warnings and errors) seen so far; every one is also printed on stderr.
     // A run or test with a non-zero count has failed.

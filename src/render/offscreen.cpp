@@ -27,8 +27,8 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent)
     color_ = gpu::Image(context, extent, kColorFormat,
                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                         VK_IMAGE_ASPECT_COLOR_BIT);
-    depth_ = gpu::Image(context, extent, kDepthFormat,
-                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, kDepthAspect);
+    depth_ = gpu::Image(context, extent, context.depth_format,
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     color_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
     depth_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
@@ -62,7 +62,7 @@ RenderedFrame OffscreenTarget::render(StippleRenderer& renderer, const FrameView
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);
-    gpu::image_barrier(cb, depth_.handle(), kDepthAspect, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+    gpu::image_barrier(cb, depth_.handle(), gpu::kDepthStencilAspect, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -91,7 +91,8 @@ RenderedFrame OffscreenTarget::render(StippleRenderer& renderer, const FrameView
     frame.color.pixels.resize(pixels * 4);
     std::memcpy(frame.color.pixels.data(), color_readback_.mapped(), pixels * 4);
     frame.depth.resize(pixels);
-    std::memcpy(frame.depth.data(), depth_readback_.mapped(), pixels * 4);
+    const auto* words = static_cast<const uint32_t*>(depth_readback_.mapped());
+    for (size_t i = 0; i < pixels; ++i) frame.depth[i] = gpu::depth_to_float(context_.depth_format, words[i]);
     return frame;
 }
 

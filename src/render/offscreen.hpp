@@ -9,10 +9,7 @@
 namespace stipple {
 
 inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
-// Depth with a stencil: the stencil marks covered pixels (see gpu::CoverageStencil). Create depth
-// images with kDepthAspect; read back only the depth aspect.
-inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
-inline constexpr VkImageAspectFlags kDepthAspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+// The depth format is the context's (gpu::Context::depth_format).
 
 struct RenderedFrame {
     Image color;               // RGBA8, top row first

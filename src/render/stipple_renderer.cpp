@@ -43,6 +43,10 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     depth.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
     depth.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}};
     depth.depth_bias = true;
+    // Front faces only, as in the paper ("even with back-face culling") and in Raskar-Cohen's method
+    // ("rendering front-facing polygons into the depth buffer"): on a closed surface the back faces
+    // are always behind front ones, and skipping them halves the software rasteriser's fill.
+    depth.cull_mode = VK_CULL_MODE_BACK_BIT;
     depth.stencil = gpu::CoverageStencil::Write;
     depth.color_write = false;  // depth only; the colour attachment stays bound for the one rendering scope
     depth.color_format = color_format;
@@ -93,10 +97,11 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
 
     splat_layout_ = gpu::create_splat_layout(context_, layout_.set_layout);
     const uint32_t count = options_.count_drawn ? 1u : 0u;
+    const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                   {{{0u, count}, {1u, 0u}}});
+                                                   {{{0u, count}, {1u, 0u}, {2u, unorm24}}});
     resolve_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                     {{{0u, 0u}, {1u, 1u}}});
+                                                     {{{0u, 0u}, {1u, 1u}, {2u, unorm24}}});
     VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.maxSets = 1;
@@ -308,7 +313,7 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     timer_.mark(cb, "stipples");
     if (std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); })) {
         record_splat(cb, targets);
-        timer_.mark(cb, "resolve");
+        timer_.mark(cb, "splat_out");
     }
     if (any_lines) {  // extra pipelines cost nothing when off: not even a pass is recorded
         begin_rendering(cb, targets, false);
@@ -418,6 +423,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
+    timer_.mark(cb, "splat_in");
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
     const uint32_t group = gpu::kDensityWorkgroupSize;
@@ -439,6 +445,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     dispatch_all(resolve_pipeline_);
+    timer_.mark(cb, "resolve");
 
     // Back into the colour image, and both images back to attachments for what follows.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
