@@ -39,11 +39,9 @@ STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
-STIPPLE_CONST uint kBindingInkAccumulation = 0;  // uint[]: summed optical depth of fractional ink, fixed point
-STIPPLE_CONST uint kBindingSceneDepth = 1;       // float[]: the depth pass's depth (1 where no surface)
+STIPPLE_CONST uint kBindingSplatBackground = 0;  // uint[]: the frame's colour before the splat (read only)
+STIPPLE_CONST uint kBindingSceneDepth = 1;       // uint[]: the depth pass's depth words (X8_D24 or float bits)
 STIPPLE_CONST uint kBindingColorBuffer = 2;      // uint[]: the frame's colour, packed 8-bit channels
-STIPPLE_CONST float kInkFixedPoint = 4096.0f;    // units of optical depth per 1.0
-STIPPLE_CONST float kFullInkDepth = 16.0f;       // optical depth of a full-intensity stipple (exp(-16) ~ 0)
 
 // Bits of ObjectUniforms.flags.
 STIPPLE_CONST uint kFlagShading = 1u;          // §2.2 (N.L)^n

@@ -87,13 +87,6 @@ STIPPLE_FN float stipple_intensity(float density, float index) {
     return clamp(density - index, 0.0f, 1.0f);
 }
 
-// The compute splat (beyond the paper) composites stipples order-independently: ink of intensity a over
-// a colour c gives ink + (c - ink)(1 - a), and a pixel under several stipples keeps the product of
-// their (1 - a), which is exp(-sum of optical depths). Each stipple adds -log(1 - a), capped for a = 1.
-STIPPLE_FN float ink_optical_depth(float intensity) {
-    return intensity >= 1.0f ? kFullInkDepth : min(-log(1.0f - intensity), kFullInkDepth);
-}
-
 // Everything one polygon's density depends on, in view space.
 struct PolygonView {
     float candidates;     // N_max of the polygon (its stipple count)

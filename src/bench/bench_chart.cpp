@@ -39,7 +39,8 @@ const char* path_colour(DensityPath path) {
         case DensityPath::Vertex: return "#1f77b4";
         case DensityPath::Cpu: return "#d62728";
         case DensityPath::Indirect: return "#2ca02c";
-        default: return "#9467bd";
+        case DensityPath::Splat: return "#9467bd";
+        default: return "#ff7f0e";
     }
 }
 

@@ -17,18 +17,12 @@ std::string paper_row_names() {
 std::string Column::name() const { return std::string(density_path_name(path)) + (lines ? " + lines" : ""); }
 
 std::optional<double> paper_fps(const PaperRow& row, const Column& column) {
-    switch (column.path) {
-        case DensityPath::Vertex: return column.lines ? row.vertex_lines : row.vertex;
-        case DensityPath::Cpu: return column.lines ? row.cpu_lines : row.cpu;
-        default: return std::nullopt;
-    }
+    if (density_on_cpu(column.path)) return column.lines ? row.cpu_lines : row.cpu;
+    return column.lines ? row.vertex_lines : row.vertex;
 }
 
 std::string paper_column_name(const Column& column) {
-    std::string program;
-    if (column.path == DensityPath::Vertex) program = "vertex program";
-    else if (column.path == DensityPath::Cpu) program = "no vertex program";
-    else return "";
+    const std::string program = density_on_cpu(column.path) ? "no vertex program" : "vertex program";
     return (column.lines ? "stipple & silhouette, " : "stipple only, ") + program;
 }
 

@@ -44,10 +44,11 @@ struct Column {
     std::string name() const;  // "vertex", "vertex + lines"
 };
 
-// The paper's figure for the matching column: its "vertex program" is our vertex path, its "no vertex
-// program" our cpu path. Other paths (indirect, splat) have no paper figure.
+// The paper's figure for the matching column. The paper's columns say where the density is computed:
+// "vertex program" on the GPU (our vertex, indirect and splat paths), "no vertex program" on the CPU
+// (our cpu and cpu-splat paths). How the stipples are then drawn is ours to choose.
 std::optional<double> paper_fps(const PaperRow& row, const Column& column);
-// The paper's column title for our column, or "" when it has none.
+// The paper's column title for our column.
 std::string paper_column_name(const Column& column);
 
 // The columns for these paths: each path without lines, then each with lines.

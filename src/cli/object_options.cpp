@@ -38,7 +38,7 @@ ObjectParams read_object_params(const Args& args) {
     if (args.has("--density-path")) {
         std::string name = args.get("--density-path", "");
         auto path = parse_density_path(name);
-        if (!path) fail("--density-path '" + name + "' is not one of vertex, cpu, indirect, splat");
+        if (!path) fail("--density-path '" + name + "' is not one of vertex, cpu, indirect, splat, cpu-splat");
         params.density_path = *path;
     }
     if (args.has("--silhouette")) {

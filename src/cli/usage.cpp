@@ -112,8 +112,10 @@ Stipple options (render, view and info; a SCENE.json sets them per object instea
   --density-path P        vertex: compute pass + vertex-shader cull (the paper's vertex program);
                           cpu: CPU densities, only surviving stipples submitted; indirect: compute
                           pass writes compacted draws (vkCmdDrawIndirectCount); splat: a compute
-                          pass draws the stipples itself, without the rasteriser. Default: splat
-                          (the fastest on lavapipe; targets without transfer usage fall back to vertex)
+                          pass computes the densities and draws the stipples itself, without the
+                          rasteriser; cpu-splat: CPU densities drawn by that compute pass. Default:
+                          splat (the fastest on lavapipe; targets without transfer usage fall back
+                          to vertex, cpu-splat to cpu)
   --silhouette MODE       none, lines (Raskar-Cohen back-face lines), toon (N.E ramp: surfaces
                           darken edge-on, stipples fade there) or both (default none)
   --silhouette-width PX   line width at the object's reference size, 1..64 (default 4)

@@ -246,7 +246,7 @@ void destroy_stipple_layout(const Context& context, StippleLayout& layout) {
 StippleLayout create_splat_layout(const Context& context, VkDescriptorSetLayout object_set_layout) {
     const VkShaderStageFlags stage = VK_SHADER_STAGE_COMPUTE_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
-        {kBindingInkAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
+        {kBindingSplatBackground, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
         {kBindingSceneDepth, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
         {kBindingColorBuffer, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
     };

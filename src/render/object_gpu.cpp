@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "gpu/context.hpp"
 #include "gpu/shared_types.hpp"
 #include "gpu/vk_check.hpp"
@@ -173,13 +174,15 @@ float object_line_width(const ObjectGpu& object, const FrameView& view, float ma
 
 double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     std::vector<float> densities(object.triangle_count);
-    compute_densities_cpu(object.triangles, frame, object.uniforms, densities);
     auto* draws = static_cast<gpu::TriangleDraw*>(object.draw_staging.mapped());
+    // Both cores: the GPU work of this frame has not been submitted yet, so the CPU is otherwise idle.
+    parallel_for_chunks(densities.size(), 16384, [&](size_t, size_t begin, size_t end) {
+        std::span<float> part(densities.data() + begin, end - begin);
+        compute_densities_cpu(std::span(object.triangles).subspan(begin, end - begin), frame, object.uniforms, part);
+        for (size_t t = begin; t < end; ++t) draws[t] = {densities[t], object.first_stipple[t]};
+    });
     double sum = 0.0;
-    for (size_t t = 0; t < densities.size(); ++t) {
-        draws[t] = {densities[t], object.first_stipple[t]};
-        sum += densities[t];
-    }
+    for (float d : densities) sum += d;
     object.draw_staging.flush();
     auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
     object.cpu_command_count = build_draw_commands(densities, object.first_stipple, object.triangles,

@@ -27,6 +27,7 @@ const char* density_path_name(DensityPath path) {
         case DensityPath::Cpu: return "cpu";
         case DensityPath::Indirect: return "indirect";
         case DensityPath::Splat: return "splat";
+        case DensityPath::CpuSplat: return "cpu-splat";
     }
     return "?";
 }

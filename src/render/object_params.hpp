@@ -13,10 +13,16 @@ enum class DensityPath {
     Cpu,       // CPU computes densities; only surviving ranges are submitted (the "no vertex program" path)
     Indirect,  // compute pass also writes compacted draws; vkCmdDrawIndirectCount
     Splat,     // compute pass densities, then a compute pass draws the stipples itself (no rasteriser)
+    CpuSplat,  // CPU computes densities (as Cpu), the compute splat draws them (as Splat)
 };
 
 inline constexpr DensityPath kAllDensityPaths[] = {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect,
-                                                   DensityPath::Splat};
+                                                   DensityPath::Splat, DensityPath::CpuSplat};
+
+// Where the density is computed: the paper's Table 1 columns "no vertex program" (CPU) and
+// "vertex program" (GPU), whatever then draws the stipples.
+inline bool density_on_cpu(DensityPath path) { return path == DensityPath::Cpu || path == DensityPath::CpuSplat; }
+inline bool draws_by_splat(DensityPath path) { return path == DensityPath::Splat || path == DensityPath::CpuSplat; }
 
 const char* density_path_name(DensityPath path);
 std::optional<DensityPath> parse_density_path(const std::string& name);

@@ -90,6 +90,8 @@ RenderedFrame OffscreenTarget::render(StippleRenderer& renderer, const FrameView
     frame.color.channels = 4;
     frame.color.pixels.resize(pixels * 4);
     std::memcpy(frame.color.pixels.data(), color_readback_.mapped(), pixels * 4);
+    // The splat leaves 1 - ink coverage in alpha (shaders/splat.comp); a drawing is opaque.
+    for (size_t i = 0; i < pixels; ++i) frame.color.pixels[4 * i + 3] = 255;
     frame.depth.resize(pixels);
     const auto* words = static_cast<const uint32_t*>(depth_readback_.mapped());
     for (size_t i = 0; i < pixels; ++i) frame.depth[i] = gpu::depth_to_float(context_.depth_format, words[i]);

@@ -30,7 +30,7 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, draw_commands_pipeline_,
-                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_, resolve_pipeline_})
+                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_, cpu_splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     gpu::destroy_stipple_layout(context_, splat_layout_);
@@ -99,9 +99,9 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                   {{{0u, count}, {1u, 0u}, {2u, unorm24}}});
-    resolve_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                     {{{0u, 0u}, {1u, 1u}, {2u, unorm24}}});
+                                                   {{{0u, count}, {1u, 1u}, {2u, unorm24}}});
+    cpu_splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
+                                                       {{{0u, count}, {1u, 0u}, {2u, unorm24}}});
     VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.maxSets = 1;
@@ -155,7 +155,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         object->line_width = object_line_width(*object, view, context_.features.max_line_width);
         std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
         object->object_uniforms.flush();
-        if (object->params.density_path == DensityPath::Cpu) {
+        if (density_on_cpu(object->params.density_path)) {
             run_cpu_density(*object, frame_);
             stats_.cpu_draw_commands += object->cpu_command_count;
         }
@@ -166,7 +166,7 @@ void StippleRenderer::prepare(const FrameView& view) {
 }
 
 bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
-    return object.params.density_path == DensityPath::Splat && splat_targets_;
+    return draws_by_splat(object.params.density_path) && splat_targets_;
 }
 
 void StippleRenderer::record_density(VkCommandBuffer cb) {
@@ -182,11 +182,13 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     for (auto& object : objects_) {
         if (object->triangle_count == 0) continue;
         if (options_.count_drawn) vkCmdFillBuffer(cb, object->debug.handle(), 0, VK_WHOLE_SIZE, 0);
-        if (object->params.density_path == DensityPath::Cpu) {
+        if (density_on_cpu(object->params.density_path)) {
             VkBufferCopy region{0, 0, object->draw_staging.size()};
             vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &region);
             continue;
         }
+        if (object->params.density_path == DensityPath::Splat && uses_splat(*object))
+            continue;  // the splat computes the densities itself, where it needs them
         if (object->params.density_path == DensityPath::Indirect) {
             vkCmdFillBuffer(cb, object->gpu_commands.handle(), 0, 16, 0);
             any_indirect = true;
@@ -264,6 +266,7 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
                 vkCmdDraw(cb, object->stipple_count, 1, 0, 0);
                 break;
             case DensityPath::Cpu:
+            case DensityPath::CpuSplat:  // targets without transfers: drawn as the cpu path
                 if (object->cpu_command_count > 0)
                     vkCmdDrawIndirect(cb, object->cpu_commands.handle(), 0, object->cpu_command_count,
                                       sizeof(gpu::DrawCommand));
@@ -370,19 +373,20 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const bool fresh = splat_extent_.width != targets.extent.width || splat_extent_.height != targets.extent.height;
     if (fresh) {
         const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-        ink_accumulation_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        gpu::MemoryUse::DeviceLocal);
         splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal);
         splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
         splat_extent_ = targets.extent;
     }
-    VkDescriptorBufferInfo accumulation{ink_accumulation_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo background{splat_background_.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depth{splat_depth_.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo color{splat_color_.handle(), 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet writes[3];
     const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                       VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-    const uint32_t bindings[] = {gpu::kBindingInkAccumulation, gpu::kBindingSceneDepth, gpu::kBindingColorBuffer};
+    const uint32_t bindings[] = {gpu::kBindingSplatBackground, gpu::kBindingSceneDepth, gpu::kBindingColorBuffer};
     for (int i = 0; i < 3; ++i) {
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = image_set_;
@@ -390,7 +394,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = types[i];
     }
-    writes[0].pBufferInfo = &accumulation;
+    writes[0].pBufferInfo = &background;
     writes[1].pBufferInfo = &depth;
     writes[2].pBufferInfo = &color;
     vkUpdateDescriptorSets(context_.device, 3, writes, 0, nullptr);  // the previous frame has completed
@@ -404,13 +408,14 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {targets.extent.width, targets.extent.height, 1};
 
-    // The colour so far (paper, toon surfaces, other objects' stipples) into the buffer.
-    if (fresh) vkCmdFillBuffer(cb, ink_accumulation_.handle(), 0, VK_WHOLE_SIZE, 0);  // afterwards kept zero
+    // The colour so far (paper, toon surfaces, other objects' stipples): the background the splat
+    // mixes ink into, and the buffer it draws in.
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);
-    vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_color_.handle(), 1, &region);
+    vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(), 1,
+                           &region);
     gpu::image_barrier(cb, targets.depth, depth_aspect, depth_attachment, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                        VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -418,6 +423,10 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     depth_region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     vkCmdCopyImageToBuffer(cb, targets.depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_depth_.handle(), 1,
                            &depth_region);
+    gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    const VkBufferCopy whole{0, 0, pixels * 4};
+    vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -427,25 +436,20 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
     const uint32_t group = gpu::kDensityWorkgroupSize;
-    auto dispatch_all = [&](VkPipeline pipeline) {
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-        vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
-                           VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, 4, &blue_first);
-        for (const auto& object : objects_) {
-            if (!uses_splat(*object) || object->triangle_count == 0) continue;
-            VkDescriptorSet sets[] = {object->set, image_set_};
-            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
-                                    nullptr);
-            vkCmdDispatch(cb, (object->triangle_count + group - 1) / group, 1, 1);
-        }
-    };
-    dispatch_all(splat_pipeline_);
+    vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
+                       VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, 4, &blue_first);
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
+        if (!uses_splat(*object) || object->triangle_count == 0) continue;
+        VkPipeline pipeline = density_on_cpu(object->params.density_path) ? cpu_splat_pipeline_ : splat_pipeline_;
+        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+        bound = pipeline;
+        VkDescriptorSet sets[] = {object->set, image_set_};
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
+                                nullptr);
+        vkCmdDispatch(cb, (object->triangle_count + group - 1) / group, 1, 1);
+    }
     timer_.mark(cb, "splat");
-    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    dispatch_all(resolve_pipeline_);
-    timer_.mark(cb, "resolve");
 
     // Back into the colour image, and both images back to attachments for what follows.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -487,6 +491,18 @@ std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
 namespace stipple {
 
 std::vector<float> StippleRenderer::read_densities(size_t object) const {
+    const ObjectGpu& o = *objects_.at(object);
+    if (o.params.density_path == DensityPath::Splat && splat_targets_ && o.triangle_count > 0) {
+        // The splat computed its densities in place and kept none: the density pass computes the same
+        // ones from the same uniforms (the last frame's) into the draws buffer.
+        VkCommandBuffer cb = context_.begin_one_shot();
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, density_pipeline_);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &o.set, 0, nullptr);
+        vkCmdDispatch(cb, (o.triangle_count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize, 1, 1);
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        context_.submit_and_wait(cb);
+    }
     std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->triangle_draw);
     std::vector<float> densities(bytes.size() / sizeof(gpu::TriangleDraw));
     for (size_t t = 0; t < densities.size(); ++t)
