@@ -38,7 +38,10 @@ layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
 layout(set = 1, binding = kBindingSplatBackground, std430) readonly buffer Background { uint background[]; };
 layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
 layout(set = 1, binding = kBindingColorBuffer, std430) buffer ColorBuffer { uint color[]; };
-layout(push_constant) uniform Push { uint blue_first; };  // the colour format stores B, G, R, A
+layout(push_constant) uniform Push {
+    uint blue_first;        // the colour format stores B, G, R, A
+    uint paper_background;  // nothing but paper under the splat: the background buffer is not filled
+};
 
 // Colour and the remaining paper share (1 - coverage) as one word, alpha in the top byte.
 uint pack_color(vec3 rgb, float uncovered) {
@@ -90,7 +93,7 @@ void splat(uint index, float intensity, mat4 model_view_proj) {
             if (full) {
                 color[at] = ink_word;  // the least word there is: no other stipple replaces it
             } else {
-                vec3 paper = unpack_color(background[at]);
+                vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
                 atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
             }
         }

@@ -205,7 +205,7 @@ Mesh load_model(const ModelEntry& entry) {
         mesh.source = "uv_sphere(" + std::to_string(entry.target) + ")";
         return mesh;
     }
-    return load_mesh(entry.path.string());
+    return load_mesh_for_drawing(entry.path.string());
 }
 
 }  // namespace stipple::bench

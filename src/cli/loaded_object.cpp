@@ -11,7 +11,7 @@ LoadedObject load_object(const std::string& path, const ObjectParams& params) {
     validate_params(params);
     LoadedObject object;
     auto start = std::chrono::steady_clock::now();
-    object.mesh = load_mesh(path);
+    object.mesh = load_mesh_for_drawing(path);
     object.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     object.bounds_sphere = compute_bounding_sphere(object.mesh);
     GenerationParams generation = params.generation;

@@ -68,4 +68,10 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     return mesh;
 }
 
+Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options) {
+    Mesh mesh = load_mesh(path, options);
+    optimize_draw_order(mesh);
+    return mesh;
+}
+
 }  // namespace stipple

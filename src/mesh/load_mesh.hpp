@@ -14,9 +14,12 @@ struct LoadOptions {
 
 // Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
 // (validate_mesh), computes normals where the file has none, and turns inside-out closed meshes
-// outward (orient_outward).
+// outward (orient_outward). The file's order is kept; renderers reorder (optimize_draw_order).
 // Every problem throws stipple::Error with one line "<path>: <problem>".
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+// load_mesh, then optimize_draw_order: what every renderer draws (render, view, info, bench).
+Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options = {});
 
 Mesh load_obj(const std::string& path, const LoadOptions& options);
 Mesh load_ply(const std::string& path, const LoadOptions& options);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include <meshoptimizer.h>
+
 #include "core/error.hpp"
 
 namespace stipple {
@@ -169,6 +171,24 @@ bool orient_outward(Mesh& mesh) {
     if (agreement < 0.0)
         for (glm::vec3& n : mesh.normals) n = -n;
     return true;
+}
+
+void optimize_draw_order(Mesh& mesh) {
+    if (mesh.indices.empty()) return;
+    std::vector<uint32_t> reordered(mesh.indices.size());
+    meshopt_optimizeVertexCache(reordered.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
+    std::vector<uint32_t> remap(mesh.positions.size());
+    const size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), reordered.data(), reordered.size(),
+                                                         mesh.positions.size());
+    meshopt_remapIndexBuffer(mesh.indices.data(), reordered.data(), reordered.size(), remap.data());
+    std::vector<glm::vec3> positions(used), normals(mesh.normals.empty() ? 0 : used);
+    meshopt_remapVertexBuffer(positions.data(), mesh.positions.data(), mesh.positions.size(), sizeof(glm::vec3),
+                              remap.data());
+    if (!normals.empty())
+        meshopt_remapVertexBuffer(normals.data(), mesh.normals.data(), mesh.normals.size(), sizeof(glm::vec3),
+                                  remap.data());
+    mesh.positions.swap(positions);
+    mesh.normals.swap(normals);
 }
 
 }  // namespace stipple

@@ -53,6 +53,12 @@ double signed_volume(const Mesh& mesh);
 // winding, and the vertex normals too if they then disagree with the faces. Returns true if it flipped.
 bool orient_outward(Mesh& mesh);
 
+// Reorders triangles for vertex reuse and vertices for fetch locality (meshoptimizer). The same
+// surface, drawn in an order that suits a rasteriser's vertex cache; on lavapipe it also groups
+// neighbouring triangles, which the compute splat's SIMD lanes and loads like (bunny frame 29 -> 20 ms).
+// Deterministic.
+void optimize_draw_order(Mesh& mesh);
+
 // Appends b to a (for scenes and multi-primitive files).
 void append_mesh(Mesh& a, const Mesh& b);
 

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstring>
 
+#include <glm/gtc/packing.hpp>
+
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "gpu/shared_types.hpp"
@@ -310,10 +312,15 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
     vkCmdEndRendering(cb);
     timer_.mark(cb, "depth");
-    begin_rendering(cb, targets, false);
-    record_stipples(cb);
-    vkCmdEndRendering(cb);
-    timer_.mark(cb, "stipples");
+    const bool any_points = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
+        return o->stipple_count > 0 && !uses_splat(*o);
+    });
+    if (any_points) {
+        begin_rendering(cb, targets, false);
+        record_stipples(cb);
+        vkCmdEndRendering(cb);
+        timer_.mark(cb, "stipples");
+    }
     if (std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); })) {
         record_splat(cb, targets);
         timer_.mark(cb, "splat_out");
@@ -408,14 +415,20 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {targets.extent.width, targets.extent.height, 1};
 
-    // The colour so far (paper, toon surfaces, other objects' stipples): the background the splat
-    // mixes ink into, and the buffer it draws in.
+    // The colour so far: the background the splat mixes ink into, and the buffer it draws in. With
+    // only paper under the splat (no toon surfaces, no stipples drawn as points) both are a fill.
+    const bool paper_only = std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) {
+        return has_toon(o->params.silhouette) || (o->stipple_count > 0 && !uses_splat(*o));
+    });
+    const uint32_t blue_first =
+        color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);
-    vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(), 1,
-                           &region);
+    if (!paper_only)
+        vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(), 1,
+                               &region);
     gpu::image_barrier(cb, targets.depth, depth_aspect, depth_attachment, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                        VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -423,21 +436,27 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     depth_region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     vkCmdCopyImageToBuffer(cb, targets.depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_depth_.handle(), 1,
                            &depth_region);
-    gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    const VkBufferCopy whole{0, 0, pixels * 4};
-    vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
+    if (paper_only) {
+        const glm::vec4 paper = blue_first ? glm::vec4(glm::vec3(view_.paper_color.b, view_.paper_color.g,
+                                                                 view_.paper_color.r), 1.0f)
+                                           : glm::vec4(glm::vec3(view_.paper_color), 1.0f);
+        vkCmdFillBuffer(cb, splat_color_.handle(), 0, pixels * 4, glm::packUnorm4x8(paper));
+    } else {
+        gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        const VkBufferCopy whole{0, 0, pixels * 4};
+        vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
+    }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     timer_.mark(cb, "splat_in");
-    const uint32_t blue_first =
-        color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
     const uint32_t group = gpu::kDensityWorkgroupSize;
+    const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
     vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
-                       VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, 4, &blue_first);
+                       VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, push);
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
         if (!uses_splat(*object) || object->triangle_count == 0) continue;

@@ -49,7 +49,7 @@ SceneContent load_scene_content(const Scene& scene) {
             auto found = meshes.find(path);
             if (found == meshes.end()) {
                 auto start = std::chrono::steady_clock::now();
-                auto mesh = std::make_shared<const Mesh>(load_mesh(path));
+                auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
                 content.load_seconds += seconds_since(start);
                 found = meshes.emplace(path, std::make_pair(mesh, compute_bounding_sphere(*mesh))).first;
             }
@@ -76,7 +76,7 @@ SceneContent load_scene_content(const Scene& scene) {
 ObjectData load_object_data(const std::string& model_path, const ObjectParams& params) {
     validate_params(params);
     ObjectData object;
-    auto mesh = std::make_shared<const Mesh>(load_mesh(model_path));
+    auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(model_path));
     object.bounds = compute_bounding_sphere(*mesh);
     object.stipples = generate(*mesh, params);
     object.mesh = std::move(mesh);
