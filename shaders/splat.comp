@@ -1,7 +1,7 @@
 #version 460
 // Compute splat (beyond the paper): stipples are opaque dots that never occlude each other, so a
 // compute pass can draw them without the rasteriser. One invocation per polygon takes the polygon's
-// density (computed here, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
+// density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
 // ceil(density), the last at the fractional intensity, §2.1), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
@@ -19,16 +19,12 @@
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = 0) const bool kCountDrawn = false;
-// true: the density is computed here from TriangleInfo (splat path: no separate density pass);
-// false: it is read from TriangleDraw (cpu-splat path: the CPU's densities).
-layout(constant_id = 1) const bool kComputeDensity = true;
 // The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
-layout(constant_id = 2) const bool kDepthUnorm24 = true;
+layout(constant_id = 1) const bool kDepthUnorm24 = true;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
-layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
 layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
     uint drawn_count;
@@ -102,13 +98,10 @@ void splat(uint index, float intensity, mat4 model_view_proj) {
 void main() {
     uint t = gl_GlobalInvocationID.x;
     if (t >= object.flags.y) return;
-    float density;
-    if (kComputeDensity)
-        density = polygon_density(polygon_view(infos[t], object), density_params(frame, object));
-    else
-        density = draws[t].density;
+    TriangleDraw draw = draws[t];
+    float density = draw.density;
     if (density <= 0.0f) return;
-    uint first = draws[t].first_stipple;
+    uint first = draw.first_stipple;
     mat4 model_view_proj = frame.view_proj * object.model;
     uint count = uint(ceil(density));
     for (uint k = 0u; k < count; ++k)

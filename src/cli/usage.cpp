@@ -112,8 +112,8 @@ Stipple options (render, view and info; a SCENE.json sets them per object instea
   --density-path P        vertex: compute pass + vertex-shader cull (the paper's vertex program);
                           cpu: CPU densities, only surviving stipples submitted; indirect: compute
                           pass writes compacted draws (vkCmdDrawIndirectCount); splat: a compute
-                          pass computes the densities and draws the stipples itself, without the
-                          rasteriser; cpu-splat: CPU densities drawn by that compute pass. Default:
+                          pass draws the stipples of the compute pass's densities itself, without
+                          the rasteriser; cpu-splat: CPU densities drawn by that splat. Default:
                           splat (the fastest on lavapipe; targets without transfer usage fall back
                           to vertex, cpu-splat to cpu)
   --silhouette MODE       none, lines (Raskar-Cohen back-face lines), toon (N.E ramp: surfaces

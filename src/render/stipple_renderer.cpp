@@ -32,7 +32,7 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, draw_commands_pipeline_,
-                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_, cpu_splat_pipeline_})
+                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     gpu::destroy_stipple_layout(context_, splat_layout_);
@@ -101,9 +101,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                   {{{0u, count}, {1u, 1u}, {2u, unorm24}}});
-    cpu_splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                       {{{0u, count}, {1u, 0u}, {2u, unorm24}}});
+                                                   {{{0u, count}, {1u, unorm24}}});
     VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.maxSets = 1;
@@ -189,8 +187,6 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &region);
             continue;
         }
-        if (object->params.density_path == DensityPath::Splat && uses_splat(*object))
-            continue;  // the splat computes the densities itself, where it needs them
         if (object->params.density_path == DensityPath::Indirect) {
             vkCmdFillBuffer(cb, object->gpu_commands.handle(), 0, 16, 0);
             any_indirect = true;
@@ -460,9 +456,8 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
         if (!uses_splat(*object) || object->triangle_count == 0) continue;
-        VkPipeline pipeline = density_on_cpu(object->params.density_path) ? cpu_splat_pipeline_ : splat_pipeline_;
-        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-        bound = pipeline;
+        if (!bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_pipeline_);
+        bound = splat_pipeline_;
         VkDescriptorSet sets[] = {object->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
                                 nullptr);
@@ -510,18 +505,6 @@ std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
 namespace stipple {
 
 std::vector<float> StippleRenderer::read_densities(size_t object) const {
-    const ObjectGpu& o = *objects_.at(object);
-    if (o.params.density_path == DensityPath::Splat && splat_targets_ && o.triangle_count > 0) {
-        // The splat computed its densities in place and kept none: the density pass computes the same
-        // ones from the same uniforms (the last frame's) into the draws buffer.
-        VkCommandBuffer cb = context_.begin_one_shot();
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, density_pipeline_);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &o.set, 0, nullptr);
-        vkCmdDispatch(cb, (o.triangle_count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize, 1, 1);
-        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-        context_.submit_and_wait(cb);
-    }
     std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->triangle_draw);
     std::vector<float> densities(bytes.size() / sizeof(gpu::TriangleDraw));
     for (size_t t = 0; t < densities.size(); ++t)

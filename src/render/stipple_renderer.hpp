@@ -85,7 +85,7 @@ public:
     // Which candidates were drawn in the last frame, one bit per stipple (count_drawn only).
     std::vector<uint32_t> drawn_mask(size_t object) const;
     // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).
-    std::vector<float> read_densities(size_t object) const;  // the last frame's (recomputed for the splat path)
+    std::vector<float> read_densities(size_t object) const;  // the last frame's
     const gpu::FrameUniforms& frame_uniforms() const { return frame_; }
     const ObjectGpu& object(size_t index) const { return *objects_.at(index); }
 
@@ -112,8 +112,7 @@ private:
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
     gpu::StippleLayout splat_layout_;
-    VkPipeline splat_pipeline_ = VK_NULL_HANDLE;      // splat path: densities computed in the splat itself
-    VkPipeline cpu_splat_pipeline_ = VK_NULL_HANDLE;  // cpu-splat path: the CPU's densities
+    VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
