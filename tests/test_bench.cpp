@@ -292,7 +292,8 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
             EXPECT_FALSE(cell["paper_fps"].is_null());
         }
         std::set<std::pair<std::string, std::string>> expected = {
-            {"vertex", "none"}, {"cpu", "none"}, {"vertex", "lines"}, {"cpu", "lines"}};
+            {"vertex", "none"}, {"cpu", "none"}, {"splat", "none"},
+            {"vertex", "lines"}, {"cpu", "lines"}, {"splat", "lines"}};
         EXPECT_EQ(cells, expected) << model["name"];
         EXPECT_GT(model["drawn_stipples"].get<int64_t>(), 0);
         EXPECT_GT(model["ink_fraction"].get<double>(), 0.0);

@@ -76,7 +76,7 @@ int run_bench(const std::vector<std::string>& argv) {
                 options.paths.push_back(*path);
             }
     } else if (options.quick) {
-        options.paths = {DensityPath::Vertex, DensityPath::Cpu};
+        options.paths = {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Splat};
     }
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
