@@ -169,6 +169,10 @@ bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
     return draws_by_splat(object.params.density_path) && splat_targets_;
 }
 
+bool StippleRenderer::draws_points(const ObjectGpu& object) const {
+    return object.stipple_count > 0 && !uses_splat(object);
+}
+
 void StippleRenderer::record_density(VkCommandBuffer cb) {
     const uint32_t group = gpu::kDensityWorkgroupSize;
     auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
@@ -308,9 +312,8 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
     vkCmdEndRendering(cb);
     timer_.mark(cb, "depth");
-    const bool any_points = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
-        return o->stipple_count > 0 && !uses_splat(*o);
-    });
+    const bool any_points =
+        std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_points(*o); });
     if (any_points) {
         begin_rendering(cb, targets, false);
         record_stipples(cb);
@@ -414,7 +417,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     // The colour so far: the background the splat mixes ink into, and the buffer it draws in. With
     // only paper under the splat (no toon surfaces, no stipples drawn as points) both are a fill.
     const bool paper_only = std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) {
-        return has_toon(o->params.silhouette) || (o->stipple_count > 0 && !uses_splat(*o));
+        return has_toon(o->params.silhouette) || draws_points(*o);
     });
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;

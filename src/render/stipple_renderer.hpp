@@ -98,6 +98,7 @@ private:
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
+    bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
 
     const gpu::Context& context_;
     RendererOptions options_;
