@@ -1,19 +1,31 @@
 #version 460
-// The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon.
+// The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon. The kListDrawn
+// variant also appends each polygon that draws a stipple to the splat's work list.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
+layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) writeonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
+layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
+    DrawnPolygons drawn;
+    uint drawn_polygons[];
+};
 
 void main() {
     uint t = gl_GlobalInvocationID.x;
     if (t >= object.flags.y) return;
     float density = polygon_density(polygon_view(infos[t], object), density_params(frame, object));
     draws[t].density = density;  // first_stipple is constant, written once at creation
+    if (kListDrawn && density > 0.0f) {
+        uint slot = atomicAdd(drawn.count, 1u);
+        drawn_polygons[slot] = t;
+        // Slots are handed out 0, 1, 2, ...: each one that starts a workgroup adds that workgroup.
+        if (slot % kDensityWorkgroupSize == 0u) atomicAdd(drawn.groups_x, 1u);
+    }
 }

@@ -26,7 +26,9 @@ STIPPLE_CONST uint kDensityWorkgroupSize = 64;
 STIPPLE_CONST uint kMaxMergedPolygons = 256;
 
 // Specialisation constants (variants without copied shader files).
-STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert: record drawn stipples in the debug buffer
+STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
+STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
+STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp: the depth words are X8_D24 (else float bits)
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -36,6 +38,7 @@ STIPPLE_CONST uint kBindingTriangleInfo = 3;   // TriangleInfo[] (storage), cons
 STIPPLE_CONST uint kBindingDrawCommands = 4;   // DrawCommands (storage): count + VkDrawIndirectCommand[]
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
 STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
+STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -69,6 +72,18 @@ struct TriangleInfo {
     vec4 center_area;   // xyz: centroid (object space); w: area (object space)
     vec4 normal_count;  // xyz: unit face normal (object space); w: candidate count
     vec4 selection;     // x: the polygon's fixed selection value in [0, 1) (§2.3); yzw: unused
+};
+
+// The splat's work list: the polygons that draw at least one stipple this frame, appended by the
+// density pass (or written by the CPU), then the splat dispatched over them alone. Most polygons of a
+// dense mesh draw nothing (shading, probabilistic selection), so the splat skips them without a visit.
+// The header is a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the polygon count;
+// the polygon indices follow it in the same buffer.
+struct DrawnPolygons {
+    uint groups_x;
+    uint groups_y;
+    uint groups_z;
+    uint count;
 };
 
 // One indirect draw, laid out as VkDrawIndirectCommand.

@@ -1,6 +1,7 @@
 #version 460
 // Compute splat (beyond the paper): stipples are opaque dots that never occlude each other, so a
-// compute pass can draw them without the rasteriser. One invocation per polygon takes the polygon's
+// compute pass can draw them without the rasteriser. One invocation per polygon of the work list
+// (the polygons that draw this frame, listed by the density pass or the CPU) takes the polygon's
 // density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
 // ceil(density), the last at the fractional intensity, §2.1), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
@@ -18,14 +19,18 @@
 #include "stipple_formulas.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
-layout(constant_id = 0) const bool kCountDrawn = false;
+layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 // The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
-layout(constant_id = 1) const bool kDepthUnorm24 = true;
+layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
+layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
+    DrawnPolygons drawn;
+    uint drawn_polygons[];
+};
 layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
     uint drawn_count;
     uint debug_pad0, debug_pad1, debug_pad2;
@@ -96,9 +101,9 @@ void splat(uint index, float intensity, mat4 model_view_proj) {
 }
 
 void main() {
-    uint t = gl_GlobalInvocationID.x;
-    if (t >= object.flags.y) return;
-    TriangleDraw draw = draws[t];
+    uint slot = gl_GlobalInvocationID.x;
+    if (slot >= drawn.count) return;
+    TriangleDraw draw = draws[drawn_polygons[slot]];
     float density = draw.density;
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;

@@ -7,7 +7,7 @@
 #include "shared_types.h"
 #include "stipple_formulas.h"
 
-layout(constant_id = 0) const bool kCountDrawn = false;
+layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in uint in_triangle;

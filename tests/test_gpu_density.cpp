@@ -1,5 +1,6 @@
 // The per-frame density (paper §2.1-2.3, §3.2) on the GPU: the compute pass against the CPU
 // definition, the three density paths against each other, and the paper's claims as figures.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
@@ -123,6 +124,20 @@ TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
         if (path == DensityPath::Cpu) cpu_draws = renderer.object(0).cpu_command_count;
         if (path == DensityPath::Indirect)
             std::memcpy(&gpu_draws, gpu::read_buffer(*context, renderer.object(0).gpu_commands).data(), 4);
+        if (draws_by_splat(path)) {  // the splat's work list: exactly the polygons that draw, no others
+            std::vector<std::byte> list = gpu::read_buffer(*context, renderer.object(0).drawn_polygons);
+            gpu::DrawnPolygons header;
+            std::memcpy(&header, list.data(), sizeof header);
+            std::vector<float> densities = renderer.read_densities(0);
+            std::vector<uint32_t> listed(header.count);
+            std::memcpy(listed.data(), list.data() + sizeof header, sizeof(uint32_t) * header.count);
+            std::sort(listed.begin(), listed.end());
+            std::vector<uint32_t> drawing;
+            for (uint32_t t = 0; t < densities.size(); ++t)
+                if (densities[t] > 0.0f) drawing.push_back(t);
+            EXPECT_EQ(listed, drawing) << density_path_name(path) << ": the work list is not the drawing polygons";
+            EXPECT_EQ(header.groups_x, (header.count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize);
+        }
         std::printf("%-8s path: %lld stipples drawn\n", density_path_name(path),
                     (long long)renderer.stats().drawn_stipples);
         EXPECT_EQ(size_t(renderer.stats().drawn_stipples), test::popcount(masks.back()));
@@ -137,7 +152,7 @@ TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
         EXPECT_EQ(masks[i], masks[0]) << density_path_name(path) << " drew a different set of stipples";
         // The rasterising paths blend in the same order; the compute splat composites in float and
         // rounds once, so its pixels may differ from blending's 8-bit steps by a level or two.
-        bool splat = path == DensityPath::Splat;
+        bool splat = draws_by_splat(path);
         double differing = fraction_differing(frames[0].color, frames[i].color, splat ? 2 : 0);
         std::printf("%s path: %.4f%% of pixels differ from the vertex path\n", density_path_name(path),
                     100.0 * differing);

@@ -229,6 +229,7 @@ StippleLayout create_stipple_layout(const Context& context) {
         {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
     };
     StippleLayout layout;
     layout.set_layout = create_set_layout(context, bindings);

@@ -19,6 +19,9 @@ static_assert(sizeof(TriangleInfo) == 48);
 static_assert(offsetof(TriangleInfo, normal_count) == 16);
 static_assert(offsetof(TriangleInfo, selection) == 32);
 
+static_assert(sizeof(DrawnPolygons) == 16);
+static_assert(offsetof(DrawnPolygons, count) == 12);
+
 static_assert(sizeof(DrawCommand) == 16);
 static_assert(offsetof(DrawCommand, first_vertex) == 8);
 

@@ -1,5 +1,6 @@
 #include "render/object_gpu.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -56,6 +57,7 @@ void write_descriptors(VkDevice device, VkDescriptorSet set, const Buffer& frame
         {gpu::kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.gpu_commands.handle()},
         {gpu::kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.debug.handle()},
         {gpu::kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.stipples.handle()},
+        {gpu::kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.drawn_polygons.handle()},
     };
     VkDescriptorBufferInfo infos[std::size(entries)];
     VkWriteDescriptorSet writes[std::size(entries)];
@@ -113,8 +115,11 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->triangle_info =
         gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(object->triangles), storage);
     object->triangle_draw = gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
-    VkDeviceSize draw_bytes = sizeof(gpu::TriangleDraw) * object->triangle_count;
-    object->draw_staging = Buffer(context, draw_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+    VkDeviceSize list_bytes = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * std::max(object->triangle_count, 1u);
+    object->drawn_polygons = Buffer(context, list_bytes, storage | indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryUse::DeviceLocal);
+    object->draw_staging = Buffer(context, staged_list_offset(*object) + list_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                  MemoryUse::Upload);
     VkDeviceSize command_bytes = sizeof(gpu::DrawCommand) * object->triangle_count;
     object->gpu_commands = Buffer(context, 16 + command_bytes, storage | indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                   MemoryUse::DeviceLocal);
@@ -124,7 +129,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->object_uniforms =
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = uint32_t(std::size(sizes));
@@ -183,12 +188,29 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     });
     double sum = 0.0;
     for (float d : densities) sum += d;
+    if (draws_by_splat(object.params.density_path)) {
+        auto* list = reinterpret_cast<uint32_t*>(static_cast<std::byte*>(object.draw_staging.mapped()) +
+                                                 staged_list_offset(object));
+        uint32_t* polygons = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
+        uint32_t count = 0;
+        for (uint32_t t = 0; t < object.triangle_count; ++t)
+            if (densities[t] > 0.0f) polygons[count++] = t;
+        const uint32_t group = gpu::kDensityWorkgroupSize;
+        const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};
+        std::memcpy(list, &header, sizeof header);
+        object.cpu_drawn_polygons = count;
+    }
     object.draw_staging.flush();
+    // Also for cpu-splat: targets without the splat's transfers draw it as the cpu path.
     auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
     object.cpu_command_count = build_draw_commands(densities, object.first_stipple, object.triangles,
                                                    std::span(commands, object.triangle_count));
     object.cpu_commands.flush();
     return sum;
+}
+
+VkDeviceSize staged_list_offset(const ObjectGpu& object) {
+    return sizeof(gpu::TriangleDraw) * VkDeviceSize(object.triangle_count);
 }
 
 }  // namespace stipple

@@ -33,6 +33,7 @@ struct ObjectGpu {
     std::vector<uint32_t> first_stipple;
     gpu::ObjectUniforms uniforms{};            // this frame's
     uint32_t cpu_command_count = 0;            // CPU path: draws written this frame
+    uint32_t cpu_drawn_polygons = 0;           // cpu-splat path: polygons in this frame's list
     float line_width = 1.0f;                   // Raskar-Cohen line width this frame (thinned)
 
     gpu::Buffer positions;        // mesh vertices (depth pass)
@@ -41,7 +42,8 @@ struct ObjectGpu {
     gpu::Buffer stipples;         // StippleVertex per candidate
     gpu::Buffer triangle_info;    // TriangleInfo per polygon
     gpu::Buffer triangle_draw;    // TriangleDraw per polygon: density per frame, first stipple constant
-    gpu::Buffer draw_staging;     // CPU path: densities on their way to triangle_draw
+    gpu::Buffer drawn_polygons;   // splat paths: DrawnPolygons header + the polygons drawing this frame
+    gpu::Buffer draw_staging;     // CPU paths: densities (and cpu-splat's list) on their way to the GPU
     gpu::Buffer gpu_commands;     // indirect path: count (16 bytes) + DrawCommand per polygon
     gpu::Buffer cpu_commands;     // CPU path: DrawCommand per surviving range
     gpu::Buffer debug;            // drawn count (16 bytes) + drawn bit mask, when counting
@@ -64,7 +66,11 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
 float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width);
 
 // The CPU density path for one object: densities into draw_staging and the surviving ranges, with
-// runs of fully drawn polygons merged, into cpu_commands. Returns the sum of the densities.
+// runs of fully drawn polygons merged, into cpu_commands, and for cpu-splat the list of polygons
+// that draw after the densities in draw_staging. Returns the sum of the densities.
 double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame);
+
+// Where draw_staging holds the cpu-splat path's list (DrawnPolygons header, then the polygons).
+VkDeviceSize staged_list_offset(const ObjectGpu& object);
 
 }  // namespace stipple

@@ -31,7 +31,8 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
 StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
-    for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, draw_commands_pipeline_,
+    for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, density_list_pipeline_,
+                         draw_commands_pipeline_,
                          toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -96,12 +97,14 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layout_.pipeline_layout);
 
     density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout);
+    density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout,
+                                                          {{{gpu::kSpecListDrawn, 1u}}});
 
     splat_layout_ = gpu::create_splat_layout(context_, layout_.set_layout);
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
-                                                   {{{0u, count}, {1u, unorm24}}});
+                                                   {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}}});
     VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.maxSets = 1;
@@ -181,21 +184,38 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 nullptr);
         vkCmdDispatch(cb, (object.triangle_count + group - 1) / group, 1, 1);
     };
-    // Densities: the compute pass (vertex and indirect paths) or the CPU's upload; clears.
+    // Densities: the compute pass (vertex, indirect and splat paths) or the CPU's upload; clears first.
     bool any_indirect = false;
+    bool any_pass = false;
     for (auto& object : objects_) {
         if (object->triangle_count == 0) continue;
         if (options_.count_drawn) vkCmdFillBuffer(cb, object->debug.handle(), 0, VK_WHOLE_SIZE, 0);
+        const bool splat = uses_splat(*object);
         if (density_on_cpu(object->params.density_path)) {
-            VkBufferCopy region{0, 0, object->draw_staging.size()};
-            vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &region);
+            VkBufferCopy regions[2] = {{0, 0, staged_list_offset(*object)},
+                                       {staged_list_offset(*object), 0,
+                                        sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * object->cpu_drawn_polygons}};
+            vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &regions[0]);
+            if (splat) vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->drawn_polygons.handle(), 1, &regions[1]);
             continue;
         }
+        any_pass = true;
         if (object->params.density_path == DensityPath::Indirect) {
             vkCmdFillBuffer(cb, object->gpu_commands.handle(), 0, 16, 0);
             any_indirect = true;
         }
-        dispatch(*object, density_pipeline_);
+        if (splat) {  // an empty list: no groups yet (y and z are 1)
+            const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};
+            vkCmdUpdateBuffer(cb, object->drawn_polygons.handle(), 0, sizeof empty, &empty);
+        }
+    }
+    if (any_pass) {
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        for (auto& object : objects_)
+            if (object->triangle_count > 0 && !density_on_cpu(object->params.density_path))
+                dispatch(*object, uses_splat(*object) ? density_list_pipeline_ : density_pipeline_);
     }
     // Indirect path: merged draws of the surviving ranges, from the densities just written.
     if (any_indirect) {
@@ -209,7 +229,8 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
@@ -452,7 +473,6 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     timer_.mark(cb, "splat_in");
-    const uint32_t group = gpu::kDensityWorkgroupSize;
     const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
     vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, push);
@@ -464,7 +484,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
         VkDescriptorSet sets[] = {object->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
                                 nullptr);
-        vkCmdDispatch(cb, (object->triangle_count + group - 1) / group, 1, 1);
+        vkCmdDispatchIndirect(cb, object->drawn_polygons.handle(), 0);  // the polygons that draw
     }
     timer_.mark(cb, "splat");
 

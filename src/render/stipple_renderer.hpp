@@ -108,6 +108,7 @@ private:
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
     VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline density_list_pipeline_ = VK_NULL_HANDLE;  // also lists the polygons that draw, for the splat
     VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
