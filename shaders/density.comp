@@ -10,7 +10,7 @@ layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingTriangleDraw, std430) writeonly buffer TriangleDraws { TriangleDraw draws[]; };
+layout(set = 0, binding = kBindingTriangleDraw, std430) buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
@@ -20,8 +20,12 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
 void main() {
     uint t = gl_GlobalInvocationID.x;
     if (t >= object.flags.y) return;
-    float density = polygon_density(polygon_view(infos[t], object), density_params(frame, object));
-    draws[t].density = density;  // first_stipple is constant, written once at creation
+    // The candidates run from this polygon's first stipple to the next one's (first_stipple is constant,
+    // written once at creation).
+    uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
+    float candidates = float(end - draws[t].first_stipple);
+    float density = polygon_density(polygon_view(infos[t], candidates, object), density_params(frame, object));
+    draws[t].density = density;
     if (kListDrawn && density > 0.0f) {
         uint slot = atomicAdd(drawn.count, 1u);
         drawn_polygons[slot] = t;

@@ -9,7 +9,6 @@ layout(local_size_x = kDensityWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
-layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
 layout(set = 0, binding = kBindingDrawCommands, std430) buffer DrawCommands {
     uint draw_count;
     uint draw_pad0, draw_pad1, draw_pad2;
@@ -22,7 +21,7 @@ uint drawn(uint t) { return uint(ceil(draws[t].density)); }
 bool merges_with_previous(uint t) {
     if (t == 0u || t % kMaxMergedPolygons == 0u || drawn(t) == 0u) return false;
     uint previous = drawn(t - 1u);
-    return previous > 0u && previous == uint(infos[t - 1u].normal_count.w);
+    return previous > 0u && previous == draws[t].first_stipple - draws[t - 1u].first_stipple;  // all candidates
 }
 
 void main() {

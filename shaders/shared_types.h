@@ -67,11 +67,14 @@ struct TriangleDraw {
     uint first_stipple;  // index of the triangle's first stipple in the stipple buffer
 };
 
-// Per triangle, constant: what the density computation reads.
+// Per triangle, constant: what the density computation reads, in one 16-byte load (a software GPU's
+// compute is bound by its buffer loads). Unpacked by polygon_view() in stipple_formulas.h; the
+// candidate count is the difference of consecutive TriangleDraw.first_stipple.
 struct TriangleInfo {
-    vec4 center_area;   // xyz: centroid (object space); w: area (object space)
-    vec4 normal_count;  // xyz: unit face normal (object space); w: candidate count
-    vec4 selection;     // x: the polygon's fixed selection value in [0, 1) (§2.3); yzw: unused
+    uint center_xy;           // centroid x | y << 16: 16-bit unorm in the object's box (ObjectUniforms.box_*)
+    uint center_z_selection;  // centroid z | selection value << 16 (the fixed value of §2.3, 16 bits)
+    uint normal;              // unit face normal (object space), octahedral, 2 x 16-bit snorm
+    float area;               // object space
 };
 
 // The splat's work list: the polygons that draw at least one stipple this frame, appended by the
@@ -112,6 +115,8 @@ struct ObjectUniforms {
     vec4 extrinsic;         // x: pr; y: minimum stipple area (px^2); z: reference pixels per world unit; w: unused
     vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre
     uvec4 flags;            // x: kFlag* bits; y: triangle count; z: unused; w: candidate count
+    vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
+    vec4 box_size;          // xyz: the box's extent
 };
 
 #ifdef __cplusplus

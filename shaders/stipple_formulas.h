@@ -110,14 +110,31 @@ struct DensityParams {
     uint flags;                // kFlag* bits
 };
 
-// The density inputs of one polygon, from its constant data and the object's uniforms.
-STIPPLE_FN PolygonView polygon_view(TriangleInfo info, ObjectUniforms o) {
+// A unit vector from its octahedral encoding in [-1, 1]^2 (the lower hemisphere folded outward).
+STIPPLE_FN vec3 octahedral_to_unit(vec2 e) {
+    vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+    float fold = max(-v.z, 0.0f);
+    v.x += v.x >= 0.0f ? -fold : fold;
+    v.y += v.y >= 0.0f ? -fold : fold;
+    return normalize(v);
+}
+
+// The polygon's fixed selection value (§2.3), the centre of its 16-bit step: in (0, 1).
+STIPPLE_FN float polygon_selection(TriangleInfo info) {
+    return (float(info.center_z_selection >> 16u) + 0.5f) * (1.0f / 65536.0f);
+}
+
+// The density inputs of one polygon, from its constant data, its candidate count and the object's uniforms.
+STIPPLE_FN PolygonView polygon_view(TriangleInfo info, float candidates, ObjectUniforms o) {
     PolygonView p;
-    p.candidates = info.normal_count.w;
-    p.selection = info.selection.x;
-    p.area = info.center_area.w * o.extrinsic.w;
-    p.center = vec3(o.model_view * vec4(vec3(info.center_area), 1.0f));
-    p.normal = normalize(mat3(o.normal_view) * vec3(info.normal_count));
+    p.candidates = candidates;
+    p.selection = polygon_selection(info);
+    p.area = info.area * o.extrinsic.w;
+    vec2 xy = unpackUnorm2x16(info.center_xy);
+    float z = unpackUnorm2x16(info.center_z_selection).x;
+    vec3 center = vec3(o.box_min) + vec3(o.box_size) * vec3(xy.x, xy.y, z);
+    p.center = vec3(o.model_view * vec4(center, 1.0f));
+    p.normal = normalize(mat3(o.normal_view) * octahedral_to_unit(unpackSnorm2x16(info.normal)));
     return p;
 }
 

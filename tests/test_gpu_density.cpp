@@ -75,14 +75,14 @@ TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
         std::vector<float> gpu = renderer.read_densities(0);
         const ObjectGpu& object = renderer.object(0);
         std::vector<float> cpu(gpu.size());
-        compute_densities_cpu(object.triangles, renderer.frame_uniforms(), object.uniforms, cpu);
+        compute_densities_cpu(object.triangles, object.first_stipple, renderer.frame_uniforms(), object.uniforms, cpu);
         auto q = formulas::density_params(renderer.frame_uniforms(), object.uniforms);
         for (size_t t = 0; t < gpu.size(); ++t) {
-            auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.uniforms), q);
+            auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms), q);
             if (terms.probability < 1.0f) ++selection_regime;
             ++compared;
             if ((gpu[t] > 0.0f) != (cpu[t] > 0.0f)) {
-                float u = object.triangles[t].selection.x;
+                float u = formulas::polygon_selection(object.triangles[t]);
                 if (std::abs(u - terms.probability) < 1e-5f) ++near_ties;
                 else ++mismatched;
                 continue;
@@ -102,6 +102,44 @@ TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
     EXPECT_EQ(mismatched, 0u);
     EXPECT_GT(selection_regime, 1000u) << "the cameras should exercise probabilistic selection";
     EXPECT_GT(drawn, 5000u);
+}
+
+TEST_F(GpuTest, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
+    // TriangleInfo is 16 bytes: 16-bit centroids in the object's box, an octahedral 16-bit normal.
+    std::mt19937 rng(11);
+    Prepared polygons = random_polygons(20000, rng);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+    renderer.add_object(polygons.mesh, polygons.stipples, glm::mat4(1.0f), ObjectParams{});
+    const ObjectGpu& object = renderer.object(0);
+    gpu::ObjectUniforms identity{};
+    identity.model_view = identity.normal_view = glm::mat4(1.0f);
+    identity.extrinsic.w = 1.0f;
+    identity.box_min = glm::vec4(object.box_min, 0.0f);
+    identity.box_size = glm::vec4(object.box_size, 0.0f);
+    const float box = std::max({object.box_size.x, object.box_size.y, object.box_size.z});
+    double worst_center = 0.0, worst_normal_deg = 0.0, worst_area = 0.0;
+    size_t wrong_counts = 0;
+    for (size_t t = 0; t < object.triangle_count; ++t) {
+        const Mesh& m = polygons.mesh;
+        glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                  c = m.positions[m.indices[3 * t + 2]];
+        glm::vec3 cross = glm::cross(b - a, c - a);
+        auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), identity);
+        worst_center = std::max(worst_center, double(glm::length(p.center - (a + b + c) / 3.0f)) / box);
+        glm::dvec3 exact = glm::normalize(glm::dvec3(cross)), packed = glm::dvec3(p.normal);
+        double angle = std::atan2(glm::length(glm::cross(exact, packed)), glm::dot(exact, packed));
+        worst_normal_deg = std::max(worst_normal_deg, angle * 180.0 / 3.14159265358979);
+        worst_area = std::max(worst_area, std::abs(double(p.area) / (0.5 * glm::length(cross)) - 1.0));
+        wrong_counts += p.candidates != float(polygons.stipples.count(t));
+        EXPECT_GT(p.selection, 0.0f);
+        EXPECT_LT(p.selection, 1.0f);
+    }
+    std::printf("packed constants: centroid error %.2g of the box, normal error %.3g degrees, area error %.2g\n",
+                worst_center, worst_normal_deg, worst_area);
+    EXPECT_LE(worst_center, 1.0 / 65535.0);
+    EXPECT_LE(worst_normal_deg, 0.01);
+    EXPECT_LE(worst_area, 1e-6);
+    EXPECT_EQ(wrong_counts, 0u);
 }
 
 TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
@@ -219,7 +257,7 @@ TEST_F(GpuTest, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
     double expected = 0.0, variance = 0.0;
     size_t in_regime = 0, drawn = 0;
     for (size_t t = 0; t < densities.size(); ++t) {
-        auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.uniforms), q);
+        auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms), q);
         if (terms.density <= 0.0f) continue;
         expected += terms.probability;
         variance += terms.probability * (1.0 - terms.probability);

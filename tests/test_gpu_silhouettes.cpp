@@ -215,7 +215,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     double worst = 0.0, rim_faded = 0.0, rim_plain = 0.0;
     for (size_t t = 0; t < plain.size(); ++t) {
         if (plain[t] <= 0.05f) continue;
-        auto p = formulas::polygon_view(object.triangles[t], object.uniforms);
+        auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms);
         float facing = glm::dot(p.normal, -p.center) / glm::length(p.center);
         float expected = formulas::toon_stipple_fade(facing, params.toon_sharpness);
         worst = std::max(worst, double(std::abs(faded[t] / plain[t] - expected)));

@@ -15,9 +15,10 @@ static_assert(sizeof(TriangleDraw) == 8);
 static_assert(offsetof(TriangleDraw, density) == 0);
 static_assert(offsetof(TriangleDraw, first_stipple) == 4);
 
-static_assert(sizeof(TriangleInfo) == 48);
-static_assert(offsetof(TriangleInfo, normal_count) == 16);
-static_assert(offsetof(TriangleInfo, selection) == 32);
+static_assert(sizeof(TriangleInfo) == 16);
+static_assert(offsetof(TriangleInfo, center_z_selection) == 4);
+static_assert(offsetof(TriangleInfo, normal) == 8);
+static_assert(offsetof(TriangleInfo, area) == 12);
 
 static_assert(sizeof(DrawnPolygons) == 16);
 static_assert(offsetof(DrawnPolygons, count) == 12);
@@ -33,12 +34,14 @@ static_assert(offsetof(FrameUniforms, paper_color) == 160);
 static_assert(offsetof(FrameUniforms, viewport) == 176);
 static_assert(offsetof(FrameUniforms, projection) == 192);
 
-static_assert(sizeof(ObjectUniforms) == 3 * 64 + 4 * 16);
+static_assert(sizeof(ObjectUniforms) == 3 * 64 + 6 * 16);
 static_assert(offsetof(ObjectUniforms, normal_view) == 64);
 static_assert(offsetof(ObjectUniforms, model) == 128);
 static_assert(offsetof(ObjectUniforms, shading) == 192);
 static_assert(offsetof(ObjectUniforms, extrinsic) == 208);
 static_assert(offsetof(ObjectUniforms, intrinsic) == 224);
 static_assert(offsetof(ObjectUniforms, flags) == 240);
+static_assert(offsetof(ObjectUniforms, box_min) == 256);
+static_assert(offsetof(ObjectUniforms, box_size) == 272);
 
 }  // namespace stipple::gpu

@@ -6,15 +6,18 @@
 
 namespace stipple {
 
-void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, const gpu::FrameUniforms& frame,
-                           const gpu::ObjectUniforms& object, std::span<float> densities) {
+void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::span<const uint32_t> first_stipple,
+                           const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
+                           std::span<float> densities) {
     const formulas::DensityParams params = formulas::density_params(frame, object);
-    for (size_t t = 0; t < triangles.size(); ++t)
-        densities[t] = formulas::polygon_density(formulas::polygon_view(triangles[t], object), params);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        float candidates = float(first_stipple[t + 1] - first_stipple[t]);
+        densities[t] = formulas::polygon_density(formulas::polygon_view(triangles[t], candidates, object), params);
+    }
 }
 
 uint32_t build_draw_commands(std::span<const float> densities, std::span<const uint32_t> first_stipple,
-                             std::span<const gpu::TriangleInfo> triangles, std::span<gpu::DrawCommand> commands) {
+                             std::span<gpu::DrawCommand> commands) {
     uint32_t count = 0;
     for (size_t t = 0; t < densities.size(); ++t) {
         uint32_t drawn = uint32_t(std::ceil(densities[t]));
@@ -24,7 +27,7 @@ uint32_t build_draw_commands(std::span<const float> densities, std::span<const u
         bool merges = t > 0 && t % gpu::kMaxMergedPolygons != 0 && count > 0;
         if (merges) {
             uint32_t previous = uint32_t(std::ceil(densities[t - 1]));
-            merges = previous > 0 && previous == uint32_t(triangles[t - 1].normal_count.w);
+            merges = previous > 0 && previous == first_stipple[t] - first_stipple[t - 1];
         }
         if (merges)
             commands[count - 1].vertex_count += drawn;

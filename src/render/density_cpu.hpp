@@ -7,14 +7,17 @@
 
 namespace stipple {
 
-// One density per polygon, exactly polygon_density() of the shaders.
-void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, const gpu::FrameUniforms& frame,
-                           const gpu::ObjectUniforms& object, std::span<float> densities);
+// One density per polygon, exactly polygon_density() of the shaders. `first_stipple` holds one more
+// entry than `triangles` (where the last polygon's candidates end).
+void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::span<const uint32_t> first_stipple,
+                           const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
+                           std::span<float> densities);
 
 // Draw commands for the surviving stipples: polygon t draws [first[t], first[t] + ceil(density)).
-// Consecutive polygons merge into one command while each one before draws all of its candidates,
-// so a dense region costs one draw, not one per polygon. Returns the number of commands written.
+// Consecutive polygons merge into one command while each one before draws all of its candidates
+// (first[t + 1] - first[t]), so a dense region costs one draw, not one per polygon. Returns the number
+// of commands written.
 uint32_t build_draw_commands(std::span<const float> densities, std::span<const uint32_t> first_stipple,
-                             std::span<const gpu::TriangleInfo> triangles, std::span<gpu::DrawCommand> commands);
+                             std::span<gpu::DrawCommand> commands);
 
 }  // namespace stipple

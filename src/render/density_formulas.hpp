@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "shared_types.h"
 
@@ -24,6 +25,8 @@ using glm::min;
 using glm::normalize;
 using glm::sign;
 using glm::sin;
+using glm::unpackSnorm2x16;
+using glm::unpackUnorm2x16;
 using std::pow;
 #include "stipple_formulas.h"
 }  // namespace stipple::formulas

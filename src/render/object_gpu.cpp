@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -23,9 +24,25 @@ using gpu::MemoryUse;
 
 namespace {
 
-std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, const StippleSet& stipples, uint64_t stipples_seed) {
+// The inverse of formulas::octahedral_to_unit: the unit sphere onto the octahedron, the lower half folded out.
+glm::vec2 unit_to_octahedral(glm::vec3 n) {
+    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    glm::vec2 p(n.x, n.y);
+    if (n.z < 0.0f) {
+        glm::vec2 sign(p.x >= 0.0f ? 1.0f : -1.0f, p.y >= 0.0f ? 1.0f : -1.0f);
+        p = (1.0f - glm::abs(glm::vec2(p.y, p.x))) * sign;
+    }
+    return p;
+}
+
+uint32_t unorm16(float value) { return uint32_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 65535.0f)); }
+
+// Packed per-polygon constants (shared_types.h: TriangleInfo), centroids in the box [box_min, box_min + box_size].
+std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, uint64_t stipples_seed, glm::vec3 box_min,
+                                              glm::vec3 box_size) {
     std::vector<gpu::TriangleInfo> infos(mesh.triangle_count());
     std::vector<float> selection = polygon_selection_values(mesh, stipples_seed);
+    const glm::vec3 inverse_size = glm::vec3(1.0f) / glm::max(box_size, glm::vec3(1e-30f));
     for (size_t t = 0; t < infos.size(); ++t) {
         glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
         glm::vec3 b = mesh.positions[mesh.indices[3 * t + 1]];
@@ -33,9 +50,12 @@ std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, const StippleSet
         glm::vec3 cross = glm::cross(b - a, c - a);
         float length = glm::length(cross);
         glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f);
-        infos[t].center_area = glm::vec4((a + b + c) / 3.0f, 0.5f * length);
-        infos[t].normal_count = glm::vec4(normal, float(stipples.count(t)));
-        infos[t].selection = glm::vec4(selection[t], 0.0f, 0.0f, 0.0f);
+        glm::vec3 center = ((a + b + c) / 3.0f - box_min) * inverse_size;
+        uint32_t selection_step = std::min(uint32_t(selection[t] * 65536.0f), 65535u);
+        infos[t].center_xy = unorm16(center.x) | unorm16(center.y) << 16;
+        infos[t].center_z_selection = unorm16(center.z) | selection_step << 16;
+        infos[t].normal = glm::packSnorm2x16(unit_to_octahedral(normal));
+        infos[t].area = 0.5f * length;
     }
     return infos;
 }
@@ -97,8 +117,17 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->index_count = uint32_t(mesh.indices.size());
     object->triangle_count = uint32_t(mesh.triangle_count());
     object->stipple_count = uint32_t(stipples.size());
-    object->triangles = triangle_infos(mesh, stipples, params.generation.seed);
-    object->first_stipple.assign(stipples.first.begin(), stipples.first.end() - 1);
+    if (!mesh.positions.empty()) {
+        glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
+        for (const glm::vec3& p : mesh.positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        object->box_min = lo;
+        object->box_size = hi - lo;
+    }
+    object->triangles = triangle_infos(mesh, params.generation.seed, object->box_min, object->box_size);
+    object->first_stipple.assign(stipples.first.begin(), stipples.first.end());
 
     std::vector<gpu::StippleVertex> vertices(stipples.size());
     for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = {stipples.positions[i], stipples.triangle[i]};
@@ -164,6 +193,8 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
     if (has_toon(p.silhouette)) flags |= gpu::kFlagToonFade;
     u.flags = glm::uvec4(flags, object.triangle_count, 0u, object.stipple_count);
+    u.box_min = glm::vec4(object.box_min, 0.0f);
+    u.box_size = glm::vec4(object.box_size, 0.0f);
     return u;
 }
 
@@ -183,7 +214,9 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     // Both cores: the GPU work of this frame has not been submitted yet, so the CPU is otherwise idle.
     parallel_for_chunks(densities.size(), 16384, [&](size_t, size_t begin, size_t end) {
         std::span<float> part(densities.data() + begin, end - begin);
-        compute_densities_cpu(std::span(object.triangles).subspan(begin, end - begin), frame, object.uniforms, part);
+        compute_densities_cpu(std::span(object.triangles).subspan(begin, end - begin),
+                              std::span(object.first_stipple).subspan(begin, end - begin + 1), frame, object.uniforms,
+                              part);
         for (size_t t = begin; t < end; ++t) draws[t] = {densities[t], object.first_stipple[t]};
     });
     double sum = 0.0;
@@ -203,8 +236,8 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     object.draw_staging.flush();
     // Also for cpu-splat: targets without the splat's transfers draw it as the cpu path.
     auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
-    object.cpu_command_count = build_draw_commands(densities, object.first_stipple, object.triangles,
-                                                   std::span(commands, object.triangle_count));
+    object.cpu_command_count =
+        build_draw_commands(densities, object.first_stipple, std::span(commands, object.triangle_count));
     object.cpu_commands.flush();
     return sum;
 }

@@ -29,8 +29,11 @@ struct ObjectGpu {
     uint32_t index_count = 0;
     uint32_t triangle_count = 0;
     uint32_t stipple_count = 0;
+    glm::vec3 box_min{0.0f}, box_size{0.0f};   // object space: the TriangleInfo centroids' quantisation box
     std::vector<gpu::TriangleInfo> triangles;  // CPU copies for the CPU density path
-    std::vector<uint32_t> first_stipple;
+    std::vector<uint32_t> first_stipple;       // per polygon, and one more: where the last one's candidates end
+
+    float candidates(size_t triangle) const { return float(first_stipple[triangle + 1] - first_stipple[triangle]); }
     gpu::ObjectUniforms uniforms{};            // this frame's
     uint32_t cpu_command_count = 0;            // CPU path: draws written this frame
     uint32_t cpu_drawn_polygons = 0;           // cpu-splat path: polygons in this frame's list
@@ -40,7 +43,7 @@ struct ObjectGpu {
     gpu::Buffer normals;          // mesh vertex normals (toon silhouettes)
     gpu::Buffer indices;          // mesh triangles (depth pass)
     gpu::Buffer stipples;         // StippleVertex per candidate
-    gpu::Buffer triangle_info;    // TriangleInfo per polygon
+    gpu::Buffer triangle_info;    // TriangleInfo per polygon (16 bytes, packed)
     gpu::Buffer triangle_draw;    // TriangleDraw per polygon: density per frame, first stipple constant
     gpu::Buffer drawn_polygons;   // splat paths: DrawnPolygons header + the polygons drawing this frame
     gpu::Buffer draw_staging;     // CPU paths: densities (and cpu-splat's list) on their way to the GPU
