@@ -39,6 +39,8 @@ STIPPLE_CONST uint kBindingDrawCommands = 4;   // DrawCommands (storage): count 
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
 STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
+STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's vertices, 3 floats each
+STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -54,10 +56,14 @@ STIPPLE_CONST uint kFlagRoundPoints = 8u;      // discard outside the disc for l
 STIPPLE_CONST uint kFlagBackfaceCull = 16u;    // polygons facing away get no stipples (§2.1)
 STIPPLE_CONST uint kFlagToonFade = 32u;        // §3.1 stipples fade near the silhouette (toon mode)
 
-// One candidate stipple as the vertex stage reads it (vertex binding 0): 16 bytes.
+// One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
+// relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
+// plane) and 16 bits per coordinate suffice at any model size: position = a + u (b - a) + v (c - a)
+// for the triangle's corners a, b, c (shaders/stipple_position.h). Culled candidates, the many, never
+// fetch the corners.
 struct StippleVertex {
-    vec3 position;  // object space, on the surface
-    uint triangle;  // index into TriangleDraw/TriangleInfo
+    uint barycentric;  // u | v << 16, 16-bit unorm (vertex format R16G16_UNORM)
+    uint triangle;     // index into TriangleDraw/TriangleInfo and the mesh's triangles
 };
 
 // Per triangle and per frame: written by the density pass (GPU) or by the CPU path,

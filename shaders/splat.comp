@@ -17,6 +17,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
+#include "stipple_position.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
@@ -65,12 +66,12 @@ bool hidden_or_uncovered(float z, uint word) {
     return surface >= 1.0 || z > surface;
 }
 
-void splat(uint index, float intensity, mat4 model_view_proj) {
+void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(drawn_count, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
     }
-    vec4 clip = model_view_proj * vec4(stipples[index].position, 1.0);
+    vec4 clip = model_view_proj * vec4(stipple_position(polygon, unpackUnorm2x16(stipples[index].barycentric)), 1.0);
     if (clip.w <= 0.0) return;
     vec3 ndc = clip.xyz / clip.w;
     if (ndc.z < 0.0 || ndc.z > 1.0) return;  // the rasteriser clips these too
@@ -103,12 +104,14 @@ void splat(uint index, float intensity, mat4 model_view_proj) {
 void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= drawn.count) return;
-    TriangleDraw draw = draws[drawn_polygons[slot]];
+    uint t = drawn_polygons[slot];
+    TriangleDraw draw = draws[t];
     float density = draw.density;
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = frame.view_proj * object.model;
     uint count = uint(ceil(density));
+    PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     for (uint k = 0u; k < count; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), model_view_proj);
+        splat(first + k, stipple_intensity(density, float(k)), model_view_proj, polygon);
 }

@@ -6,10 +6,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
+#include "stipple_position.h"
 
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 
-layout(location = 0) in vec3 in_position;
+layout(location = 0) in vec2 in_barycentric;  // (u, v) in the polygon, R16G16_UNORM
 layout(location = 1) in uint in_triangle;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
@@ -37,5 +38,6 @@ void main() {
         atomicAdd(drawn_count, 1u);
         atomicOr(drawn_mask[uint(gl_VertexIndex) >> 5u], 1u << (uint(gl_VertexIndex) & 31u));
     }
-    gl_Position = frame.view_proj * (object.model * vec4(in_position, 1.0));
+    vec3 position = stipple_position(polygon_frame(in_triangle), in_barycentric);  // survivors only
+    gl_Position = frame.view_proj * (object.model * vec4(position, 1.0));
 }

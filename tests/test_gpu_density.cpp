@@ -142,6 +142,42 @@ TEST_F(GpuTest, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
     EXPECT_EQ(wrong_counts, 0u);
 }
 
+TEST_F(GpuTest, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
+    ObjectParams params;
+    params.density_path = DensityPath::Vertex;
+    Prepared blob = test::prepare(load_mesh(blobby_path()), params);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+    renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {320, 256});
+    FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), 1.5f);
+    const ObjectGpu& object = renderer.object(0);
+    auto sizes = [&] {
+        std::vector<VkDeviceSize> s;
+        for (PathBuffer kind : kPathBuffers) s.push_back(path_buffer(object, kind).size());
+        return s;
+    };
+    const VkDeviceSize placeholder = kPathBufferPlaceholderBytes;
+    target.draw(renderer, view);
+    EXPECT_EQ(sizes(), std::vector<VkDeviceSize>(std::size(kPathBuffers), placeholder)) << "the vertex path needs none";
+    renderer.params(0).density_path = DensityPath::Splat;
+    target.draw(renderer, view);
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * VkDeviceSize(object.triangle_count), placeholder,
+                                                   placeholder, placeholder}));
+
+    // With the splat path, what the object costs on the GPU per candidate: 8 bytes per candidate and
+    // 28 per polygon besides the mesh, so at most 16 where candidates outnumber polygons ~4 to 1.
+    VkDeviceSize bytes = object.positions.size() + object.normals.size() + object.indices.size() +
+                         object.stipples.size() + object.triangle_info.size() + object.triangle_draw.size() +
+                         object.debug.size() + object.object_uniforms.size();
+    for (PathBuffer kind : kPathBuffers) bytes += path_buffer(object, kind).size();
+    double per_candidate = double(bytes) / double(object.stipple_count);
+    std::printf("blobby: %u polygons, %u candidates, %.2f GPU bytes per candidate with the splat path\n",
+                object.triangle_count, object.stipple_count, per_candidate);
+    EXPECT_EQ(object.stipples.size(), 8u * object.stipple_count);
+    EXPECT_EQ(object.triangle_info.size(), 16u * object.triangle_count);
+    EXPECT_LE(per_candidate, 16.0);
+}
+
 TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
     ObjectParams params;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);

@@ -38,6 +38,10 @@ json cell_json(const CellResult& cell) {
 json model_json(const ModelResult& m) {
     json buffers = json::object();
     for (const auto& [name, bytes] : m.buffers) buffers[name] = bytes;
+    json by_path = json::object();
+    for (const auto& [path, bytes] : m.gpu_bytes_by_path)
+        by_path[path] = {{"bytes", bytes},
+                         {"bytes_per_candidate", m.candidates ? double(bytes) / double(m.candidates) : 0.0}};
     json cells = json::array();
     for (const CellResult& cell : m.cells) cells.push_back(cell_json(cell));
     return {
@@ -59,6 +63,8 @@ json model_json(const ModelResult& m) {
         {"gpu_mesh_bytes", m.mesh_bytes},
         {"gpu_bytes_per_candidate", m.bytes_per_candidate()},
         {"gpu_bytes_per_candidate_without_mesh", m.stipple_bytes_per_candidate()},
+        {"gpu_bytes_counted_path", density_path_name(kMemoryPath)},
+        {"gpu_bytes_by_path", by_path},
         {"image", m.image},
         {"cells", cells},
     };

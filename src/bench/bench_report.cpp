@@ -134,8 +134,10 @@ void model_table(std::ostringstream& md, const BenchResults& r) {
     md << "## Per model\n\n";
     md << "Preprocessing is stipple generation (placement, relaxation, progressive order). Drawn stipples and ink "
           "come from the standard frame with the default parameters (as in the README image); ink is the share "
-          "of the covered pixels with red < 128. GPU bytes per candidate: all the object's buffers, and without the "
-          "mesh (positions, normals, indices).\n\n";
+          "of the covered pixels with red < 128. GPU memory: all the object's buffers when it draws with the "
+          "default path (splat; results.json has every path), per candidate, and without the mesh (positions, "
+          "normals, indices); a candidate costs 8 bytes, a polygon 28 (TriangleInfo 16, TriangleDraw 8, the "
+          "splat's work list 4) besides its mesh.\n\n";
     md << "| model | source | triangles | load s | preprocessing s | candidates | drawn | ink | GPU MiB | "
           "bytes / candidate (without mesh) |\n";
     md << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";

@@ -144,15 +144,18 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object) {
-    return {
+std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object, DensityPath path) {
+    std::vector<std::pair<std::string, uint64_t>> buffers = {
         {"positions", object.positions.size()},         {"normals", object.normals.size()},
         {"indices", object.indices.size()},             {"stipples", object.stipples.size()},
         {"triangle_info", object.triangle_info.size()}, {"triangle_draw", object.triangle_draw.size()},
-        {"draw_staging", object.draw_staging.size()},   {"gpu_commands", object.gpu_commands.size()},
-        {"cpu_commands", object.cpu_commands.size()},   {"debug", object.debug.size()},
-        {"object_uniforms", object.object_uniforms.size()},
+        {"debug", object.debug.size()},                 {"object_uniforms", object.object_uniforms.size()},
     };
+    for (PathBuffer kind : kPathBuffers) {  // the path's own at full size, the others placeholders
+        uint64_t bytes = path_buffer_bytes(object, path, kind);
+        buffers.emplace_back(path_buffer_name(kind), bytes ? bytes : kPathBufferPlaceholderBytes);
+    }
+    return buffers;
 }
 
 std::string look_note(const ModelResult& model) {
@@ -233,10 +236,15 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
         start = Clock::now();
         renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
         model.upload_seconds = seconds_since(start);
-        model.buffers = object_buffers(renderer.object(0));
+        model.buffers = object_buffers(renderer.object(0), kMemoryPath);
         for (const auto& [name, bytes] : model.buffers) {
             model.gpu_bytes += bytes;
             if (name == "positions" || name == "normals" || name == "indices") model.mesh_bytes += bytes;
+        }
+        for (DensityPath path : kAllDensityPaths) {
+            uint64_t bytes = 0;
+            for (const auto& entry : object_buffers(renderer.object(0), path)) bytes += entry.second;
+            model.gpu_bytes_by_path.emplace_back(density_path_name(path), bytes);
         }
         const PaperRow* row = find_paper_row(entry.name);
         for (CellResult& cell : model.cells) {
@@ -249,9 +257,12 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                        cell.column.name().c_str(), cell.median_fps, paper.c_str(), cell.min_fps, cell.max_fps,
                        passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
         }
-        log(format("  GPU memory: %.1f MiB, %.1f bytes per candidate (%.1f without the mesh)",
-                   double(model.gpu_bytes) / (1024.0 * 1024.0), model.bytes_per_candidate(),
-                   model.stipple_bytes_per_candidate()));
+        std::string by_path;
+        for (const auto& [path, bytes] : model.gpu_bytes_by_path)
+            by_path += format(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);
+        log(format("  GPU memory (%s path): %.1f MiB, %.1f bytes per candidate (%.1f without the mesh); by path:%s",
+                   density_path_name(kMemoryPath), double(model.gpu_bytes) / (1024.0 * 1024.0),
+                   model.bytes_per_candidate(), model.stipple_bytes_per_candidate(), by_path.c_str()));
         results.models.push_back(std::move(model));
     }
     target_holder.reset();  // everything but the context is gone: destruction messages are counted too

@@ -65,8 +65,9 @@ struct ModelResult {
     int64_t drawn = -1;               // standard frame (default parameters)
     uint64_t covered_pixels = 0;
     double ink_fraction = 0.0;        // share of covered pixels with red < 128
-    std::vector<std::pair<std::string, uint64_t>> buffers;  // the object's GPU buffers, bytes
+    std::vector<std::pair<std::string, uint64_t>> buffers;  // the object's GPU buffers with kMemoryPath, bytes
     uint64_t gpu_bytes = 0;           // all of them
+    std::vector<std::pair<std::string, uint64_t>> gpu_bytes_by_path;  // the same total with each density path
     uint64_t mesh_bytes = 0;          // positions, normals, indices (the depth pass's)
     std::string image;                // the standard frame's PNG, when written
     std::vector<CellResult> cells;
@@ -104,7 +105,10 @@ using Logger = std::function<void(const std::string&)>;
 BenchResults run_bench(const BenchOptions& options, const Logger& log);
 
 // The object's GPU buffers by name and size (what "GPU bytes per candidate" sums).
-std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object);
+std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object, DensityPath path);
+
+// The path whose buffers the per-model GPU memory figures count: the default one.
+inline constexpr DensityPath kMemoryPath = DensityPath::Splat;
 
 // Median of the values (the mean of the middle two for an even count); 0 for none.
 double median(std::vector<double> values);

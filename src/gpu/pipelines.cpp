@@ -230,6 +230,8 @@ StippleLayout create_stipple_layout(const Context& context) {
         {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingMeshPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingMeshIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
     };
     StippleLayout layout;
     layout.set_layout = create_set_layout(context, bindings);

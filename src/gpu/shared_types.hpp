@@ -7,9 +7,9 @@
 
 namespace stipple::gpu {
 
-static_assert(sizeof(StippleVertex) == 16);
-static_assert(offsetof(StippleVertex, position) == 0);
-static_assert(offsetof(StippleVertex, triangle) == 12);
+static_assert(sizeof(StippleVertex) == 8);
+static_assert(offsetof(StippleVertex, barycentric) == 0);
+static_assert(offsetof(StippleVertex, triangle) == 4);
 
 static_assert(sizeof(TriangleDraw) == 8);
 static_assert(offsetof(TriangleDraw, density) == 0);

@@ -60,17 +60,51 @@ std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, uint64_t stipple
     return infos;
 }
 
+// Each candidate as (u, v) in its triangle, position = a + u (b - a) + v (c - a), 16 bits each.
+std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet& stipples) {
+    std::vector<gpu::StippleVertex> vertices(stipples.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        const uint32_t t = stipples.triangle[i];
+        const glm::dvec3 a = mesh.positions[mesh.indices[3 * t]];
+        const glm::dvec3 e0 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - a;
+        const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - a;
+        const glm::dvec3 d = glm::dvec3(stipples.positions[i]) - a;
+        const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+        const double denominator = d00 * d11 - d01 * d01;
+        double u = 0.0, v = 0.0;  // a degenerate polygon holds its stipples at a corner
+        if (denominator > 0.0) {
+            u = (d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / denominator;
+            v = (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / denominator;
+        }
+        vertices[i] = {unorm16(float(u)) | unorm16(float(v)) << 16, t};
+    }
+    return vertices;
+}
+
 // Lengths scale by this much from object to world (the mean for non-uniform scales).
 float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::determinant(glm::mat3(model)))); }
 
-void write_descriptors(VkDevice device, VkDescriptorSet set, const Buffer& frame_uniforms, const ObjectGpu& object) {
+Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSize bytes) {
+    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    const auto destination = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
+        case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+        case PathBuffer::GpuCommands: return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
+        case PathBuffer::CpuCommands: break;
+    }
+    return Buffer(context, bytes, indirect, MemoryUse::Upload);
+}
+
+void write_descriptors(VkDevice device, VkDescriptorSet set, VkBuffer frame_uniforms, const ObjectGpu& object) {
     struct Entry {
         uint32_t binding;
         VkDescriptorType type;
         VkBuffer buffer;
     };
     const Entry entries[] = {
-        {gpu::kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_uniforms.handle()},
+        {gpu::kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_uniforms},
         {gpu::kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, object.object_uniforms.handle()},
         {gpu::kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.triangle_draw.handle()},
         {gpu::kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.triangle_info.handle()},
@@ -78,6 +112,8 @@ void write_descriptors(VkDevice device, VkDescriptorSet set, const Buffer& frame
         {gpu::kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.debug.handle()},
         {gpu::kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.stipples.handle()},
         {gpu::kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.drawn_polygons.handle()},
+        {gpu::kBindingMeshPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.positions.handle()},
+        {gpu::kBindingMeshIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.indices.handle()},
     };
     VkDescriptorBufferInfo infos[std::size(entries)];
     VkWriteDescriptorSet writes[std::size(entries)];
@@ -129,36 +165,33 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->triangles = triangle_infos(mesh, params.generation.seed, object->box_min, object->box_size);
     object->first_stipple.assign(stipples.first.begin(), stipples.first.end());
 
-    std::vector<gpu::StippleVertex> vertices(stipples.size());
-    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = {stipples.positions[i], stipples.triangle[i]};
+    std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
     std::vector<gpu::TriangleDraw> draws(object->triangle_count);
     for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, object->first_stipple[t]};
 
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
-    object->positions = gpu::create_device_buffer(context, std::span(mesh.positions), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    // The stipple shaders read the corners of the polygons whose stipples they place.
+    object->positions =
+        gpu::create_device_buffer(context, std::span(mesh.positions), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
     object->normals = gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    object->indices = gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    object->indices =
+        gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
     object->stipples = gpu::create_device_buffer(context, std::span<const gpu::StippleVertex>(vertices),
                                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
     object->triangle_info =
         gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(object->triangles), storage);
     object->triangle_draw = gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
-    VkDeviceSize list_bytes = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * std::max(object->triangle_count, 1u);
-    object->drawn_polygons = Buffer(context, list_bytes, storage | indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                    MemoryUse::DeviceLocal);
-    object->draw_staging = Buffer(context, staged_list_offset(*object) + list_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                  MemoryUse::Upload);
-    VkDeviceSize command_bytes = sizeof(gpu::DrawCommand) * object->triangle_count;
-    object->gpu_commands = Buffer(context, 16 + command_bytes, storage | indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  MemoryUse::DeviceLocal);
-    object->cpu_commands = Buffer(context, command_bytes, indirect, MemoryUse::Upload);
+    // Every path's own buffers start as placeholders (the descriptor set needs a buffer in every binding)
+    // and grow when an object first draws with that path: an object costs only what its path uses.
+    for (PathBuffer kind : kPathBuffers) path_buffer(*object, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
     VkDeviceSize debug_bytes = count_drawn ? 16 + 4 * ((object->stipple_count + 31) / 32) : 16;
     object->debug = Buffer(context, debug_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     object->object_uniforms =
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6}};
+    object->context = &context;
+    object->frame_uniforms = frame_uniforms.handle();
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = uint32_t(std::size(sizes));
@@ -169,8 +202,59 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &set_layout;
     VK_CHECK(vkAllocateDescriptorSets(context.device, &alloc, &object->set));
-    write_descriptors(context.device, object->set, frame_uniforms, *object);
+    ensure_path_buffers(*object, params.density_path);  // writes the descriptors
     return object;
+}
+
+VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBuffer kind) {
+    const VkDeviceSize n = object.triangle_count;
+    const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return draws_by_splat(path) ? list : 0;
+        case PathBuffer::DrawStaging:
+            if (path == DensityPath::Cpu) return staged_list_offset(object);
+            return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
+        case PathBuffer::GpuCommands: return path == DensityPath::Indirect ? 16 + sizeof(gpu::DrawCommand) * n : 0;
+        case PathBuffer::CpuCommands: return path == DensityPath::Cpu ? sizeof(gpu::DrawCommand) * n : 0;
+    }
+    return 0;
+}
+
+gpu::Buffer& path_buffer(ObjectGpu& object, PathBuffer kind) {
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return object.drawn_polygons;
+        case PathBuffer::DrawStaging: return object.draw_staging;
+        case PathBuffer::GpuCommands: return object.gpu_commands;
+        case PathBuffer::CpuCommands: break;
+    }
+    return object.cpu_commands;
+}
+
+const gpu::Buffer& path_buffer(const ObjectGpu& object, PathBuffer kind) {
+    return path_buffer(const_cast<ObjectGpu&>(object), kind);
+}
+
+const char* path_buffer_name(PathBuffer kind) {
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return "drawn_polygons";
+        case PathBuffer::DrawStaging: return "draw_staging";
+        case PathBuffer::GpuCommands: return "gpu_commands";
+        case PathBuffer::CpuCommands: break;
+    }
+    return "cpu_commands";
+}
+
+void ensure_path_buffers(ObjectGpu& object, DensityPath path) {
+    bool grown = false;
+    for (PathBuffer kind : kPathBuffers) {
+        VkDeviceSize bytes = path_buffer_bytes(object, path, kind);
+        Buffer& buffer = path_buffer(object, kind);
+        if (bytes <= buffer.size()) continue;
+        buffer = make_path_buffer(*object.context, kind, bytes);
+        grown = true;
+    }
+    if (grown || !object.descriptors_written) write_descriptors(object.device, object.set, object.frame_uniforms, object);
+    object.descriptors_written = true;
 }
 
 gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view) {
@@ -232,13 +316,14 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
         const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};
         std::memcpy(list, &header, sizeof header);
         object.cpu_drawn_polygons = count;
+        object.cpu_command_count = 0;
+    } else {
+        auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
+        object.cpu_command_count =
+            build_draw_commands(densities, object.first_stipple, std::span(commands, object.triangle_count));
+        object.cpu_commands.flush();
     }
     object.draw_staging.flush();
-    // Also for cpu-splat: targets without the splat's transfers draw it as the cpu path.
-    auto* commands = static_cast<gpu::DrawCommand*>(object.cpu_commands.mapped());
-    object.cpu_command_count =
-        build_draw_commands(densities, object.first_stipple, std::span(commands, object.triangle_count));
-    object.cpu_commands.flush();
     return sum;
 }
 

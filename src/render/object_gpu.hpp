@@ -45,17 +45,35 @@ struct ObjectGpu {
     gpu::Buffer stipples;         // StippleVertex per candidate
     gpu::Buffer triangle_info;    // TriangleInfo per polygon (16 bytes, packed)
     gpu::Buffer triangle_draw;    // TriangleDraw per polygon: density per frame, first stipple constant
+    // Buffers of one density path or two (PathBuffer), full size once an object draws with that path.
     gpu::Buffer drawn_polygons;   // splat paths: DrawnPolygons header + the polygons drawing this frame
     gpu::Buffer draw_staging;     // CPU paths: densities (and cpu-splat's list) on their way to the GPU
     gpu::Buffer gpu_commands;     // indirect path: count (16 bytes) + DrawCommand per polygon
-    gpu::Buffer cpu_commands;     // CPU path: DrawCommand per surviving range
+    gpu::Buffer cpu_commands;     // cpu path: DrawCommand per surviving range
     gpu::Buffer debug;            // drawn count (16 bytes) + drawn bit mask, when counting
     gpu::Buffer object_uniforms;  // ObjectUniforms
 
+    const gpu::Context* context = nullptr;
     VkDevice device = VK_NULL_HANDLE;
+    VkBuffer frame_uniforms = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
+    bool descriptors_written = false;
 };
+
+// The buffers only some density paths use; the others hold a placeholder of this size.
+inline constexpr VkDeviceSize kPathBufferPlaceholderBytes = 32;
+enum class PathBuffer { DrawnPolygons, DrawStaging, GpuCommands, CpuCommands };
+inline constexpr PathBuffer kPathBuffers[] = {PathBuffer::DrawnPolygons, PathBuffer::DrawStaging,
+                                              PathBuffer::GpuCommands, PathBuffer::CpuCommands};
+const char* path_buffer_name(PathBuffer kind);
+gpu::Buffer& path_buffer(ObjectGpu& object, PathBuffer kind);
+const gpu::Buffer& path_buffer(const ObjectGpu& object, PathBuffer kind);
+// The bytes `path` needs in that buffer (0: the path does not use it).
+VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBuffer kind);
+// Grows the buffers `path` uses to their full size (rewriting the descriptor set); the GPU must not be
+// using the object (StippleRenderer::prepare's contract).
+void ensure_path_buffers(ObjectGpu& object, DensityPath path);
 
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const Mesh& mesh,

@@ -62,7 +62,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.specialization.constants = {{gpu::kSpecCountDrawn, options_.count_drawn ? 1u : 0u}};
     stipple.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     stipple.vertex_bindings = {{0, sizeof(gpu::StippleVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    stipple.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(gpu::StippleVertex, position)},
+    stipple.vertex_attributes = {{0, 0, VK_FORMAT_R16G16_UNORM, offsetof(gpu::StippleVertex, barycentric)},
                                  {1, 0, VK_FORMAT_R32_UINT, offsetof(gpu::StippleVertex, triangle)}};
     stipple.depth_write = false;  // stipples never occlude each other
     stipple.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
@@ -156,6 +156,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         validate_params(object->params);
         object->uniforms = make_object_uniforms(*object, view);
         object->line_width = object_line_width(*object, view, context_.features.max_line_width);
+        ensure_path_buffers(*object, object->params.density_path);
         std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
         object->object_uniforms.flush();
         if (density_on_cpu(object->params.density_path)) {
@@ -284,12 +285,12 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
         switch (object->params.density_path) {
-            case DensityPath::Vertex:  // every candidate; the vertex shader culls (§3.2)
-            case DensityPath::Splat:   // targets without storage images: drawn as the vertex path
+            case DensityPath::Vertex:    // every candidate; the vertex shader culls (§3.2)
+            case DensityPath::Splat:     // targets without the splat's transfers: drawn as the vertex path
+            case DensityPath::CpuSplat:  // the same, culled by the CPU's densities
                 vkCmdDraw(cb, object->stipple_count, 1, 0, 0);
                 break;
             case DensityPath::Cpu:
-            case DensityPath::CpuSplat:  // targets without transfers: drawn as the cpu path
                 if (object->cpu_command_count > 0)
                     vkCmdDrawIndirect(cb, object->cpu_commands.handle(), 0, object->cpu_command_count,
                                       sizeof(gpu::DrawCommand));
