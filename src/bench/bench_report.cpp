@@ -118,9 +118,11 @@ void cell_table(std::ostringstream& md, const BenchResults& r) {
         for (const CellResult& cell : m.cells) {
             std::string passes;
             for (const auto& [pass, ms] : cell.gpu_ms) passes += format("%s%s %.2f", passes.empty() ? "" : ", ", pass.c_str(), ms);
-            std::string cpu = density_on_cpu(cell.column.path)
-                                  ? format("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws)
-                                  : "–";
+            // cpu-splat submits no draws: the splat takes the CPU's list of polygons that draw.
+            std::string cpu = !density_on_cpu(cell.column.path) ? "–"
+                              : draws_by_splat(cell.column.path)
+                                  ? format("%.2f, –", cell.cpu_density_ms)
+                                  : format("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws);
             md << "| " << m.entry.name << " | " << cell.column.name() << " | " << fps_text(cell.median_fps) << " | "
                << fps_text(cell.min_fps) << "–" << fps_text(cell.max_fps) << " | "
                << format("%.2f", cell.median_frame_ms) << " | " << (passes.empty() ? "–" : passes) << " | "
