@@ -41,6 +41,8 @@ STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
 STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's vertices, 3 floats each
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
+STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
+STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -95,6 +97,28 @@ struct DrawnPolygons {
     uint count;
 };
 
+// One edge of the mesh with the polygons on either side (§3.1 Raskar-Cohen lines; see
+// src/render/silhouette_edges.hpp). A boundary edge has second_polygon == kNoPolygon.
+STIPPLE_CONST uint kNoPolygon = 0xFFFFFFFFu;
+struct SilhouetteEdge {
+    uint first_vertex;
+    uint second_vertex;
+    uint first_polygon;
+    uint second_polygon;
+};
+
+// This frame's silhouette lines: a VkDrawIndexedIndirectCommand, padding, then the index pairs of
+// the edges that border a back-facing polygon (the index buffer starts kSilhouetteLinesHeaderBytes in).
+STIPPLE_CONST uint kSilhouetteLinesHeaderBytes = 32;
+struct SilhouetteLines {
+    uint index_count;
+    uint instance_count;
+    uint first_index;
+    int vertex_offset;
+    uint first_instance;
+    uint pad0, pad1, pad2;
+};
+
 // One indirect draw, laid out as VkDrawIndirectCommand.
 struct DrawCommand {
     uint vertex_count;
@@ -120,7 +144,7 @@ struct ObjectUniforms {
     vec4 shading;           // x: shading exponent n (§2.2); y: point size (px); z: toon sharpness (§3.1); w: unused
     vec4 extrinsic;         // x: pr; y: minimum stipple area (px^2); z: reference pixels per world unit; w: unused
     vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre
-    uvec4 flags;            // x: kFlag* bits; y: triangle count; z: unused; w: candidate count
+    uvec4 flags;            // x: kFlag* bits; y: triangle count; z: silhouette edge count; w: candidate count
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
     vec4 box_size;          // xyz: the box's extent
 };

@@ -80,6 +80,12 @@ STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_
     return clamp(user_width * projected_radius_px / 512.0f, 1.0f, user_width);
 }
 
+// §3.1 Whether a polygon faces away from the viewer (its stipples are culled, its edges drawn as
+// Raskar-Cohen lines): N.E <= 0 against the eye ray to its centroid, the test polygon_density_terms uses.
+STIPPLE_FN bool polygon_faces_away(vec3 view_center, vec3 view_normal) {
+    return dot(view_normal, -view_center) <= 0.0f;
+}
+
 // §2.1 No popping: a polygon with fractional density d draws stipples 0..ceil(d)-1, the last one
 // with intensity frac(d). Index k (0-based) is drawn with intensity clamp(d - k, 0, 1); zero means
 // the stipple is culled (pushed beyond the far plane by the vertex shader, §3.2).

@@ -1,12 +1,15 @@
 // Silhouettes (paper §3.1, Figures 8-9): Raskar-Cohen back-face lines with distance thinning, and
 // the toon N.E ramp with stipples fading near the outline.
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <deque>
 
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
 #include "render/density_formulas.hpp"
+#include "render/silhouette_edges.hpp"
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
 #include "support/test_paths.hpp"
@@ -129,6 +132,67 @@ TEST_F(GpuTest, LinesInkTheOutline) {
     }
 }
 
+TEST(SilhouetteEdges, EachEdgeOnceWithThePolygonsOnEitherSide) {
+    Mesh sphere = make_icosphere(3);  // closed and manifold: every edge between two polygons
+    auto edges = build_silhouette_edges(sphere.indices);
+    EXPECT_EQ(edges.size(), sphere.triangle_count() * 3 / 2);
+    size_t boundary = 0;
+    for (const auto& e : edges) {
+        boundary += e.second_polygon == gpu::kNoPolygon;
+        EXPECT_LT(e.first_vertex, e.second_vertex);
+    }
+    EXPECT_EQ(boundary, 0u);
+
+    Mesh grid = make_grid(10);  // open: its rim has one polygon per edge
+    auto grid_edges = build_silhouette_edges(grid.indices);
+    size_t rim = 0;
+    for (const auto& e : grid_edges) rim += e.second_polygon == gpu::kNoPolygon;
+    EXPECT_EQ(rim, 40u);
+    EXPECT_EQ(grid_edges.size(), (grid.triangle_count() * 3 + rim) / 2);
+
+    // Three polygons on one edge (non-manifold): every polygon is on a record.
+    const uint32_t fan[] = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+    auto fan_edges = build_silhouette_edges(fan);
+    std::vector<uint32_t> on_edge_01;
+    for (const auto& e : fan_edges)
+        if (e.first_vertex == 0 && e.second_vertex == 1)
+            for (uint32_t p : {e.first_polygon, e.second_polygon})
+                if (p != gpu::kNoPolygon) on_edge_01.push_back(p);
+    std::sort(on_edge_01.begin(), on_edge_01.end());
+    EXPECT_EQ(on_edge_01, (std::vector<uint32_t>{0, 1, 2}));
+    EXPECT_EQ(fan_edges.size(), 2u + 6u);  // edge 0-1 twice, six boundary edges
+}
+
+TEST_F(GpuTest, LinesAreTheEdgesOfPolygonsFacingAway) {
+    ObjectParams params;
+    params.silhouette = SilhouetteMode::Lines;
+    Prepared sphere = test::prepare(make_icosphere(4), params);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+    renderer.add_object(sphere.mesh, sphere.stipples, sphere.model, params);
+    OffscreenTarget target(*context, {640, 512});
+    FrameView view = test::framed_view(compute_bounding_sphere(sphere.mesh), target.extent(), 1.2f, 40.0f, 20.0f);
+    target.draw(renderer, view);
+
+    const ObjectGpu& object = renderer.object(0);
+    std::vector<std::byte> bytes = gpu::read_buffer(*context, object.silhouette_lines);
+    gpu::SilhouetteLines header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    size_t expected = 0;
+    for (const auto& e : build_silhouette_edges(sphere.mesh.indices)) {
+        auto away = [&](uint32_t t) {
+            auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms);
+            return formulas::polygon_faces_away(p.center, p.normal);
+        };
+        expected += away(e.first_polygon) || (e.second_polygon != gpu::kNoPolygon && away(e.second_polygon));
+    }
+    std::printf("%u edges, %zu of them border a polygon facing away; the GPU drew %u lines\n",
+                object.silhouette_edge_count, expected, header.index_count / 2);
+    EXPECT_EQ(header.index_count, 2 * expected);
+    EXPECT_GT(expected, object.silhouette_edge_count / 3);
+    EXPECT_LT(expected, object.silhouette_edge_count * 2 / 3);
+    EXPECT_EQ(header.instance_count, 1u);
+}
+
 TEST_F(GpuTest, LinesThinWithDistance) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
@@ -171,7 +235,11 @@ TEST_F(GpuTest, LinesDoNotSpillInsideAConvexObject) {
     std::printf("silhouette ink: %zu px, %zu more than 2 px inside the outline (deepest %zu px)\n", total, spilled,
                 deepest);
     EXPECT_GT(total, 1000u);
-    EXPECT_EQ(spilled, 0u);
+    // Lines of ~4 px centred on edges just inside the outline reach 2 px in; where a line ends, its
+    // rectangle's corner may cover a pixel centre one more in. A line not hidden by the front faces
+    // would ink far deeper.
+    EXPECT_LE(deepest, 3u);
+    EXPECT_LE(double(spilled), 0.001 * double(total));
 }
 
 TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {

@@ -232,6 +232,8 @@ StippleLayout create_stipple_layout(const Context& context) {
         {kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingMeshPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
         {kBindingMeshIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingSilhouetteEdges, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+        {kBindingSilhouetteLines, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
     };
     StippleLayout layout;
     layout.set_layout = create_set_layout(context, bindings);

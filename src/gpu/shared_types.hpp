@@ -23,6 +23,11 @@ static_assert(offsetof(TriangleInfo, area) == 12);
 static_assert(sizeof(DrawnPolygons) == 16);
 static_assert(offsetof(DrawnPolygons, count) == 12);
 
+static_assert(sizeof(SilhouetteEdge) == 16);
+static_assert(offsetof(SilhouetteEdge, second_polygon) == 12);
+static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
+static_assert(offsetof(SilhouetteLines, first_instance) == 16);
+
 static_assert(sizeof(DrawCommand) == 16);
 static_assert(offsetof(DrawCommand, first_vertex) == 8);
 

@@ -14,6 +14,7 @@
 #include "gpu/vk_check.hpp"
 #include "render/density_cpu.hpp"
 #include "render/density_formulas.hpp"
+#include "render/silhouette_edges.hpp"
 #include "render/stipple_renderer.hpp"
 #include "stipple/selection_order.hpp"
 
@@ -97,6 +98,13 @@ Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSi
     return Buffer(context, bytes, indirect, MemoryUse::Upload);
 }
 
+Buffer make_lines_buffer(const gpu::Context& context, VkDeviceSize bytes) {
+    return Buffer(context, bytes,
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  MemoryUse::DeviceLocal);
+}
+
 void write_descriptors(VkDevice device, VkDescriptorSet set, VkBuffer frame_uniforms, const ObjectGpu& object) {
     struct Entry {
         uint32_t binding;
@@ -114,6 +122,8 @@ void write_descriptors(VkDevice device, VkDescriptorSet set, VkBuffer frame_unif
         {gpu::kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.drawn_polygons.handle()},
         {gpu::kBindingMeshPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.positions.handle()},
         {gpu::kBindingMeshIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.indices.handle()},
+        {gpu::kBindingSilhouetteEdges, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.silhouette_edges.handle()},
+        {gpu::kBindingSilhouetteLines, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, object.silhouette_lines.handle()},
     };
     VkDescriptorBufferInfo infos[std::size(entries)];
     VkWriteDescriptorSet writes[std::size(entries)];
@@ -184,6 +194,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     // Every path's own buffers start as placeholders (the descriptor set needs a buffer in every binding)
     // and grow when an object first draws with that path: an object costs only what its path uses.
     for (PathBuffer kind : kPathBuffers) path_buffer(*object, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
+    // The silhouette edges too, built when the object first draws Raskar-Cohen lines.
+    object->silhouette_edges = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+    object->silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     VkDeviceSize debug_bytes = count_drawn ? 16 + 4 * ((object->stipple_count + 31) / 32) : 16;
     object->debug = Buffer(context, debug_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     object->object_uniforms =
@@ -191,7 +204,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
 
     object->context = &context;
     object->frame_uniforms = frame_uniforms.handle();
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8}};
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = uint32_t(std::size(sizes));
@@ -244,6 +257,23 @@ const char* path_buffer_name(PathBuffer kind) {
     return "cpu_commands";
 }
 
+void ensure_silhouette_edges(ObjectGpu& object) {
+    if (object.silhouette_edges_built) return;
+    object.silhouette_edges_built = true;
+    // Read back from the GPU: the object keeps no CPU copy of its mesh, and most objects never need this.
+    std::vector<std::byte> bytes = gpu::read_buffer(*object.context, object.indices);
+    std::vector<uint32_t> indices(object.index_count);
+    std::memcpy(indices.data(), bytes.data(), sizeof(uint32_t) * indices.size());
+    std::vector<gpu::SilhouetteEdge> edges = build_silhouette_edges(indices);
+    object.silhouette_edge_count = uint32_t(edges.size());
+    if (edges.empty()) return;
+    object.silhouette_edges = gpu::create_device_buffer(*object.context, std::span<const gpu::SilhouetteEdge>(edges),
+                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    object.silhouette_lines =
+        make_lines_buffer(*object.context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
+    write_descriptors(object.device, object.set, object.frame_uniforms, object);
+}
+
 void ensure_path_buffers(ObjectGpu& object, DensityPath path) {
     bool grown = false;
     for (PathBuffer kind : kPathBuffers) {
@@ -276,7 +306,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
     if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
     if (has_toon(p.silhouette)) flags |= gpu::kFlagToonFade;
-    u.flags = glm::uvec4(flags, object.triangle_count, 0u, object.stipple_count);
+    u.flags = glm::uvec4(flags, object.triangle_count, object.silhouette_edge_count, object.stipple_count);
     u.box_min = glm::vec4(object.box_min, 0.0f);
     u.box_size = glm::vec4(object.box_size, 0.0f);
     return u;

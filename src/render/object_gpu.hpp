@@ -50,6 +50,10 @@ struct ObjectGpu {
     gpu::Buffer draw_staging;     // CPU paths: densities (and cpu-splat's list) on their way to the GPU
     gpu::Buffer gpu_commands;     // indirect path: count (16 bytes) + DrawCommand per polygon
     gpu::Buffer cpu_commands;     // cpu path: DrawCommand per surviving range
+    gpu::Buffer silhouette_edges;  // SilhouetteEdge per mesh edge, once the object draws Raskar-Cohen lines
+    gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
+    uint32_t silhouette_edge_count = 0;
+    bool silhouette_edges_built = false;
     gpu::Buffer debug;            // drawn count (16 bytes) + drawn bit mask, when counting
     gpu::Buffer object_uniforms;  // ObjectUniforms
 
@@ -74,6 +78,8 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
 // Grows the buffers `path` uses to their full size (rewriting the descriptor set); the GPU must not be
 // using the object (StippleRenderer::prepare's contract).
 void ensure_path_buffers(ObjectGpu& object, DensityPath path);
+// Builds the object's edge table (§3.1 lines drawn from edges) the first time it is needed; same contract.
+void ensure_silhouette_edges(ObjectGpu& object);
 
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const Mesh& mesh,

@@ -32,7 +32,7 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, density_list_pipeline_,
-                         draw_commands_pipeline_,
+                         draw_commands_pipeline_, silhouette_edges_pipeline_,
                          toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -80,14 +80,14 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon.color_write = true;  // opaque: the nearest surface's toon ink wins with the depth test
     toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layout_.pipeline_layout);
 
-    // Raskar-Cohen: back faces as wide lines; the front faces' depth lets only the silhouette through.
+    // Raskar-Cohen: the back faces' edges as wide lines (selected each frame by silhouette_edges.comp, each
+    // edge once); the front faces' depth lets only the silhouette through.
     gpu::GraphicsPipelineDesc lines;
     lines.vertex_shader = "depth.vert";
     lines.fragment_shader = "silhouette.frag";
+    lines.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
     lines.vertex_bindings = depth.vertex_bindings;
     lines.vertex_attributes = depth.vertex_attributes;
-    lines.polygon_mode = context_.features.fill_mode_non_solid ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
-    lines.cull_mode = VK_CULL_MODE_FRONT_BIT;
     lines.depth_write = false;
     lines.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
     lines.dynamic_line_width = true;
@@ -95,6 +95,8 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     lines.color_format = color_format;
     lines.depth_format = depth_format;
     silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layout_.pipeline_layout);
+    silhouette_edges_pipeline_ =
+        gpu::create_compute_pipeline(context_, "silhouette_edges.comp", layout_.pipeline_layout);
 
     density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout);
     density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout,
@@ -154,9 +156,10 @@ void StippleRenderer::prepare(const FrameView& view) {
     auto cpu_start = std::chrono::steady_clock::now();
     for (auto& object : objects_) {
         validate_params(object->params);
+        ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
+        if (has_lines(object->params.silhouette)) ensure_silhouette_edges(*object);
         object->uniforms = make_object_uniforms(*object, view);
         object->line_width = object_line_width(*object, view, context_.features.max_line_width);
-        ensure_path_buffers(*object, object->params.density_path);
         std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
         object->object_uniforms.flush();
         if (density_on_cpu(object->params.density_path)) {
@@ -258,10 +261,36 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
     }
 }
 
+bool StippleRenderer::draws_lines(const ObjectGpu& object) const {
+    return has_lines(object.params.silhouette) && object.silhouette_edge_count > 0;
+}
+
+void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
+    for (const auto& object : objects_) {
+        if (!draws_lines(*object)) continue;
+        const gpu::SilhouetteLines empty{0u, 1u, 0u, 0, 0u, 0u, 0u, 0u};  // one instance, no indices yet
+        vkCmdUpdateBuffer(cb, object->silhouette_lines.handle(), 0, sizeof empty, &empty);
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, silhouette_edges_pipeline_);
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    for (const auto& object : objects_) {
+        if (!draws_lines(*object)) continue;
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &object->set, 0,
+                                nullptr);
+        vkCmdDispatch(cb, (object->silhouette_edge_count + group - 1) / group, 1, 1);
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,
+                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT);
+}
+
 void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
     bool any = false;
     for (const auto& object : objects_) {
-        if (object->index_count == 0 || !has_lines(object->params.silhouette)) continue;
+        if (!draws_lines(*object)) continue;
         if (!any) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
         any = true;
         VkDeviceSize offset = 0;
@@ -270,8 +299,9 @@ void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(cb, object->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cb, object->index_count, 1, 0, 0, 0);
+        vkCmdBindIndexBuffer(cb, object->silhouette_lines.handle(), gpu::kSilhouetteLinesHeaderBytes,
+                             VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexedIndirect(cb, object->silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
     }
 }
 
@@ -310,6 +340,12 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     timer_.begin_frame(cb);
     record_density(cb);
     timer_.mark(cb, "density");
+    const bool any_lines =
+        std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_lines(*o); });
+    if (any_lines) {  // this frame's Raskar-Cohen lines, before the rendering scopes begin
+        record_silhouette_edges(cb);
+        timer_.mark(cb, "edges");
+    }
 
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -328,8 +364,6 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
 
     // One rendering scope per pass: a software rasteriser bins a whole scope and rasterises it at its
     // end, so timestamps between passes inside one scope would not measure the passes.
-    const bool any_lines = std::any_of(objects_.begin(), objects_.end(),
-                                       [](const auto& o) { return has_lines(o->params.silhouette); });
     begin_rendering(cb, targets, true);
     record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
     vkCmdEndRendering(cb);

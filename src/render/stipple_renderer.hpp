@@ -94,7 +94,9 @@ private:
     void record_density(VkCommandBuffer cb);
     void record_depth(VkCommandBuffer cb);
     void record_stipples(VkCommandBuffer cb);
+    void record_silhouette_edges(VkCommandBuffer cb);
     void record_silhouette_lines(VkCommandBuffer cb);
+    bool draws_lines(const ObjectGpu& object) const;  // Raskar-Cohen lines on, and the mesh has edges
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
@@ -112,6 +114,7 @@ private:
     VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
+    VkPipeline silhouette_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines: edges of back faces
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
     gpu::StippleLayout splat_layout_;
     VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
