@@ -2,6 +2,7 @@
 // The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon. The kListDrawn
 // variant also appends each polygon that draws a stipple to the splat's work list.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
 
@@ -26,10 +27,20 @@ void main() {
     float candidates = float(end - draws[t].first_stipple);
     float density = polygon_density(polygon_view(infos[t], candidates, object), density_params(frame, object));
     draws[t].density = density;
-    if (kListDrawn && density > 0.0f) {
-        uint slot = atomicAdd(drawn.count, 1u);
-        drawn_polygons[slot] = t;
-        // Slots are handed out 0, 1, 2, ...: each one that starts a workgroup adds that workgroup.
-        if (slot % kDensityWorkgroupSize == 0u) atomicAdd(drawn.groups_x, 1u);
+    if (!kListDrawn) return;
+    // One atomic add per subgroup hands out its slots; the slot ranges tile 0, 1, 2, ..., so each
+    // range adds the workgroups of the splat's dispatch that start in it.
+    bool listed = density > 0.0f;
+    uvec4 ballot = subgroupBallot(listed);
+    uint listed_here = subgroupBallotBitCount(ballot);
+    if (listed_here == 0u) return;
+    uint base = 0u;
+    if (subgroupElect()) {
+        base = atomicAdd(drawn.count, listed_here);
+        const uint group = kDensityWorkgroupSize;
+        uint starts = (base + listed_here + group - 1u) / group - (base + group - 1u) / group;
+        if (starts > 0u) atomicAdd(drawn.groups_x, starts);
     }
+    base = subgroupBroadcastFirst(base);
+    if (listed) drawn_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = t;
 }

@@ -2,8 +2,10 @@
 // §3.1 Raskar-Cohen lines, the edges to draw this frame: every edge of a polygon that faces away from
 // the viewer (the paper draws the back faces' outlines; each edge here once, however many back faces
 // share it). The front faces' depth, drawn before, then hides all but the silhouette's neighbourhood.
-// One invocation per edge appends its index pair to the indexed draw of this frame's lines.
+// One invocation per edge; each subgroup appends its edges' index pairs to the indexed draw of this
+// frame's lines with one atomic add (one per edge would serialise on the counter).
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
 
@@ -24,12 +26,21 @@ bool faces_away(uint polygon) {
 
 void main() {
     uint e = gl_GlobalInvocationID.x;
-    if (e >= object.flags.z) return;
-    SilhouetteEdge edge = edges[e];
-    bool drawn = faces_away(edge.first_polygon) ||
-                 (edge.second_polygon != kNoPolygon && faces_away(edge.second_polygon));
+    SilhouetteEdge edge;
+    bool drawn = false;
+    if (e < object.flags.z) {
+        edge = edges[e];
+        drawn = faces_away(edge.first_polygon) ||
+                (edge.second_polygon != kNoPolygon && faces_away(edge.second_polygon));
+    }
+    uvec4 ballot = subgroupBallot(drawn);
+    uint drawn_here = subgroupBallotBitCount(ballot);
+    if (drawn_here == 0u) return;
+    uint base = 0u;
+    if (subgroupElect()) base = atomicAdd(lines.index_count, 2u * drawn_here);
+    base = subgroupBroadcastFirst(base);
     if (!drawn) return;
-    uint at = atomicAdd(lines.index_count, 2u);
+    uint at = base + 2u * subgroupBallotExclusiveBitCount(ballot);
     line_indices[at] = edge.first_vertex;
     line_indices[at + 1u] = edge.second_vertex;
 }

@@ -206,11 +206,18 @@ void Context::create_device(const ContextOptions& options) {
     vkGetPhysicalDeviceFeatures2(physical_device, &supported2);
     if (!supported13.dynamicRendering || !supported13.synchronization2)
         fail("device '" + device_name + "' lacks dynamic rendering or synchronization2");
+    // Compute passes that append to a list do one atomic per subgroup (ballot), not one per item.
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties2.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(physical_device, &properties2);
+    if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
+        !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT))
+        fail("device '" + device_name + "' lacks subgroup ballot operations in compute shaders");
 
     VkPhysicalDeviceFeatures enabled{};
     enabled.largePoints = supported.largePoints;
     enabled.wideLines = supported.wideLines;
-    enabled.fillModeNonSolid = supported.fillModeNonSolid;
     enabled.pipelineStatisticsQuery = supported.pipelineStatisticsQuery;
     enabled.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
     enabled.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
@@ -227,7 +234,6 @@ void Context::create_device(const ContextOptions& options) {
 
     features.large_points = supported.largePoints;
     features.wide_lines = supported.wideLines;
-    features.fill_mode_non_solid = supported.fillModeNonSolid;
     features.pipeline_statistics = supported.pipelineStatisticsQuery;
     features.draw_indirect_count = supported12.drawIndirectCount;
     features.max_point_size = supported.largePoints ? properties.limits.pointSizeRange[1] : 1.0f;

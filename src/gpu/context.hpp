@@ -26,7 +26,6 @@ struct ContextOptions {
 struct DeviceFeatures {
     bool large_points = false;
     bool wide_lines = false;
-    bool fill_mode_non_solid = false;
     bool pipeline_statistics = false;
     bool draw_indirect_count = false;
     bool timestamps = false;
