@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "mesh/primitives.hpp"
+#include "stipple/selection_order.hpp"
 #include "stipple/stipple_cache.hpp"
 #include "support/test_paths.hpp"
 
@@ -27,6 +28,9 @@ TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {
     const StippleSet reopened = generate_stipples_cached(mesh, params, dir);
     EXPECT_TRUE(reopened.from_cache);
     EXPECT_TRUE(same(generated, reopened));
+    // The polygons' selection values (§2.3) come back too: ranking them is the slow part of reopening.
+    EXPECT_EQ(reopened.selection, polygon_selection_values(mesh, params.seed));
+    EXPECT_EQ(generated.selection, reopened.selection);
     std::printf("%zu stipples: generated in %.3f s, read back in %.4f s\n", generated.size(),
                 generated.generation_seconds, reopened.generation_seconds);
 

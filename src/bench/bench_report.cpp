@@ -134,7 +134,8 @@ void cell_table(std::ostringstream& md, const BenchResults& r) {
 
 void model_table(std::ostringstream& md, const BenchResults& r) {
     md << "## Per model\n\n";
-    md << "Preprocessing is stipple generation (placement, relaxation, progressive order). Drawn stipples and ink "
+    md << "Preprocessing is stipple generation (placement, relaxation, progressive order) and the polygons' "
+          "selection ranking (§2.3), both of which the stipple cache keeps. Drawn stipples and ink "
           "come from the standard frame with the default parameters (as in the README image); ink is the share "
           "of the covered pixels with red < 128. GPU memory: all the object's buffers when it draws with the "
           "default path (splat; results.json has every path), per candidate, and without the mesh (positions, "

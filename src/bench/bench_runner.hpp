@@ -59,7 +59,7 @@ struct CellResult {
 struct ModelResult {
     ModelEntry entry;
     double load_seconds = 0.0;
-    double generation_seconds = 0.0;  // preprocessing: stipple generation (relaxation, progressive order)
+    double generation_seconds = 0.0;  // preprocessing: stipple generation (relaxation, progressive order), selection ranking
     double upload_seconds = 0.0;      // add_object: GPU buffers created and filled
     uint64_t candidates = 0;
     int64_t drawn = -1;               // standard frame (default parameters)

@@ -39,10 +39,12 @@ glm::vec2 unit_to_octahedral(glm::vec3 n) {
 uint32_t unorm16(float value) { return uint32_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 65535.0f)); }
 
 // Packed per-polygon constants (shared_types.h: TriangleInfo), centroids in the box [box_min, box_min + box_size].
-std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, uint64_t stipples_seed, glm::vec3 box_min,
-                                              glm::vec3 box_size) {
+std::vector<gpu::TriangleInfo> triangle_infos(const Mesh& mesh, const StippleSet& stipples, uint64_t stipples_seed,
+                                              glm::vec3 box_min, glm::vec3 box_size) {
     std::vector<gpu::TriangleInfo> infos(mesh.triangle_count());
-    std::vector<float> selection = polygon_selection_values(mesh, stipples_seed);
+    std::vector<float> selection = stipples.selection.size() == infos.size()
+                                       ? stipples.selection
+                                       : polygon_selection_values(mesh, stipples_seed);
     const glm::vec3 inverse_size = glm::vec3(1.0f) / glm::max(box_size, glm::vec3(1e-30f));
     for (size_t t = 0; t < infos.size(); ++t) {
         glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
@@ -172,7 +174,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
         object->box_min = lo;
         object->box_size = hi - lo;
     }
-    object->triangles = triangle_infos(mesh, params.generation.seed, object->box_min, object->box_size);
+    object->triangles = triangle_infos(mesh, stipples, params.generation.seed, object->box_min, object->box_size);
     object->first_stipple.assign(stipples.first.begin(), stipples.first.end());
 
     std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);

@@ -7,13 +7,14 @@
 #include <fstream>
 
 #include "core/hash.hpp"
+#include "stipple/selection_order.hpp"
 
 namespace stipple {
 
 namespace {
 
 constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: the polygons' selection values follow first[]
 
 struct Header {
     uint64_t magic;
@@ -76,16 +77,21 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
     // Sizes are checked against the file before anything is allocated: a damaged entry is just a miss.
     std::error_code ec;
     const uintmax_t size = std::filesystem::file_size(entry_path(dir, key), ec);
-    const uintmax_t expected = sizeof(Header) + header.stipples * (sizeof(glm::vec3) + 4) + (triangles + 1) * 4;
+    const uintmax_t expected =
+        sizeof(Header) + header.stipples * (sizeof(glm::vec3) + 4) + (triangles + 1) * 4 + triangles * 4;
     if (ec || size != expected) return std::nullopt;
     StippleSet set;
     set.positions.resize(header.stipples);
     set.triangle.resize(header.stipples);
     set.first.resize(triangles + 1);
+    set.selection.resize(triangles);
     in.read(reinterpret_cast<char*>(set.positions.data()), std::streamsize(set.positions.size() * sizeof(glm::vec3)));
     in.read(reinterpret_cast<char*>(set.triangle.data()), std::streamsize(set.triangle.size() * 4));
     in.read(reinterpret_cast<char*>(set.first.data()), std::streamsize(set.first.size() * 4));
+    in.read(reinterpret_cast<char*>(set.selection.data()), std::streamsize(set.selection.size() * 4));
     if (!in) return std::nullopt;
+    for (float value : set.selection)
+        if (!(value >= 0.0f && value < 1.0f)) return std::nullopt;
     // Consistency, so a corrupted entry can never reach the GPU.
     if (set.first.front() != 0 || set.first.back() != header.stipples) return std::nullopt;
     for (size_t t = 0; t < triangles; ++t) {
@@ -116,7 +122,9 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
                   std::streamsize(stipples.positions.size() * sizeof(glm::vec3)));
         out.write(reinterpret_cast<const char*>(stipples.triangle.data()), std::streamsize(stipples.triangle.size() * 4));
         out.write(reinterpret_cast<const char*>(stipples.first.data()), std::streamsize(stipples.first.size() * 4));
-        if (!out) {
+        out.write(reinterpret_cast<const char*>(stipples.selection.data()),
+                  std::streamsize(stipples.selection.size() * 4));
+        if (!out || stipples.selection.size() != mesh.triangle_count()) {
             out.close();
             std::filesystem::remove(temporary, ec);
             return;
@@ -137,6 +145,7 @@ StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& pa
         return std::move(*cached);
     }
     StippleSet set = generate_stipples(mesh, params);
+    set.selection = polygon_selection_values(mesh, params.seed);
     store_cached_stipples(dir, mesh, params, set);
     return set;
 }

@@ -32,6 +32,10 @@ struct StippleSet {
     // Prefix sums per triangle (size triangle_count + 1): the stipples of triangle t are
     // [first[t], first[t+1]) and are stored in progressive order, so every prefix is well spread.
     std::vector<uint32_t> first;
+    // Per polygon, the fixed selection values of §2.3 (polygon_selection_values with the same seed), when
+    // known: the stipple cache keeps them, since ranking a large mesh's polygons costs more than reading
+    // its stipples. Empty: computed when the object is created.
+    std::vector<float> selection;
     double density_per_area = 0.0;  // stipples per object-space unit area actually used
     double poisson_radius = 0.0;    // hexagonal-packing spacing at that density (object units)
     double generation_seconds = 0.0;  // or the time to read it back from the cache
