@@ -57,6 +57,10 @@ public:
         }
     }
     ~Child() {
+        if (!running()) return;
+        // SIGTERM first, so that Xvfb removes its socket and lock file; SIGKILL if it lingers.
+        kill(pid_, SIGTERM);
+        for (int i = 0; i < 40 && running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
         if (running()) {
             kill(pid_, SIGKILL);
             waitpid(pid_, nullptr, 0);
@@ -122,7 +126,10 @@ public:
                 continue;
             display_ = ":" + std::to_string(n);
             xvfb_ = std::make_unique<Child>(
-                std::vector<std::string>{"Xvfb", display_, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"},
+                // -noreset: otherwise the server resets when its last client (the readiness probe below)
+                // disconnects, and a viewer connecting during the reset fails to open the display.
+                std::vector<std::string>{"Xvfb", display_, "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
+                                         "-noreset"},
                 std::vector<std::pair<std::string, std::string>>{}, dir_ / "xvfb.out", dir_ / "xvfb.err");
             if (wait_for([&] { return xdotool("getmouselocation").find("x:") != std::string::npos; }, 10s)) return true;
             xvfb_.reset();
