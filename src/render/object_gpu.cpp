@@ -92,9 +92,10 @@ Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSi
     const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
     const auto destination = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     switch (kind) {
-        case PathBuffer::DrawnPolygons: return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
+        case PathBuffer::DrawnPolygons:
+        case PathBuffer::GpuCommands:  // written by a compute pass, read as indirect arguments
+            return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
         case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-        case PathBuffer::GpuCommands: return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
         case PathBuffer::CpuCommands: break;
     }
     return Buffer(context, bytes, indirect, MemoryUse::Upload);
@@ -165,15 +166,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->index_count = uint32_t(mesh.indices.size());
     object->triangle_count = uint32_t(mesh.triangle_count());
     object->stipple_count = uint32_t(stipples.size());
-    if (!mesh.positions.empty()) {
-        glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
-        for (const glm::vec3& p : mesh.positions) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-        object->box_min = lo;
-        object->box_size = hi - lo;
-    }
+    const Bounds box = compute_bounds(mesh);
+    object->box_min = box.min;
+    object->box_size = box.max - box.min;
     object->triangles = triangle_infos(mesh, stipples, params.generation.seed, object->box_min, object->box_size);
     object->first_stipple.assign(stipples.first.begin(), stipples.first.end());
 
@@ -217,7 +212,8 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &set_layout;
     VK_CHECK(vkAllocateDescriptorSets(context.device, &alloc, &object->set));
-    ensure_path_buffers(*object, params.density_path);  // writes the descriptors
+    ensure_path_buffers(*object, params.density_path);
+    write_descriptors(context.device, object->set, object->frame_uniforms, *object);
     return object;
 }
 
@@ -285,8 +281,7 @@ void ensure_path_buffers(ObjectGpu& object, DensityPath path) {
         buffer = make_path_buffer(*object.context, kind, bytes);
         grown = true;
     }
-    if (grown || !object.descriptors_written) write_descriptors(object.device, object.set, object.frame_uniforms, object);
-    object.descriptors_written = true;
+    if (grown) write_descriptors(object.device, object.set, object.frame_uniforms, object);
 }
 
 gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view) {

@@ -62,7 +62,6 @@ struct ObjectGpu {
     VkBuffer frame_uniforms = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
-    bool descriptors_written = false;
 };
 
 // The buffers only some density paths use; the others hold a placeholder of this size.
