@@ -121,9 +121,9 @@ TEST_F(GpuTest, LinesInkTheOutline) {
     Prepared bunny = bunny_or_sphere(params, &is_bunny);
     for (const Prepared* object : {&sphere, &bunny}) {
         const char* name = object == &sphere ? "sphere" : (is_bunny ? "bunny" : "sphere (no bunny)");
-        params.silhouette = SilhouetteMode::Lines;
+        params.silhouette_lines = true;
         double with = outline_inked(render(*context, *object, params, 1.0f));
-        params.silhouette = SilhouetteMode::None;
+        params.silhouette_lines = false;
         double without = outline_inked(render(*context, *object, params, 1.0f));
         std::printf("%s: outline inked within 1 px: %.1f%% with lines, %.1f%% without\n", name, 100 * with,
                     100 * without);
@@ -165,7 +165,7 @@ TEST(SilhouetteEdges, EachEdgeOnceWithThePolygonsOnEitherSide) {
 
 TEST_F(GpuTest, LinesAreTheEdgesOfPolygonsFacingAway) {
     ObjectParams params;
-    params.silhouette = SilhouetteMode::Lines;
+    params.silhouette_lines = true;
     Prepared sphere = test::prepare(make_icosphere(4), params);
     StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     renderer.add_object(sphere.mesh, sphere.stipples, sphere.model, params);
@@ -199,9 +199,9 @@ TEST_F(GpuTest, LinesThinWithDistance) {
     auto thickness = [&](bool thinning, float distance) {
         ObjectParams p = params;
         p.silhouette_thinning = thinning;
-        p.silhouette = SilhouetteMode::None;
+        p.silhouette_lines = false;
         Frame without = render(*context, sphere, p, distance);
-        p.silhouette = SilhouetteMode::Lines;
+        p.silhouette_lines = true;
         Frame with = render(*context, sphere, p, distance);
         std::vector<uint8_t> ink = silhouette_ink(with, without);
         size_t pixels = 0;
@@ -219,9 +219,9 @@ TEST_F(GpuTest, LinesThinWithDistance) {
 TEST_F(GpuTest, LinesDoNotSpillInsideAConvexObject) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
-    params.silhouette = SilhouetteMode::None;
+    params.silhouette_lines = false;
     Frame without = render(*context, sphere, params, 1.0f);
-    params.silhouette = SilhouetteMode::Lines;
+    params.silhouette_lines = true;
     Frame with = render(*context, sphere, params, 1.0f);
     std::vector<uint8_t> ink = silhouette_ink(with, without);
     std::vector<int> depth_in = inside_distance(with);
@@ -247,7 +247,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     params.toon_sharpness = 4.0f;
     Prepared sphere = test::prepare(make_icosphere(5), params);
     // Lit from the viewer: the centre is a highlight with few stipples, so the rim's ink is the toon's.
-    params.silhouette = SilhouetteMode::Toon;
+    params.toon = true;
     Frame toon = render(*context, sphere, params, 1.0f, nullptr, glm::vec3(0.0f, 0.0f, 1.0f));
     std::vector<int> depth_in = inside_distance(toon);
     double band = 0, centre = 0;
@@ -275,7 +275,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     FrameView view = test::framed_view({glm::vec3(0.0f), 1.0f}, target.extent());
     target.draw(renderer, view);
     std::vector<float> faded = renderer.read_densities(0);
-    renderer.params(0).silhouette = SilhouetteMode::None;
+    renderer.params(0).toon = false;
     target.draw(renderer, view);
     std::vector<float> plain = renderer.read_densities(0);
     const ObjectGpu& object = renderer.object(0);
@@ -301,17 +301,20 @@ TEST_F(GpuTest, SilhouettePassesAreRecordedOnlyWhenUsedAndImagesWritten) {
     ObjectParams params;
     bool is_bunny = false;
     Prepared object = bunny_or_sphere(params, &is_bunny);
-    for (SilhouetteMode mode : {SilhouetteMode::None, SilhouetteMode::Lines, SilhouetteMode::Toon, SilhouetteMode::Both}) {
-        params.silhouette = mode;
+    // Every combination of the two independent switches of §3.1.
+    for (int mode = 0; mode < 4; ++mode) {
+        params.silhouette_lines = (mode & 1) != 0;
+        params.toon = (mode & 2) != 0;
+        const char* mode_name = mode == 0 ? "none" : mode == 1 ? "lines" : mode == 2 ? "toon" : "both";
         std::vector<std::pair<std::string, double>> passes;
         Frame f = render(*context, object, params, 1.0f, &passes);
-        std::string name = std::string(is_bunny ? "bunny" : "sphere") + "_silhouette_" + silhouette_mode_name(mode) + ".png";
+        std::string name = std::string(is_bunny ? "bunny" : "sphere") + "_silhouette_" + mode_name + ".png";
         write_png(test::output_path(name).string(), f.frame.color);
         bool line_pass = false;
         for (const auto& [pass, ms] : passes) line_pass |= pass == "silhouettes";
-        std::printf("%-5s: %zu passes timed, line pass %s; image %s\n", silhouette_mode_name(mode), passes.size(),
+        std::printf("%-5s: %zu passes timed, line pass %s; image %s\n", mode_name, passes.size(),
                     line_pass ? "recorded" : "absent", test::output_path(name).c_str());
-        EXPECT_EQ(line_pass, has_lines(mode));
+        EXPECT_EQ(line_pass, params.silhouette_lines);
     }
 }
 

@@ -149,7 +149,8 @@ TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
                               "inline.json", dir);
     Scene back = parse_scene(scene_to_json(scene, dir), "again.json", dir);
     const ObjectParams& p = back.objects.at(0).params;
-    EXPECT_EQ(p.silhouette, SilhouetteMode::Toon);
+    EXPECT_TRUE(p.toon) << "the old \"silhouette\": \"toon\" spelling sets the toon switch";
+    EXPECT_FALSE(p.silhouette_lines);
     EXPECT_FALSE(p.shading);
     EXPECT_FALSE(p.extrinsic);
     EXPECT_TRUE(p.intrinsic);

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "params/param_table.hpp"
 #include "scene/scene_json.hpp"
 
 namespace stipple::app {
@@ -35,7 +36,7 @@ void LiveScene::sync() {
 bool LiveScene::regenerate_if_changed(size_t object) {
     const ObjectParams& wanted = scene_.objects.at(object).params;
     if (!needs_regeneration(generated_with_[object], wanted)) return false;
-    regenerate_stipples(data_[object], wanted);
+    data_[object].stipples = make_stipples(*data_[object].mesh, wanted.generation);
     generated_with_[object] = wanted;
     rebuild_from(object);
     return true;
@@ -44,7 +45,7 @@ bool LiveScene::regenerate_if_changed(size_t object) {
 void LiveScene::add_model(const std::string& path) {
     if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
     ObjectParams params = scene_.objects.empty() ? ObjectParams{} : scene_.objects.back().params;
-    ObjectData data = load_object_data(path, params);
+    ObjectData data = load_object_data(path, params.generation);
     SceneObject object;
     // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
     object.model = std::filesystem::absolute(path).lexically_normal().string();

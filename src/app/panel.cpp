@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "app/param_widgets.hpp"
+
 namespace stipple::app {
 
 namespace {
@@ -55,65 +57,25 @@ void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests)
     if (ImGui::Button("hide (H)")) requests.hide = true;
 }
 
-// Generation parameters act when the edit is committed (slider released, Enter): new stipples for
-// a big model take a while, and regenerating on every slider tick would stall the viewer.
-void commit_on_release(size_t object, PanelRequests& requests) {
-    if (ImGui::IsItemDeactivatedAfterEdit()) requests.regenerate.push_back(object);
-}
-
 void object_section(SceneObject& object, size_t index, const std::string& name, size_t object_count,
                     const PanelFigures& f, PanelRequests& requests) {
     ObjectParams& p = object.params;
     ImGui::PushID(int(index));
     std::string label = std::to_string(index) + ": " + name;
     if (ImGui::CollapsingHeader(label.c_str(), index == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-        ImGui::TextDisabled("stipple generation (applied on release / Enter)");
-        ImGui::SliderFloat("D_max", &p.generation.dmax, 0.005f, 16.0f, "%.3f", kLog);
-        commit_on_release(index, requests);
-        help("Maximum stipple density, stipples per reference pixel^2 (paper §2.1).");
-        uint64_t step = 100000, fast = 1000000;
-        ImGui::InputScalar("budget", ImGuiDataType_U64, &p.generation.max_stipples, &step, &fast, "%llu");
-        p.generation.max_stipples = std::clamp<uint64_t>(p.generation.max_stipples, 1, 2'000'000'000);
-        commit_on_release(index, requests);
-        help("Object_max: the object's stipple budget (paper §2.1).");
-        uint64_t one = 1;
-        ImGui::InputScalar("seed", ImGuiDataType_U64, &p.generation.seed, &one, nullptr, "%llu");
-        commit_on_release(index, requests);
-        ImGui::SliderInt("relaxation steps", &p.generation.relax_iterations, 0, 100, "%d", kClamp);
-        commit_on_release(index, requests);
-
-        ImGui::TextDisabled("per frame");
-        ImGui::Checkbox("shading", &p.shading);
-        ImGui::SameLine();
-        ImGui::SliderFloat("exponent n", &p.shading_exponent, 0.05f, 64.0f, "%.2f", kLog);
-        help("(N.L)^n: a larger n keeps more stipples toward the light (paper §2.2).");
-        ImGui::Checkbox("extrinsic", &p.extrinsic);
-        ImGui::SameLine();
-        ImGui::SliderFloat("pr", &p.pr, 0.0f, 8.0f, "%.2f", kClamp);
-        help("Distance enhancement rate (paper §2.3); 2 keeps the tone as the object moves away.");
-        ImGui::SliderFloat("min area px^2", &p.min_area, 2.0f, 9.0f, "%.1f", kClamp);
-        help("Polygons projecting smaller are drawn by probabilistic selection (paper §2.3 b).");
-        ImGui::Checkbox("intrinsic", &p.intrinsic);
-        ImGui::SameLine();
-        ImGui::SliderFloat("de", &p.de, 0.05f, 16.0f, "%.2f", kLog);
-        help("Depth enhancement rate (paper §2.3): smaller exaggerates near/far.");
-        ImGui::SliderFloat("point size", &p.point_size, 1.0f, std::min(64.0f, f.max_point_size), "%.1f px", kClamp);
-        if (ImGui::BeginCombo("density path", density_path_name(p.density_path))) {
-            for (DensityPath path : kAllDensityPaths)
-                if (ImGui::Selectable(density_path_name(path), path == p.density_path)) p.density_path = path;
-            ImGui::EndCombo();
+        const char* section = nullptr;
+        for (const ParamSpec& spec : param_table()) {
+            if (spec.widget == ParamWidget::Hidden) continue;
+            if (!section || std::string(section) != spec.section) {
+                section = spec.section;
+                ImGui::TextDisabled("%s", section);
+            }
+            const double limit = std::string(spec.key) == "point_size" ? double(f.max_point_size) : spec.max;
+            // Generation parameters act when the edit is committed (slider released, Enter): new stipples
+            // for a big model take a while, and regenerating on every slider tick would stall the viewer.
+            if (draw_param_widget(spec, p, limit).committed && spec.effect == ParamEffect::Regenerate)
+                requests.regenerate.push_back(index);
         }
-        help("vertex: compute densities, the vertex shader culls (§3.2); cpu: CPU densities, only survivors drawn; "
-             "indirect: compute-written draws; splat: drawn by a compute pass where the target allows it.");
-        int mode = int(p.silhouette);
-        const char* modes[] = {"none", "lines", "toon", "both"};
-        if (ImGui::Combo("silhouette", &mode, modes, 4)) p.silhouette = SilhouetteMode(mode);
-        help("§3.1: Raskar-Cohen back-face lines, the toon N.E ramp, or both.");
-        ImGui::SliderFloat("line width", &p.silhouette_width, 1.0f, 64.0f, "%.1f px", kClamp);
-        ImGui::SameLine();
-        ImGui::Checkbox("thinning", &p.silhouette_thinning);
-        help("Lines thin as the object's projected bounding sphere shrinks (paper Fig. 8).");
-        ImGui::SliderFloat("toon sharpness", &p.toon_sharpness, 0.5f, 64.0f, "%.1f", kLog);
 
         ImGui::TextDisabled("placement");
         if (object.transform.matrix) {

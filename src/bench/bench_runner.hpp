@@ -14,7 +14,7 @@
 
 #include "bench/model_set.hpp"
 #include "bench/table1.hpp"
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 
 namespace stipple {
 struct ObjectGpu;

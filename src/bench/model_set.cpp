@@ -12,8 +12,10 @@
 
 #include "bench/bench_output.hpp"
 #include "bench/mesh_derive.hpp"
+#include "core/timing.hpp"
 #include "bench/table1.hpp"
 #include "core/error.hpp"
+#include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
 
@@ -96,10 +98,6 @@ bool read_cached(const fs::path& key_path, const std::string& header, ModelEntry
     entry.triangles = triangles;
     entry.source = source;
     return true;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void derive(const PaperRow& row, const Recipe& recipe, const fs::path& source_path, const fs::path& ply,

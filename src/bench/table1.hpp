@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 
 namespace stipple::bench {
 

@@ -2,9 +2,9 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "cli/loaded_object.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "stipple/object_data.hpp"
 
 namespace stipple::cli {
 
@@ -15,13 +15,13 @@ int run_info(const std::vector<std::string>& argv) {
     if (args.positionals().size() != 1) fail("info needs exactly one MODEL (see stipple --help)");
     const std::string path = args.positionals()[0];
     ObjectParams params = read_object_params(args);
-    LoadedObject object = load_object(path, params);
-
-    const Mesh& mesh = object.mesh;
+    const ObjectData object = load_object_data(path, params.generation);
+    const Mesh& mesh = *object.mesh;
+    const StippleSet& stipples = *object.stipples;
     Bounds bounds = compute_bounds(mesh);
     double area = total_area(mesh);
     double stipples_per_second =
-        object.stipples.generation_seconds > 0 ? object.stipples.size() / object.stipples.generation_seconds : 0.0;
+        stipples.generation_seconds > 0 ? stipples.size() / stipples.generation_seconds : 0.0;
     if (args.flag("--json")) {
         std::printf(
             "{\"model\": \"%s\", \"triangles\": %zu, \"vertices\": %zu, \"stipple_candidates\": %zu, "
@@ -30,28 +30,28 @@ int run_info(const std::vector<std::string>& argv) {
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
             "\"from_cache\": %s}\n",
-            path.c_str(), mesh.triangle_count(), mesh.vertex_count(), object.stipples.size(), area, bounds.min.x,
-            bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds_sphere.center.x,
-            object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius,
-            object.stipples.density_per_area, object.stipples.poisson_radius, object.load_seconds,
-            object.stipples.generation_seconds, stipples_per_second, object.stipples.from_cache ? "true" : "false");
+            path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
+            bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
+            object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
+            stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
+            stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false");
     } else {
         std::printf("model:               %s\n", path.c_str());
         std::printf("triangles:           %zu\n", mesh.triangle_count());
         std::printf("vertices:            %zu\n", mesh.vertex_count());
-        std::printf("stipple candidates:  %zu\n", object.stipples.size());
+        std::printf("stipple candidates:  %zu\n", stipples.size());
         std::printf("surface area:        %.6g\n", area);
         std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,
                     bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
-        std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g\n", object.bounds_sphere.center.x,
-                    object.bounds_sphere.center.y, object.bounds_sphere.center.z, object.bounds_sphere.radius);
+        std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g\n", object.bounds.center.x,
+                    object.bounds.center.y, object.bounds.center.z, object.bounds.radius);
         std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
                     object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);
-        if (object.stipples.from_cache)
+        if (stipples.from_cache)
             std::printf("generation time:     %.3f s (read from the stipple cache; STIPPLE_NO_CACHE=1 regenerates)\n",
-                        object.stipples.generation_seconds);
+                        stipples.generation_seconds);
         else
-            std::printf("generation time:     %.3f s (%.0f stipples/s)\n", object.stipples.generation_seconds,
+            std::printf("generation time:     %.3f s (%.0f stipples/s)\n", stipples.generation_seconds,
                         stipples_per_second);
     }
     return 0;

@@ -9,6 +9,7 @@
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
+#include "core/timing.hpp"
 #include "gpu/context.hpp"
 #include "io/png_io.hpp"
 #include "render/offscreen.hpp"
@@ -19,10 +20,6 @@
 namespace stipple::cli {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
@@ -42,10 +39,8 @@ double ink_fraction_inside(const RenderedFrame& frame, size_t* covered_out) {
 
 // The object options belong to a model given on the command line; a scene file sets them per object.
 void reject_object_options_with_scene(const Args& args, const std::string& scene) {
-    for (const std::string& name : object_flags())
-        if (args.flag(name)) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
-    for (const std::string& name : object_options())
-        if (args.has(name)) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
+    const std::string name = first_object_option(args);
+    if (!name.empty()) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
 }
 
 // A single frame keeps -o as written unless it holds a frame number (a name may contain '%').

@@ -1,15 +1,19 @@
 #pragma once
-// The per-object options shared by render and info.
+// The per-object options shared by render, view and info: read from the command line by walking the
+// parameter table (src/params/param_table.hpp), so every parameter has one spelling and one range.
 #include <set>
 #include <string>
 
 #include "cli/args.hpp"
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 
 namespace stipple::cli {
 
-std::set<std::string> object_flags();
-std::set<std::string> object_options();
+std::set<std::string> object_flags();    // the Bool parameters: --X and --no-X
+std::set<std::string> object_options();  // the others: --X VALUE
 ObjectParams read_object_params(const Args& args);  // validated
+
+// True when any object option or flag was given (they cannot be combined with a scene file).
+std::string first_object_option(const Args& args);
 
 }  // namespace stipple::cli

@@ -1,8 +1,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
+#include <string>
 
 #include "cli/commands.hpp"
+#include "params/param_docs.hpp"
 
 namespace stipple::cli {
 
@@ -25,6 +28,7 @@ Usage:
                                   load a model, generate its stipples, print figures
   stipple bench [--quick] [options]
                                   the paper's Table 1 on this machine: results.md, .json, chart.svg
+  stipple params [--markdown]     list the per-object parameters: ranges, defaults, scene keys
   stipple --help                  this text
 
 MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file. Without MODEL or
@@ -41,7 +45,6 @@ Render options:
   --distance D            camera distance as a multiple of the framing distance (default 1 = framed)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
-  --point-size PX         stipple diameter in pixels, 1..64 (default 1.5; above 2.5 dots are round)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), ink
                           coverage, and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
@@ -80,48 +83,22 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
                 "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s}
                              (or {"matrix": [16 numbers, column-major]}),
-                "params": {"dmax": 0.15, "max_stipples": 8000000, "seed": 1, "relax_iterations": 6,
-                           "shading": true, "shading_exponent": 1, "extrinsic": true, "pr": 2,
-                           "min_area": 4, "intrinsic": true, "de": 2, "point_size": 2,
-                           "density_path": "vertex", "silhouette": "none", "silhouette_width": 4,
-                           "silhouette_thinning": true, "toon_sharpness": 4}}],
+)");
+    // The parameters come from the one table (src/params/param_table.cpp): never retyped here.
+    std::istringstream example(param_scene_example());
+    for (std::string line; std::getline(example, line);) std::printf("                %s\n", line.c_str());
+    std::printf(R"(   }],
    "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
               "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
    "camera_path": [camera, camera, ...],
    "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]}
-  Every field is optional except objects and their model (the values above are examples); params
-  take the stipple options' ranges and defaults.
+  Every field is optional except objects and their model (params above at their defaults); params
+  take the stipple options' names with _ for -, and their ranges.
 
 Stipple options (render, view and info; a SCENE.json sets them per object instead):
-  --dmax F                D_max, the maximum stipple density in stipples per reference pixel^2
-                          (the object framed in a 1280-pixel-high reference view), 0 < F <= 16
-                          (default 0.25; with --pr 2 also the stipples per screen pixel^2)
-  --max-stipples N        Object_max, the object's stipple budget (default 8000000); the density
-                          is lowered evenly when D_max would exceed it
-  --seed N                seed of the stipple placement (default 1)
-  --relax-iterations N    relaxation steps toward a Poisson-disc distribution, 0..100 (default 6)
-  --shading-exponent N    n in the shading term (N.L)^n, > 0 (default 1)
-  --no-shading            draw every candidate of the front-facing polygons
-  --pr F                  extrinsic distance enhancement rate, 0..8 (default 2: stipples per screen
-                          pixel stay constant as the object moves away)
-  --min-area PX           minimum stipple screen area, 2..9 px^2 (default 4): polygons projecting
-                          smaller are drawn by probabilistic selection
-  --no-extrinsic          no extrinsic distance enhancement (neither regime)
-  --de F                  intrinsic depth enhancement rate, > 0 (default 2; smaller exaggerates)
-  --no-intrinsic          no intrinsic depth enhancement
-  --density-path P        vertex: compute pass + vertex-shader cull (the paper's vertex program);
-                          cpu: CPU densities, only surviving stipples submitted; indirect: compute
-                          pass writes compacted draws (vkCmdDrawIndirectCount); splat: a compute
-                          pass draws the stipples of the compute pass's densities itself, without
-                          the rasteriser; cpu-splat: CPU densities drawn by that splat. Default:
-                          splat (the fastest on lavapipe; targets without transfer usage fall back
-                          to vertex, cpu-splat to cpu)
-  --silhouette MODE       none, lines (Raskar-Cohen back-face lines), toon (N.E ramp: surfaces
-                          darken edge-on, stipples fade there) or both (default none)
-  --silhouette-width PX   line width at the object's reference size, 1..64 (default 4)
-  --no-thinning           keep the line width fixed instead of thinning it with distance
-  --toon-sharpness F      steepness of the toon ramps, 0.5..64 (default 4)
-
+)");
+    std::fputs(param_help_text().c_str(), stdout);
+    std::printf(R"(
 Info options:
   --json                  print the figures as JSON
 

@@ -302,7 +302,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.extrinsic) flags |= gpu::kFlagExtrinsic;
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
     if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
-    if (has_toon(p.silhouette)) flags |= gpu::kFlagToonFade;
+    if (p.toon) flags |= gpu::kFlagToonFade;
     u.flags = glm::uvec4(flags, object.triangle_count, object.silhouette_edge_count, object.stipple_count);
     u.box_min = glm::vec4(object.box_min, 0.0f);
     u.box_size = glm::vec4(object.box_size, 0.0f);

@@ -9,7 +9,7 @@
 #include "gpu/pipelines.hpp"
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 #include "shared_types.h"
 #include "stipple/stipple_set.hpp"
 

@@ -157,7 +157,7 @@ void StippleRenderer::prepare(const FrameView& view) {
     for (auto& object : objects_) {
         validate_params(object->params);
         ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
-        if (has_lines(object->params.silhouette)) ensure_silhouette_edges(*object);
+        if (object->params.silhouette_lines) ensure_silhouette_edges(*object);
         object->uniforms = make_object_uniforms(*object, view);
         object->line_width = object_line_width(*object, view, context_.features.max_line_width);
         std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
@@ -244,7 +244,7 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (object->index_count == 0) continue;
         // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
-        bool toon = has_toon(object->params.silhouette);
+        bool toon = object->params.toon;
         VkPipeline pipeline = toon ? toon_pipeline_ : depth_pipeline_;
         if (pipeline != bound) {
             vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -262,7 +262,7 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
 }
 
 bool StippleRenderer::draws_lines(const ObjectGpu& object) const {
-    return has_lines(object.params.silhouette) && object.silhouette_edge_count > 0;
+    return object.params.silhouette_lines && object.silhouette_edge_count > 0;
 }
 
 void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
@@ -473,7 +473,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     // The colour so far: the background the splat mixes ink into, and the buffer it draws in. With
     // only paper under the splat (no toon surfaces, no stipples drawn as points) both are a fill.
     const bool paper_only = std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) {
-        return has_toon(o->params.silhouette) || draws_points(*o);
+        return o->params.toon || draws_points(*o);
     });
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;

@@ -16,7 +16,7 @@
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
 #include "render/object_gpu.hpp"
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 #include "shared_types.h"
 #include "stipple/stipple_set.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
-#include "render/object_params.hpp"
+#include "params/object_params.hpp"
 
 namespace stipple {
 

@@ -1,40 +1,21 @@
 #include "scene/scene_content.hpp"
 
-#include <chrono>
 #include <map>
-#include <tuple>
+#include <vector>
 
 #include "core/error.hpp"
-#include "mesh/load_mesh.hpp"
-#include "stipple/stipple_cache.hpp"
+#include "core/timing.hpp"
+#include "params/param_table.hpp"
 
 namespace stipple {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::shared_ptr<const StippleSet> generate(const Mesh& mesh, const ObjectParams& params) {
-    GenerationParams generation = params.generation;
-    generation.progress = mesh.triangle_count() > 200'000;  // big models take seconds: show it
-    return std::make_shared<const StippleSet>(generate_stipples_cached(mesh, generation));
-}
-
-// The generation parameters as a key: objects with equal keys on one mesh share their stipples.
-using GenerationKey = std::tuple<std::string, float, uint64_t, uint64_t, int>;
-
-GenerationKey generation_key(const std::string& path, const ObjectParams& p) {
-    return {path, p.generation.dmax, p.generation.max_stipples, p.generation.seed, p.generation.relax_iterations};
-}
+// The generation parameters as a key (the table's Regenerate parameters): objects with equal keys on
+// one mesh share their stipples.
+using GenerationKey = std::pair<std::string, std::vector<double>>;
 
 }  // namespace
-
-bool needs_regeneration(const ObjectParams& a, const ObjectParams& b) {
-    return a.generation.dmax != b.generation.dmax || a.generation.max_stipples != b.generation.max_stipples ||
-           a.generation.seed != b.generation.seed || a.generation.relax_iterations != b.generation.relax_iterations;
-}
 
 SceneContent load_scene_content(const Scene& scene) {
     SceneContent content;
@@ -48,9 +29,9 @@ SceneContent load_scene_content(const Scene& scene) {
         try {
             auto found = meshes.find(path);
             if (found == meshes.end()) {
-                auto start = std::chrono::steady_clock::now();
-                auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
-                content.load_seconds += seconds_since(start);
+                double seconds = 0.0;
+                auto mesh = load_drawing_mesh(path, &seconds);
+                content.load_seconds += seconds;
                 found = meshes.emplace(path, std::make_pair(mesh, compute_bounding_sphere(*mesh))).first;
             }
             object.mesh = found->second.first;
@@ -60,32 +41,17 @@ SceneContent load_scene_content(const Scene& scene) {
             if (scene.source.empty()) throw;
             fail_file(scene.source, "objects[" + std::to_string(i) + "].model: " + e.what());
         }
-        GenerationKey key = generation_key(path, params);
+        const GenerationKey key{path, generation_values(params.generation)};
         auto set = stipples.find(key);
         if (set == stipples.end()) {
-            auto start = std::chrono::steady_clock::now();
-            set = stipples.emplace(key, generate(*object.mesh, params)).first;
+            const auto start = Clock::now();
+            set = stipples.emplace(key, make_stipples(*object.mesh, params.generation)).first;
             content.generation_seconds += seconds_since(start);
         }
         object.stipples = set->second;
         content.objects.push_back(std::move(object));
     }
     return content;
-}
-
-ObjectData load_object_data(const std::string& model_path, const ObjectParams& params) {
-    validate_params(params);
-    ObjectData object;
-    auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(model_path));
-    object.bounds = compute_bounding_sphere(*mesh);
-    object.stipples = generate(*mesh, params);
-    object.mesh = std::move(mesh);
-    return object;
-}
-
-void regenerate_stipples(ObjectData& object, const ObjectParams& params) {
-    validate_params(params);
-    object.stipples = generate(*object.mesh, params);
 }
 
 Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "params/param_table.hpp"
 
 namespace stipple {
 
@@ -91,100 +92,44 @@ private:
     std::string source_;
 };
 
-// One entry per ObjectParams field: its scene name, how to read it and how to write it.
-struct ParamField {
-    const char* name;
-    std::function<void(ObjectParams&, const json&, const Reader&, const std::string&)> read;
-    std::function<json(const ObjectParams&)> write;
-};
+// Parameters by the table (src/params/param_table.hpp): each key read as its type, checked against its
+// range with the table's wording, so a scene file and the command line reject the same values alike.
+double read_param_value(const ParamSpec& spec, const json& j, const Reader& r, const std::string& where) {
+    double value = 0.0;
+    switch (spec.type) {
+        case ParamType::Bool: return r.boolean(j, where) ? 1.0 : 0.0;
+        case ParamType::Choice: {
+            const std::string name = r.string(j, where);
+            for (size_t i = 0; i < spec.choices.size(); ++i)
+                if (name == spec.choices[i]) return double(i);
+            r.error(where, "'" + name + "' is " + param_value_problem(spec, -1.0).value_or("not accepted"));
+        }
+        case ParamType::Int:
+            if (!j.is_number()) r.error(where, std::string("expected an integer, got ") + j.type_name());
+            value = j.get<double>();
+            break;
+        case ParamType::Float: value = r.number(j, where); break;
+    }
+    if (auto problem = param_value_problem(spec, value)) r.error(where, *problem);
+    return value;
+}
 
-const std::vector<ParamField>& param_fields() {
-    using P = ObjectParams;
-    auto num = [](float P::*member) {
-        return ParamField{nullptr,
-                          [member](P& p, const json& j, const Reader& r, const std::string& w) { p.*member = r.number(j, w); },
-                          [member](const P& p) { return number(p.*member); }};
-    };
-    auto flag = [](bool P::*member) {
-        return ParamField{nullptr,
-                          [member](P& p, const json& j, const Reader& r, const std::string& w) { p.*member = r.boolean(j, w); },
-                          [member](const P& p) { return json(p.*member); }};
-    };
-    auto named = [](const char* name, ParamField f) {
-        f.name = name;
-        return f;
-    };
-    static const std::vector<ParamField> fields = {
-        {"dmax", [](P& p, const json& j, const Reader& r, const std::string& w) { p.generation.dmax = r.number(j, w); },
-         [](const P& p) { return number(p.generation.dmax); }},
-        {"max_stipples",
-         [](P& p, const json& j, const Reader& r, const std::string& w) {
-             p.generation.max_stipples = r.unsigned_integer(j, w);
-         },
-         [](const P& p) { return json(p.generation.max_stipples); }},
-        {"seed", [](P& p, const json& j, const Reader& r, const std::string& w) { p.generation.seed = r.unsigned_integer(j, w); },
-         [](const P& p) { return json(p.generation.seed); }},
-        {"relax_iterations",
-         [](P& p, const json& j, const Reader& r, const std::string& w) {
-             uint64_t n = r.unsigned_integer(j, w);
-             p.generation.relax_iterations = int(std::min<uint64_t>(n, 1u << 30));
-         },
-         [](const P& p) { return json(p.generation.relax_iterations); }},
-        named("shading", flag(&P::shading)),
-        named("shading_exponent", num(&P::shading_exponent)),
-        named("extrinsic", flag(&P::extrinsic)),
-        named("pr", num(&P::pr)),
-        named("min_area", num(&P::min_area)),
-        named("intrinsic", flag(&P::intrinsic)),
-        named("de", num(&P::de)),
-        named("point_size", num(&P::point_size)),
-        {"density_path",
-         [](P& p, const json& j, const Reader& r, const std::string& w) {
-             std::string name = r.string(j, w);
-             auto path = parse_density_path(name);
-             if (!path) {
-                 std::string names;
-                 for (DensityPath d : kAllDensityPaths) names += std::string(names.empty() ? "" : ", ") + density_path_name(d);
-                 r.error(w, "'" + name + "' is not one of " + names);
-             }
-             p.density_path = *path;
-         },
-         [](const P& p) { return json(density_path_name(p.density_path)); }},
-        {"silhouette",
-         [](P& p, const json& j, const Reader& r, const std::string& w) {
-             std::string name = r.string(j, w);
-             auto mode = parse_silhouette_mode(name);
-             if (!mode) r.error(w, "'" + name + "' is not one of none, lines, toon, both");
-             p.silhouette = *mode;
-         },
-         [](const P& p) { return json(silhouette_mode_name(p.silhouette)); }},
-        named("silhouette_width", num(&P::silhouette_width)),
-        named("silhouette_thinning", flag(&P::silhouette_thinning)),
-        named("toon_sharpness", num(&P::toon_sharpness)),
-    };
-    return fields;
+json param_json(const ParamSpec& spec, double value) {
+    switch (spec.type) {
+        case ParamType::Bool: return json(value != 0.0);
+        case ParamType::Choice: return json(format_param_value(spec, value));
+        case ParamType::Int: return json(uint64_t(value));
+        case ParamType::Float: break;
+    }
+    return number(float(value));
 }
 
 ObjectParams read_params(const json& j, const Reader& r, const std::string& where) {
-    std::vector<std::string> names = scene_param_names();
-    r.expect_object(j, where, names);
+    r.expect_object(j, where, scene_param_names());
     ObjectParams params;
-    for (const ParamField& f : param_fields()) {
-        if (!j.contains(f.name)) continue;
-        std::string w = Reader::field(where, f.name);
-        f.read(params, j[f.name], r, w);
-        // The ranges live in validate_params; checking this one field on default parameters
-        // attributes a range error to the field that caused it.
-        ObjectParams probe;
-        f.read(probe, j[f.name], r, w);
-        try {
-            validate_params(probe);
-        } catch (const Error& e) {
-            std::string message = e.what();  // "--dmax = 20 is out of range: ..."
-            size_t eq = message.find(" = ");
-            r.error(w, eq == std::string::npos ? message : message.substr(eq + 3));
-        }
-    }
+    // In table order, so an alias (listed after the switches it sets) overrides them as it always did.
+    for (const ParamSpec& spec : param_table())
+        if (j.contains(spec.key)) spec.set(params, read_param_value(spec, j[spec.key], r, Reader::field(where, spec.key)));
     try {
         validate_params(params);  // any rule that spans fields
     } catch (const Error& e) {
@@ -300,7 +245,7 @@ std::string model_reference(const std::filesystem::path& model, const std::files
 
 std::vector<std::string> scene_param_names() {
     std::vector<std::string> names;
-    for (const ParamField& f : param_fields()) names.push_back(f.name);
+    for (const ParamSpec& spec : param_table()) names.push_back(spec.key);
     return names;
 }
 
@@ -385,7 +330,8 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
                                    {"scale", number(o.transform.scale)}};
         }
         json params = json::object();
-        for (const ParamField& f : param_fields()) params[f.name] = f.write(o.params);
+        for (const ParamSpec& spec : param_table())
+            if (!spec.alias) params[spec.key] = param_json(spec, spec.get(o.params));
         object["params"] = params;
         objects.push_back(object);
     }

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/hash.hpp"
+#include "params/param_table.hpp"
 #include "stipple/selection_order.hpp"
 
 namespace stipple {
@@ -58,9 +59,10 @@ uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params) {
     uint64_t h = mix64(kMagic ^ kVersion);
     h = hash_bytes(h, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     h = hash_bytes(h, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
-    const double values[] = {params.dmax, double(params.max_stipples), double(params.seed),
-                             double(params.relax_iterations), kReferenceHeight};
-    return hash_bytes(h, values, sizeof(values));
+    // The parameters that shape generation, as the parameter table marks them, and the reference view.
+    std::vector<double> values = generation_values(params);
+    values.push_back(kReferenceHeight);
+    return hash_bytes(h, values.data(), values.size() * sizeof(double));
 }
 
 std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh,

@@ -13,7 +13,7 @@ namespace stipple {
 std::filesystem::path default_stipple_cache_dir();
 
 // A key of everything the stipples depend on: the mesh's triangles and positions, the parameters
-// that shape generation (not the progress flag) and the format version.
+// that shape generation (the parameter table's Regenerate entries) and the format version.
 uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params);
 
 // The cached set, or nothing when absent, from another version, or damaged in any way (a damaged

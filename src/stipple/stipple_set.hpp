@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "mesh/mesh.hpp"
+#include "params/object_params.hpp"
 
 namespace stipple {
 
@@ -14,17 +15,6 @@ namespace stipple {
 // framed, so its bounding-sphere radius spans kReferenceHeight/2 pixels. A fixed constant, so that
 // the candidates do not depend on the window size.
 inline constexpr float kReferenceHeight = 1280.0f;
-
-struct GenerationParams {
-    // D_max: the maximum stipple density, in stipples per reference pixel^2 (see docs/paper-reading.md).
-    float dmax = 0.25f;
-    // Object_max: the object's stipple budget. The density actually used is
-    // min(D_max, Object_max / total reference area), so the budget lowers the density evenly.
-    uint64_t max_stipples = 8'000'000;
-    uint64_t seed = 1;
-    int relax_iterations = 6;  // whole-surface relaxation toward a Poisson-disc distribution
-    bool progress = false;     // print a progress bar on stderr (only when it is a terminal)
-};
 
 struct StippleSet {
     std::vector<glm::vec3> positions;  // object space, on the surface, one per candidate stipple

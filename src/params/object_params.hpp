@@ -1,13 +1,14 @@
 #pragma once
 // Everything a user sets per object: the paper's parameters, each object its own (§2.3, Fig. 3).
+// Only the plain structs live here; their names, ranges, defaults' help text, scene keys and CLI
+// spellings are in one table, src/params/param_table.hpp, which every entry point walks.
+#include <cstdint>
 #include <optional>
 #include <string>
 
-#include "stipple/stipple_set.hpp"
-
 namespace stipple {
 
-// How the per-frame density reaches the stipples (Table 1's columns, and one beyond the paper).
+// How the per-frame density reaches the stipples (Table 1's columns, and ones beyond the paper).
 enum class DensityPath {
     Vertex,    // compute pass writes densities; every candidate drawn, vertex shader culls (§3.2)
     Cpu,       // CPU computes densities; only surviving ranges are submitted (the "no vertex program" path)
@@ -27,16 +28,21 @@ inline bool draws_by_splat(DensityPath path) { return path == DensityPath::Splat
 const char* density_path_name(DensityPath path);
 std::optional<DensityPath> parse_density_path(const std::string& name);
 
-// Silhouettes (§3.1): Raskar-Cohen back-face lines, the toon N.E ramp, both, or none.
-enum class SilhouetteMode { None, Lines, Toon, Both };
-
-const char* silhouette_mode_name(SilhouetteMode mode);
-std::optional<SilhouetteMode> parse_silhouette_mode(const std::string& name);
-inline bool has_lines(SilhouetteMode m) { return m == SilhouetteMode::Lines || m == SilhouetteMode::Both; }
-inline bool has_toon(SilhouetteMode m) { return m == SilhouetteMode::Toon || m == SilhouetteMode::Both; }
+// What shapes stipple generation (§2.1): a change to any of these makes new stipples. The parameter
+// table marks exactly these fields as regenerating, and the stipple cache's key hashes them through it.
+struct GenerationParams {
+    // D_max: the maximum stipple density, in stipples per reference pixel^2 (see docs/paper-reading.md).
+    float dmax = 0.25f;
+    // Object_max: the object's stipple budget. The density actually used is
+    // min(D_max, Object_max / total reference area), so the budget lowers the density evenly.
+    uint64_t max_stipples = 8'000'000;
+    uint64_t seed = 1;
+    int relax_iterations = 6;  // whole-surface relaxation toward a Poisson-disc distribution
+    bool progress = false;     // not a parameter: print a progress bar on stderr (only on a terminal)
+};
 
 struct ObjectParams {
-    GenerationParams generation;    // D_max, Object_max, seed (§2.1)
+    GenerationParams generation;    // D_max, Object_max, seed, relaxation (§2.1)
     bool shading = true;            // §2.2 (N.L)^n
     float shading_exponent = 1.0f;  // n
     bool extrinsic = true;          // §2.3 extrinsic distance enhancement, both regimes
@@ -46,13 +52,15 @@ struct ObjectParams {
     float de = 2.0f;                // intrinsic rate
     float point_size = 1.5f;        // stipple diameter in pixels
     DensityPath density_path = DensityPath::Splat;  // the fastest correct path on lavapipe (stipple bench)
-    SilhouetteMode silhouette = SilhouetteMode::None;
-    float silhouette_width = 4.0f;    // Raskar-Cohen line width in pixels at the object's reference size
+    // Lines, each kind its own switch (§3.1 and beyond the paper).
+    bool silhouette_lines = false;    // §3.1 Raskar-Cohen: back-face edges as wide lines (image space)
+    bool toon = false;                // §3.1 toon N.E ramp: surfaces darken edge-on, stipples fade there
+    float silhouette_width = 4.0f;    // line width in pixels at the object's reference size
     bool silhouette_thinning = true;  // lines thin as the projected bounding sphere shrinks (Fig. 8)
     float toon_sharpness = 4.0f;      // steepness of the toon ramps (surface darkening, stipple fade)
 };
 
-// Throws stipple::Error naming the parameter, its value and the accepted range.
+// Throws stipple::Error naming the first parameter out of its range (param_table.hpp's wording).
 void validate_params(const ObjectParams& params);
 
 }  // namespace stipple

@@ -1,0 +1,247 @@
+#include "params/param_table.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "core/error.hpp"
+
+namespace stipple {
+
+namespace {
+
+using P = ObjectParams;
+
+constexpr const char* kDensityPathNames[] = {"vertex", "cpu", "indirect", "splat", "cpu-splat"};
+constexpr const char* kSilhouetteNames[] = {"none", "lines", "toon", "both"};
+
+// The old single switch for both §3.1 methods, read into the two independent ones.
+double silhouette_alias_get(const P& p) { return double(int(p.silhouette_lines) | int(p.toon) << 1); }
+void silhouette_alias_set(P& p, double v) {
+    const int mode = int(v);
+    p.silhouette_lines = (mode & 1) != 0;
+    p.toon = (mode & 2) != 0;
+}
+
+// The sections, in the order they are listed.
+constexpr const char* kGeneration = "stipple generation (§2.1; a change makes new stipples)";
+constexpr const char* kShading = "shading and distance (§2.2, §2.3)";
+constexpr const char* kDrawing = "drawing";
+constexpr const char* kLines = "lines (§3.1)";
+
+const ParamSpec kTable[] = {
+    {"dmax", "dmax", "D_max", kGeneration,
+     "D_max, the maximum stipple density in stipples per reference pixel^2 (the object framed in a "
+     "1280-pixel-high reference view); with pr 2 also the stipples per screen pixel^2",
+     ParamType::Float, 0.0, 16.0, true, {}, ParamEffect::Regenerate, ParamWidget::LogSlider, false,
+     [](const P& p) { return double(p.generation.dmax); }, [](P& p, double v) { p.generation.dmax = float(v); }},
+    {"max_stipples", "max-stipples", "budget", kGeneration,
+     "Object_max, the object's stipple budget; the density is lowered evenly when D_max would exceed it",
+     ParamType::Int, 1.0, 2.0e9, false, {}, ParamEffect::Regenerate, ParamWidget::Input, false,
+     [](const P& p) { return double(p.generation.max_stipples); },
+     [](P& p, double v) { p.generation.max_stipples = uint64_t(v); }},
+    {"seed", "seed", "seed", kGeneration, "seed of the stipple placement", ParamType::Int, 0.0, 4294967295.0, false,
+     {}, ParamEffect::Regenerate, ParamWidget::Input, false, [](const P& p) { return double(p.generation.seed); },
+     [](P& p, double v) { p.generation.seed = uint64_t(v); }},
+    {"relax_iterations", "relax-iterations", "relaxation steps", kGeneration,
+     "relaxation steps toward a Poisson-disc distribution", ParamType::Int, 0.0, 100.0, false, {},
+     ParamEffect::Regenerate, ParamWidget::Slider, false,
+     [](const P& p) { return double(p.generation.relax_iterations); },
+     [](P& p, double v) { p.generation.relax_iterations = int(v); }},
+
+    {"shading", "shading", "shading", kShading,
+     "§2.2 shading by (N.L)^n: fewer stipples toward the light (off: every candidate of the front faces)",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.shading); }, [](P& p, double v) { p.shading = v != 0.0; }},
+    {"shading_exponent", "shading-exponent", "exponent n", kShading,
+     "n in the shading term (N.L)^n; a larger n keeps more stipples toward the light", ParamType::Float, 0.0, 64.0,
+     true, {}, ParamEffect::Frame, ParamWidget::LogSlider, false, [](const P& p) { return double(p.shading_exponent); },
+     [](P& p, double v) { p.shading_exponent = float(v); }},
+    {"extrinsic", "extrinsic", "extrinsic", kShading,
+     "§2.3 extrinsic distance enhancement, both regimes (large polygons, probabilistic selection of small ones)",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.extrinsic); }, [](P& p, double v) { p.extrinsic = v != 0.0; }},
+    {"pr", "pr", "pr", kShading,
+     "extrinsic distance enhancement rate (2: stipples per screen pixel stay constant as the object moves away)",
+     ParamType::Float, 0.0, 8.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
+     [](const P& p) { return double(p.pr); }, [](P& p, double v) { p.pr = float(v); }},
+    {"min_area", "min-area", "min area px^2", kShading,
+     "minimum stipple screen area in px^2: polygons projecting smaller are drawn by probabilistic selection",
+     ParamType::Float, 2.0, 9.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
+     [](const P& p) { return double(p.min_area); }, [](P& p, double v) { p.min_area = float(v); }},
+    {"intrinsic", "intrinsic", "intrinsic", kShading, "§2.3 intrinsic depth enhancement", ParamType::Bool, 0, 0,
+     false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false, [](const P& p) { return double(p.intrinsic); },
+     [](P& p, double v) { p.intrinsic = v != 0.0; }},
+    {"de", "de", "de", kShading, "intrinsic depth enhancement rate (smaller exaggerates near and far)",
+     ParamType::Float, 0.0, 16.0, true, {}, ParamEffect::Frame, ParamWidget::LogSlider, false,
+     [](const P& p) { return double(p.de); }, [](P& p, double v) { p.de = float(v); }},
+
+    {"point_size", "point-size", "point size px", kDrawing,
+     "stipple diameter in pixels (above 2.5 the dots are round)", ParamType::Float, 1.0, 64.0, false, {},
+     ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.point_size); },
+     [](P& p, double v) { p.point_size = float(v); }},
+    {"density_path", "density-path", "density path", kDrawing,
+     "where the density is computed and what draws the stipples: vertex (compute pass, the vertex shader "
+     "culls: the paper's vertex program), cpu (CPU densities, only survivors submitted), indirect (compute "
+     "pass writes compacted draws), splat (a compute pass draws the stipples, the fastest on lavapipe), "
+     "cpu-splat (CPU densities drawn by the splat)",
+     ParamType::Choice, 0, 0, false, kDensityPathNames, ParamEffect::Frame, ParamWidget::Combo, false,
+     [](const P& p) { return double(int(p.density_path)); },
+     [](P& p, double v) { p.density_path = DensityPath(int(v)); }},
+
+    {"silhouette_lines", "silhouette-lines", "silhouette lines", kLines,
+     "Raskar-Cohen silhouette lines: the edges of polygons facing away drawn as wide lines behind the "
+     "front faces' depth",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.silhouette_lines); }, [](P& p, double v) { p.silhouette_lines = v != 0.0; }},
+    {"toon", "toon", "toon", kLines, "the toon N.E ramp: surfaces darken where seen edge-on, stipples fade there",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.toon); }, [](P& p, double v) { p.toon = v != 0.0; }},
+    {"silhouette_width", "silhouette-width", "line width px", kLines,
+     "line width in pixels at the object's reference size", ParamType::Float, 1.0, 64.0, false, {},
+     ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.silhouette_width); },
+     [](P& p, double v) { p.silhouette_width = float(v); }},
+    {"silhouette_thinning", "thinning", "thinning", kLines,
+     "lines thin as the object's projected bounding sphere shrinks (Fig. 8)", ParamType::Bool, 0, 0, false, {},
+     ParamEffect::Frame, ParamWidget::Checkbox, false, [](const P& p) { return double(p.silhouette_thinning); },
+     [](P& p, double v) { p.silhouette_thinning = v != 0.0; }},
+    {"toon_sharpness", "toon-sharpness", "toon sharpness", kLines,
+     "steepness of the toon ramps (surface darkening, stipple fade)", ParamType::Float, 0.5, 64.0, false, {},
+     ParamEffect::Frame, ParamWidget::LogSlider, false, [](const P& p) { return double(p.toon_sharpness); },
+     [](P& p, double v) { p.toon_sharpness = float(v); }},
+    {"silhouette", "silhouette", "silhouette", kLines,
+     "the old single switch: none, lines (silhouette lines), toon, or both; sets silhouette_lines and toon",
+     ParamType::Choice, 0, 0, false, kSilhouetteNames, ParamEffect::Frame, ParamWidget::Hidden, true,
+     silhouette_alias_get, silhouette_alias_set},
+};
+
+std::string shortest(double value, ParamType type) {
+    if (type == ParamType::Int) return std::to_string((long long)std::llround(value));
+    // Floats in their shortest form that reads back to the same float ("0.15", not 0.15000000596...).
+    char text[32];
+    auto result = std::to_chars(text, text + sizeof(text), float(value));
+    return std::string(text, result.ptr);
+}
+
+std::string choices_text(const ParamSpec& spec) {
+    std::string text;
+    for (const char* name : spec.choices) text += std::string(text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+}  // namespace
+
+const char* density_path_name(DensityPath path) {
+    const int index = int(path);
+    return index >= 0 && index < int(std::size(kDensityPathNames)) ? kDensityPathNames[index] : "?";
+}
+
+std::optional<DensityPath> parse_density_path(const std::string& name) {
+    for (size_t i = 0; i < std::size(kDensityPathNames); ++i)
+        if (name == kDensityPathNames[i]) return DensityPath(int(i));
+    return std::nullopt;
+}
+
+std::span<const ParamSpec> param_table() { return kTable; }
+
+const ParamSpec* find_param(std::string_view key) {
+    for (const ParamSpec& spec : kTable)
+        if (key == spec.key) return &spec;
+    return nullptr;
+}
+
+std::string param_range_text(const ParamSpec& spec) {
+    switch (spec.type) {
+        case ParamType::Bool: return "true or false";
+        case ParamType::Choice: return "one of " + choices_text(spec);
+        case ParamType::Int: return shortest(spec.min, spec.type) + ".." + shortest(spec.max, spec.type);
+        case ParamType::Float: break;
+    }
+    return std::string(spec.min_open ? "> " : ">= ") + shortest(spec.min, spec.type) + " and <= " +
+           shortest(spec.max, spec.type);
+}
+
+std::string format_param_value(const ParamSpec& spec, double value) {
+    switch (spec.type) {
+        case ParamType::Bool: return value != 0.0 ? "true" : "false";
+        case ParamType::Choice: {
+            const int index = int(value);
+            return index >= 0 && index < int(spec.choices.size()) ? spec.choices[size_t(index)] : "?";
+        }
+        case ParamType::Int:
+        case ParamType::Float: break;
+    }
+    return shortest(value, spec.type);
+}
+
+std::optional<std::string> param_value_problem(const ParamSpec& spec, double value) {
+    switch (spec.type) {
+        case ParamType::Bool: return std::nullopt;
+        case ParamType::Choice:
+            if (value >= 0.0 && value < double(spec.choices.size()) && value == std::floor(value)) return std::nullopt;
+            return "not one of " + choices_text(spec);
+        case ParamType::Int:
+            if (std::isfinite(value) && value != std::floor(value)) return shortest(value, ParamType::Float) + " is not an integer";
+            break;
+        case ParamType::Float: break;
+    }
+    const bool above = spec.min_open ? value > spec.min : value >= spec.min;
+    if (std::isfinite(value) && above && value <= spec.max) return std::nullopt;
+    if (!std::isfinite(value)) return "the number is not finite";
+    const bool whole = spec.type == ParamType::Int && std::abs(value) < 1e15;
+    return shortest(value, whole ? ParamType::Int : ParamType::Float) + " is out of range: it must be " +
+           param_range_text(spec);
+}
+
+double parse_param_text(const ParamSpec& spec, const std::string& text) {
+    const std::string where = "--" + std::string(spec.cli);
+    if (spec.type == ParamType::Choice) {
+        for (size_t i = 0; i < spec.choices.size(); ++i)
+            if (text == spec.choices[i]) return double(i);
+        fail(where + " '" + text + "' is not one of " + choices_text(spec));
+    }
+    if (spec.type == ParamType::Bool) fail(where + " takes no value");
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double value = std::strtod(begin, &end);
+    if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value))
+        fail(where + ": '" + text + "' is not a finite number");
+    if (auto problem = param_value_problem(spec, value)) fail(where + " = " + *problem);
+    return value;
+}
+
+double param_lowest_value(const ParamSpec& spec) {
+    if (!spec.min_open) return spec.min;
+    return spec.min + std::max(1e-6 * (spec.max - spec.min), 1e-9);
+}
+
+void validate_params(const ObjectParams& params) {
+    for (const ParamSpec& spec : kTable)
+        if (auto problem = param_value_problem(spec, spec.get(params))) fail("--" + std::string(spec.cli) + " = " + *problem);
+}
+
+bool needs_regeneration(const ObjectParams& a, const ObjectParams& b) {
+    return std::any_of(std::begin(kTable), std::end(kTable), [&](const ParamSpec& spec) {
+        return spec.effect == ParamEffect::Regenerate && spec.get(a) != spec.get(b);
+    });
+}
+
+std::vector<double> generation_values(const GenerationParams& generation) {
+    ObjectParams params;
+    params.generation = generation;
+    std::vector<double> values;
+    for (const ParamSpec& spec : kTable)
+        if (spec.effect == ParamEffect::Regenerate) values.push_back(spec.get(params));
+    return values;
+}
+
+std::vector<std::string> param_cli_names(const ParamSpec& spec) {
+    const std::string name = "--" + std::string(spec.cli);
+    if (spec.type != ParamType::Bool) return {name};
+    return {name, "--no-" + std::string(spec.cli)};
+}
+
+}  // namespace stipple

@@ -1,0 +1,41 @@
+#pragma once
+// A model loaded for drawing and its stipples generated: the one place where every command (render,
+// view, info, bench) and the viewer's drag-and-drop and regeneration do it.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "mesh/mesh.hpp"
+#include "params/object_params.hpp"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+
+// Models with more triangles than this show a progress bar while generating (on a terminal).
+inline constexpr size_t kProgressBarTriangles = 200'000;
+
+// Where stipples come from: the on-disk cache when it holds them (stipple_cache.hpp), or always a fresh
+// generation (the benchmark times it). Both carry the polygons' selection values (§2.3).
+enum class StippleSource { Cache, Generate };
+
+// One object's CPU data. Meshes and stipple sets may be shared between objects that use the same
+// model (and, for stipples, the same generation parameters): a scene may show one model many times.
+struct ObjectData {
+    std::shared_ptr<const Mesh> mesh;
+    Sphere bounds;  // object space
+    std::shared_ptr<const StippleSet> stipples;
+    double load_seconds = 0.0;  // reading and preparing the mesh
+};
+
+// load_mesh_for_drawing, shared and timed.
+std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds = nullptr);
+
+// The stipples of `mesh` for `generation` (the progress flag is set here from the mesh's size).
+std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const GenerationParams& generation,
+                                                StippleSource source = StippleSource::Cache);
+
+// Both: loads the model at `path` and makes its stipples.
+ObjectData load_object_data(const std::string& path, const GenerationParams& generation,
+                            StippleSource source = StippleSource::Cache);
+
+}  // namespace stipple
