@@ -10,8 +10,7 @@ layout(local_size_x = kDensityWorkgroupSize) in;
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingDrawCommands, std430) buffer DrawCommands {
-    uint draw_count;
-    uint draw_pad0, draw_pad1, draw_pad2;
+    DrawCommandsHeader header;
     DrawCommand commands[];
 };
 
@@ -31,6 +30,6 @@ void main() {
     uint count = drawn(t);
     if (count == 0u || merges_with_previous(t)) return;
     for (uint next = t + 1u; next < triangles && merges_with_previous(next); ++next) count += drawn(next);
-    uint slot = atomicAdd(draw_count, 1u);
+    uint slot = atomicAdd(header.count, 1u);
     commands[slot] = DrawCommand(count, 1u, draws[t].first_stipple, 0u);
 }

@@ -119,6 +119,20 @@ struct SilhouetteLines {
     uint pad0, pad1, pad2;
 };
 
+// The indirect path's draw list (kBindingDrawCommands): this header, then DrawCommand per polygon at
+// most. The count is vkCmdDrawIndirectCount's count; the draws start sizeof(DrawCommandsHeader) in.
+struct DrawCommandsHeader {
+    uint count;
+    uint pad0, pad1, pad2;
+};
+
+// What the counting variants record (kBindingDebug, kSpecCountDrawn): this header, then one bit per
+// candidate stipple (set when it was drawn), 32 to a uint.
+struct DebugCounters {
+    uint drawn;  // stipples drawn this frame
+    uint pad0, pad1, pad2;
+};
+
 // One indirect draw, laid out as VkDrawIndirectCommand.
 struct DrawCommand {
     uint vertex_count;

@@ -32,9 +32,8 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnLi
     DrawnPolygons drawn;
     uint drawn_polygons[];
 };
-layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
-    uint drawn_count;
-    uint debug_pad0, debug_pad1, debug_pad2;
+layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
+    DebugCounters counters;
     uint drawn_mask[];
 };
 layout(set = 1, binding = kBindingSplatBackground, std430) readonly buffer Background { uint background[]; };
@@ -68,7 +67,7 @@ bool hidden_or_uncovered(float z, uint word) {
 
 void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
-        atomicAdd(drawn_count, 1u);
+        atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
     }
     vec4 clip = model_view_proj * vec4(stipple_position(polygon, unpackUnorm2x16(stipples[index].barycentric)), 1.0);

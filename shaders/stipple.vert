@@ -16,9 +16,8 @@ layout(location = 1) in uint in_triangle;
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
-layout(set = 0, binding = kBindingDebug, std430) buffer DebugCounters {
-    uint drawn_count;
-    uint debug_pad0, debug_pad1, debug_pad2;
+layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
+    DebugCounters counters;
     uint drawn_mask[];
 };
 
@@ -35,7 +34,7 @@ void main() {
         return;
     }
     if (kCountDrawn) {
-        atomicAdd(drawn_count, 1u);
+        atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[uint(gl_VertexIndex) >> 5u], 1u << (uint(gl_VertexIndex) & 31u));
     }
     vec3 position = stipple_position(polygon_frame(in_triangle), in_barycentric);  // survivors only

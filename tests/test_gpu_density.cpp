@@ -10,6 +10,7 @@
 #include "mesh/primitives.hpp"
 #include "render/density_cpu.hpp"
 #include "render/density_formulas.hpp"
+#include "render/path_buffers.hpp"
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
 #include "support/test_paths.hpp"
@@ -75,14 +76,14 @@ TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
         std::vector<float> gpu = renderer.read_densities(0);
         const ObjectGpu& object = renderer.object(0);
         std::vector<float> cpu(gpu.size());
-        compute_densities_cpu(object.triangles, object.first_stipple, renderer.frame_uniforms(), object.uniforms, cpu);
-        auto q = formulas::density_params(renderer.frame_uniforms(), object.uniforms);
+        compute_densities_cpu(object.polygons.cpu, object.geometry.first_stipple, renderer.frame_uniforms(), object.frame.uniforms, cpu);
+        auto q = formulas::density_params(renderer.frame_uniforms(), object.frame.uniforms);
         for (size_t t = 0; t < gpu.size(); ++t) {
-            auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms), q);
+            auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), q);
             if (terms.probability < 1.0f) ++selection_regime;
             ++compared;
             if ((gpu[t] > 0.0f) != (cpu[t] > 0.0f)) {
-                float u = formulas::polygon_selection(object.triangles[t]);
+                float u = formulas::polygon_selection(object.polygons.cpu[t]);
                 if (std::abs(u - terms.probability) < 1e-5f) ++near_ties;
                 else ++mismatched;
                 continue;
@@ -114,17 +115,17 @@ TEST_F(GpuTest, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
     gpu::ObjectUniforms identity{};
     identity.model_view = identity.normal_view = glm::mat4(1.0f);
     identity.extrinsic.w = 1.0f;
-    identity.box_min = glm::vec4(object.box_min, 0.0f);
-    identity.box_size = glm::vec4(object.box_size, 0.0f);
-    const float box = std::max({object.box_size.x, object.box_size.y, object.box_size.z});
+    identity.box_min = glm::vec4(object.polygons.box_min, 0.0f);
+    identity.box_size = glm::vec4(object.polygons.box_size, 0.0f);
+    const float box = std::max({object.polygons.box_size.x, object.polygons.box_size.y, object.polygons.box_size.z});
     double worst_center = 0.0, worst_normal_deg = 0.0, worst_area = 0.0;
     size_t wrong_counts = 0;
-    for (size_t t = 0; t < object.triangle_count; ++t) {
+    for (size_t t = 0; t < object.geometry.triangle_count; ++t) {
         const Mesh& m = polygons.mesh;
         glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
                   c = m.positions[m.indices[3 * t + 2]];
         glm::vec3 cross = glm::cross(b - a, c - a);
-        auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), identity);
+        auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), identity);
         worst_center = std::max(worst_center, double(glm::length(p.center - (a + b + c) / 3.0f)) / box);
         glm::dvec3 exact = glm::normalize(glm::dvec3(cross)), packed = glm::dvec3(p.normal);
         double angle = std::atan2(glm::length(glm::cross(exact, packed)), glm::dot(exact, packed));
@@ -153,7 +154,7 @@ TEST_F(GpuTest, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     const ObjectGpu& object = renderer.object(0);
     auto sizes = [&] {
         std::vector<VkDeviceSize> s;
-        for (PathBuffer kind : kPathBuffers) s.push_back(path_buffer(object, kind).size());
+        for (PathBuffer kind : kPathBuffers) s.push_back(path_buffer(object.frame, kind).size());
         return s;
     };
     const VkDeviceSize placeholder = kPathBufferPlaceholderBytes;
@@ -161,20 +162,20 @@ TEST_F(GpuTest, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     EXPECT_EQ(sizes(), std::vector<VkDeviceSize>(std::size(kPathBuffers), placeholder)) << "the vertex path needs none";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * VkDeviceSize(object.triangle_count), placeholder,
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * VkDeviceSize(object.geometry.triangle_count), placeholder,
                                                    placeholder, placeholder}));
 
     // With the splat path, what the object costs on the GPU per candidate: 8 bytes per candidate and
     // 28 per polygon besides the mesh, so at most 16 where candidates outnumber polygons ~4 to 1.
-    VkDeviceSize bytes = object.positions.size() + object.normals.size() + object.indices.size() +
-                         object.stipples.size() + object.triangle_info.size() + object.triangle_draw.size() +
-                         object.debug.size() + object.object_uniforms.size();
-    for (PathBuffer kind : kPathBuffers) bytes += path_buffer(object, kind).size();
-    double per_candidate = double(bytes) / double(object.stipple_count);
+    VkDeviceSize bytes = object.geometry.positions.size() + object.geometry.normals.size() + object.geometry.indices.size() +
+                         object.geometry.stipples.size() + object.polygons.gpu.size() + object.frame.triangle_draw.size() +
+                         object.frame.debug.size() + object.frame.object_uniforms.size();
+    for (PathBuffer kind : kPathBuffers) bytes += path_buffer(object.frame, kind).size();
+    double per_candidate = double(bytes) / double(object.geometry.stipple_count);
     std::printf("blobby: %u polygons, %u candidates, %.2f GPU bytes per candidate with the splat path\n",
-                object.triangle_count, object.stipple_count, per_candidate);
-    EXPECT_EQ(object.stipples.size(), 8u * object.stipple_count);
-    EXPECT_EQ(object.triangle_info.size(), 16u * object.triangle_count);
+                object.geometry.triangle_count, object.geometry.stipple_count, per_candidate);
+    EXPECT_EQ(object.geometry.stipples.size(), 8u * object.geometry.stipple_count);
+    EXPECT_EQ(object.polygons.gpu.size(), 16u * object.geometry.triangle_count);
     EXPECT_LE(per_candidate, 16.0);
 }
 
@@ -195,11 +196,11 @@ TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
         renderer.params(0).density_path = path;
         frames.push_back(target.render(renderer, view));
         masks.push_back(renderer.drawn_mask(0));
-        if (path == DensityPath::Cpu) cpu_draws = renderer.object(0).cpu_command_count;
+        if (path == DensityPath::Cpu) cpu_draws = renderer.object(0).frame.cpu_command_count;
         if (path == DensityPath::Indirect)
-            std::memcpy(&gpu_draws, gpu::read_buffer(*context, renderer.object(0).gpu_commands).data(), 4);
+            std::memcpy(&gpu_draws, gpu::read_buffer(*context, renderer.object(0).frame.gpu_commands).data(), 4);
         if (draws_by_splat(path)) {  // the splat's work list: exactly the polygons that draw, no others
-            std::vector<std::byte> list = gpu::read_buffer(*context, renderer.object(0).drawn_polygons);
+            std::vector<std::byte> list = gpu::read_buffer(*context, renderer.object(0).frame.drawn_polygons);
             gpu::DrawnPolygons header;
             std::memcpy(&header, list.data(), sizeof header);
             std::vector<float> densities = renderer.read_densities(0);
@@ -289,11 +290,11 @@ TEST_F(GpuTest, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
     std::vector<uint32_t> first_mask = renderer.drawn_mask(0);
 
     const ObjectGpu& object = renderer.object(0);
-    auto q = formulas::density_params(renderer.frame_uniforms(), object.uniforms);
+    auto q = formulas::density_params(renderer.frame_uniforms(), object.frame.uniforms);
     double expected = 0.0, variance = 0.0;
     size_t in_regime = 0, drawn = 0;
     for (size_t t = 0; t < densities.size(); ++t) {
-        auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms), q);
+        auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), q);
         if (terms.density <= 0.0f) continue;
         expected += terms.probability;
         variance += terms.probability * (1.0 - terms.probability);

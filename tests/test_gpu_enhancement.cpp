@@ -121,7 +121,7 @@ TEST_F(GpuTest, FramesHalfADegreeApartShareTheirStipples) {
     renderer.add_object(object.mesh, object.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     Sphere sphere = compute_bounding_sphere(object.mesh);
-    std::vector<std::byte> stipples_before = gpu::read_buffer(*context, renderer.object(0).stipples);
+    std::vector<std::byte> stipples_before = gpu::read_buffer(*context, renderer.object(0).geometry.stipples);
 
     target.draw(renderer, test::framed_view(sphere, target.extent(), 1.0f, 30.0f));
     std::vector<uint32_t> first = renderer.drawn_mask(0);
@@ -134,7 +134,7 @@ TEST_F(GpuTest, FramesHalfADegreeApartShareTheirStipples) {
                 path.empty() ? "sphere" : "bunny", test::popcount(first), 100.0 * share);
     EXPECT_GE(share, 0.97);
     // Stipples never move on the surface: the candidate buffer is untouched by rendering.
-    EXPECT_EQ(gpu::read_buffer(*context, renderer.object(0).stipples), stipples_before);
+    EXPECT_EQ(gpu::read_buffer(*context, renderer.object(0).geometry.stipples), stipples_before);
 }
 
 }  // namespace

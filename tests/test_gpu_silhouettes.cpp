@@ -174,22 +174,22 @@ TEST_F(GpuTest, LinesAreTheEdgesOfPolygonsFacingAway) {
     target.draw(renderer, view);
 
     const ObjectGpu& object = renderer.object(0);
-    std::vector<std::byte> bytes = gpu::read_buffer(*context, object.silhouette_lines);
+    std::vector<std::byte> bytes = gpu::read_buffer(*context, object.frame.silhouette_lines);
     gpu::SilhouetteLines header;
     std::memcpy(&header, bytes.data(), sizeof header);
     size_t expected = 0;
     for (const auto& e : build_silhouette_edges(sphere.mesh.indices)) {
         auto away = [&](uint32_t t) {
-            auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms);
+            auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
             return formulas::polygon_faces_away(p.center, p.normal);
         };
         expected += away(e.first_polygon) || (e.second_polygon != gpu::kNoPolygon && away(e.second_polygon));
     }
     std::printf("%u edges, %zu of them border a polygon facing away; the GPU drew %u lines\n",
-                object.silhouette_edge_count, expected, header.index_count / 2);
+                object.geometry.silhouette_edge_count, expected, header.index_count / 2);
     EXPECT_EQ(header.index_count, 2 * expected);
-    EXPECT_GT(expected, object.silhouette_edge_count / 3);
-    EXPECT_LT(expected, object.silhouette_edge_count * 2 / 3);
+    EXPECT_GT(expected, object.geometry.silhouette_edge_count / 3);
+    EXPECT_LT(expected, object.geometry.silhouette_edge_count * 2 / 3);
     EXPECT_EQ(header.instance_count, 1u);
 }
 
@@ -283,7 +283,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     double worst = 0.0, rim_faded = 0.0, rim_plain = 0.0;
     for (size_t t = 0; t < plain.size(); ++t) {
         if (plain[t] <= 0.05f) continue;
-        auto p = formulas::polygon_view(object.triangles[t], object.candidates(t), object.uniforms);
+        auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
         float facing = glm::dot(p.normal, -p.center) / glm::length(p.center);
         float expected = formulas::toon_stipple_fade(facing, params.toon_sharpness);
         worst = std::max(worst, double(std::abs(faded[t] / plain[t] - expected)));

@@ -231,14 +231,14 @@ TEST_F(GpuTest, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
     EXPECT_GT(live.bounds().radius, 1.5f * before.radius);
 
     // D_max acts when committed, on that object only, and the objects keep their order.
-    uint32_t first = renderer.object(0).stipple_count, second = renderer.object(1).stipple_count;
+    uint32_t first = renderer.object(0).geometry.stipple_count, second = renderer.object(1).geometry.stipple_count;
     live.scene().objects[0].params.generation.dmax = 0.04f;
     live.sync();
-    EXPECT_EQ(renderer.object(0).stipple_count, first) << "regenerated before the edit was committed";
+    EXPECT_EQ(renderer.object(0).geometry.stipple_count, first) << "regenerated before the edit was committed";
     EXPECT_TRUE(live.regenerate_if_changed(0));
     EXPECT_FALSE(live.regenerate_if_changed(1));
-    EXPECT_NEAR(double(renderer.object(0).stipple_count), 2.0 * first, 0.02 * first);
-    EXPECT_EQ(renderer.object(1).stipple_count, second);
+    EXPECT_NEAR(double(renderer.object(0).geometry.stipple_count), 2.0 * first, 0.02 * first);
+    EXPECT_EQ(renderer.object(1).geometry.stipple_count, second);
     // The rebuilt renderer still draws both (sparse at these densities: a few hundred dots).
     OffscreenTarget target(*context, {480, 360});
     live.sync();

@@ -12,6 +12,7 @@
 #include "io/png_io.hpp"
 #include "render/camera.hpp"
 #include "render/offscreen.hpp"
+#include "render/path_buffers.hpp"
 #include "render/stipple_renderer.hpp"
 #include "core/timing.hpp"
 #include "stipple/object_data.hpp"
@@ -144,10 +145,10 @@ double median(std::vector<double> values) {
 
 std::vector<std::pair<std::string, uint64_t>> object_buffers(const ObjectGpu& object, DensityPath path) {
     std::vector<std::pair<std::string, uint64_t>> buffers = {
-        {"positions", object.positions.size()},         {"normals", object.normals.size()},
-        {"indices", object.indices.size()},             {"stipples", object.stipples.size()},
-        {"triangle_info", object.triangle_info.size()}, {"triangle_draw", object.triangle_draw.size()},
-        {"debug", object.debug.size()},                 {"object_uniforms", object.object_uniforms.size()},
+        {"positions", object.geometry.positions.size()},         {"normals", object.geometry.normals.size()},
+        {"indices", object.geometry.indices.size()},             {"stipples", object.geometry.stipples.size()},
+        {"triangle_info", object.polygons.gpu.size()}, {"triangle_draw", object.frame.triangle_draw.size()},
+        {"debug", object.frame.debug.size()},                 {"object_uniforms", object.frame.object_uniforms.size()},
     };
     for (PathBuffer kind : kPathBuffers) {  // the path's own at full size, the others placeholders
         uint64_t bytes = path_buffer_bytes(object, path, kind);

@@ -3,11 +3,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <span>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
-#include "gpu/shared_types.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace stipple::gpu {
@@ -190,76 +188,6 @@ VkPipeline create_compute_pipeline(const Context& context, const std::string& sh
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     return pipeline;
-}
-
-namespace {
-
-const VkShaderStageFlags kAllStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
-
-VkDescriptorSetLayout create_set_layout(const Context& context, std::span<const VkDescriptorSetLayoutBinding> bindings) {
-    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    info.bindingCount = uint32_t(bindings.size());
-    info.pBindings = bindings.data();
-    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
-    return layout;
-}
-
-VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> sets) {
-    VkPushConstantRange push{kAllStages, 0, kPushConstantBytes};
-    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = uint32_t(sets.size());
-    info.pSetLayouts = sets.data();
-    info.pushConstantRangeCount = 1;
-    info.pPushConstantRanges = &push;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
-    return layout;
-}
-
-}  // namespace
-
-StippleLayout create_stipple_layout(const Context& context) {
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
-        {kBindingObject, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
-        {kBindingTriangleDraw, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingTriangleInfo, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingDrawCommands, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingDebug, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingStipples, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingDrawnPolygons, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingMeshPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingMeshIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingSilhouetteEdges, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-        {kBindingSilhouetteLines, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
-    };
-    StippleLayout layout;
-    layout.set_layout = create_set_layout(context, bindings);
-    layout.pipeline_layout = create_pipeline_layout(context, std::span(&layout.set_layout, 1));
-    return layout;
-}
-
-void destroy_stipple_layout(const Context& context, StippleLayout& layout) {
-    if (layout.pipeline_layout) vkDestroyPipelineLayout(context.device, layout.pipeline_layout, nullptr);
-    if (layout.set_layout) vkDestroyDescriptorSetLayout(context.device, layout.set_layout, nullptr);
-    if (layout.image_set_layout) vkDestroyDescriptorSetLayout(context.device, layout.image_set_layout, nullptr);
-    layout = {};
-}
-
-StippleLayout create_splat_layout(const Context& context, VkDescriptorSetLayout object_set_layout) {
-    const VkShaderStageFlags stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        {kBindingSplatBackground, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
-        {kBindingSceneDepth, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
-        {kBindingColorBuffer, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stage, nullptr},
-    };
-    StippleLayout layout;  // set_layout stays null: the object set layout belongs to the stipple layout
-    layout.image_set_layout = create_set_layout(context, bindings);
-    const VkDescriptorSetLayout sets[] = {object_set_layout, layout.image_set_layout};
-    layout.pipeline_layout = create_pipeline_layout(context, sets);
-    return layout;
 }
 
 }  // namespace stipple::gpu

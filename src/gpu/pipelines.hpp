@@ -50,18 +50,4 @@ VkPipeline create_graphics_pipeline(const Context& context, const GraphicsPipeli
 VkPipeline create_compute_pipeline(const Context& context, const std::string& shader, VkPipelineLayout layout,
                                    const Specialization& specialization = {});
 
-// The one descriptor-set layout (set 0) and pipeline layout that every stipple pipeline shares:
-// bindings from shaders/shared_types.h, plus a small push-constant block.
-struct StippleLayout {
-    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-    VkDescriptorSetLayout image_set_layout = VK_NULL_HANDLE;  // set 1 of the splat layout only
-    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
-};
-StippleLayout create_stipple_layout(const Context& context);
-// The compute splat's layout: the object set (set 0) and the frame's images (set 1).
-StippleLayout create_splat_layout(const Context& context, VkDescriptorSetLayout object_set_layout);
-void destroy_stipple_layout(const Context& context, StippleLayout& layout);
-
-inline constexpr uint32_t kPushConstantBytes = 16;
-
 }  // namespace stipple::gpu

@@ -21,3 +21,16 @@ uint32_t build_draw_commands(std::span<const float> densities, std::span<const u
                              std::span<gpu::DrawCommand> commands);
 
 }  // namespace stipple
+
+namespace stipple {
+
+struct ObjectGpu;
+
+// The CPU density path for one object, this frame: densities into draw_staging and either the
+// surviving ranges (runs of fully drawn polygons merged) into cpu_commands, or, for cpu-splat, the
+// list of polygons that draw after the densities in draw_staging. Reads the object's documented CPU
+// inputs only: PolygonConstants::cpu, ObjectGeometry::first_stipple and this frame's uniforms.
+// Returns the sum of the densities.
+double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame);
+
+}  // namespace stipple

@@ -8,8 +8,11 @@
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
-#include "gpu/shared_types.hpp"
+#include "render/shared_types.hpp"
 #include "gpu/vk_check.hpp"
+#include "render/descriptor_schema.hpp"
+#include "render/path_buffers.hpp"
+#include "render/density_cpu.hpp"
 
 namespace stipple {
 
@@ -23,7 +26,7 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       color_format_(color_format),
       depth_format_(depth_format),
       timer_(context) {
-    layout_ = gpu::create_stipple_layout(context);
+    layouts_ = create_render_layouts(context);
     create_pipelines(color_format, depth_format);
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 }
@@ -36,8 +39,7 @@ StippleRenderer::~StippleRenderer() {
                          toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
-    gpu::destroy_stipple_layout(context_, splat_layout_);
-    gpu::destroy_stipple_layout(context_, layout_);
+    destroy_render_layouts(context_, layouts_);
 }
 
 void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_format) {
@@ -54,7 +56,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     depth.color_write = false;  // depth only; the colour attachment stays bound for the one rendering scope
     depth.color_format = color_format;
     depth.depth_format = depth_format;
-    depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layout_.pipeline_layout);
+    depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc stipple;
     stipple.vertex_shader = "stipple.vert";
@@ -70,7 +72,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.blend = true;
     stipple.color_format = color_format;
     stipple.depth_format = depth_format;
-    stipple_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layout_.pipeline_layout);
+    stipple_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc toon = depth;
     toon.vertex_shader = "toon.vert";
@@ -78,7 +80,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon.vertex_bindings.push_back({1, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX});
     toon.vertex_attributes.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
     toon.color_write = true;  // opaque: the nearest surface's toon ink wins with the depth test
-    toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layout_.pipeline_layout);
+    toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
 
     // Raskar-Cohen: the back faces' edges as wide lines (selected each frame by silhouette_edges.comp, each
     // edge once); the front faces' depth lets only the silhouette through.
@@ -94,36 +96,26 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     lines.stencil = gpu::CoverageStencil::None;  // outlines lie half outside the surface
     lines.color_format = color_format;
     lines.depth_format = depth_format;
-    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layout_.pipeline_layout);
+    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layouts_.pipeline);
     silhouette_edges_pipeline_ =
-        gpu::create_compute_pipeline(context_, "silhouette_edges.comp", layout_.pipeline_layout);
+        gpu::create_compute_pipeline(context_, "silhouette_edges.comp", layouts_.pipeline);
 
-    density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout);
-    density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layout_.pipeline_layout,
+    density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline);
+    density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                           {{{gpu::kSpecListDrawn, 1u}}});
 
-    splat_layout_ = gpu::create_splat_layout(context_, layout_.set_layout);
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
-    splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", splat_layout_.pipeline_layout,
+    splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline,
                                                    {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}}});
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
-    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool.maxSets = 1;
-    pool.poolSizeCount = uint32_t(std::size(sizes));
-    pool.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(context_.device, &pool, nullptr, &image_pool_));
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = image_pool_;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &splat_layout_.image_set_layout;
-    VK_CHECK(vkAllocateDescriptorSets(context_.device, &alloc, &image_set_));
-    draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layout_.pipeline_layout);
+    image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
+    image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
+    draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layouts_.pipeline);
 }
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
                                    const ObjectParams& params) {
-    objects_.push_back(create_object_gpu(context_, layout_.set_layout, frame_uniforms_, mesh, stipples, model, params,
+    objects_.push_back(create_object_gpu(context_, layouts_.object_set, frame_uniforms_, mesh, stipples, model, params,
                                          options_.count_drawn));
     return objects_.size() - 1;
 }
@@ -158,16 +150,16 @@ void StippleRenderer::prepare(const FrameView& view) {
         validate_params(object->params);
         ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
         if (object->params.silhouette_lines) ensure_silhouette_edges(*object);
-        object->uniforms = make_object_uniforms(*object, view);
-        object->line_width = object_line_width(*object, view, context_.features.max_line_width);
-        std::memcpy(object->object_uniforms.mapped(), &object->uniforms, sizeof(object->uniforms));
-        object->object_uniforms.flush();
+        object->frame.uniforms = make_object_uniforms(*object, view);
+        object->frame.line_width = object_line_width(*object, view, context_.features.max_line_width);
+        std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
+        object->frame.object_uniforms.flush();
         if (density_on_cpu(object->params.density_path)) {
             run_cpu_density(*object, frame_);
-            stats_.cpu_draw_commands += object->cpu_command_count;
+            stats_.cpu_draw_commands += object->frame.cpu_command_count;
         }
-        stats_.triangles += object->triangle_count;
-        stats_.candidate_stipples += object->stipple_count;
+        stats_.triangles += object->geometry.triangle_count;
+        stats_.candidate_stipples += object->geometry.stipple_count;
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
 }
@@ -177,40 +169,40 @@ bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
 }
 
 bool StippleRenderer::draws_points(const ObjectGpu& object) const {
-    return object.stipple_count > 0 && !uses_splat(object);
+    return object.geometry.stipple_count > 0 && !uses_splat(object);
 }
 
 void StippleRenderer::record_density(VkCommandBuffer cb) {
     const uint32_t group = gpu::kDensityWorkgroupSize;
     auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
         vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &object.set, 0,
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object.set, 0,
                                 nullptr);
-        vkCmdDispatch(cb, (object.triangle_count + group - 1) / group, 1, 1);
+        vkCmdDispatch(cb, (object.geometry.triangle_count + group - 1) / group, 1, 1);
     };
     // Densities: the compute pass (vertex, indirect and splat paths) or the CPU's upload; clears first.
     bool any_indirect = false;
     bool any_pass = false;
     for (auto& object : objects_) {
-        if (object->triangle_count == 0) continue;
-        if (options_.count_drawn) vkCmdFillBuffer(cb, object->debug.handle(), 0, VK_WHOLE_SIZE, 0);
+        if (object->geometry.triangle_count == 0) continue;
+        if (options_.count_drawn) vkCmdFillBuffer(cb, object->frame.debug.handle(), 0, VK_WHOLE_SIZE, 0);
         const bool splat = uses_splat(*object);
         if (density_on_cpu(object->params.density_path)) {
             VkBufferCopy regions[2] = {{0, 0, staged_list_offset(*object)},
                                        {staged_list_offset(*object), 0,
-                                        sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * object->cpu_drawn_polygons}};
-            vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->triangle_draw.handle(), 1, &regions[0]);
-            if (splat) vkCmdCopyBuffer(cb, object->draw_staging.handle(), object->drawn_polygons.handle(), 1, &regions[1]);
+                                        sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * object->frame.cpu_drawn_polygons}};
+            vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.triangle_draw.handle(), 1, &regions[0]);
+            if (splat) vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
             continue;
         }
         any_pass = true;
         if (object->params.density_path == DensityPath::Indirect) {
-            vkCmdFillBuffer(cb, object->gpu_commands.handle(), 0, 16, 0);
+            vkCmdFillBuffer(cb, object->frame.gpu_commands.handle(), 0, sizeof(gpu::DrawCommandsHeader), 0);
             any_indirect = true;
         }
         if (splat) {  // an empty list: no groups yet (y and z are 1)
             const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};
-            vkCmdUpdateBuffer(cb, object->drawn_polygons.handle(), 0, sizeof empty, &empty);
+            vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
         }
     }
     if (any_pass) {
@@ -218,7 +210,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         for (auto& object : objects_)
-            if (object->triangle_count > 0 && !density_on_cpu(object->params.density_path))
+            if (object->geometry.triangle_count > 0 && !density_on_cpu(object->params.density_path))
                 dispatch(*object, uses_splat(*object) ? density_list_pipeline_ : density_pipeline_);
     }
     // Indirect path: merged draws of the surviving ranges, from the densities just written.
@@ -228,7 +220,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         for (auto& object : objects_)
-            if (object->triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
+            if (object->geometry.triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
                 dispatch(*object, draw_commands_pipeline_);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
@@ -242,7 +234,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
 void StippleRenderer::record_depth(VkCommandBuffer cb) {
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {
-        if (object->index_count == 0) continue;
+        if (object->geometry.index_count == 0) continue;
         // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
         bool toon = object->params.toon;
         VkPipeline pipeline = toon ? toon_pipeline_ : depth_pipeline_;
@@ -251,25 +243,25 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
             vkCmdSetDepthBias(cb, kDepthBiasConstant, 0.0f, kDepthBiasSlope);
             bound = pipeline;
         }
-        VkBuffer buffers[] = {object->positions.handle(), object->normals.handle()};
+        VkBuffer buffers[] = {object->geometry.positions.handle(), object->geometry.normals.handle()};
         VkDeviceSize offsets[] = {0, 0};
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
-        vkCmdBindIndexBuffer(cb, object->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cb, object->index_count, 1, 0, 0, 0);
+        vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
     }
 }
 
 bool StippleRenderer::draws_lines(const ObjectGpu& object) const {
-    return object.params.silhouette_lines && object.silhouette_edge_count > 0;
+    return object.params.silhouette_lines && object.geometry.silhouette_edge_count > 0;
 }
 
 void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (!draws_lines(*object)) continue;
         const gpu::SilhouetteLines empty{0u, 1u, 0u, 0, 0u, 0u, 0u, 0u};  // one instance, no indices yet
-        vkCmdUpdateBuffer(cb, object->silhouette_lines.handle(), 0, sizeof empty, &empty);
+        vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -278,9 +270,9 @@ void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects_) {
         if (!draws_lines(*object)) continue;
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout, 0, 1, &object->set, 0,
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
-        vkCmdDispatch(cb, (object->silhouette_edge_count + group - 1) / group, 1, 1);
+        vkCmdDispatch(cb, (object->geometry.silhouette_edge_count + group - 1) / group, 1, 1);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,
@@ -294,40 +286,41 @@ void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
         if (!any) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
         any = true;
         VkDeviceSize offset = 0;
-        VkBuffer vb = object->positions.handle();
-        vkCmdSetLineWidth(cb, object->line_width);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+        VkBuffer vb = object->geometry.positions.handle();
+        vkCmdSetLineWidth(cb, object->frame.line_width);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(cb, object->silhouette_lines.handle(), gpu::kSilhouetteLinesHeaderBytes,
+        vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), gpu::kSilhouetteLinesHeaderBytes,
                              VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexedIndirect(cb, object->silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
+        vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
     }
 }
 
 void StippleRenderer::record_stipples(VkCommandBuffer cb) {
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, stipple_pipeline_);
     for (const auto& object : objects_) {
-        if (object->stipple_count == 0 || uses_splat(*object)) continue;
+        if (object->geometry.stipple_count == 0 || uses_splat(*object)) continue;
         VkDeviceSize offset = 0;
-        VkBuffer vb = object->stipples.handle();
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.pipeline_layout, 0, 1, &object->set, 0,
+        VkBuffer vb = object->geometry.stipples.handle();
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
         switch (object->params.density_path) {
             case DensityPath::Vertex:    // every candidate; the vertex shader culls (§3.2)
             case DensityPath::Splat:     // targets without the splat's transfers: drawn as the vertex path
             case DensityPath::CpuSplat:  // the same, culled by the CPU's densities
-                vkCmdDraw(cb, object->stipple_count, 1, 0, 0);
+                vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
                 break;
             case DensityPath::Cpu:
-                if (object->cpu_command_count > 0)
-                    vkCmdDrawIndirect(cb, object->cpu_commands.handle(), 0, object->cpu_command_count,
+                if (object->frame.cpu_command_count > 0)
+                    vkCmdDrawIndirect(cb, object->frame.cpu_commands.handle(), 0, object->frame.cpu_command_count,
                                       sizeof(gpu::DrawCommand));
                 break;
             case DensityPath::Indirect:
-                vkCmdDrawIndirectCount(cb, object->gpu_commands.handle(), 16, object->gpu_commands.handle(), 0,
-                                       object->triangle_count, sizeof(gpu::DrawCommand));
+                vkCmdDrawIndirectCount(cb, object->frame.gpu_commands.handle(), sizeof(gpu::DrawCommandsHeader),
+                                       object->frame.gpu_commands.handle(), 0,
+                                       object->geometry.triangle_count, sizeof(gpu::DrawCommand));
                 break;
         }
     }
@@ -442,24 +435,9 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
         splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
         splat_extent_ = targets.extent;
     }
-    VkDescriptorBufferInfo background{splat_background_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo depth{splat_depth_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo color{splat_color_.handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet writes[3];
-    const VkDescriptorType types[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                      VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-    const uint32_t bindings[] = {gpu::kBindingSplatBackground, gpu::kBindingSceneDepth, gpu::kBindingColorBuffer};
-    for (int i = 0; i < 3; ++i) {
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = image_set_;
-        writes[i].dstBinding = bindings[i];
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = types[i];
-    }
-    writes[0].pBufferInfo = &background;
-    writes[1].pBufferInfo = &depth;
-    writes[2].pBufferInfo = &color;
-    vkUpdateDescriptorSets(context_.device, 3, writes, 0, nullptr);  // the previous frame has completed
+    // In the order of splat_frame_bindings(): background, scene depth, colour. The previous frame has completed.
+    const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(), splat_color_.handle()};
+    gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
 
     const bool stencil = gpu::format_has_stencil(depth_format_);
     const VkImageAspectFlags depth_aspect =
@@ -509,17 +487,17 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
 
     timer_.mark(cb, "splat_in");
     const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
-    vkCmdPushConstants(cb, splat_layout_.pipeline_layout, VK_SHADER_STAGE_VERTEX_BIT |
+    vkCmdPushConstants(cb, layouts_.splat_pipeline, VK_SHADER_STAGE_VERTEX_BIT |
                        VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, push);
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
-        if (!uses_splat(*object) || object->triangle_count == 0) continue;
+        if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
         if (!bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_pipeline_);
         bound = splat_pipeline_;
         VkDescriptorSet sets[] = {object->set, image_set_};
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_layout_.pipeline_layout, 0, 2, sets, 0,
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
                                 nullptr);
-        vkCmdDispatchIndirect(cb, object->drawn_polygons.handle(), 0);  // the polygons that draw
+        vkCmdDispatchIndirect(cb, object->frame.drawn_polygons.handle(), 0);  // the polygons that draw
     }
     timer_.mark(cb, "splat");
 
@@ -545,17 +523,18 @@ void StippleRenderer::collect() {
     if (!options_.count_drawn) return;
     stats_.drawn_stipples = 0;
     for (const auto& object : objects_) {
-        object->debug.invalidate();
-        stats_.drawn_stipples += *static_cast<const uint32_t*>(object->debug.mapped());
+        object->frame.debug.invalidate();
+        stats_.drawn_stipples += static_cast<const gpu::DebugCounters*>(object->frame.debug.mapped())->drawn;
     }
 }
 
 std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
     STIPPLE_CHECK(options_.count_drawn, "drawn_mask needs RendererOptions::count_drawn");
     const ObjectGpu& o = *objects_.at(object);
-    o.debug.invalidate();
-    const auto* words = static_cast<const uint32_t*>(o.debug.mapped()) + 4;
-    return std::vector<uint32_t>(words, words + (o.stipple_count + 31) / 32);
+    o.frame.debug.invalidate();
+    const auto* words = reinterpret_cast<const uint32_t*>(static_cast<const std::byte*>(o.frame.debug.mapped()) +
+                                                         sizeof(gpu::DebugCounters));
+    return std::vector<uint32_t>(words, words + (o.geometry.stipple_count + 31) / 32);
 }
 
 }  // namespace stipple
@@ -563,7 +542,7 @@ std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
 namespace stipple {
 
 std::vector<float> StippleRenderer::read_densities(size_t object) const {
-    std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->triangle_draw);
+    std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->frame.triangle_draw);
     std::vector<float> densities(bytes.size() / sizeof(gpu::TriangleDraw));
     for (size_t t = 0; t < densities.size(); ++t)
         std::memcpy(&densities[t], bytes.data() + t * sizeof(gpu::TriangleDraw), sizeof(float));

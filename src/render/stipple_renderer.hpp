@@ -15,6 +15,7 @@
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
+#include "render/descriptor_schema.hpp"
 #include "render/object_gpu.hpp"
 #include "params/object_params.hpp"
 #include "shared_types.h"
@@ -106,7 +107,7 @@ private:
     RendererOptions options_;
     VkFormat color_format_;
     VkFormat depth_format_;
-    gpu::StippleLayout layout_;
+    RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
     VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
@@ -116,7 +117,6 @@ private:
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
     VkPipeline silhouette_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines: edges of back faces
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
-    gpu::StippleLayout splat_layout_;
     VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;

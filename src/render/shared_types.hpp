@@ -28,6 +28,11 @@ static_assert(offsetof(SilhouetteEdge, second_polygon) == 12);
 static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
 static_assert(offsetof(SilhouetteLines, first_instance) == 16);
 
+static_assert(sizeof(DrawCommandsHeader) == 16);
+static_assert(offsetof(DrawCommandsHeader, count) == 0);
+static_assert(sizeof(DebugCounters) == 16);
+static_assert(offsetof(DebugCounters, drawn) == 0);
+
 static_assert(sizeof(DrawCommand) == 16);
 static_assert(offsetof(DrawCommand, first_vertex) == 8);
 

@@ -1,0 +1,80 @@
+#include "render/path_buffers.hpp"
+
+#include "render/descriptor_schema.hpp"
+#include "render/object_gpu.hpp"
+
+namespace stipple {
+
+using gpu::Buffer;
+using gpu::MemoryUse;
+
+const char* path_buffer_name(PathBuffer kind) {
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return "drawn_polygons";
+        case PathBuffer::DrawStaging: return "draw_staging";
+        case PathBuffer::GpuCommands: return "gpu_commands";
+        case PathBuffer::CpuCommands: break;
+    }
+    return "cpu_commands";
+}
+
+Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind) {
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return frame.drawn_polygons;
+        case PathBuffer::DrawStaging: return frame.draw_staging;
+        case PathBuffer::GpuCommands: return frame.gpu_commands;
+        case PathBuffer::CpuCommands: break;
+    }
+    return frame.cpu_commands;
+}
+
+const Buffer& path_buffer(const ObjectFrame& frame, PathBuffer kind) {
+    return path_buffer(const_cast<ObjectFrame&>(frame), kind);
+}
+
+VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBuffer kind) {
+    const VkDeviceSize n = object.geometry.triangle_count;
+    const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;
+    switch (kind) {
+        case PathBuffer::DrawnPolygons: return draws_by_splat(path) ? list : 0;
+        case PathBuffer::DrawStaging:
+            if (path == DensityPath::Cpu) return staged_list_offset(object);
+            return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
+        case PathBuffer::GpuCommands:
+            return path == DensityPath::Indirect ? sizeof(gpu::DrawCommandsHeader) + sizeof(gpu::DrawCommand) * n : 0;
+        case PathBuffer::CpuCommands: return path == DensityPath::Cpu ? sizeof(gpu::DrawCommand) * n : 0;
+    }
+    return 0;
+}
+
+Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSize bytes) {
+    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    const auto destination = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    switch (kind) {
+        case PathBuffer::DrawnPolygons:
+        case PathBuffer::GpuCommands:  // written by a compute pass, read as indirect arguments
+            return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
+        case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+        case PathBuffer::CpuCommands: break;
+    }
+    return Buffer(context, bytes, indirect, MemoryUse::Upload);
+}
+
+void ensure_path_buffers(ObjectGpu& object, DensityPath path) {
+    bool grown = false;
+    for (PathBuffer kind : kPathBuffers) {
+        VkDeviceSize bytes = path_buffer_bytes(object, path, kind);
+        Buffer& buffer = path_buffer(object.frame, kind);
+        if (bytes <= buffer.size()) continue;
+        buffer = make_path_buffer(*object.context, kind, bytes);
+        grown = true;
+    }
+    if (grown) write_object_descriptors(object);
+}
+
+VkDeviceSize staged_list_offset(const ObjectGpu& object) {
+    return sizeof(gpu::TriangleDraw) * VkDeviceSize(object.geometry.triangle_count);
+}
+
+}  // namespace stipple

@@ -1,0 +1,67 @@
+#include "render/polygon_constants.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/packing.hpp>
+
+#include "render/shared_types.hpp"
+#include "stipple/selection_order.hpp"
+
+namespace stipple {
+
+namespace {
+
+// The inverse of formulas::octahedral_to_unit: the unit sphere onto the octahedron, the lower half folded out.
+glm::vec2 unit_to_octahedral(glm::vec3 n) {
+    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    glm::vec2 p(n.x, n.y);
+    if (n.z < 0.0f) {
+        glm::vec2 sign(p.x >= 0.0f ? 1.0f : -1.0f, p.y >= 0.0f ? 1.0f : -1.0f);
+        p = (1.0f - glm::abs(glm::vec2(p.y, p.x))) * sign;
+    }
+    return p;
+}
+
+uint32_t unorm16(float value) { return uint32_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 65535.0f)); }
+
+}  // namespace
+
+std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const std::vector<float>& selection,
+                                                      glm::vec3 box_min, glm::vec3 box_size) {
+    std::vector<gpu::TriangleInfo> infos(mesh.triangle_count());
+    const glm::vec3 inverse_size = glm::vec3(1.0f) / glm::max(box_size, glm::vec3(1e-30f));
+    for (size_t t = 0; t < infos.size(); ++t) {
+        glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
+        glm::vec3 b = mesh.positions[mesh.indices[3 * t + 1]];
+        glm::vec3 c = mesh.positions[mesh.indices[3 * t + 2]];
+        glm::vec3 cross = glm::cross(b - a, c - a);
+        float length = glm::length(cross);
+        glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f);
+        glm::vec3 center = ((a + b + c) / 3.0f - box_min) * inverse_size;
+        uint32_t selection_step = std::min(uint32_t(selection[t] * 65536.0f), 65535u);
+        infos[t].center_xy = unorm16(center.x) | unorm16(center.y) << 16;
+        infos[t].center_z_selection = unorm16(center.z) | selection_step << 16;
+        infos[t].normal = glm::packSnorm2x16(unit_to_octahedral(normal));
+        infos[t].area = 0.5f * length;
+    }
+    return infos;
+}
+
+PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
+                                        uint64_t seed) {
+    PolygonConstants polygons;
+    polygons.bounds = compute_bounding_sphere(mesh);
+    const Bounds box = compute_bounds(mesh);
+    polygons.box_min = box.min;
+    polygons.box_size = box.max - box.min;
+    const std::vector<float> selection = stipples.selection.size() == mesh.triangle_count()
+                                             ? stipples.selection
+                                             : polygon_selection_values(mesh, seed);
+    polygons.cpu = pack_polygon_constants(mesh, selection, polygons.box_min, polygons.box_size);
+    polygons.gpu = gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(polygons.cpu),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    return polygons;
+}
+
+}  // namespace stipple

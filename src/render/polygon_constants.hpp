@@ -1,0 +1,21 @@
+#pragma once
+// The per-polygon constants of §2.1-2.3 (what the density pass reads for each polygon: centroid, unit
+// normal, area, the fixed selection value), packed into 16 bytes (shared_types.h: TriangleInfo).
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "render/object_gpu.hpp"
+#include "stipple/stipple_set.hpp"
+
+namespace stipple {
+
+// The constants of `mesh` in its current shape: the CPU copy, its bounds and quantisation box, and the
+// GPU buffer. Selection values come from `stipples` when it carries them, else are ranked here (seeded).
+PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
+                                        uint64_t seed);
+
+// Packs the polygons of `mesh` with centroids in the box [box_min, box_min + box_size].
+std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const std::vector<float>& selection,
+                                                      glm::vec3 box_min, glm::vec3 box_size);
+
+}  // namespace stipple
