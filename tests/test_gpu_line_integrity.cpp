@@ -15,6 +15,7 @@
 #include "mesh/load_mesh.hpp"
 #include "render/density_formulas.hpp"
 #include "render/silhouette_edges.hpp"
+#include "stipple/selection_order.hpp"
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
 #include "support/test_paths.hpp"
@@ -53,6 +54,8 @@ Model load_model(const std::string& name, const std::string& path) {
     params.generation.max_stipples = 20000;
     params.generation.relax_iterations = 0;
     Model m{name, test::prepare(load_mesh_for_drawing(path), params), {}};
+    // Ranked once here rather than by each renderer the model is added to (the costliest part of adding it).
+    m.object.stipples.selection = polygon_selection_values(m.object.mesh, params.generation.seed);
     const std::vector<uint32_t>& indices = m.object.mesh.indices;
     for (size_t t = 0; t + 2 < indices.size(); t += 3)
         for (int k = 0; k < 3; ++k) m.edges.insert(edge_key(indices[t + k], indices[t + (k + 1) % 3]));
