@@ -108,8 +108,12 @@ struct SilhouetteEdge {
 };
 
 // This frame's silhouette lines: a VkDrawIndexedIndirectCommand, padding, then the index pairs of
-// the edges that border a back-facing polygon (the index buffer starts kSilhouetteLinesHeaderBytes in).
+// the edges that border a back-facing polygon. The buffer is bound as index buffer at offset 0 and
+// the command's first_index (kSilhouetteLinesFirstIndex) skips the header: lavapipe (Mesa 22.3)
+// ignores the bound offset in indexed indirect draws, so a header skipped by that offset was drawn
+// as four lines, the first from vertex 1 to vertex `index_count` (usually out of range: the origin).
 STIPPLE_CONST uint kSilhouetteLinesHeaderBytes = 32;
+STIPPLE_CONST uint kSilhouetteLinesFirstIndex = kSilhouetteLinesHeaderBytes / 4;
 struct SilhouetteLines {
     uint index_count;
     uint instance_count;

@@ -27,6 +27,7 @@ static_assert(sizeof(SilhouetteEdge) == 16);
 static_assert(offsetof(SilhouetteEdge, second_polygon) == 12);
 static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
 static_assert(offsetof(SilhouetteLines, first_instance) == 16);
+static_assert(kSilhouetteLinesFirstIndex * sizeof(uint32_t) == sizeof(SilhouetteLines));  // indices right after it
 
 static_assert(sizeof(DrawCommandsHeader) == 16);
 static_assert(offsetof(DrawCommandsHeader, count) == 0);

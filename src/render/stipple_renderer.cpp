@@ -260,7 +260,8 @@ bool StippleRenderer::draws_lines(const ObjectGpu& object) const {
 void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (!draws_lines(*object)) continue;
-        const gpu::SilhouetteLines empty{0u, 1u, 0u, 0, 0u, 0u, 0u, 0u};  // one instance, no indices yet
+        // One instance, no indices yet; the indices follow the header (shared_types.h: why not a bind offset).
+        const gpu::SilhouetteLines empty{0u, 1u, gpu::kSilhouetteLinesFirstIndex, 0, 0u, 0u, 0u, 0u};
         vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -291,8 +292,7 @@ void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), gpu::kSilhouetteLinesHeaderBytes,
-                             VK_INDEX_TYPE_UINT32);
+        vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
     }
 }
