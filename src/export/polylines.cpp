@@ -30,12 +30,35 @@ public:
     }
 
     std::vector<Polyline> run() {
-        std::vector<Polyline> lines;
+        // Open strokes first: each walk from a vertex with an odd count of unused edges ends at
+        // another such vertex, so a component with 2k of them gets exactly k open strokes.
+        std::vector<std::vector<uint32_t>> strokes;
         for (uint32_t v = 0; v < graph_.vertices.size(); ++v)
-            if ((first_[v + 1] - first_[v]) % 2 == 1)
-                while (unused_[v] > 0) lines.push_back(walk(v));
-        for (uint32_t v = 0; v < graph_.vertices.size(); ++v)
-            while (unused_[v] > 0) lines.push_back(walk(v));
+            while (unused_[v] % 2 == 1) strokes.push_back(walk(v));
+        // Then what is left is loops (every vertex has an even count): each loop that touches a
+        // stroke is spliced into it where they meet (Hierholzer), so it costs no pen lift; a loop
+        // touching none becomes a closed stroke of its own, into which later loops splice in turn.
+        std::vector<uint8_t> closed(strokes.size(), 0);
+        uint32_t next_start = 0;
+        for (size_t s = 0;; ++s) {
+            if (s == strokes.size()) {
+                while (next_start < graph_.vertices.size() && unused_[next_start] == 0) ++next_start;
+                if (next_start == graph_.vertices.size()) break;
+                strokes.push_back(walk(next_start));
+                strokes.back().pop_back();  // a loop: back at its start, which is not repeated
+                closed.push_back(1);
+            }
+            for (size_t k = 0; k < strokes[s].size(); ++k)
+                while (unused_[strokes[s][k]] > 0) {
+                    std::vector<uint32_t> loop = walk(strokes[s][k]);  // starts and ends at strokes[s][k]
+                    strokes[s].insert(strokes[s].begin() + static_cast<std::ptrdiff_t>(k) + 1, loop.begin() + 1, loop.end());
+                }
+        }
+        std::vector<Polyline> lines(strokes.size());
+        for (size_t s = 0; s < strokes.size(); ++s) {
+            for (const uint32_t v : strokes[s]) lines[s].points.push_back(graph_.vertices[v]);
+            lines[s].closed = closed[s] != 0;
+        }
         return lines;
     }
 
@@ -56,9 +79,9 @@ private:
     }
     uint32_t other(uint32_t e, uint32_t v) const { return graph_.edges[e][0] == v ? graph_.edges[e][1] : graph_.edges[e][0]; }
 
-    Polyline walk(uint32_t start) {
-        Polyline line;
-        line.points.push_back(graph_.vertices[start]);
+    // Follows unused edges from `start` until none is left at the current vertex; the vertices visited.
+    std::vector<uint32_t> walk(uint32_t start) {
+        std::vector<uint32_t> path{start};
         uint32_t v = start;
         glm::dvec2 heading(0.0);
         for (uint32_t e = next_edge(v, heading); e != kNone; e = next_edge(v, heading)) {
@@ -67,14 +90,9 @@ private:
             --unused_[v], --unused_[w];
             heading = glm::normalize(graph_.vertices[w] - graph_.vertices[v]);
             v = w;
-            line.points.push_back(graph_.vertices[v]);
+            path.push_back(v);
         }
-        // Back where it began: a loop, drawn without repeating its first point.
-        if (v == start && line.points.size() >= 4) {
-            line.points.pop_back();
-            line.closed = true;
-        }
-        return line;
+        return path;
     }
 
     static constexpr uint32_t kNone = 0xffffffffu;

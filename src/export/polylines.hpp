@@ -2,9 +2,9 @@
 // Line graphs chained into as few pen strokes as the walk finds.
 //
 // Each stroke follows edges end to end; at a junction it goes on along the straightest unused
-// edge, so crossing lines stay whole. Strokes start at vertices of odd degree first (every such
-// vertex must end a stroke), then the loops that are left are walked; a walk that ends where it
-// started is a closed polyline. Every edge is drawn exactly once.
+// edge, so crossing lines stay whole. A connected part with 2k vertices of odd degree becomes k
+// open strokes (no fewer can draw it), one without becomes one closed polyline; loops met on the
+// way are spliced into the stroke that touches them. Every edge is drawn exactly once.
 #include <vector>
 
 #include "export/polyline.hpp"
