@@ -3,6 +3,8 @@
 // Header-only: only the export tests (which link stipple_export) include it.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "core/error.hpp"
@@ -37,5 +39,13 @@ inline plot::Drawing grid_drawing(int dots_x = 10, int dots_y = 10) {
     for (int i = 0; i < 4; ++i) d.segments.push_back({c[i], c[(i + 1) % 4], 0, plot::LineKind::Crease});
     return d;
 }
+
+// Whether a command-line tool (rsvg-convert, pdftoppm, pdfinfo) is installed.
+inline bool have_tool(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
+
+// Runs a shell command line; its exit status.
+inline int run_shell(const std::string& command) { return std::system(command.c_str()); }
+
+inline std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 }  // namespace stipple::test
