@@ -79,9 +79,35 @@ void append_lines(std::string& out, const PlotLayer& layer, const std::string& i
     out += "</g>\n";
 }
 
+// The pen's path with the pen up: from home to each dot and to each stroke's start.
+void append_travel(std::string& out, const PlotPlan& plan) {
+    out += "<g id=\"pen-up-travel\" fill=\"none\" stroke=\"#ff6060\" stroke-width=\"0.05\" stroke-opacity=\"0.8\">\n<path d=\"";
+    glm::dvec2 pen = plan.home;
+    const auto move = [&](glm::dvec2 to) {
+        out += 'M';
+        append_number(out, pen.x, kPlace);
+        out += ' ';
+        append_number(out, pen.y, kPlace);
+        out += 'L';
+        append_number(out, to.x, kPlace);
+        out += ' ';
+        append_number(out, to.y, kPlace);
+        out += '\n';
+    };
+    for (const PlotLayer& layer : plan.layers) {
+        for (const PlotDot& dot : layer.dots) move(dot.mm), pen = dot.mm;
+        for (const Polyline& line : layer.lines) {
+            if (line.points.empty()) continue;
+            move(line.points.front());
+            pen = line.closed ? line.points.front() : line.points.back();
+        }
+    }
+    out += "\"/>\n</g>\n";
+}
+
 }  // namespace
 
-std::string svg_document(const PlotPlan& plan) {
+std::string svg_document(const PlotPlan& plan, bool with_travel) {
     const std::string width = format_number(plan.layout.page.width_mm, 3), height = format_number(plan.layout.page.height_mm, 3);
     std::string out;
     size_t dots = 0;
@@ -98,6 +124,7 @@ std::string svg_document(const PlotPlan& plan) {
         if (layer.kind == LayerKind::Stipples) append_dots(out, layer, plan.dot_style, ink);
         else append_lines(out, layer, ink);
     }
+    if (with_travel) append_travel(out, plan);
     out += "</svg>\n";
     return out;
 }

@@ -12,7 +12,9 @@
 
 namespace stipple::plot {
 
-std::string svg_document(const PlotPlan& plan);
+// with_travel adds the pen-up moves as thin light-red lines in a plain group (not a layer), to
+// look at the plot order; leave it off for a file that goes to a plotter.
+std::string svg_document(const PlotPlan& plan, bool with_travel = false);
 void write_svg(const PlotPlan& plan, const std::string& path);
 
 }  // namespace stipple::plot
