@@ -19,7 +19,12 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+// nanoflann's dynamic index (used here only for the comparison) trips GCC 12's
+// maybe-uninitialized analysis inside the library's own header.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <nanoflann.hpp>
+#pragma GCC diagnostic pop
 
 #include "core/error.hpp"
 #include "export/blue_noise.hpp"

@@ -22,7 +22,7 @@
 
 #include "export/drawing.hpp"
 #include "export/page.hpp"
-#include "export/polyline.hpp"
+#include "export/polylines.hpp"
 #include "export/segment_merge.hpp"
 
 namespace stipple::plot {

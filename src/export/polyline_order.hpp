@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "export/polyline.hpp"
+#include "export/polylines.hpp"
 
 namespace stipple::plot {
 

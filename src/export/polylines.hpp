@@ -7,10 +7,21 @@
 // way are spliced into the stroke that touches them. Every edge is drawn exactly once.
 #include <vector>
 
-#include "export/polyline.hpp"
+#include <glm/vec2.hpp>
+
 #include "export/segment_merge.hpp"
 
 namespace stipple::plot {
+
+// A pen stroke: points joined by straight lines; a closed one also joins its last point to its
+// first (the first point is not repeated at the end).
+struct Polyline {
+    std::vector<glm::dvec2> points;
+    bool closed = false;
+};
+
+// Length drawn with the pen down, the closing edge of a closed polyline included.
+double polyline_length(const Polyline& line);
 
 std::vector<Polyline> chain_edges(const LineGraph& graph);
 

@@ -5,7 +5,7 @@
 // simplified stroke never strays further than that from the original. Ends are kept; a closed
 // polyline stays closed (it is split at its first point and at the point farthest from it, and the
 // two halves are simplified separately).
-#include "export/polyline.hpp"
+#include "export/polylines.hpp"
 
 namespace stipple::plot {
 
