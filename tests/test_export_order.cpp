@@ -13,6 +13,7 @@
 #include "export/dot_order.hpp"
 #include "export/nearest_alive_grid.hpp"
 #include "export/neighbours.hpp"
+#include "export/tour_improve.hpp"
 
 namespace {
 
@@ -85,6 +86,28 @@ TEST(ExportOrder, TinySets) {
     // On a line, from the left end: left to right, whatever the input order.
     const std::vector<glm::dvec2> line{{4, 0}, {1, 0}, {3, 0}, {0, 0}, {2, 0}, {6, 0}, {5, 0}};
     EXPECT_EQ(plot_order(line, glm::dvec2(-1.0, 0.0)), (std::vector<uint32_t>{3, 1, 4, 2, 0, 6, 5}));
+}
+
+// Path length without the approach from the pen: what improve_path minimises (its ends are free).
+double open_length(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>& order) {
+    return order.empty() ? 0.0 : travel_length(points, order, points[order[0]]);
+}
+
+TEST(ExportOrder, ImprovementKeepsAPermutationAndNeverLengthens) {
+    // Small and odd sets (uniform random, with duplicates, many sizes) exercise the moves' wrap-around.
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> coord(0.0, 50.0);
+    for (size_t n = 4; n <= 60; ++n) {
+        std::vector<glm::dvec2> points;
+        for (size_t i = 0; i < n; ++i) points.push_back(i % 7 == 6 ? points[i / 2] : glm::dvec2(coord(rng), coord(rng)));
+        const NeighbourLists lists = nearest_neighbours(points, 5);
+        std::vector<uint32_t> order = nearest_neighbour_tour(points, lists, glm::dvec2(0.0));
+        ASSERT_TRUE(is_permutation_of_all(order, n));
+        const double before = open_length(points, order);
+        improve_path(points, lists, order);
+        ASSERT_TRUE(is_permutation_of_all(order, n)) << n;
+        EXPECT_LE(open_length(points, order), before + 1e-9) << n;
+    }
 }
 
 TEST(ExportOrder, NeighbourListsAreTheNearestSorted) {

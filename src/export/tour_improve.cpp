@@ -35,7 +35,7 @@ public:
             while (try_two_opt(t) || try_or_opt(t)) {
             }
             for (const uint32_t v : touched_)
-                if (v != virtual_ && !queued_[v]) queued_[v] = 1, queue.push_back(v);
+                if (v != virtual_ && v != t && !queued_[v]) queued_[v] = 1, queue.push_back(v);  // t has no move left
             touched_.clear();
         }
         return counts_;
@@ -57,8 +57,8 @@ private:
     }
     uint32_t wrap(int64_t p) const { return static_cast<uint32_t>(((p % m_) + m_) % m_); }
     uint32_t at(int64_t p) const { return tour_[wrap(p)]; }
-    uint32_t succ(uint32_t v) const { return at(int64_t(pos_[v]) + 1); }
-    uint32_t pred(uint32_t v) const { return at(int64_t(pos_[v]) - 1); }
+    uint32_t succ(uint32_t v) const { return tour_[pos_[v] + 1 == m_ ? 0 : pos_[v] + 1]; }
+    uint32_t pred(uint32_t v) const { return tour_[pos_[v] == 0 ? m_ - 1 : pos_[v] - 1]; }
     void place(int64_t p, uint32_t v) {
         const uint32_t w = p >= 0 && p < m_ ? static_cast<uint32_t>(p) : wrap(p);
         tour_[w] = v;
