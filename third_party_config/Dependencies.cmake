@@ -9,6 +9,9 @@ find_package(nlohmann_json REQUIRED)
 find_package(glfw3 REQUIRED)
 find_package(meshoptimizer REQUIRED)
 find_package(PkgConfig REQUIRED)
+find_package(nanoflann REQUIRED)                        # libnanoflann-dev: k-d tree for the plotter order
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)  # libcairo2-dev: PDF export
+find_package(tinyxml2 REQUIRED)                         # libtinyxml2-dev: the export tests parse the SVG
 
 # stb is header-only in Debian (libstb-dev) with only a pkg-config file.
 if(NOT TARGET stb::stb)

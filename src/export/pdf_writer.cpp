@@ -1,0 +1,98 @@
+#include "export/pdf_writer.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <numbers>
+
+#include <cairo-pdf.h>
+#include <cairo.h>
+
+#include "core/error.hpp"
+
+namespace stipple::plot {
+
+namespace {
+
+using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+void check(cairo_status_t status, const std::string& path) {
+    if (status != CAIRO_STATUS_SUCCESS) fail_file(path, std::string("cannot write PDF: ") + cairo_status_to_string(status));
+}
+
+void set_colour(cairo_t* cr, glm::vec3 colour) { cairo_set_source_rgb(cr, colour.r, colour.g, colour.b); }
+
+void set_pen(cairo_t* cr, double width_mm) {
+    cairo_set_line_width(cr, width_mm);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+}
+
+// All dots of a layer are one path, filled or stroked once: one operator per layer keeps the file
+// and cairo's work small.
+void draw_dots(cairo_t* cr, const PlotLayer& layer, DotStyle style) {
+    cairo_new_path(cr);
+    for (const PlotDot& dot : layer.dots) {
+        if (style == DotStyle::Tick) {
+            const double length = tick_length(dot.radius_mm, layer.stroke_mm);
+            cairo_move_to(cr, dot.mm.x - length / 2.0, dot.mm.y);
+            cairo_rel_line_to(cr, length, 0.0);
+            continue;
+        }
+        const double r = style == DotStyle::Filled ? dot.radius_mm : circle_stroke_radius(dot.radius_mm, layer.stroke_mm);
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, dot.mm.x, dot.mm.y, std::max(r, 0.001), 0.0, 2.0 * std::numbers::pi);
+        cairo_close_path(cr);
+    }
+    if (style == DotStyle::Filled) {
+        cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);  // overlapping dots stay solid
+        cairo_fill(cr);
+    } else {
+        set_pen(cr, layer.stroke_mm);
+        cairo_stroke(cr);
+    }
+}
+
+void draw_lines(cairo_t* cr, const PlotLayer& layer) {
+    cairo_new_path(cr);
+    for (const Polyline& line : layer.lines) {
+        if (line.points.empty()) continue;
+        cairo_move_to(cr, line.points[0].x, line.points[0].y);
+        for (size_t i = 1; i < line.points.size(); ++i) cairo_line_to(cr, line.points[i].x, line.points[i].y);
+        if (line.points.size() == 1) cairo_rel_line_to(cr, 0.0, 0.0);
+        if (line.closed) cairo_close_path(cr);
+    }
+    set_pen(cr, layer.stroke_mm);
+    cairo_stroke(cr);
+}
+
+}  // namespace
+
+void write_pdf(const PlotPlan& plan, const std::string& path) {
+    const double width_pt = plan.layout.page.width_mm * kPointsPerMm, height_pt = plan.layout.page.height_mm * kPointsPerMm;
+    Surface surface(cairo_pdf_surface_create(path.c_str(), width_pt, height_pt), &cairo_surface_destroy);
+    check(cairo_surface_status(surface.get()), path);
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, "stipple drawing");
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "stipple");
+    Context context(cairo_create(surface.get()), &cairo_destroy);
+    cairo_t* cr = context.get();
+    cairo_scale(cr, kPointsPerMm, kPointsPerMm);  // user units are millimetres from here on
+
+    if (plan.fill_paper) {
+        set_colour(cr, plan.paper);
+        cairo_paint(cr);
+    }
+    for (const PlotLayer& layer : plan.layers) {
+        cairo_push_group(cr);
+        set_colour(cr, plan.ink);
+        if (layer.kind == LayerKind::Stipples) draw_dots(cr, layer, plan.dot_style);
+        else draw_lines(cr, layer);
+        cairo_pop_group_to_source(cr);
+        cairo_paint(cr);
+    }
+    check(cairo_status(cr), path);
+    cairo_surface_finish(surface.get());
+    check(cairo_surface_status(surface.get()), path);
+}
+
+}  // namespace stipple::plot

@@ -1,0 +1,37 @@
+#include "export/plot_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "export/csv_writer.hpp"
+#include "export/pdf_writer.hpp"
+#include "export/svg_writer.hpp"
+
+namespace stipple::plot {
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace
+
+bool is_plot_path(const std::string& path) {
+    const std::string ext = extension_of(path);
+    return ext == ".svg" || ext == ".pdf" || ext == ".csv";
+}
+
+void write_plot_file(const PlotPlan& plan, const std::string& path) {
+    const std::string ext = extension_of(path);
+    if (ext == ".svg") write_svg(plan, path);
+    else if (ext == ".pdf") write_pdf(plan, path);
+    else if (ext == ".csv") write_csv(plan, path);
+    else fail_file(path, "unknown drawing format '" + ext + "' (expected .svg, .pdf or .csv)");
+}
+
+}  // namespace stipple::plot

@@ -1,0 +1,141 @@
+#include "export/plot_plan.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "export/dot_order.hpp"
+#include "export/polyline_order.hpp"
+#include "export/polylines.hpp"
+#include "export/simplify.hpp"
+
+namespace stipple::plot {
+
+DotStyle parse_dot_style(const std::string& name) {
+    if (name == "filled") return DotStyle::Filled;
+    if (name == "circle") return DotStyle::Circle;
+    if (name == "tick") return DotStyle::Tick;
+    fail("--dot-style '" + name + "': expected filled, circle or tick");
+}
+
+const char* dot_style_name(DotStyle style) {
+    switch (style) {
+        case DotStyle::Filled: return "filled";
+        case DotStyle::Circle: return "circle";
+        case DotStyle::Tick: return "tick";
+    }
+    return "filled";
+}
+
+double circle_stroke_radius(double radius_mm, double pen_mm) { return std::max(radius_mm - pen_mm / 2.0, pen_mm / 4.0); }
+
+double tick_length(double radius_mm, double pen_mm) {
+    if (!(pen_mm > 0.0)) return kMinTickMm;
+    const double ink = std::numbers::pi * (radius_mm * radius_mm - pen_mm * pen_mm / 4.0);
+    return std::max(ink / pen_mm, kMinTickMm);
+}
+
+namespace {
+
+std::string layer_label(uint32_t number, const std::string& name, uint32_t object, LayerKind kind) {
+    return std::to_string(number) + " " + (name.empty() ? "object" + std::to_string(object + 1) : name) +
+           (kind == LayerKind::Stipples ? " stipples" : " lines");
+}
+
+bool finite(glm::vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot_indices, uint32_t object, const PlotPlan& plan,
+                        double pen_mm, bool plotter_order, glm::dvec2& pen) {
+    PlotLayer layer;
+    layer.number = 2 * object + 1;
+    layer.label = layer_label(layer.number, drawing.objects[object].name, object, LayerKind::Stipples);
+    layer.object = object;
+    layer.kind = LayerKind::Stipples;
+    layer.stroke_mm = pen_mm;
+    std::vector<glm::dvec2> points;
+    points.reserve(dot_indices.size());
+    for (const uint32_t i : dot_indices) points.push_back(plan.layout.to_mm(glm::dvec2(drawing.dots[i].px)));
+    std::vector<uint32_t> order;
+    if (plotter_order) {
+        order = plot_order(points, pen);
+    } else {
+        order.resize(points.size());
+        for (uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+    }
+    layer.dots.reserve(order.size());
+    for (const uint32_t k : order) {
+        const Dot& dot = drawing.dots[dot_indices[k]];
+        const double radius = std::max(0.0, static_cast<double>(dot.radius_px)) * plan.layout.mm_per_px *
+                              std::sqrt(std::clamp(static_cast<double>(dot.intensity), 0.0, 1.0));
+        layer.dots.push_back({points[k], radius, object, dot.polygon});
+    }
+    if (!layer.dots.empty()) pen = layer.dots.back().mm;
+    return layer;
+}
+
+PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segment_indices, uint32_t object, const PlotPlan& plan,
+                     const ExportOptions& options, glm::dvec2& pen) {
+    PlotLayer layer;
+    layer.number = 2 * object + 2;
+    layer.label = layer_label(layer.number, drawing.objects[object].name, object, LayerKind::Lines);
+    layer.object = object;
+    layer.kind = LayerKind::Lines;
+    layer.stroke_mm = options.pen_width_mm.value_or(std::max(0.0f, drawing.objects[object].line_width_px) * plan.layout.mm_per_px);
+    // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).
+    std::vector<std::array<glm::dvec2, 2>> pieces;
+    pieces.reserve(segment_indices.size());
+    for (const uint32_t i : segment_indices) pieces.push_back({glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b)});
+    for (Polyline& line : chain_edges(merge_segments(pieces, options.merge))) {
+        for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
+        layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
+    }
+    if (options.plotter_order) order_polylines(layer.lines, pen);
+    else if (!layer.lines.empty()) pen = layer.lines.back().closed ? layer.lines.back().points.front() : layer.lines.back().points.back();
+    return layer;
+}
+
+}  // namespace
+
+PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
+    if (options.pen_width_mm && !(*options.pen_width_mm > 0.0 && *options.pen_width_mm < 100.0))
+        fail("--pen-width " + std::to_string(*options.pen_width_mm) + ": must be a positive width in millimetres");
+    PlotPlan plan;
+    plan.layout = fit_to_page(options.page, options.margin_mm, drawing.width_px, drawing.height_px);
+    plan.dot_style = options.dot_style;
+    plan.ink = drawing.ink;
+    plan.paper = drawing.paper;
+    plan.fill_paper = options.fill_paper;
+
+    const uint32_t objects = static_cast<uint32_t>(drawing.objects.size());
+    std::vector<std::vector<uint32_t>> dots_of(objects), segments_of(objects);
+    for (uint32_t i = 0; i < drawing.dots.size(); ++i) {
+        const Dot& dot = drawing.dots[i];
+        if (dot.object >= objects)
+            fail("export: dot " + std::to_string(i) + " belongs to object " + std::to_string(dot.object) + " of " + std::to_string(objects));
+        // A dot of no intensity or no size leaves no ink; one at no finite place cannot be drawn.
+        if (dot.intensity > 0.0f && dot.radius_px > 0.0f && finite(dot.px)) dots_of[dot.object].push_back(i);
+    }
+    for (uint32_t i = 0; i < drawing.segments.size(); ++i) {
+        const Segment& segment = drawing.segments[i];
+        if (segment.object >= objects)
+            fail("export: line segment " + std::to_string(i) + " belongs to object " + std::to_string(segment.object) + " of " +
+                 std::to_string(objects));
+        segments_of[segment.object].push_back(i);
+    }
+
+    const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);
+    glm::dvec2 pen = plan.home;
+    for (uint32_t object = 0; object < objects; ++object) {
+        if (!dots_of[object].empty())
+            plan.layers.push_back(stipple_layer(drawing, dots_of[object], object, plan, dot_pen, options.plotter_order, pen));
+        if (!segments_of[object].empty()) {
+            PlotLayer lines = line_layer(drawing, segments_of[object], object, plan, options, pen);
+            if (!lines.lines.empty()) plan.layers.push_back(std::move(lines));
+        }
+    }
+    return plan;
+}
+
+}  // namespace stipple::plot

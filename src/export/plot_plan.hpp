@@ -1,0 +1,92 @@
+#pragma once
+// A Drawing laid out on a page and put in plotter order: what the SVG, PDF and CSV writers and
+// the statistics read.
+//
+// Layers: one per object and kind, stipples then lines, numbered 2k+1 and 2k+2 for object k (the
+// numbers stay the same whichever layers are empty; empty layers are left out), labelled
+// "<number> <object name> stipples|lines" as the AxiDraw driver expects. Everything is in
+// millimetres on the page (see page.hpp). The pen starts at the page's top-left corner (a
+// plotter's home) and visits the layers in number order; within a layer the dots follow
+// dot_order.hpp and the strokes polyline_order.hpp, each starting where the pen is.
+//
+// Fractional dots: pens cannot draw half-opaque ink, so a dot of intensity i (the paper's last,
+// fractional stipple of a polygon, or a faded one) is drawn at full ink with radius r * sqrt(i):
+// the same ink area, hence the same tone, as the screen's dot of radius r at opacity i.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "export/drawing.hpp"
+#include "export/page.hpp"
+#include "export/polylines.hpp"
+#include "export/segment_merge.hpp"
+
+namespace stipple::plot {
+
+// How dots are drawn. Filled: a filled circle (print, PDF). Circle: a stroked circle whose ink
+// reaches the dot's radius (plotters). Tick: a short round-capped stroke the pen draws without
+// stopping, as long as gives the dot's ink area (plotters; fastest).
+enum class DotStyle { Filled, Circle, Tick };
+DotStyle parse_dot_style(const std::string& name);  // "filled" | "circle" | "tick"
+const char* dot_style_name(DotStyle style);
+
+constexpr double kDefaultPenWidthMm = 0.3;
+
+struct ExportOptions {
+    PageSize page;  // parse_page("A4") by default
+    double margin_mm = 10.0;
+    // The pen: the stroke of the lines and of circle and tick dots. Absent: the lines keep the
+    // width the frame drew them with, scaled to the page (so a print matches the screen image),
+    // and circle and tick dots use kDefaultPenWidthMm.
+    std::optional<double> pen_width_mm;
+    DotStyle dot_style = DotStyle::Filled;
+    bool fill_paper = false;  // paint the page in the paper colour (print); a plotter's paper is the paper
+    bool plotter_order = true;  // false: dots in the order given and strokes as chained (to compare)
+    double simplify_mm = 0.05;  // Douglas-Peucker tolerance of the strokes
+    MergeOptions merge;         // welding and overlap tolerances, in pixels
+};
+
+enum class LayerKind { Stipples, Lines };
+
+struct PlotDot {
+    glm::dvec2 mm{0.0};
+    double radius_mm = 0.0;  // ink radius: radius_px * mm_per_px * sqrt(intensity)
+    uint32_t object = 0, polygon = 0;
+};
+
+struct PlotLayer {
+    uint32_t number = 0;
+    std::string label;  // "<number> <name> stipples|lines"
+    uint32_t object = 0;
+    LayerKind kind = LayerKind::Stipples;
+    double stroke_mm = 0.0;  // pen width of this layer's strokes (lines, or circle and tick dots)
+    std::vector<PlotDot> dots;
+    std::vector<Polyline> lines;
+};
+
+struct PlotPlan {
+    PageLayout layout;
+    DotStyle dot_style = DotStyle::Filled;
+    glm::vec3 ink{0.0f}, paper{1.0f};
+    bool fill_paper = false;
+    glm::dvec2 home{0.0};  // where the pen starts
+    std::vector<PlotLayer> layers;
+};
+
+// Throws stipple::Error for a drawing that cannot be laid out (no size, a dot or segment naming a
+// missing object) or a bad option.
+PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options);
+
+// The stroked geometry of a dot of ink radius r drawn with a pen of width w:
+// Circle style: the centre-line radius, r - w/2 (the ink's outer edge at r), at least w/4.
+double circle_stroke_radius(double radius_mm, double pen_mm);
+// Tick style: the stroke length L with w*L + pi*w^2/4 = pi*r^2 (the dot's ink area), at least
+// kMinTickMm so that every driver lowers the pen.
+double tick_length(double radius_mm, double pen_mm);
+constexpr double kMinTickMm = 0.02;
+
+}  // namespace stipple::plot

@@ -1,0 +1,71 @@
+#include "export/plot_stats.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "export/neighbours.hpp"
+#include "export/text_format.hpp"
+
+namespace stipple::plot {
+
+namespace {
+
+double dot_pen_down(const PlotDot& dot, DotStyle style, double pen_mm) {
+    switch (style) {
+        case DotStyle::Filled: return 2.0 * std::numbers::pi * dot.radius_mm;
+        case DotStyle::Circle: return 2.0 * std::numbers::pi * circle_stroke_radius(dot.radius_mm, pen_mm);
+        case DotStyle::Tick: return tick_length(dot.radius_mm, pen_mm);
+    }
+    return 0.0;
+}
+
+// Sum over the layer's dots but its first of the distance to their nearest neighbour.
+double dot_travel_bound(const std::vector<PlotDot>& dots) {
+    if (dots.size() < 2) return 0.0;
+    std::vector<glm::dvec2> points;
+    points.reserve(dots.size());
+    for (const PlotDot& dot : dots) points.push_back(dot.mm);
+    const NeighbourLists nearest = nearest_neighbours(points, 1);
+    double bound = 0.0;
+    for (size_t i = 1; i < points.size(); ++i) bound += glm::length(points[nearest.indices[i]] - points[i]);
+    return bound;
+}
+
+}  // namespace
+
+PlotStats plot_stats(const PlotPlan& plan) {
+    PlotStats stats;
+    glm::dvec2 pen = plan.home;
+    for (const PlotLayer& layer : plan.layers) {
+        for (size_t i = 0; i < layer.dots.size(); ++i) {
+            const double move = glm::length(layer.dots[i].mm - pen);
+            stats.pen_up_mm += move;
+            if (i > 0) stats.dot_travel_mm += move;
+            stats.pen_down_mm += dot_pen_down(layer.dots[i], plan.dot_style, layer.stroke_mm);
+            pen = layer.dots[i].mm;
+        }
+        stats.dots += layer.dots.size();
+        stats.dot_travel_bound_mm += dot_travel_bound(layer.dots);
+        for (const Polyline& line : layer.lines) {
+            if (line.points.empty()) continue;
+            stats.pen_up_mm += glm::length(line.points.front() - pen);
+            stats.pen_down_mm += polyline_length(line);
+            pen = line.closed ? line.points.front() : line.points.back();
+            ++stats.polylines;
+        }
+    }
+    stats.pen_lifts = stats.dots + stats.polylines;
+    return stats;
+}
+
+std::string format_stats(const PlotStats& stats) {
+    return "plot: " + std::to_string(stats.dots) + " dots, " + std::to_string(stats.polylines) + " polylines, pen down " +
+           format_number(stats.pen_down_mm, 1) + " mm, pen up " + format_number(stats.pen_up_mm, 1) + " mm, " +
+           std::to_string(stats.pen_lifts) + " pen lifts, travel between dots " + format_number(stats.travel_ratio(), 2) +
+           "x its lower bound (" + format_number(stats.dot_travel_bound_mm, 1) + " mm)";
+}
+
+}  // namespace stipple::plot

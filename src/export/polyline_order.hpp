@@ -1,0 +1,18 @@
+#pragma once
+// The order a plotter draws strokes in: from the pen, always on to the nearest free end.
+//
+// An open stroke may be entered at either end (it is reversed when entered at its last point), a
+// closed one at any of its points (it is rotated to start there, and the pen comes back to that
+// point). The nearest end is found with a NearestAliveGrid over all entry points.
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "export/polylines.hpp"
+
+namespace stipple::plot {
+
+// Reorders (and reverses or rotates) `lines` in place; `pen` moves to where the last one ends.
+void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen);
+
+}  // namespace stipple::plot

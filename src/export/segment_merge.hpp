@@ -1,0 +1,31 @@
+#pragma once
+// Visible line pieces made into a clean graph: endpoints welded, every stretch of line once.
+//
+// The frame hands over line pieces as it found them: each piece of an edge on its own, an edge
+// shared by two polygons possibly twice, pieces split at visibility changes overlapping a little.
+// Drawn as they come, a plotter would draw some lines twice (the ink bleeds, the paper wears) and
+// lift the pen at every piece. Here endpoints closer than snap_px become one vertex, zero-length
+// pieces go, and pieces lying on one line (within collinear_px) that overlap are merged into the
+// union of their extents, so that no stretch is left twice; chaining (polylines.hpp) follows.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace stipple::plot {
+
+struct MergeOptions {
+    double snap_px = 1e-3;       // endpoints this close are the same point
+    double collinear_px = 1e-2;  // pieces whose ends lie this close to each other's line are on one line
+};
+
+struct LineGraph {
+    std::vector<glm::dvec2> vertices;
+    std::vector<std::array<uint32_t, 2>> edges;  // no two overlap, none has zero length
+};
+
+LineGraph merge_segments(std::span<const std::array<glm::dvec2, 2>> pieces, const MergeOptions& options = {});
+
+}  // namespace stipple::plot

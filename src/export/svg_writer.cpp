@@ -1,0 +1,134 @@
+#include "export/svg_writer.hpp"
+
+#include <algorithm>
+
+#include "export/text_format.hpp"
+
+namespace stipple::plot {
+
+namespace {
+
+constexpr int kPlace = 2;        // coordinates to 0.01 mm: finer than any pen
+constexpr int kRadiusPlace = 3;  // radii to 0.001 mm: a faded dot's radius is small
+constexpr size_t kTicksPerPath = 1000;
+
+void append_layer_open(std::string& out, const PlotLayer& layer, const std::string& style) {
+    out += "<g inkscape:groupmode=\"layer\" id=\"layer";
+    out += std::to_string(layer.number);
+    out += "\" inkscape:label=\"";
+    out += xml_escape(layer.label);
+    out += "\" ";
+    out += style;
+    out += ">\n";
+}
+
+std::string stroke_style(const std::string& ink, double width_mm) {
+    return "fill=\"none\" stroke=\"" + ink + "\" stroke-width=\"" + format_number(width_mm, 3) +
+           "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
+}
+
+void append_dots(std::string& out, const PlotLayer& layer, DotStyle style, const std::string& ink) {
+    if (style == DotStyle::Tick) {
+        append_layer_open(out, layer, stroke_style(ink, layer.stroke_mm));
+        for (size_t i = 0; i < layer.dots.size(); ++i) {
+            if (i % kTicksPerPath == 0) out += i == 0 ? "<path d=\"" : "\"/>\n<path d=\"";
+            const PlotDot& dot = layer.dots[i];
+            const double length = tick_length(dot.radius_mm, layer.stroke_mm);
+            // Centred on the dot, drawn left to right.
+            out += 'M';
+            append_number(out, dot.mm.x - length / 2.0, kPlace);
+            out += ' ';
+            append_number(out, dot.mm.y, kPlace);
+            out += 'h';
+            append_number(out, length, kPlace);
+            out += '\n';
+        }
+        out += "\"/>\n</g>\n";
+        return;
+    }
+    append_layer_open(out, layer, style == DotStyle::Filled ? "fill=\"" + ink + "\" stroke=\"none\"" : stroke_style(ink, layer.stroke_mm));
+    for (const PlotDot& dot : layer.dots) {
+        out += "<circle cx=\"";
+        append_number(out, dot.mm.x, kPlace);
+        out += "\" cy=\"";
+        append_number(out, dot.mm.y, kPlace);
+        out += "\" r=\"";
+        const double r = style == DotStyle::Filled ? dot.radius_mm : circle_stroke_radius(dot.radius_mm, layer.stroke_mm);
+        append_number(out, std::max(r, 0.001), kRadiusPlace);
+        out += "\"/>\n";
+    }
+    out += "</g>\n";
+}
+
+void append_lines(std::string& out, const PlotLayer& layer, const std::string& ink) {
+    append_layer_open(out, layer, stroke_style(ink, layer.stroke_mm));
+    for (const Polyline& line : layer.lines) {
+        if (line.points.empty()) continue;
+        out += "<path d=\"M";
+        for (size_t i = 0; i < line.points.size(); ++i) {
+            if (i == 1) out += 'L';
+            else if (i > 1) out += ' ';
+            append_number(out, line.points[i].x, kPlace);
+            out += ' ';
+            append_number(out, line.points[i].y, kPlace);
+        }
+        if (line.points.size() == 1) out += "h0";  // a stroke shrunk to a point still leaves its dot
+        if (line.closed) out += 'Z';
+        out += "\"/>\n";
+    }
+    out += "</g>\n";
+}
+
+// The pen's path with the pen up: from home to each dot and to each stroke's start.
+void append_travel(std::string& out, const PlotPlan& plan) {
+    out += "<g id=\"pen-up-travel\" fill=\"none\" stroke=\"#ff6060\" stroke-width=\"0.05\" stroke-opacity=\"0.8\">\n<path d=\"";
+    glm::dvec2 pen = plan.home;
+    const auto move = [&](glm::dvec2 to) {
+        out += 'M';
+        append_number(out, pen.x, kPlace);
+        out += ' ';
+        append_number(out, pen.y, kPlace);
+        out += 'L';
+        append_number(out, to.x, kPlace);
+        out += ' ';
+        append_number(out, to.y, kPlace);
+        out += '\n';
+    };
+    for (const PlotLayer& layer : plan.layers) {
+        for (const PlotDot& dot : layer.dots) move(dot.mm), pen = dot.mm;
+        for (const Polyline& line : layer.lines) {
+            if (line.points.empty()) continue;
+            move(line.points.front());
+            pen = line.closed ? line.points.front() : line.points.back();
+        }
+    }
+    out += "\"/>\n</g>\n";
+}
+
+}  // namespace
+
+std::string svg_document(const PlotPlan& plan, bool with_travel) {
+    const std::string width = format_number(plan.layout.page.width_mm, 3), height = format_number(plan.layout.page.height_mm, 3);
+    std::string out;
+    size_t dots = 0;
+    for (const PlotLayer& layer : plan.layers) dots += layer.dots.size();
+    out.reserve(1024 + 44 * dots);
+    out += "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n";
+    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" version=\"1.1\" width=\"" +
+           width + "mm\" height=\"" + height + "mm\" viewBox=\"0 0 " + width + " " + height + "\">\n";
+    out += "<title>stipple drawing</title>\n";
+    if (plan.fill_paper)
+        out += "<rect width=\"" + width + "\" height=\"" + height + "\" fill=\"" + hex_colour(plan.paper) + "\" stroke=\"none\"/>\n";
+    const std::string ink = hex_colour(plan.ink);
+    for (const PlotLayer& layer : plan.layers) {
+        if (layer.kind == LayerKind::Stipples) append_dots(out, layer, plan.dot_style, ink);
+        else append_lines(out, layer, ink);
+    }
+    if (with_travel) append_travel(out, plan);
+    out += "</svg>\n";
+    return out;
+}
+
+void write_svg(const PlotPlan& plan, const std::string& path) { write_text_file(path, svg_document(plan)); }
+
+}  // namespace stipple::plot

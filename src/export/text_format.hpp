@@ -1,0 +1,25 @@
+#pragma once
+// Small helpers the text writers (SVG, CSV, statistics) share: compact numbers, colours, escaping,
+// and writing a file with a one-line error on failure.
+#include <string>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+
+namespace stipple::plot {
+
+// Appends value rounded to `decimals` places, without trailing zeros ("12.5", "3", "-0.25"), the
+// shortest form that keeps the precision: file size is per dot.
+void append_number(std::string& out, double value, int decimals);
+std::string format_number(double value, int decimals);
+
+// "#rrggbb" of a colour in [0,1].
+std::string hex_colour(glm::vec3 colour);
+
+// Text safe inside an XML attribute value.
+std::string xml_escape(std::string_view text);
+
+// Writes `contents` to `path`; throws stipple::Error "<path>: cannot write: <reason>" on failure.
+void write_text_file(const std::string& path, std::string_view contents);
+
+}  // namespace stipple::plot

@@ -1,0 +1,150 @@
+// The plot plan (layers, fractional dots, the pen's path), the CSV of its dots, the statistics
+// `--stats` prints, and writing by extension.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "export/csv_writer.hpp"
+#include "export/plot_file.hpp"
+#include "export/plot_plan.hpp"
+#include "export/plot_stats.hpp"
+#include "support/export_helpers.hpp"
+#include "support/test_paths.hpp"
+
+namespace {
+
+using namespace stipple::plot;
+using stipple::test::grid_drawing;
+
+TEST(ExportPlan, LayersNumberedPerObjectAndKind) {
+    Drawing drawing = grid_drawing(3, 3);
+    // Object 0 ("cube") keeps only its lines; object 1 ("", unnamed) has dots only.
+    drawing.objects.push_back({"", 1.0f});
+    for (Dot& dot : drawing.dots) dot.object = 1;
+    const PlotPlan plan = make_plot_plan(drawing, {});
+    ASSERT_EQ(plan.layers.size(), 2u);
+    EXPECT_EQ(plan.layers[0].label, "2 cube lines");
+    EXPECT_EQ(plan.layers[0].kind, LayerKind::Lines);
+    EXPECT_EQ(plan.layers[1].label, "3 object2 stipples");
+    EXPECT_EQ(plan.layers[1].dots.size(), 9u);
+}
+
+TEST(ExportPlan, FractionalDotsKeepTheirInkArea) {
+    Drawing drawing = grid_drawing(2, 1);
+    drawing.dots[0].intensity = 0.25f;
+    drawing.dots[1].intensity = 1.0f;
+    drawing.dots.push_back({glm::vec2(10.0f, 10.0f), 1.5f, 0.0f, 0, 0});    // no intensity: no dot
+    drawing.dots.push_back({glm::vec2(NAN, 10.0f), 1.5f, 1.0f, 0, 0});     // nowhere: no dot
+    ExportOptions options;
+    options.plotter_order = false;
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    ASSERT_EQ(plan.layers[0].dots.size(), 2u);
+    const double full = 1.5 * plan.layout.mm_per_px;
+    EXPECT_NEAR(plan.layers[0].dots[0].radius_mm, full * 0.5, 1e-12);  // sqrt(0.25): a quarter of the area
+    EXPECT_NEAR(plan.layers[0].dots[1].radius_mm, full, 1e-12);
+    EXPECT_EQ(plan.layers[0].dots[0].polygon, 0u);
+    EXPECT_EQ(plan.layers[0].dots[1].polygon, 1u);
+}
+
+TEST(ExportPlan, DotStrokeGeometry) {
+    // A tick's round-capped stroke has the dot's ink area.
+    const double r = 0.4, pen = 0.3, length = tick_length(r, pen);
+    EXPECT_NEAR(pen * length + std::numbers::pi * pen * pen / 4.0, std::numbers::pi * r * r, 1e-12);
+    EXPECT_DOUBLE_EQ(tick_length(0.1, 0.3), kMinTickMm);  // a dot smaller than the pen: the shortest tick
+    EXPECT_DOUBLE_EQ(circle_stroke_radius(0.4, 0.3), 0.25);
+    EXPECT_DOUBLE_EQ(circle_stroke_radius(0.1, 0.3), 0.075);
+    EXPECT_EQ(parse_dot_style("tick"), DotStyle::Tick);
+    stipple::test::expect_plot_error([] { parse_dot_style("square"); }, "--dot-style 'square'");
+}
+
+TEST(ExportPlan, BadDrawingsAndOptionsAreErrors) {
+    Drawing drawing = grid_drawing(2, 2);
+    drawing.dots[3].object = 4;
+    stipple::test::expect_plot_error([&] { make_plot_plan(drawing, {}); }, "dot 3 belongs to object 4 of 1");
+    drawing = grid_drawing(2, 2);
+    drawing.segments[1].object = 2;
+    stipple::test::expect_plot_error([&] { make_plot_plan(drawing, {}); }, "line segment 1 belongs to object 2");
+    ExportOptions options;
+    options.pen_width_mm = -0.3;
+    stipple::test::expect_plot_error([&] { make_plot_plan(grid_drawing(), options); }, "--pen-width");
+}
+
+TEST(ExportPlan, CsvListsDotsInPlotOrder) {
+    const PlotPlan plan = make_plot_plan(grid_drawing(5, 4), {});
+    std::istringstream csv(csv_document(plan));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "x_mm,y_mm,radius_mm,object,polygon");
+    size_t row = 0;
+    while (std::getline(csv, line)) {
+        ASSERT_LT(row, plan.layers[0].dots.size());
+        const PlotDot& dot = plan.layers[0].dots[row++];
+        double x, y, r;
+        unsigned object, polygon;
+        char comma;
+        std::istringstream fields(line);
+        fields >> x >> comma >> y >> comma >> r >> comma >> object >> comma >> polygon;
+        ASSERT_FALSE(fields.fail()) << line;
+        EXPECT_NEAR(x, dot.mm.x, 0.0005);
+        EXPECT_NEAR(y, dot.mm.y, 0.0005);
+        EXPECT_NEAR(r, dot.radius_mm, 0.0005);
+        EXPECT_EQ(object, 0u);
+        EXPECT_EQ(polygon, dot.polygon);
+    }
+    EXPECT_EQ(row, 20u);
+}
+
+TEST(ExportPlan, StatsOfAKnownPlot) {
+    // Home (0,0) -> dots at (10,0) and (20,0) -> a closed 10 mm square from (30,0).
+    PlotPlan plan;
+    plan.dot_style = DotStyle::Filled;
+    PlotLayer dots;
+    dots.kind = LayerKind::Stipples;
+    dots.dots = {{glm::dvec2(10, 0), 0.5, 0, 0}, {glm::dvec2(20, 0), 0.5, 0, 1}};
+    PlotLayer lines;
+    lines.kind = LayerKind::Lines;
+    lines.lines.push_back({{glm::dvec2(30, 0), glm::dvec2(40, 0), glm::dvec2(40, 10), glm::dvec2(30, 10)}, true});
+    plan.layers = {dots, lines};
+    const PlotStats stats = plot_stats(plan);
+    EXPECT_EQ(stats.dots, 2u);
+    EXPECT_EQ(stats.polylines, 1u);
+    EXPECT_EQ(stats.pen_lifts, 3u);
+    EXPECT_NEAR(stats.pen_up_mm, 30.0, 1e-12);
+    EXPECT_NEAR(stats.pen_down_mm, 40.0 + 2 * 2.0 * std::numbers::pi * 0.5, 1e-12);
+    EXPECT_NEAR(stats.dot_travel_mm, 10.0, 1e-12);
+    EXPECT_NEAR(stats.dot_travel_bound_mm, 10.0, 1e-12);
+    EXPECT_NEAR(stats.travel_ratio(), 1.0, 1e-12);
+    const std::string text = format_stats(stats);
+    EXPECT_EQ(text.find('\n'), std::string::npos);
+    EXPECT_NE(text.find("2 dots, 1 polylines, pen down 46.3 mm, pen up 30 mm, 3 pen lifts, travel between dots 1x"), std::string::npos) << text;
+
+    // A plan of a real-sized set in plotter order stays within the target; in the given order
+    // (row by row, back and forth across the grid) it does not.
+    const PlotStats ordered = plot_stats(make_plot_plan(grid_drawing(30, 12), {}));
+    EXPECT_LE(ordered.travel_ratio(), 1.05);  // a grid has a perfect path, and the order finds it
+    ExportOptions as_given;
+    as_given.plotter_order = false;
+    EXPECT_GT(plot_stats(make_plot_plan(grid_drawing(30, 12), as_given)).travel_ratio(), 1.5);
+}
+
+TEST(ExportPlan, WritesByExtension) {
+    const auto dir = stipple::test::temp_dir("export_plot_file");
+    const PlotPlan plan = make_plot_plan(grid_drawing(), {});
+    EXPECT_TRUE(is_plot_path("a/B.SVG"));
+    EXPECT_FALSE(is_plot_path("b.png"));
+    for (const char* name : {"d.svg", "d.PDF", "d.csv"}) {
+        write_plot_file(plan, (dir / name).string());
+        std::ifstream in(dir / name, std::ios::binary);
+        std::string head(5, '\0');
+        in.read(head.data(), 5);
+        EXPECT_EQ(head, std::string(name) == "d.svg" ? "<?xml" : std::string(name) == "d.PDF" ? "%PDF-" : "x_mm,") << name;
+    }
+    stipple::test::expect_plot_error([&] { write_plot_file(plan, (dir / "d.png").string()); }, "d.png: unknown drawing format '.png'");
+}
+
+}  // namespace

@@ -1,0 +1,172 @@
+// The SVG: a millimetre page, one Inkscape layer per object and kind with the styles on the
+// layer, the dots and strokes of the plan in order, at most 48 bytes a dot; and, rasterised by
+// rsvg-convert, ink exactly where the dots are.
+#include <gtest/gtest.h>
+
+#include <tinyxml2.h>
+
+#include <cmath>
+#include <cstring>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "export/blue_noise.hpp"
+#include "export/plot_plan.hpp"
+#include "export/svg_writer.hpp"
+#include "io/png_io.hpp"
+#include "support/export_helpers.hpp"
+#include "support/test_paths.hpp"
+
+namespace {
+
+using namespace stipple::plot;
+using stipple::test::grid_drawing;
+
+// Two objects: "bunny" with a grid of dots and a square outline, "horse & co" with dots only.
+Drawing two_objects() {
+    Drawing d = grid_drawing(10, 10);
+    d.objects[0].name = "bunny";
+    d.objects.push_back({"horse & co", 1.0f});
+    for (int i = 0; i < 25; ++i) d.dots.push_back({glm::vec2(300.0f + 8.0f * (i % 5), 230.0f + 8.0f * (i / 5)), 1.0f, 1.0f, 1, 7});
+    return d;
+}
+
+std::vector<const tinyxml2::XMLElement*> layers_of(const tinyxml2::XMLElement* svg) {
+    std::vector<const tinyxml2::XMLElement*> layers;
+    for (const tinyxml2::XMLElement* g = svg->FirstChildElement("g"); g; g = g->NextSiblingElement("g"))
+        if (g->Attribute("inkscape:groupmode", "layer")) layers.push_back(g);
+    return layers;
+}
+
+size_t count_children(const tinyxml2::XMLElement* parent, const char* name) {
+    size_t n = 0;
+    for (const tinyxml2::XMLElement* e = parent->FirstChildElement(name); e; e = e->NextSiblingElement(name)) ++n;
+    return n;
+}
+
+TEST(ExportSvg, PageLayersAndCounts) {
+    ExportOptions options;
+    options.page = parse_page("A4-landscape");
+    options.margin_mm = 15.0;
+    const PlotPlan plan = make_plot_plan(two_objects(), options);
+    const std::string text = svg_document(plan);
+
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+    const tinyxml2::XMLElement* svg = doc.RootElement();
+    ASSERT_STREQ(svg->Name(), "svg");
+    EXPECT_STREQ(svg->Attribute("width"), "297mm");
+    EXPECT_STREQ(svg->Attribute("height"), "210mm");
+    EXPECT_STREQ(svg->Attribute("viewBox"), "0 0 297 210");
+    EXPECT_STREQ(svg->Attribute("xmlns:inkscape"), "http://www.inkscape.org/namespaces/inkscape");
+
+    const auto layers = layers_of(svg);
+    ASSERT_EQ(layers.size(), 3u);
+    EXPECT_STREQ(layers[0]->Attribute("inkscape:label"), "1 bunny stipples");
+    EXPECT_STREQ(layers[1]->Attribute("inkscape:label"), "2 bunny lines");
+    EXPECT_STREQ(layers[2]->Attribute("inkscape:label"), "3 horse & co stipples");
+    // Styles on the layer, none on the dots.
+    EXPECT_STREQ(layers[0]->Attribute("fill"), "#000000");
+    EXPECT_STREQ(layers[1]->Attribute("fill"), "none");
+    // No pen width given: the lines keep the frame's width (2 px) on the page's scale.
+    EXPECT_NEAR(layers[1]->DoubleAttribute("stroke-width"), 2.0 * plan.layout.mm_per_px, 0.001);
+    EXPECT_EQ(count_children(layers[0], "circle"), 100u);
+    EXPECT_EQ(count_children(layers[2], "circle"), 25u);
+    for (const tinyxml2::XMLElement* c = layers[0]->FirstChildElement("circle"); c; c = c->NextSiblingElement("circle")) {
+        EXPECT_EQ(c->Attribute("fill"), nullptr);
+        EXPECT_EQ(c->Attribute("style"), nullptr);
+        // Inside the margins: the image is fitted within them.
+        EXPECT_GE(c->DoubleAttribute("cx"), 15.0);
+        EXPECT_LE(c->DoubleAttribute("cx"), 297.0 - 15.0);
+        EXPECT_GE(c->DoubleAttribute("cy"), 15.0);
+        EXPECT_LE(c->DoubleAttribute("cy"), 210.0 - 15.0);
+        EXPECT_NEAR(c->DoubleAttribute("r"), 1.5 * plan.layout.mm_per_px, 0.001);
+    }
+    // The square outline: one closed path, its four corners.
+    ASSERT_EQ(count_children(layers[1], "path"), 1u);
+    const std::string d = layers[1]->FirstChildElement("path")->Attribute("d");
+    EXPECT_EQ(d.back(), 'Z');
+    std::string numbers = d;
+    for (char& c : numbers) c = std::isalpha(static_cast<unsigned char>(c)) ? ' ' : c;
+    std::istringstream in(numbers);
+    std::vector<double> coords;
+    for (double v; in >> v;) coords.push_back(v);
+    ASSERT_EQ(coords.size(), 8u);  // 4 points
+    const glm::dvec2 corner = plan.layout.to_mm({250.0, 100.0});
+    bool has_corner = false;
+    for (size_t i = 0; i < 8; i += 2) has_corner |= std::abs(coords[i] - corner.x) < 0.006 && std::abs(coords[i + 1] - corner.y) < 0.006;
+    EXPECT_TRUE(has_corner);
+}
+
+TEST(ExportSvg, DotStylesForPlotters) {
+    Drawing drawing = grid_drawing(4, 3);
+    ExportOptions options;
+    options.dot_style = DotStyle::Tick;
+    options.pen_width_mm = 0.5;
+    std::string text = svg_document(make_plot_plan(drawing, options));
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS);
+    auto layers = layers_of(doc.RootElement());
+    ASSERT_EQ(layers.size(), 2u);
+    EXPECT_STREQ(layers[0]->Attribute("stroke-linecap"), "round");
+    EXPECT_STREQ(layers[0]->Attribute("stroke-width"), "0.5");
+    EXPECT_STREQ(layers[1]->Attribute("stroke-width"), "0.5");  // the pen draws the lines too
+    EXPECT_EQ(count_children(layers[0], "circle"), 0u);
+    const std::string ticks = layers[0]->FirstChildElement("path")->Attribute("d");
+    EXPECT_EQ(std::count(ticks.begin(), ticks.end(), 'M'), 12);
+    EXPECT_EQ(std::count(ticks.begin(), ticks.end(), 'h'), 12);
+
+    options.dot_style = DotStyle::Circle;
+    text = svg_document(make_plot_plan(drawing, options));
+    ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS);
+    layers = layers_of(doc.RootElement());
+    EXPECT_STREQ(layers[0]->Attribute("fill"), "none");
+    EXPECT_EQ(count_children(layers[0], "circle"), 12u);
+}
+
+TEST(ExportSvg, AtMost48BytesPerDot) {
+    Drawing drawing;
+    drawing.width_px = 1280;
+    drawing.height_px = 1024;
+    drawing.objects.push_back({"bunny", 1.0f});
+    for (const glm::dvec2& p : poisson_disc_points(1280.0, 1024.0, poisson_disc_spacing(1280.0, 1024.0, 20000), 8))
+        drawing.dots.push_back({glm::vec2(p), 0.9f, 0.3f + 0.7f * float(std::fmod(p.x * 7.31, 1.0)), 0, 0});
+    ExportOptions options;
+    options.page = parse_page("A3");
+    const std::string text = svg_document(make_plot_plan(drawing, options));
+    const double per_dot = double(text.size()) / double(drawing.dots.size());
+    EXPECT_LE(per_dot, 48.0);
+    RecordProperty("bytes_per_dot", std::to_string(per_dot));
+}
+
+TEST(ExportSvg, RasterisedInkIsWhereTheDotsAre) {
+    if (!stipple::test::have_tool("rsvg-convert")) GTEST_SKIP() << "rsvg-convert (librsvg2-bin) not installed";
+    Drawing drawing = grid_drawing(10, 10);
+    for (Dot& dot : drawing.dots) dot.radius_px = 4.0f;
+    drawing.segments.clear();
+    ExportOptions options;
+    options.page = parse_page("400x300mm");
+    options.margin_mm = 0.0;  // 1 mm per pixel
+    options.fill_paper = true;
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    const auto dir = stipple::test::temp_dir("export_svg_raster");
+    write_svg(plan, (dir / "dots.svg").string());
+    ASSERT_EQ(stipple::test::run_shell("rsvg-convert --width 400 --height 300 -o " + stipple::test::quoted(dir / "dots.png") + " " +
+                                       stipple::test::quoted(dir / "dots.svg")),
+              0);
+    const stipple::Image image = stipple::read_png((dir / "dots.png").string());
+    ASSERT_EQ(image.width, 400);
+    for (const Dot& dot : drawing.dots) {
+        EXPECT_LT(stipple::luminance(image, int(dot.px.x), int(dot.px.y)), 60) << dot.px.x << "," << dot.px.y;
+        EXPECT_GT(stipple::luminance(image, int(dot.px.x) + 10, int(dot.px.y) + 10), 200);  // between dots: paper
+    }
+}
+
+TEST(ExportSvg, UnwritablePathIsOneLineError) {
+    const PlotPlan plan = make_plot_plan(grid_drawing(2, 2), {});
+    stipple::test::expect_plot_error([&] { write_svg(plan, "/nonexistent-dir/x.svg"); }, "/nonexistent-dir/x.svg: cannot write");
+}
+
+}  // namespace
