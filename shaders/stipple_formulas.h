@@ -73,11 +73,16 @@ STIPPLE_FN float toon_stipple_fade(float n_dot_e, float sharpness) {
 }
 
 // §3.1 Raskar-Cohen line thinning: the bounding-sphere radius perpendicular to the view is projected to
-// the screen; its size relative to the object's reference size (the radius of an object framed in a
-// 1024-pixel-high view, 512 px) scales the user's width, clamped between one pixel and that width.
+// the screen; its size relative to the object's line reference size scales the user's width, clamped
+// between one pixel and that width. The line reference is the object framed in the default
+// 1280x1024 image (radius 512 px): the width the user sets is the width seen there. It is deliberately
+// not the generation's reference view (kReferenceHeight, radius 640 px), which is 25% closer so that the
+// near side of a framed object finds enough candidates (src/stipple/stipple_set.hpp).
+STIPPLE_CONST float kLineReferenceRadiusPx = 512.0f;
+
 STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_px, bool thinning) {
     if (!thinning) return user_width;
-    return clamp(user_width * projected_radius_px / 512.0f, 1.0f, user_width);
+    return clamp(user_width * projected_radius_px / kLineReferenceRadiusPx, 1.0f, user_width);
 }
 
 // §3.1 Whether a polygon faces away from the viewer (its stipples are culled, its edges drawn as

@@ -59,6 +59,9 @@ struct BadInput {
     const char* expect;    // phrase expected in the message
 };
 
+// A failing case is named by its name, not printed as "32-byte object <...>".
+void PrintTo(const BadInput& bad, std::ostream* out) { *out << bad.name; }
+
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, OneLineNamingTheFileAndNonZeroExit) {

@@ -18,7 +18,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class DensityPaths : public test::GpuTest {};
 using test::Prepared;
 
 std::string blobby_path() { return std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb"; }
@@ -48,7 +49,7 @@ Prepared random_polygons(size_t count, std::mt19937& rng) {
     return p;
 }
 
-TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
+TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
     std::mt19937 rng(7);
     Prepared polygons = random_polygons(10000, rng);
     StippleRenderer renderer(*context, kColorFormat, context->depth_format);
@@ -105,7 +106,7 @@ TEST_F(GpuTest, ComputePassMatchesTheCpuDefinition) {
     EXPECT_GT(drawn, 5000u);
 }
 
-TEST_F(GpuTest, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
+TEST_F(DensityPaths, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
     // TriangleInfo is 16 bytes: 16-bit centroids in the object's box, an octahedral 16-bit normal.
     std::mt19937 rng(11);
     Prepared polygons = random_polygons(20000, rng);
@@ -143,7 +144,7 @@ TEST_F(GpuTest, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
     EXPECT_EQ(wrong_counts, 0u);
 }
 
-TEST_F(GpuTest, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
+TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     ObjectParams params;
     params.density_path = DensityPath::Vertex;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
@@ -179,7 +180,7 @@ TEST_F(GpuTest, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     EXPECT_LE(per_candidate, 16.0);
 }
 
-TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
+TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     ObjectParams params;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     RendererOptions options;
@@ -235,7 +236,7 @@ TEST_F(GpuTest, AllPathsDrawExactlyTheSameStipples) {
     }
 }
 
-TEST_F(GpuTest, LastStippleCarriesTheFractionalDensity) {
+TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
     // One triangle facing the camera, five stipples far apart, lit at 60 degrees: with shading only,
     // the density is 5 * (1 - cos 60) = 2.5, so two stipples are full, one is half and two are culled.
     Mesh mesh;
@@ -275,7 +276,7 @@ TEST_F(GpuTest, LastStippleCarriesTheFractionalDensity) {
     EXPECT_EQ(values[4], 255);
 }
 
-TEST_F(GpuTest, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
+TEST_F(DensityPaths, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
     ObjectParams params;
     params.intrinsic = false;
     Prepared grid = test::prepare(make_grid(200), params);  // 80,000 small triangles

@@ -12,7 +12,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class DistanceEnhancement : public test::GpuTest {};
 using test::Prepared;
 
 // Mean ink inside the footprint at distances spanning 16x in projected size; returns max/min.
@@ -41,7 +42,7 @@ double tone_variation(gpu::Context& context, const Prepared& object, bool extrin
     return hi / lo;
 }
 
-TEST_F(GpuTest, ToneStaysConsistentAcrossScale) {
+TEST_F(DistanceEnhancement, ToneStaysConsistentAcrossScale) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
     double on = tone_variation(*context, sphere, true, "sphere");
@@ -56,7 +57,7 @@ TEST_F(GpuTest, ToneStaysConsistentAcrossScale) {
     tone_variation(*context, bunny, false, "bunny");
 }
 
-TEST_F(GpuTest, ShadingDarkensMonotonicallyTowardTheTerminator) {
+TEST_F(DistanceEnhancement, ShadingDarkensMonotonicallyTowardTheTerminator) {
     ObjectParams params;
     params.intrinsic = false;  // depth cueing would add its own gradient
     Prepared sphere = test::prepare(make_icosphere(5), params);
@@ -111,7 +112,7 @@ TEST_F(GpuTest, ShadingDarkensMonotonicallyTowardTheTerminator) {
     EXPECT_LT(lit, dark);
 }
 
-TEST_F(GpuTest, FramesHalfADegreeApartShareTheirStipples) {
+TEST_F(DistanceEnhancement, FramesHalfADegreeApartShareTheirStipples) {
     ObjectParams params;
     std::string path = test::shared_model("stanford-bunny.obj");
     Prepared object = test::prepare(path.empty() ? make_icosphere(5) : load_mesh(path), params);

@@ -23,7 +23,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class LineIntegrity : public test::GpuTest {};
 
 // Every static mesh of ../shared/models (each skipped with a message when absent) and the default scene.
 std::vector<std::pair<std::string, std::string>> model_files() {
@@ -133,7 +134,7 @@ std::vector<uint64_t> sorted_lines(const LineList& list) {
     return lines;
 }
 
-TEST_F(GpuTest, LineListHoldsOnlyEdgesOfTheMesh) {
+TEST_F(LineIntegrity, LineListHoldsOnlyEdgesOfTheMesh) {
     ObjectParams params;
     params.silhouette_lines = true;
     bool resolution_checked = false;
@@ -232,7 +233,7 @@ OutsideInk outside_ink(Image& image, const std::vector<float>& depth, const std:
     return ink;
 }
 
-TEST_F(GpuTest, LineInkStaysWithinTheLineWidthOfTheFootprint) {
+TEST_F(LineIntegrity, LineInkStaysWithinTheLineWidthOfTheFootprint) {
     ObjectParams params;  // the default density path
     params.silhouette_lines = true;
     ObjectParams back_params;

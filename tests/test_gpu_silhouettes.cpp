@@ -17,7 +17,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class Silhouettes : public test::GpuTest {};
 using test::Prepared;
 
 struct Frame {
@@ -114,7 +115,7 @@ Prepared bunny_or_sphere(const ObjectParams& params, bool* is_bunny) {
     return test::prepare(path.empty() ? make_icosphere(5) : load_mesh(path), params);
 }
 
-TEST_F(GpuTest, LinesInkTheOutline) {
+TEST_F(Silhouettes, LinesInkTheOutline) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
     bool is_bunny = false;
@@ -163,7 +164,7 @@ TEST(SilhouetteEdges, EachEdgeOnceWithThePolygonsOnEitherSide) {
     EXPECT_EQ(fan_edges.size(), 2u + 6u);  // edge 0-1 twice, six boundary edges
 }
 
-TEST_F(GpuTest, LinesAreTheEdgesOfPolygonsFacingAway) {
+TEST_F(Silhouettes, LinesAreTheEdgesOfPolygonsFacingAway) {
     ObjectParams params;
     params.silhouette_lines = true;
     Prepared sphere = test::prepare(make_icosphere(4), params);
@@ -193,7 +194,7 @@ TEST_F(GpuTest, LinesAreTheEdgesOfPolygonsFacingAway) {
     EXPECT_EQ(header.instance_count, 1u);
 }
 
-TEST_F(GpuTest, LinesThinWithDistance) {
+TEST_F(Silhouettes, LinesThinWithDistance) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
     auto thickness = [&](bool thinning, float distance) {
@@ -216,7 +217,7 @@ TEST_F(GpuTest, LinesThinWithDistance) {
     EXPECT_LE(std::abs(far_fixed / near_fixed - 1.0), 0.2);
 }
 
-TEST_F(GpuTest, LinesDoNotSpillInsideAConvexObject) {
+TEST_F(Silhouettes, LinesDoNotSpillInsideAConvexObject) {
     ObjectParams params;
     Prepared sphere = test::prepare(make_icosphere(5), params);
     params.silhouette_lines = false;
@@ -242,7 +243,7 @@ TEST_F(GpuTest, LinesDoNotSpillInsideAConvexObject) {
     EXPECT_LE(double(spilled), 0.001 * double(total));
 }
 
-TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
+TEST_F(Silhouettes, ToonRampDarkensTheRimAndFadesItsStipples) {
     ObjectParams params;
     params.toon_sharpness = 4.0f;
     Prepared sphere = test::prepare(make_icosphere(5), params);
@@ -297,7 +298,7 @@ TEST_F(GpuTest, ToonRampDarkensTheRimAndFadesItsStipples) {
     EXPECT_LT(worst, 1e-4);
 }
 
-TEST_F(GpuTest, SilhouettePassesAreRecordedOnlyWhenUsedAndImagesWritten) {
+TEST_F(Silhouettes, SilhouettePassesAreRecordedOnlyWhenUsedAndImagesWritten) {
     ObjectParams params;
     bool is_bunny = false;
     Prepared object = bunny_or_sphere(params, &is_bunny);

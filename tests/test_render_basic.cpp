@@ -12,7 +12,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class RenderBasics : public test::GpuTest {};
 
 struct Prepared {
     Mesh mesh;
@@ -39,7 +40,7 @@ RenderedFrame render(gpu::Context& context, const std::vector<const Prepared*>& 
     return target.render(renderer, view);
 }
 
-TEST_F(GpuTest, BunnyInkStaysInsideTheFootprint) {
+TEST_F(RenderBasics, BunnyInkStaysInsideTheFootprint) {
     std::string path = test::shared_model("stanford-bunny.obj");
     if (path.empty()) GTEST_SKIP() << "../shared/models/stanford-bunny.obj is absent";
     ObjectParams params;
@@ -57,7 +58,7 @@ TEST_F(GpuTest, BunnyInkStaysInsideTheFootprint) {
     EXPECT_EQ(ink.non_white_outside, 0u) << "background must stay pure white outside the footprint";
 }
 
-TEST_F(GpuTest, SphereInkOnlyOnVisibleSideAndBackgroundPureWhite) {
+TEST_F(RenderBasics, SphereInkOnlyOnVisibleSideAndBackgroundPureWhite) {
     ObjectParams params;
     Prepared sphere = prepare(make_icosphere(4), params);
     RenderedFrame frame = render(*context, {&sphere}, params, {glm::vec3(0.0f), 1.0f});
@@ -72,7 +73,7 @@ TEST_F(GpuTest, SphereInkOnlyOnVisibleSideAndBackgroundPureWhite) {
     EXPECT_EQ(white, ink.covered);
 }
 
-TEST_F(GpuTest, HiddenSphereContributesNoInk) {
+TEST_F(RenderBasics, HiddenSphereContributesNoInk) {
     ObjectParams params;
     params.shading = false;  // every front-facing candidate drawn: the hardest case for hidden stipples
     Prepared big = prepare(make_icosphere(4, 1.0f), params);

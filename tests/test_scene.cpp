@@ -24,7 +24,8 @@
 namespace stipple {
 namespace {
 
-using test::GpuTest;
+// Every GPU test of this file shares one fixture name, so a failure names its suite.
+class SceneObjects : public test::GpuTest {};
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
@@ -92,7 +93,7 @@ Scene two_spheres(const std::filesystem::path& dir, float dmax_left, float dmax_
     return scene;
 }
 
-TEST_F(GpuTest, SavedSceneLoadsBackToTheSameImage) {
+TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     auto dir = test::temp_dir("scene-roundtrip");
     write_sphere_obj(dir);
     Scene scene = two_spheres(dir, 0.08f, 0.2f);
@@ -158,7 +159,7 @@ TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     EXPECT_EQ(p.density_path, DensityPath::Indirect);
 }
 
-TEST_F(GpuTest, ObjectsInOneFrameKeepTheirOwnDensity) {
+TEST_F(SceneObjects, ObjectsInOneFrameKeepTheirOwnDensity) {
     auto dir = test::temp_dir("scene-two-objects");
     write_sphere_obj(dir);
     VkExtent2D extent{640, 320};
@@ -174,7 +175,7 @@ TEST_F(GpuTest, ObjectsInOneFrameKeepTheirOwnDensity) {
     EXPECT_NEAR(light_left, light_right, 0.25 * light_left) << "the same parameters should give the same tone";
 }
 
-TEST_F(GpuTest, ObjectsAtDifferentScalesKeepTheirTone) {
+TEST_F(SceneObjects, ObjectsAtDifferentScalesKeepTheirTone) {
     // Paper Fig. 3: a large and a small object in one image. The extrinsic enhancement works per
     // object, from each one's own scale on screen, so both keep the tone their parameters ask for.
     // Turning it off for the small object alone crams all its candidates into few pixels: it darkens,
@@ -200,7 +201,7 @@ TEST_F(GpuTest, ObjectsAtDifferentScalesKeepTheirTone) {
     EXPECT_NEAR(big_off, big_on, 0.02) << "the other object's enhancement is its own";
 }
 
-TEST_F(GpuTest, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
+TEST_F(SceneObjects, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
     // What the viewer does with a drop and with the panel's generation parameters, without a window.
     auto dir = test::temp_dir("scene-live");
     std::string sphere = write_sphere_obj(dir).string();
@@ -265,6 +266,9 @@ struct BadScene {
     const char* field;    // expected in the message
     const char* problem;  // expected in the message
 };
+
+// A failing case is named by its name, not printed as "32-byte object <...>".
+void PrintTo(const BadScene& bad, std::ostream* out) { *out << bad.name; }
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};
 
