@@ -13,7 +13,8 @@
 
 #include "bench/bench_output.hpp"
 #include "bench/bench_runner.hpp"
-#include "bench/mesh_derive.hpp"
+#include "mesh/mesh_ops.hpp"
+#include "mesh/ply_writer.hpp"
 #include "bench/model_set.hpp"
 #include "bench/table1.hpp"
 #include "core/error.hpp"
@@ -48,9 +49,9 @@ bool have_scans() { return bench::scans_available(bench::ModelSetOptions::defaul
 // --- mesh operations -----------------------------------------------------------------------------
 
 TEST(BenchMesh, MidpointSubdivisionQuadruplesAndWeldsMidpoints) {
-    Mesh sphere = bench::weld_positions(make_icosphere(2));  // closed: V - E + F = 2
+    Mesh sphere = weld_positions(make_icosphere(2));  // closed: V - E + F = 2
     size_t v = sphere.vertex_count(), f = sphere.triangle_count(), e = f * 3 / 2;
-    Mesh fine = bench::subdivide_midpoints(sphere);
+    Mesh fine = subdivide_midpoints(sphere);
     EXPECT_EQ(fine.triangle_count(), 4 * f);
     EXPECT_EQ(fine.vertex_count(), v + e);  // one vertex per edge: shared midpoints are welded
     EXPECT_NEAR(total_area(fine), total_area(sphere), 1e-4 * total_area(sphere));  // flat split: same surface
@@ -63,7 +64,7 @@ TEST(BenchMesh, WeldingMergesVerticesAtTheSamePosition) {
     soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     soup.indices = {0, 1, 2, 3, 4, 5};
     compute_vertex_normals(soup);
-    Mesh welded = bench::weld_positions(soup);
+    Mesh welded = weld_positions(soup);
     EXPECT_EQ(welded.vertex_count(), 4u);
     EXPECT_EQ(welded.triangle_count(), 2u);
     EXPECT_EQ(welded.indices[1], welded.indices[3]);  // the shared edge's ends are one vertex each
@@ -71,15 +72,15 @@ TEST(BenchMesh, WeldingMergesVerticesAtTheSamePosition) {
 }
 
 TEST(BenchMesh, SimplificationHitsTheTargetWithinTolerance) {
-    Mesh sphere = bench::weld_positions(make_uv_sphere(40'000));
+    Mesh sphere = weld_positions(make_uv_sphere(40'000));
     for (size_t target : {20'000u, 7'321u, 1'000u}) {
-        bench::SimplifyResult r = bench::simplify_to(sphere, target, 0.02);
+        SimplifyResult r = simplify_to(sphere, target, 0.02);
         std::printf("%zu -> %zu triangles (target %zu) by %s\n", sphere.triangle_count(), r.mesh.triangle_count(),
                     target, r.method.c_str());
-        EXPECT_TRUE(bench::within(r.mesh.triangle_count(), target, 0.02)) << r.mesh.triangle_count();
+        EXPECT_TRUE(within(r.mesh.triangle_count(), target, 0.02)) << r.mesh.triangle_count();
         EXPECT_NO_THROW(validate_mesh(r.mesh));
     }
-    EXPECT_THROW(bench::simplify_to(sphere, 100'000, 0.02), Error);  // cannot simplify upward
+    EXPECT_THROW(simplify_to(sphere, 100'000, 0.02), Error);  // cannot simplify upward
 }
 
 TEST(BenchMesh, InsideOutMeshesAreTurnedOutward) {
@@ -93,14 +94,14 @@ TEST(BenchMesh, InsideOutMeshesAreTurnedOutward) {
 }
 
 TEST(BenchMesh, BinaryPlyRoundTrips) {
-    Mesh sphere = bench::weld_positions(make_uv_sphere(2'000));
+    Mesh sphere = weld_positions(make_uv_sphere(2'000));
     fs::path path = test::temp_dir("bench_ply") / "sphere.ply";
-    bench::write_ply_binary(path.string(), sphere);
+    write_ply_binary(path.string(), sphere);
     Mesh back = load_mesh(path.string());
     ASSERT_EQ(back.vertex_count(), sphere.vertex_count());
     EXPECT_EQ(back.indices, sphere.indices);
     for (size_t i = 0; i < sphere.vertex_count(); ++i) EXPECT_EQ(back.positions[i], sphere.positions[i]);
-    EXPECT_THROW(bench::write_ply_binary("/proc/no/such/folder/x.ply", sphere), Error);
+    EXPECT_THROW(write_ply_binary("/proc/no/such/folder/x.ply", sphere), Error);
 }
 
 // --- the model set -----------------------------------------------------------------------------
@@ -123,7 +124,7 @@ TEST(ModelSet, EveryRowHasItsPolygonCountWithinTwoPercent) {
         std::printf("%-15s %8zu triangles, row %8zu (%+.3f%%): %s\n", e.name.c_str(), mesh.triangle_count(), e.target,
                     100.0 * (double(mesh.triangle_count()) - double(e.target)) / double(e.target), e.source.c_str());
         EXPECT_EQ(mesh.triangle_count(), e.triangles) << e.name;
-        EXPECT_TRUE(bench::within(mesh.triangle_count(), bench::kPaperTable[i].polygons, 0.02))
+        EXPECT_TRUE(within(mesh.triangle_count(), bench::kPaperTable[i].polygons, 0.02))
             << e.name << ": " << mesh.triangle_count() << " triangles against the row's " << bench::kPaperTable[i].polygons;
         EXPECT_GT(signed_volume(mesh), 0.0) << e.name << " is inside out";
         if (e.name == "bunny") {
@@ -176,7 +177,7 @@ TEST(ModelSet, WithoutScansEveryRowIsAProceduralSphere) {
     for (const bench::ModelEntry& e : entries) {
         EXPECT_TRUE(e.procedural);
         EXPECT_NE(e.source.find("procedural"), std::string::npos) << e.source;
-        EXPECT_TRUE(bench::within(e.triangles, e.target, 0.02)) << e.name << ": " << e.triangles;
+        EXPECT_TRUE(within(e.triangles, e.target, 0.02)) << e.name << ": " << e.triangles;
     }
     EXPECT_EQ(bench::load_model(entries[0]).triangle_count(), entries[0].triangles);
     EXPECT_TRUE(fs::is_empty(options.cache_dir));  // nothing written for spheres

@@ -11,7 +11,8 @@
 #include <meshoptimizer.h>
 
 #include "bench/bench_output.hpp"
-#include "bench/mesh_derive.hpp"
+#include "mesh/mesh_ops.hpp"
+#include "mesh/ply_writer.hpp"
 #include "core/timing.hpp"
 #include "bench/table1.hpp"
 #include "core/error.hpp"

@@ -1,12 +1,12 @@
 #pragma once
-// Mesh operations that derive the benchmark's model set from real scans: welding, midpoint
-// subdivision, simplification to a triangle count (meshoptimizer), and a binary PLY writer.
+// Mesh operations: welding, midpoint subdivision, simplification to a triangle count (meshoptimizer).
+// The benchmark derives its model set from the scans with them (src/bench/model_set.cpp).
 #include <cstddef>
 #include <string>
 
 #include "mesh/mesh.hpp"
 
-namespace stipple::bench {
+namespace stipple {
 
 // Merges vertices at identical positions (meshopt_generateVertexRemap) and drops unused ones; normals
 // are recomputed. Triangles are kept as they are (degenerate ones included).
@@ -15,6 +15,12 @@ Mesh weld_positions(const Mesh& mesh);
 // Each triangle into four by its edge midpoints; a midpoint shared by two triangles is one vertex.
 // The mesh should be welded first (otherwise seams get duplicate midpoints). Normals are recomputed.
 Mesh subdivide_midpoints(const Mesh& mesh);
+
+// True when `count` is within `tolerance` (relative) of `target`.
+inline bool within(size_t count, size_t target, double tolerance) {
+    double d = double(count) - double(target);
+    return (d < 0 ? -d : d) <= tolerance * double(target);
+}
 
 struct SimplifyResult {
     Mesh mesh;
@@ -27,15 +33,4 @@ struct SimplifyResult {
 // meshopt_simplifySloppy. Deterministic. Throws stipple::Error when the count cannot be reached.
 SimplifyResult simplify_to(const Mesh& mesh, size_t target, double tolerance);
 
-// Writes positions and triangles as binary little-endian PLY (vertex x,y,z float; face list uchar
-// int), through a temporary file renamed into place so that readers never see half a file.
-// Throws stipple::Error("<path>: ...") on an I/O failure.
-void write_ply_binary(const std::string& path, const Mesh& mesh);
-
-// True when `count` is within `tolerance` (relative) of `target`.
-inline bool within(size_t count, size_t target, double tolerance) {
-    double d = double(count) - double(target);
-    return (d < 0 ? -d : d) <= tolerance * double(target);
-}
-
-}  // namespace stipple::bench
+}  // namespace stipple
