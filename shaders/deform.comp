@@ -17,9 +17,10 @@ layout(set = 0, binding = kBindingDeformNormals, std430) writeonly buffer Normal
 
 layout(push_constant) uniform Push { DeformPush push; };
 
-uint slot_of(uvec4 slots, uint i) {
-    uint word = slots[i >> 1u];
-    return (i & 1u) == 0u ? (word & 0xFFFFu) : (word >> 16u);
+// One influence added to the blended matrix. Called with constant slot halves only: indexing a vector
+// with a variable makes a software GPU spill it to memory.
+void add_influence(inout mat4 m, float weight, uint slot) {
+    if (weight != 0.0) m += weight * palette[slot];
 }
 
 void main() {
@@ -38,17 +39,20 @@ void main() {
         normal += w * d.normal.xyz;
     }
 
-    // The blended matrix (only its top three rows matter: palette matrices are affine).
-    mat4 m = vertex.weights0.x * palette[slot_of(vertex.slots, 0u)];
-    for (uint i = 1u; i < 4u; ++i) {
-        float w = vertex.weights0[i];
-        if (w != 0.0) m += w * palette[slot_of(vertex.slots, i)];
-    }
-    if (vertex.weights1 != vec4(0.0)) {
-        for (uint i = 0u; i < 4u; ++i) {
-            float w = vertex.weights1[i];
-            if (w != 0.0) m += w * palette[slot_of(vertex.slots, 4u + i)];
-        }
+    // The blended matrix (only its top three rows matter: palette matrices are affine). Weights are
+    // sorted by nothing, but a vertex has at least one, and most have none in the second set.
+    uvec4 slots = vertex.slots;
+    vec4 w0 = vertex.weights0;
+    mat4 m = w0.x * palette[slots.x & 0xFFFFu];
+    add_influence(m, w0.y, slots.x >> 16u);
+    add_influence(m, w0.z, slots.y & 0xFFFFu);
+    add_influence(m, w0.w, slots.y >> 16u);
+    vec4 w1 = vertex.weights1;
+    if (w1 != vec4(0.0)) {
+        add_influence(m, w1.x, slots.z & 0xFFFFu);
+        add_influence(m, w1.y, slots.z >> 16u);
+        add_influence(m, w1.z, slots.w & 0xFFFFu);
+        add_influence(m, w1.w, slots.w >> 16u);
     }
 
     vec3 p = (m * vec4(position, 1.0)).xyz;
