@@ -47,6 +47,19 @@ TEST(AnimLoading, RestMeshIsTheStaticDrawingMesh) {
     expect_rest_is_drawing_mesh(write_rig(rigs::eight_joint_sheet(), "anim_load_eight", "eight"));
 }
 
+TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {
+    // The project's default scene: a static glTF; every vertex follows its (unanimated) node.
+    const std::string blobby = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    expect_rest_is_drawing_mesh(blobby);
+    const AnimatedModel model = load_animated_model(blobby);
+    EXPECT_FALSE(model.is_animated());
+    EXPECT_TRUE(describe_lines(describe_animation(model)).empty());
+    const DeformedGeometry g = deform_cpu(model, evaluate_pose(model, kRestPose, 0.0));
+    const Bounds bounds = compute_bounds(model.rest);
+    for (size_t v = 0; v < model.vertex_count(); ++v)
+        EXPECT_LE(glm::length(g.positions[v] - model.rest.positions[v]), 1e-6f * glm::length(bounds.max - bounds.min));
+}
+
 TEST(AnimLoading, DrawOrderCarriesTheStreams) {
     // The cylinder's vertices are reordered for drawing; each one must keep its own bind position and
     // weights (here the rest mesh is the bind pose, so positions agree vertex by vertex, and the
