@@ -237,7 +237,8 @@ private:
         const size_t count = positions.size() / 3;
         const size_t first = streams_.bind_positions.size();
         streams_.ranges.push_back(VertexRange{first, count, world});
-        for (size_t v = 0; v < count; ++v) streams_.bind_positions.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+        for (size_t v = 0; v < count; ++v)
+            streams_.bind_positions.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
         streams_.file_normals.resize(first + count, glm::vec3(0.0f));
         if (const int* normal = attribute(prim, "NORMAL")) {
             const std::vector<float> n = per_vertex(*normal, count, field + ".attributes.NORMAL");
@@ -291,8 +292,9 @@ private:
             if (!weights) fail_file(path_, field + ".attributes: has " + joints_name + " but no " + weights_name);
             const std::vector<uint32_t> j = accessors_.uints(*joints, TINYGLTF_TYPE_VEC4, kJointTypes, joints_field);
             const std::vector<float> w = accessors_.floats(*weights, TINYGLTF_TYPE_VEC4, kWeightTypes, weights_field);
-            if (j.size() / 4 != count) fail_file(path_, joints_field + ": " + std::to_string(j.size() / 4) + " elements for " + std::to_string(count) + " vertices");
-            if (w.size() / 4 != count) fail_file(path_, weights_field + ": " + std::to_string(w.size() / 4) + " elements for " + std::to_string(count) + " vertices");
+            for (const auto& [size, where] : {std::pair{j.size(), &joints_field}, std::pair{w.size(), &weights_field}})
+                if (size / 4 != count)
+                    fail_file(path_, *where + ": " + std::to_string(size / 4) + " elements for " + std::to_string(count) + " vertices");
             for (size_t v = 0; v < count; ++v) {
                 for (int c = 0; c < 4; ++c) {
                     const float weight = w[4 * v + c];

@@ -131,7 +131,8 @@ GltfBuilder node_animated_box() {
     const int position = b.add_floats(positions, "VEC3");
     const int normal = b.add_floats(normals, "VEC3");
     const int index = b.add_uint16(indices, "SCALAR");
-    b.add("meshes", {{"name", "cube"}, {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}}}, {"indices", index}}})}});
+    const json primitive = {{"attributes", {{"POSITION", position}, {"NORMAL", normal}}}, {"indices", index}};
+    b.add("meshes", {{"name", "cube"}, {"primitives", json::array({primitive})}});
     b.add("nodes", {{"name", "holder"}, {"translation", {0.0, 0.0, -3.0}}, {"children", {1}}});
     b.add("nodes", {{"name", "box"}, {"mesh", 0}});
     b.add("scenes", {{"nodes", {0}}});
@@ -194,7 +195,8 @@ GltfBuilder interpolation_sample(const std::string& interpolation) {
     json samplers = json::array();
     add_sampler(b, samplers, times, translations, "VEC3", interpolation);
     add_sampler(b, samplers, times, rotations, "VEC4", interpolation);
-    b.add("animations", {{"name", "Keys"}, {"samplers", samplers}, {"channels", json::array({channel(0, 0, "translation"), channel(1, 0, "rotation")})}});
+    const json channels = json::array({channel(0, 0, "translation"), channel(1, 0, "rotation")});
+    b.add("animations", {{"name", "Keys"}, {"samplers", samplers}, {"channels", channels}});
     return b;
 }
 
@@ -222,9 +224,8 @@ GltfBuilder stretching_plane(uint32_t cells) {
     const int joint = b.add_uint16(joints, "VEC4");
     const int weight = b.add_floats(weights, "VEC4");
     const int index = b.add_uint32(indices, "SCALAR");
-    b.add("meshes", {{"name", "sheet"},
-                     {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"JOINTS_0", joint}, {"WEIGHTS_0", weight}}},
-                                                  {"indices", index}}})}});
+    const json attributes = {{"POSITION", position}, {"NORMAL", normal}, {"JOINTS_0", joint}, {"WEIGHTS_0", weight}};
+    b.add("meshes", {{"name", "sheet"}, {"primitives", json::array({{{"attributes", attributes}, {"indices", index}}})}});
     b.add("nodes", {{"name", "sheet"}, {"mesh", 0}, {"skin", 0}});
     b.add("nodes", {{"name", "left"}});
     b.add("nodes", {{"name", "right"}, {"translation", {1.0, 0.0, 0.0}}});

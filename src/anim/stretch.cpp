@@ -24,7 +24,8 @@ std::vector<double> stretch_sample_times(const Animation& animation, uint32_t un
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     if (keys.size() > max_key_times && max_key_times > 0) {
         std::vector<double> thinned;
-        for (size_t i = 0; i < max_key_times; ++i) thinned.push_back(keys[i * (keys.size() - 1) / std::max<size_t>(max_key_times - 1, 1)]);
+        const size_t last = std::max<size_t>(max_key_times - 1, 1);
+        for (size_t i = 0; i < max_key_times; ++i) thinned.push_back(keys[i * (keys.size() - 1) / last]);
         keys.swap(thinned);
     }
     times.insert(times.end(), keys.begin(), keys.end());
