@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "core/error.hpp"
 
@@ -64,6 +65,33 @@ double normalize(double v, int component_type) {
     }
 }
 
+// Elements of component type T to floats, normalized integers mapped as glTF says. The component type
+// is dispatched once per accessor, not per number.
+template <class T>
+void convert(const unsigned char* base, size_t stride, size_t count, size_t n, bool normalized, int type, float* out) {
+    if (std::is_same_v<T, float> && stride == n * sizeof(float)) {
+        std::memcpy(out, base, count * stride);
+        return;
+    }
+    for (size_t i = 0; i < count; ++i)
+        for (size_t c = 0; c < n; ++c) {
+            T v;
+            std::memcpy(&v, base + i * stride + c * sizeof(T), sizeof v);
+            out[i * n + c] = static_cast<float>(normalized ? normalize(static_cast<double>(v), type) : static_cast<double>(v));
+        }
+}
+
+void convert_any(const unsigned char* base, size_t stride, size_t count, size_t n, bool normalized, int type, float* out) {
+    switch (type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE: return convert<int8_t>(base, stride, count, n, normalized, type, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return convert<uint8_t>(base, stride, count, n, normalized, type, out);
+        case TINYGLTF_COMPONENT_TYPE_SHORT: return convert<int16_t>(base, stride, count, n, normalized, type, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return convert<uint16_t>(base, stride, count, n, normalized, type, out);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return convert<uint32_t>(base, stride, count, n, normalized, type, out);
+        default: return convert<float>(base, stride, count, n, false, type, out);
+    }
+}
+
 }  // namespace
 
 void AccessorReader::fail(const std::string& field, const std::string& problem) const {
@@ -111,7 +139,7 @@ const unsigned char* AccessorReader::view_bytes(int view_index, size_t offset, s
     return model_.buffers[view.buffer].data.data() + view.byteOffset + offset;
 }
 
-std::vector<double> AccessorReader::read(int index, const std::string& field) const {
+std::vector<float> AccessorReader::read(int index, bool normalized, const std::string& field) const {
     const tinygltf::Accessor& a = get(index, field);
     const std::string where = field + " (accessor " + std::to_string(index) + ")";
     const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
@@ -122,15 +150,14 @@ std::vector<double> AccessorReader::read(int index, const std::string& field) co
                              std::to_string(options_.max_elements));
     const size_t n = static_cast<size_t>(components);
     const size_t element = n * static_cast<size_t>(component_size);
-    std::vector<double> out(a.count * n, 0.0);  // no buffer view: zeros (sparse entries may follow)
+    std::vector<float> out(a.count * n, 0.0f);  // no buffer view: zeros (sparse entries may follow)
     if (a.bufferView >= 0) {
         const size_t view_stride = model_.bufferViews.size() > static_cast<size_t>(a.bufferView)
                                        ? model_.bufferViews[a.bufferView].byteStride
                                        : 0;
         const size_t stride = view_stride ? view_stride : element;
         const unsigned char* base = view_bytes(a.bufferView, a.byteOffset, element, stride, a.count, where);
-        for (size_t i = 0; i < a.count; ++i)
-            for (size_t c = 0; c < n; ++c) out[i * n + c] = component(base + i * stride + c * component_size, a.componentType);
+        convert_any(base, stride, a.count, n, normalized, a.componentType, out.data());
     }
     if (a.sparse.isSparse) {
         const size_t count = a.sparse.count < 0 ? 0 : static_cast<size_t>(a.sparse.count);
@@ -152,7 +179,7 @@ std::vector<double> AccessorReader::read(int index, const std::string& field) co
                 fail_file(path_, where + ": sparse index " + std::to_string(static_cast<uint64_t>(target)) +
                                      " is beyond the accessor's " + std::to_string(a.count) + " elements");
             const size_t i = static_cast<size_t>(target);
-            for (size_t c = 0; c < n; ++c) out[i * n + c] = component(values + j * element + c * component_size, a.componentType);
+            convert_any(values + j * element, element, 1, n, normalized, a.componentType, &out[i * n]);
         }
     }
     return out;
@@ -162,20 +189,18 @@ std::vector<float> AccessorReader::floats(int index, int type, const std::vector
                                           const std::string& field) const {
     check_type(index, type, normalized, true, field);
     const tinygltf::Accessor& a = model_.accessors[index];
-    const std::vector<double> raw = read(index, field);
-    std::vector<float> out(raw.size());
-    for (size_t i = 0; i < raw.size(); ++i) {
-        out[i] = static_cast<float>(a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ? raw[i] : normalize(raw[i], a.componentType));
+    std::vector<float> out = read(index, a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT, field);
+    for (size_t i = 0; i < out.size(); ++i)
         if (!std::isfinite(out[i]))
             fail(field, "element " + std::to_string(i / tinygltf::GetNumComponentsInType(a.type)) + " is not finite");
-    }
     return out;
 }
 
 std::vector<uint32_t> AccessorReader::uints(int index, int type, const std::vector<int>& component_types,
                                             const std::string& field) const {
     check_type(index, type, component_types, false, field);
-    const std::vector<double> raw = read(index, field);
+    // Exact in float: the integer uses here (joint indices) are unsigned bytes and shorts.
+    const std::vector<float> raw = read(index, false, field);
     std::vector<uint32_t> out(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) out[i] = static_cast<uint32_t>(raw[i]);
     return out;

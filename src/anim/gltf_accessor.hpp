@@ -22,7 +22,7 @@ public:
     // `normalized` are accepted when the accessor is marked normalized, and mapped to [0, 1] / [-1, 1].
     std::vector<float> floats(int index, int type, const std::vector<int>& normalized, const std::string& field) const;
 
-    // count * components unsigned integers of one of `component_types` (not normalized).
+    // count * components unsigned integers of one of `component_types` (not normalized; at most 16 bits).
     std::vector<uint32_t> uints(int index, int type, const std::vector<int>& component_types,
                                 const std::string& field) const;
 
@@ -32,8 +32,8 @@ public:
     [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
 
 private:
-    // Every element's numbers as doubles (exact for every component type), sparse entries applied.
-    std::vector<double> read(int index, const std::string& field) const;
+    // Every element's numbers as floats (integers normalized when asked), sparse entries applied.
+    std::vector<float> read(int index, bool normalized, const std::string& field) const;
     void check_type(int index, int type, const std::vector<int>& components, bool want_normalized,
                     const std::string& field) const;
     const unsigned char* view_bytes(int view, size_t offset, size_t element, size_t stride, size_t count,
