@@ -1,0 +1,146 @@
+#include "anim/animated_model.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "anim/gltf_reading.hpp"
+#include "core/error.hpp"
+#include "mesh/loader_util.hpp"
+
+namespace stipple::anim {
+
+namespace {
+
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;  // images play no part in stippling
+}
+
+struct DrawingOrder {
+    Mesh mesh;                    // as load_mesh_for_drawing returns it
+    std::vector<uint32_t> origin;  // per vertex of `mesh`, its index in the file-order mesh
+};
+
+// optimize_draw_order moves every per-vertex stream of a Mesh with one remap and reads only the
+// positions and indices to choose it. So a copy whose normals hold vertex numbers (exact in float: 16
+// bits each in x and y) comes out in the same order with each vertex's origin attached, and the
+// animation streams can follow whatever the reordering does.
+DrawingOrder reorder_for_drawing(const Mesh& file_order) {
+    Mesh tagged = file_order;
+    for (size_t i = 0; i < tagged.normals.size(); ++i)
+        tagged.normals[i] = glm::vec3(static_cast<float>(i & 0xFFFFu), static_cast<float>(i >> 16), 0.0f);
+    optimize_draw_order(tagged);
+    DrawingOrder order;
+    order.origin.resize(tagged.positions.size());
+    order.mesh.source = file_order.source;
+    order.mesh.normals.resize(tagged.positions.size());
+    for (size_t i = 0; i < tagged.positions.size(); ++i) {
+        const uint32_t o = static_cast<uint32_t>(tagged.normals[i].x) | static_cast<uint32_t>(tagged.normals[i].y) << 16;
+        STIPPLE_CHECK(o < file_order.positions.size() && file_order.positions[o] == tagged.positions[i],
+                      "the draw order's vertex origins are inconsistent");
+        order.origin[i] = o;
+        order.mesh.normals[i] = file_order.normals[o];
+    }
+    order.mesh.positions = std::move(tagged.positions);
+    order.mesh.indices = std::move(tagged.indices);
+    return order;
+}
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+}  // namespace
+
+tinygltf::Model parse_gltf(const std::string& path) {
+    const bool binary = lower_extension(path) == ".glb";
+    if (binary) {
+        char magic[4] = {};
+        std::ifstream in(path, std::ios::binary);
+        in.read(magic, 4);
+        if (in.gcount() != 4 || std::memcmp(magic, "glTF", 4) != 0)
+            fail_file(path, "not a binary glTF file (it does not start with 'glTF')");
+    }
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;  // warnings were printed once already, by the static loader
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
+    return model;
+}
+
+bool AnimatedModel::is_animated() const {
+    return std::any_of(animations.begin(), animations.end(), [](const Animation& a) { return !a.channels.empty(); });
+}
+
+AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".gltf" && ext != ".glb") fail_file(path, "animation needs a glTF file (.gltf or .glb)");
+    // The static loader decides the rest mesh (its checks, normals and orientation); the streams read
+    // here are matched to its vertices.
+    const Mesh file_order = load_mesh(path, options);
+    const tinygltf::Model gltf = parse_gltf(path);
+
+    AnimatedModel model;
+    model.source = path;
+    FileOrderStreams streams;
+    read_gltf_scene(path, gltf, options, model, streams);
+    read_gltf_animations(path, gltf, options, model);
+
+    const size_t n = file_order.vertex_count();
+    if (streams.bind_positions.size() != n)
+        fail_file(path, "internal: the animation data has " + std::to_string(streams.bind_positions.size()) +
+                            " vertices, the static mesh " + std::to_string(n));
+    // Rest normals back into each vertex's own space: the static loader mapped file normals by the
+    // inverse transpose of the mesh node's transform, so its transpose maps them back. Deriving them
+    // from the rest normals keeps whatever the static loader decided (computed normals, a flip).
+    std::vector<glm::vec3> bind_normals(n);
+    const Bounds bounds = compute_bounds(file_order);
+    const double tolerance = 1e-5 * std::max(1e-30, double(glm::length(bounds.max - bounds.min)));
+    double agreement = 0.0;
+    for (const VertexRange& range : streams.ranges) {
+        const glm::dmat3 transpose = glm::transpose(glm::dmat3(range.static_world));
+        for (size_t v = range.first; v < range.first + range.count; ++v) {
+            const glm::dvec3 placed = glm::dvec3(range.static_world * glm::dvec4(glm::dvec3(streams.bind_positions[v]), 1.0));
+            if (glm::length(placed - glm::dvec3(file_order.positions[v])) > tolerance)
+                fail_file(path, "internal: vertex " + std::to_string(v) + " of the animation data is not the static mesh's");
+            const glm::dvec3 normal = transpose * glm::dvec3(file_order.normals[v]);
+            const double length = glm::length(normal);
+            bind_normals[v] = length > 0.0 ? glm::vec3(normal / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+            agreement += glm::dot(glm::dvec3(bind_normals[v]), glm::dvec3(streams.file_normals[v]));
+        }
+    }
+    // orient_outward may have turned the file's normals around; the morph targets' normal deltas turn with them.
+    if (agreement < 0.0)
+        for (MorphDelta& d : streams.morph_deltas) d.normal = -d.normal;
+
+    DrawingOrder order = reorder_for_drawing(file_order);
+    model.rest = std::move(order.mesh);
+    const size_t drawn = model.rest.vertex_count();
+    model.bind_positions.resize(drawn);
+    model.bind_normals.resize(drawn);
+    model.influences.resize(drawn);
+    model.morph_refs.resize(drawn);
+    for (size_t i = 0; i < drawn; ++i) {
+        const uint32_t o = order.origin[i];
+        model.bind_positions[i] = streams.bind_positions[o];
+        model.bind_normals[i] = bind_normals[o];
+        model.influences[i] = streams.influences[o];
+        // Deltas regrouped in drawing order, so that neighbouring vertices read neighbouring deltas.
+        MorphRef ref = streams.morph_refs[o];
+        const uint32_t first = static_cast<uint32_t>(model.morph_deltas.size());
+        for (uint32_t k = 0; k < ref.count; ++k) model.morph_deltas.push_back(streams.morph_deltas[ref.first_delta + k]);
+        ref.first_delta = first;
+        model.morph_refs[i] = ref;
+    }
+    return model;
+}
+
+}  // namespace stipple::anim

@@ -1,0 +1,147 @@
+// Animations: samplers (key times and values) and channels (which node property they drive), every
+// count and type checked against the use, so that sampling can trust what it reads.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "anim/gltf_accessor.hpp"
+#include "anim/gltf_reading.hpp"
+#include "core/error.hpp"
+
+namespace stipple::anim {
+
+namespace {
+
+const std::vector<int> kNormalizedTypes = {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                           TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+std::string indexed(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
+
+bool parse_path(const std::string& text, ChannelPath& path) {
+    if (text == "translation") path = ChannelPath::Translation;
+    else if (text == "rotation") path = ChannelPath::Rotation;
+    else if (text == "scale") path = ChannelPath::Scale;
+    else if (text == "weights") path = ChannelPath::Weights;
+    else return false;
+    return true;
+}
+
+class AnimationReader {
+public:
+    AnimationReader(const std::string& path, const tinygltf::Model& gltf, const LoadOptions& options, AnimatedModel& model)
+        : path_(path), gltf_(gltf), accessors_(path, gltf, options), model_(model) {}
+
+    void run() {
+        for (size_t a = 0; a < gltf_.animations.size(); ++a) model_.animations.push_back(read_animation(a));
+    }
+
+private:
+    Animation read_animation(size_t index) {
+        const tinygltf::Animation& in = gltf_.animations[index];
+        const std::string field = indexed("animations", index);
+        Animation animation;
+        animation.name = in.name;
+        animation.samplers.resize(in.samplers.size());
+        std::vector<int> sampler_use(in.samplers.size(), -1);  // the ChannelPath a sampler was read for
+        for (size_t s = 0; s < in.samplers.size(); ++s)
+            read_times(in.samplers[s], field + indexed(".samplers", s), animation.samplers[s]);
+        for (size_t c = 0; c < in.channels.size(); ++c) {
+            const tinygltf::AnimationChannel& channel = in.channels[c];
+            const std::string channel_field = field + indexed(".channels", c);
+            ChannelPath path;
+            // Channels without a node or with a path of an extension (KHR_animation_pointer) drive
+            // nothing this program draws.
+            if (channel.target_node < 0 || !parse_path(channel.target_path, path)) continue;
+            if (static_cast<size_t>(channel.target_node) >= model_.nodes.size())
+                fail_file(path_, channel_field + ".target.node: node " + std::to_string(channel.target_node) + " does not exist");
+            if (channel.sampler < 0 || static_cast<size_t>(channel.sampler) >= in.samplers.size())
+                fail_file(path_, channel_field + ".sampler: sampler " + std::to_string(channel.sampler) + " does not exist");
+            const Node& node = model_.nodes[channel.target_node];
+            if (node.has_matrix && path != ChannelPath::Weights)
+                fail_file(path_, channel_field + ": node " + std::to_string(channel.target_node) +
+                                     " has a matrix, which glTF does not allow to animate");
+            uint32_t components = path == ChannelPath::Rotation ? 4 : 3;
+            if (path == ChannelPath::Weights) {
+                if (node.morph_set < 0)
+                    fail_file(path_, channel_field + ": node " + std::to_string(channel.target_node) +
+                                         " has no morph targets to weight");
+                components = static_cast<uint32_t>(model_.morph_sets[node.morph_set].rest_weights.size());
+            }
+            const int s = channel.sampler;
+            Sampler& sampler = animation.samplers[s];
+            const std::string sampler_field = field + indexed(".samplers", s);
+            if (sampler_use[s] < 0) {
+                read_values(in.samplers[s], sampler_field, path, components, sampler);
+                sampler_use[s] = static_cast<int>(path);
+            } else if (sampler_use[s] != static_cast<int>(path) || sampler.components != components) {
+                fail_file(path_, channel_field + ": sampler " + std::to_string(s) + " also drives a different property");
+            }
+            animation.channels.push_back(Channel{static_cast<uint32_t>(s), channel.target_node, path});
+        }
+        for (const Channel& channel : animation.channels)
+            animation.duration = std::max(animation.duration, animation.samplers[channel.sampler].times.back());
+        return animation;
+    }
+
+    void read_times(const tinygltf::AnimationSampler& in, const std::string& field, Sampler& sampler) {
+        if (in.interpolation == "LINEAR" || in.interpolation.empty()) sampler.interpolation = Interpolation::Linear;
+        else if (in.interpolation == "STEP") sampler.interpolation = Interpolation::Step;
+        else if (in.interpolation == "CUBICSPLINE") sampler.interpolation = Interpolation::CubicSpline;
+        else fail_file(path_, field + ".interpolation: unknown interpolation '" + in.interpolation + "'");
+        sampler.times = accessors_.floats(in.input, TINYGLTF_TYPE_SCALAR, {}, field + ".input");
+        if (sampler.times.empty()) fail_file(path_, field + ".input: has no keys");
+        for (size_t k = 1; k < sampler.times.size(); ++k)
+            if (sampler.times[k] < sampler.times[k - 1])
+                fail_file(path_, field + ".input: key " + std::to_string(k) + " (time " + format(sampler.times[k]) +
+                                     ") comes before key " + std::to_string(k - 1) + " (time " + format(sampler.times[k - 1]) +
+                                     "); times must increase");
+        if (sampler.interpolation == Interpolation::CubicSpline && sampler.times.size() < 2)
+            fail_file(path_, field + ": CUBICSPLINE needs at least 2 keys");
+    }
+
+    void read_values(const tinygltf::AnimationSampler& in, const std::string& field, ChannelPath path,
+                     uint32_t components, Sampler& sampler) {
+        const std::string output = field + ".output";
+        if (path == ChannelPath::Rotation)
+            sampler.values = accessors_.floats(in.output, TINYGLTF_TYPE_VEC4, kNormalizedTypes, output);
+        else if (path == ChannelPath::Weights)
+            sampler.values = accessors_.floats(in.output, TINYGLTF_TYPE_SCALAR, kNormalizedTypes, output);
+        else
+            sampler.values = accessors_.floats(in.output, TINYGLTF_TYPE_VEC3, {}, output);
+        sampler.components = components;
+        const size_t keys = sampler.times.size();
+        const size_t per_key = (sampler.interpolation == Interpolation::CubicSpline ? 3 : 1) *
+                               (path == ChannelPath::Weights ? components : 1);
+        const size_t elements = sampler.values.size() / (path == ChannelPath::Weights ? 1 : components);
+        if (elements == keys * per_key) return;
+        std::string why;
+        if (per_key != 1) {
+            why = " (expected " + std::to_string(keys * per_key) + ": ";
+            if (path == ChannelPath::Weights) why += std::to_string(components) + " morph weights";
+            if (path == ChannelPath::Weights && sampler.interpolation == Interpolation::CubicSpline) why += " times ";
+            if (sampler.interpolation == Interpolation::CubicSpline) why += "3 for CUBICSPLINE";
+            why += " per key)";
+        }
+        fail_file(path_, field + ": input has " + std::to_string(keys) + " keys, output " + std::to_string(elements) + why);
+    }
+
+    static std::string format(float value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+        return text;
+    }
+
+    const std::string& path_;
+    const tinygltf::Model& gltf_;
+    AccessorReader accessors_;
+    AnimatedModel& model_;
+};
+
+}  // namespace
+
+void read_gltf_animations(const std::string& path, const tinygltf::Model& gltf, const LoadOptions& options,
+                          AnimatedModel& model) {
+    AnimationReader(path, gltf, options, model).run();
+}
+
+}  // namespace stipple::anim

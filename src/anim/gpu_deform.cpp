@@ -1,0 +1,152 @@
+#include "anim/gpu_deform.hpp"
+
+#include <algorithm>
+#include <span>
+
+#include "anim/deform_layout.hpp"
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "gpu/pipelines.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace stipple::anim {
+
+std::vector<gpu::DeformVertex> pack_deform_vertices(const AnimatedModel& model) {
+    std::vector<gpu::DeformVertex> out(model.vertex_count());
+    for (size_t v = 0; v < out.size(); ++v) {
+        gpu::DeformVertex& d = out[v];
+        d.position = model.bind_positions[v];
+        d.normal = model.bind_normals[v];
+        const MorphRef& morph = model.morph_refs[v];
+        d.morph_first = morph.first_delta;
+        d.morph_weights = morph.count == 0 ? 0u : (morph.first_weight | morph.count << 16);
+        const Influences& inf = model.influences[v];
+        for (uint32_t i = 0; i < kMaxInfluences; ++i) {
+            STIPPLE_CHECK(inf.slot[i] < gpu::kDeformMaxPaletteSlots, "palette slot beyond 16 bits");
+            d.slots[i / 2] |= inf.slot[i] << (16 * (i % 2));
+            (i < 4 ? d.weights0[i] : d.weights1[i - 4]) = inf.weight[i];
+        }
+    }
+    return out;
+}
+
+std::vector<gpu::MorphDelta> pack_morph_deltas(const AnimatedModel& model) {
+    std::vector<gpu::MorphDelta> out(model.morph_deltas.size());
+    for (size_t i = 0; i < out.size(); ++i)
+        out[i] = gpu::MorphDelta{glm::vec4(model.morph_deltas[i].position, 0.0f), glm::vec4(model.morph_deltas[i].normal, 0.0f)};
+    return out;
+}
+
+namespace {
+
+constexpr VkBufferUsageFlags kOutputUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+constexpr VkDeviceSize kUpdateChunk = 65536;  // vkCmdUpdateBuffer's limit per call
+
+template <class T>
+gpu::Buffer upload(const gpu::Context& context, std::vector<T> data) {
+    if (data.empty()) data.emplace_back();  // a binding needs a buffer, a copy a non-zero size
+    return gpu::create_device_buffer(context, std::span<const T>(data), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void update(VkCommandBuffer cb, const gpu::Buffer& buffer, const void* data, VkDeviceSize bytes) {
+    for (VkDeviceSize offset = 0; offset < bytes; offset += kUpdateChunk)
+        vkCmdUpdateBuffer(cb, buffer.handle(), offset, std::min(kUpdateChunk, bytes - offset),
+                          static_cast<const char*>(data) + offset);
+}
+
+}  // namespace
+
+GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model)
+    : context_(context),
+      vertex_count_(static_cast<uint32_t>(model.vertex_count())),
+      palette_slots_(static_cast<uint32_t>(model.palette.size())),
+      morph_weights_(model.morph_weight_count) {
+    vertices_ = upload(context, pack_deform_vertices(model));
+    deltas_ = upload(context, pack_morph_deltas(model));
+    const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    palette_ = gpu::Buffer(context, std::max(palette_slots_, 1u) * sizeof(glm::mat4), per_frame, gpu::MemoryUse::DeviceLocal);
+    weights_ = gpu::Buffer(context, std::max(morph_weights_, 1u) * sizeof(float), per_frame, gpu::MemoryUse::DeviceLocal);
+    const VkDeviceSize output_bytes = std::max(vertex_count_, 1u) * 3 * sizeof(float);
+    positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
+    normals_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
+
+    VkDescriptorSetLayoutBinding bindings[6];
+    for (uint32_t b = 0; b < 6; ++b)
+        bindings[b] = {b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = 6;
+    set_info.pBindings = bindings;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &set_layout_));
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::DeformPush)};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout_;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &pipeline_layout_));
+    pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_);
+
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6};
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = 1;
+    pool_info.pPoolSizes = &size;
+    VK_CHECK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &pool_));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &set_layout_;
+    VK_CHECK(vkAllocateDescriptorSets(context.device, &alloc, &set_));
+    write_descriptors(positions_.handle(), normals_.handle());
+}
+
+GpuDeformer::~GpuDeformer() {
+    const VkDevice device = context_.device;
+    if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
+    if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
+    if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
+    if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+}
+
+void GpuDeformer::set_outputs(VkBuffer positions, VkBuffer normals) { write_descriptors(positions, normals); }
+
+void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
+    const VkBuffer buffers[6] = {vertices_.handle(), deltas_.handle(), palette_.handle(), weights_.handle(), positions, normals};
+    VkDescriptorBufferInfo infos[6];
+    VkWriteDescriptorSet writes[6];
+    for (uint32_t b = 0; b < 6; ++b) {
+        infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
+        writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[b].dstSet = set_;
+        writes[b].dstBinding = b;
+        writes[b].descriptorCount = 1;
+        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[b].pBufferInfo = &infos[b];
+    }
+    static_assert(gpu::kBindingDeformVertices == 0 && gpu::kBindingDeformMorphDeltas == 1 && gpu::kBindingDeformPalette == 2 &&
+                  gpu::kBindingDeformMorphWeights == 3 && gpu::kBindingDeformPositions == 4 && gpu::kBindingDeformNormals == 5);
+    vkUpdateDescriptorSets(context_.device, 6, writes, 0, nullptr);
+}
+
+void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
+    STIPPLE_CHECK(pose.palette.size() == palette_slots_ && pose.morph_weights.size() == morph_weights_,
+                  "the pose is not of the deformer's model");
+    // The previous dispatch's reads of the palette and weights come before this frame's writes.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    update(cb, palette_, pose.palette.data(), pose.palette.size() * sizeof(glm::mat4));
+    update(cb, weights_, pose.morph_weights.data(), pose.morph_weights.size() * sizeof(float));
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    // Whatever read the outputs last frame (vertex input, shaders) finishes before they are rewritten.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set_, 0, nullptr);
+    const gpu::DeformPush push{vertex_count_, 0, 0, 0};
+    vkCmdPushConstants(cb, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cb, (vertex_count_ + gpu::kDeformWorkgroupSize - 1) / gpu::kDeformWorkgroupSize, 1, 1);
+}
+
+}  // namespace stipple::anim

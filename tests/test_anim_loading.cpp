@@ -1,0 +1,211 @@
+// Loading animated glTF: the rest mesh is exactly the static loader's drawing mesh (so stipples stay
+// valid), and skins, morph targets, animations and the encodings glTF allows for them are read right.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "anim/deform_cpu.hpp"
+#include "anim/describe.hpp"
+#include "anim/pose.hpp"
+#include "anim/procedural_rigs.hpp"
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+#include "support/anim_files.hpp"
+
+namespace stipple::anim {
+namespace {
+
+using test::load_rig;
+using test::write_rig;
+
+void expect_rest_is_drawing_mesh(const std::string& path) {
+    const AnimatedModel model = load_animated_model(path);
+    const Mesh drawn = load_mesh_for_drawing(path);
+    ASSERT_EQ(model.rest.indices, drawn.indices) << path;
+    ASSERT_EQ(model.rest.positions, drawn.positions) << path;
+    ASSERT_EQ(model.rest.normals, drawn.normals) << path;
+    EXPECT_EQ(model.bind_positions.size(), drawn.vertex_count());
+    EXPECT_EQ(model.influences.size(), drawn.vertex_count());
+    EXPECT_EQ(model.morph_refs.size(), drawn.vertex_count());
+    for (const Influences& inf : model.influences) {
+        double sum = 0.0;
+        for (uint32_t i = 0; i < kMaxInfluences; ++i) {
+            sum += inf.weight[i];
+            EXPECT_LT(inf.slot[i], model.palette.size());
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-6) << path;
+    }
+}
+
+TEST(AnimLoading, RestMeshIsTheStaticDrawingMesh) {
+    expect_rest_is_drawing_mesh(write_rig(rigs::bending_cylinder(), "anim_load_cylinder", "cylinder"));
+    expect_rest_is_drawing_mesh(write_rig(rigs::node_animated_box(), "anim_load_box", "box"));
+    expect_rest_is_drawing_mesh(write_rig(rigs::morphed_quad(), "anim_load_quad", "quad"));
+    expect_rest_is_drawing_mesh(write_rig(rigs::interpolation_sample("LINEAR"), "anim_load_keys", "keys"));
+    expect_rest_is_drawing_mesh(write_rig(rigs::stretching_plane(), "anim_load_plane", "plane"));
+    expect_rest_is_drawing_mesh(write_rig(rigs::eight_joint_sheet(), "anim_load_eight", "eight"));
+}
+
+TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {
+    // The project's default scene: a static glTF; every vertex follows its (unanimated) node.
+    const std::string blobby = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    expect_rest_is_drawing_mesh(blobby);
+    const AnimatedModel model = load_animated_model(blobby);
+    EXPECT_FALSE(model.is_animated());
+    EXPECT_TRUE(describe_lines(describe_animation(model)).empty());
+    const DeformedGeometry g = deform_cpu(model, evaluate_pose(model, kRestPose, 0.0));
+    const Bounds bounds = compute_bounds(model.rest);
+    for (size_t v = 0; v < model.vertex_count(); ++v)
+        EXPECT_LE(glm::length(g.positions[v] - model.rest.positions[v]), 1e-6f * glm::length(bounds.max - bounds.min));
+}
+
+TEST(AnimLoading, DrawOrderCarriesTheStreams) {
+    // The cylinder's vertices are reordered for drawing; each one must keep its own bind position and
+    // weights (here the rest mesh is the bind pose, so positions agree vertex by vertex, and the
+    // elbow's weight is a function of the height).
+    const uint32_t rings = 30, segments = 40;
+    const AnimatedModel model = load_rig(rigs::bending_cylinder({.rings = rings, .segments = segments}), "anim_load_order", "cylinder");
+    const uint32_t elbow_slot = model.skins[0].first_slot + 1;
+    size_t moved = 0;
+    for (size_t v = 0; v < model.vertex_count(); ++v) {
+        const glm::vec3 p = model.bind_positions[v];
+        EXPECT_EQ(p, model.rest.positions[v]);
+        float elbow = 0.0f;
+        for (uint32_t i = 0; i < kMaxInfluences; ++i) elbow += model.influences[v].slot[i] == elbow_slot ? model.influences[v].weight[i] : 0.0f;
+        EXPECT_NEAR(elbow, rigs::cylinder_elbow_weight(p.y), 1e-6);
+        if (glm::length(glm::vec2(p.x, p.z)) < 0.1f) continue;  // a cap's centre
+        const long ring = std::lround(p.y * rings / 2.0f);
+        const long segment = (std::lround(std::atan2(p.z, p.x) / (2.0 * 3.14159265358979) * segments) + segments) % segments;
+        moved += static_cast<size_t>(ring * segments + segment) != v;  // its place in the file
+    }
+    EXPECT_GT(moved, model.vertex_count() / 2) << "the draw order hardly moved the vertices, so this test shows little";
+}
+
+TEST(AnimLoading, FoxSkinAndAnimations) {
+    const std::string fox = test::shared_model("fox.glb");
+    if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";
+    expect_rest_is_drawing_mesh(fox);
+    const AnimatedModel model = load_animated_model(fox);
+    EXPECT_EQ(model.vertex_count(), 1728u);
+    EXPECT_EQ(model.rest.triangle_count(), 576u);
+    ASSERT_EQ(model.skins.size(), 1u);
+    EXPECT_EQ(model.skins[0].joints.size(), 24u);
+    ASSERT_EQ(model.animations.size(), 3u);
+    EXPECT_EQ(find_animation(model, "Survey"), 0);
+    EXPECT_EQ(find_animation(model, "Walk"), 1);
+    EXPECT_EQ(find_animation(model, "Run"), 2);
+    for (const Animation& a : model.animations) {
+        EXPECT_EQ(a.channels.size(), 21u);
+        EXPECT_GT(a.duration, 0.5f);
+    }
+    for (const Influences& inf : model.influences)
+        for (uint32_t i = 0; i < kMaxInfluences; ++i)
+            if (inf.weight[i] > 0.0f) {
+                EXPECT_LT(inf.slot[i], model.skins[0].first_slot + 24);
+            }
+    // Its joints' rest transforms are the bind pose: the rest pose is the static mesh.
+    const Bounds bounds = compute_bounds(model.rest);
+    const double size = glm::length(bounds.max - bounds.min);
+    const DeformedGeometry rest = deform_cpu(model, evaluate_pose(model, kRestPose, 0.0));
+    for (size_t v = 0; v < model.vertex_count(); ++v) EXPECT_LE(glm::length(rest.positions[v] - model.rest.positions[v]), 1e-6 * size);
+    // The walk moves the fox: its feet (the lowest vertices) are somewhere else half a cycle later.
+    const int walk = find_animation(model, "Walk");
+    const DeformedGeometry a = deform_cpu(model, evaluate_pose(model, walk, 0.0));
+    const DeformedGeometry b = deform_cpu(model, evaluate_pose(model, walk, model.animations[walk].duration / 2));
+    double largest = 0.0;
+    for (size_t v = 0; v < model.vertex_count(); ++v) largest = std::max(largest, double(glm::length(a.positions[v] - b.positions[v])));
+    EXPECT_GT(largest, 0.05 * size);
+    const std::vector<std::string> lines = describe_lines(describe_animation(model));
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[1].rfind("animation 1 'Walk': ", 0), 0u) << lines[1];
+    EXPECT_NE(lines[1].find("21 channels (LINEAR)"), std::string::npos) << lines[1];
+    EXPECT_EQ(lines[3], "skin 0: 24 joints");
+}
+
+TEST(AnimLoading, AnimatedMorphCube) {
+    const std::string cube = test::shared_model("AnimatedMorphCube.gltf");
+    if (cube.empty()) GTEST_SKIP() << "../shared/models/AnimatedMorphCube.gltf not present";
+    expect_rest_is_drawing_mesh(cube);
+    const AnimatedModel model = load_animated_model(cube);
+    ASSERT_EQ(model.morph_sets.size(), 1u);
+    EXPECT_EQ(model.morph_sets[0].target_names, (std::vector<std::string>{"thin", "angle"}));
+    ASSERT_EQ(model.animations.size(), 1u);
+    EXPECT_EQ(model.animations[0].channels[0].path, ChannelPath::Weights);
+    EXPECT_NEAR(model.animations[0].duration, 4.2, 1e-3);
+    for (const MorphRef& ref : model.morph_refs) EXPECT_EQ(ref.count, 2u);
+    const std::vector<std::string> lines = describe_lines(describe_animation(model));
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[1], "morph targets of mesh 'Cube': 2 ('thin', 'angle')");
+    // Some time in the loop, the weights deform the cube away from its rest shape.
+    double largest = 0.0;
+    for (double t = 0.0; t < 4.2; t += 0.3) {
+        const DeformedGeometry g = deform_cpu(model, evaluate_pose(model, 0, t));
+        for (size_t v = 0; v < model.vertex_count(); ++v)
+            largest = std::max(largest, double(glm::length(g.positions[v] - model.rest.positions[v])));
+    }
+    EXPECT_GT(largest, 0.5);  // the cube is 2 units wide (scale 100 of +-0.01); its targets move it by ~2
+}
+
+TEST(AnimLoading, DescribesTheQuadsTargetsByName) {
+    const AnimatedModel model = load_rig(rigs::morphed_quad(), "anim_load_describe", "quad");
+    const AnimationDescription d = describe_animation(model);
+    ASSERT_EQ(d.morphs.size(), 1u);
+    EXPECT_EQ(d.morphs[0].node_name, "sheet");
+    const std::vector<std::string> lines = describe_lines(d);
+    EXPECT_EQ(lines, (std::vector<std::string>{"animation 0 'Morph': 2.000 s, 1 channel (LINEAR)",
+                                               "morph targets of mesh 'sheet': 2 ('lift', 'raise')"}));
+}
+
+// glTF allows rotations as normalized integers and morph targets as sparse accessors: both must give
+// the same pose as the plain float files.
+TEST(AnimLoading, NormalizedRotationsAndSparseTargets) {
+    GltfBuilder box = rigs::node_animated_box();
+    std::vector<uint8_t> shorts;  // 0, 90 and 180 degrees about y as normalized signed shorts (x, y, z, w)
+    const double s = std::sqrt(0.5);
+    for (double v : {0.0, 0.0, 0.0, 1.0, 0.0, s, 0.0, s, 0.0, 1.0, 0.0, 0.0}) {
+        const int16_t q = static_cast<int16_t>(std::lround(v * 32767.0));
+        shorts.push_back(uint8_t(q & 0xFF));
+        shorts.push_back(uint8_t(uint16_t(q) >> 8));
+    }
+    const int accessor = box.add_uint8(shorts, "VEC4");  // bytes of the shorts; retyped below
+    box.doc["accessors"][accessor]["componentType"] = 5122;
+    box.doc["accessors"][accessor]["count"] = 3;
+    box.doc["accessors"][accessor]["normalized"] = true;
+    box.doc["animations"][0]["samplers"][1]["output"] = accessor;
+    const AnimatedModel plain = load_rig(rigs::node_animated_box(), "anim_load_plain_box", "box");
+    const AnimatedModel packed = load_rig(box, "anim_load_short_box", "box");
+    const Pose a = evaluate_pose(plain, 0, 0.7), b = evaluate_pose(packed, 0, 0.7);
+    for (int c = 0; c < 4; ++c) EXPECT_LE(glm::length(a.world[1][c] - b.world[1][c]), 1e-4);
+
+    GltfBuilder quad = rigs::morphed_quad();
+    // Target 0's POSITION as a sparse accessor: zeros except vertex 2, which rises by 1.
+    const int indices = quad.add_uint16({2}, "SCALAR");
+    const int values = quad.add_floats({0, 0, 1}, "VEC3");
+    const int sparse = quad.add("accessors", {{"componentType", 5126}, {"count", 4}, {"type", "VEC3"},
+                                              {"sparse", {{"count", 1},
+                                                          {"indices", {{"bufferView", quad.doc["accessors"][indices]["bufferView"]}, {"componentType", 5123}}},
+                                                          {"values", {{"bufferView", quad.doc["accessors"][values]["bufferView"]}}}}}});
+    quad.doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = sparse;
+    const AnimatedModel dense_quad = load_rig(rigs::morphed_quad(), "anim_load_dense_quad", "quad");
+    const AnimatedModel sparse_quad = load_rig(quad, "anim_load_sparse_quad", "quad");
+    const DeformedGeometry g0 = deform_cpu(dense_quad, evaluate_pose(dense_quad, 0, 0.6));
+    const DeformedGeometry g1 = deform_cpu(sparse_quad, evaluate_pose(sparse_quad, 0, 0.6));
+    EXPECT_EQ(g0.positions, g1.positions);
+}
+
+TEST(AnimLoading, OnlyGltfFilesAnimate) {
+    const std::string path = (test::temp_dir("anim_load_obj") / "tri.obj").string();
+    FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", f);
+    std::fclose(f);
+    try {
+        load_animated_model(path);
+        ADD_FAILURE() << "an OBJ file loaded as an animated model";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), path + ": animation needs a glTF file (.gltf or .glb)");
+    }
+}
+
+}  // namespace
+}  // namespace stipple::anim
