@@ -92,8 +92,9 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
               "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
    "camera_path": [camera, camera, ...],
    "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]}
-  Every field is optional except objects and their model (params above at their defaults); params
-  take the stipple options' names with _ for -, and their ranges.
+  Every field is optional except objects and their model (params above at their defaults). A param
+  takes the range of its stipple option below; `stipple params --markdown` pairs each scene key with
+  its option.
 
 Stipple options (render, view and info; a SCENE.json sets them per object instead):
 )");

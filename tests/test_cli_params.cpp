@@ -1,0 +1,160 @@
+// The parameter table (src/params/param_table.hpp) walked through every entry point: each parameter
+// round-trips command line -> scene file -> loaded scene -> saved scene; each out-of-range value is
+// rejected on the command line and in a scene file with the same range in the message; --help, the
+// README and `stipple params` list the table's text, not a retyped copy.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli/args.hpp"
+#include "cli/object_options.hpp"
+#include "core/error.hpp"
+#include "params/param_docs.hpp"
+#include "params/param_table.hpp"
+#include "scene/scene_json.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+// A value of `spec` inside its range that differs from the default.
+double other_value(const ParamSpec& spec) {
+    const double current = spec.get(ObjectParams{});
+    switch (spec.type) {
+        case ParamType::Bool: return current != 0.0 ? 0.0 : 1.0;
+        case ParamType::Choice: return std::fmod(current + 1.0, double(spec.choices.size()));
+        case ParamType::Int: return current != spec.min ? spec.min : spec.max;
+        case ParamType::Float: break;
+    }
+    const double lowest = param_lowest_value(spec);
+    return double(float(lowest + 0.37 * (spec.max - lowest)));
+}
+
+// The command-line words that set `spec` to `value`.
+std::vector<std::string> cli_words(const ParamSpec& spec, double value) {
+    const std::string name = "--" + std::string(spec.cli);
+    if (spec.type == ParamType::Bool) return {value != 0.0 ? name : "--no-" + std::string(spec.cli)};
+    return {name, format_param_value(spec, value)};
+}
+
+ObjectParams read_cli(const std::vector<std::string>& words) {
+    cli::Args args(words, cli::object_flags(), cli::object_options());
+    return cli::read_object_params(args);
+}
+
+Scene scene_with(const ObjectParams& params) {
+    Scene scene;
+    scene.objects.push_back({"model.obj", {}, params});
+    return scene;
+}
+
+std::string error_of(auto&& action) {
+    try {
+        action();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(ParamTable, EveryParameterRoundTripsThroughCommandLineAndSceneFile) {
+    const auto dir = test::temp_dir("param-table-round-trip");
+    size_t walked = 0;
+    for (const ParamSpec& spec : param_table()) {
+        if (spec.alias) continue;
+        SCOPED_TRACE(spec.key);
+        const double value = other_value(spec);
+        ASSERT_FALSE(param_value_problem(spec, value)) << "the test picked an invalid value";
+        ASSERT_NE(value, spec.get(ObjectParams{})) << "the test picked the default";
+
+        const ObjectParams from_cli = read_cli(cli_words(spec, value));
+        EXPECT_EQ(spec.get(from_cli), value) << "the command line did not set it";
+        // Only this parameter changed.
+        for (const ParamSpec& other : param_table())
+            if (&other != &spec && !other.alias) EXPECT_EQ(other.get(from_cli), other.get(ObjectParams{})) << other.key;
+
+        const std::string saved = scene_to_json(scene_with(from_cli), dir);
+        const Scene loaded = parse_scene(saved, "saved.json", dir);
+        EXPECT_EQ(spec.get(loaded.objects.at(0).params), value) << "lost in the scene file:\n" << saved;
+        EXPECT_EQ(scene_to_json(loaded, dir), saved) << "saving the loaded scene changed it";
+        EXPECT_EQ(needs_regeneration(ObjectParams{}, from_cli), spec.effect == ParamEffect::Regenerate);
+        ++walked;
+    }
+    EXPECT_GE(walked, 17u);
+}
+
+TEST(ParamTable, OutOfRangeValuesAreRejectedAlikeOnTheCommandLineAndInSceneFiles) {
+    const auto dir = test::temp_dir("param-table-ranges");
+    size_t checked = 0;
+    for (const ParamSpec& spec : param_table()) {
+        if (spec.type != ParamType::Int && spec.type != ParamType::Float) continue;
+        std::vector<double> bad = {spec.min_open ? spec.min : spec.min - 1.0, spec.max + 1.0, spec.max * 2.0 + 1.0};
+        if (spec.type == ParamType::Int) bad.push_back(spec.min + 0.5);
+        for (double value : bad) {
+            SCOPED_TRACE(std::string(spec.key) + " = " + std::to_string(value));
+            const std::string problem = param_value_problem(spec, value).value_or("");
+            ASSERT_FALSE(problem.empty());
+            std::ostringstream text;
+            text.precision(17);
+            text << value;
+            const std::string cli_error =
+                error_of([&] { read_cli({"--" + std::string(spec.cli), text.str()}); });
+            EXPECT_EQ(cli_error, "--" + std::string(spec.cli) + " = " + problem);
+            const std::string json =
+                R"({"objects": [{"model": "m.obj", "params": {")" + std::string(spec.key) + "\": " + text.str() + "}}]}";
+            const std::string scene_error = error_of([&] { parse_scene(json, "bad.json", dir); });
+            EXPECT_EQ(scene_error, "bad.json: objects[0].params." + std::string(spec.key) + ": " + problem);
+            if (std::isfinite(value) && value != std::floor(value) && spec.type == ParamType::Int) continue;
+            EXPECT_NE(problem.find("it must be " + param_range_text(spec)), std::string::npos) << problem;
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 30u);
+}
+
+TEST(ParamTable, TheOldSilhouetteSwitchSetsTheIndependentLineKinds) {
+    const ObjectParams both = read_cli({"--silhouette", "both"});
+    EXPECT_TRUE(both.silhouette_lines);
+    EXPECT_TRUE(both.toon);
+    const ObjectParams lines = read_cli({"--silhouette", "lines"});
+    EXPECT_TRUE(lines.silhouette_lines);
+    EXPECT_FALSE(lines.toon);
+    const ObjectParams separate = read_cli({"--toon"});
+    EXPECT_FALSE(separate.silhouette_lines);
+    EXPECT_TRUE(separate.toon);
+    EXPECT_NE(error_of([] { read_cli({"--toon", "--no-toon"}); }), "");
+    const auto dir = test::temp_dir("param-table-alias");
+    const Scene scene =
+        parse_scene(R"({"objects": [{"model": "m.obj", "params": {"silhouette": "lines"}}]})", "old.json", dir);
+    EXPECT_TRUE(scene.objects.at(0).params.silhouette_lines);
+    const std::string saved = scene_to_json(scene, dir);
+    EXPECT_EQ(saved.find("\"silhouette\""), std::string::npos) << "an alias is read but never written";
+    EXPECT_NE(saved.find("\"silhouette_lines\": true"), std::string::npos);
+}
+
+TEST(ParamTable, HelpReadmeAndParamsCommandListTheTablesText) {
+    const test::CommandResult help = test::run_stipple({"--help"});
+    EXPECT_NE(help.out.find(param_help_text()), std::string::npos) << "--help does not hold the table's option list";
+    const test::CommandResult markdown = test::run_stipple({"params", "--markdown"});
+    EXPECT_EQ(markdown.exit_code, 0);
+    EXPECT_EQ(markdown.out, param_markdown_table());
+    std::ifstream readme(std::string(STIPPLE_SOURCE_DIR) + "/README.md");
+    std::stringstream text;
+    text << readme.rdbuf();
+    EXPECT_NE(text.str().find(param_markdown_table()), std::string::npos)
+        << "README.md's parameter table is not the table's: paste `stipple params --markdown` into it";
+}
+
+TEST(ParamTable, TheExecutableRejectsAnOutOfRangeValueInOneLine) {
+    const test::CommandResult r = test::run_stipple({"render", "--dmax", "20", "-o", "/nonexistent/x.png"});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "stipple: --dmax = 20 is out of range: it must be > 0 and <= 16\n");
+}
+
+}  // namespace
+}  // namespace stipple
