@@ -1,21 +1,53 @@
 // The stipple cache: a reopened model with the same parameters gets the very same candidates back;
-// anything else (other parameters, another mesh, a damaged entry) regenerates.
+// anything else (other parameters, another mesh) is another entry; a damaged entry is detected, reported
+// and regenerated; the folder stays under its size limit, least recently used first; a writer killed
+// mid-entry leaves nothing that loads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <functional>
+#include <cstdlib>
 #include <fstream>
 
 #include "mesh/primitives.hpp"
+#include "stipple/cache_entry_format.hpp"
 #include "stipple/selection_order.hpp"
 #include "stipple/stipple_cache.hpp"
+#include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
 namespace stipple {
 namespace {
 
+namespace fs = std::filesystem;
+
 bool same(const StippleSet& a, const StippleSet& b) {
-    return a.positions == b.positions && a.triangle == b.triangle && a.first == b.first &&
+    return a.positions == b.positions && a.triangle == b.triangle && a.first == b.first && a.selection == b.selection &&
            a.density_per_area == b.density_per_area;
+}
+
+fs::path entry_of(const fs::path& dir, const Mesh& mesh, const GenerationParams& params) {
+    char name[40];
+    std::snprintf(name, sizeof(name), "%016llx.stipples", static_cast<unsigned long long>(stipple_cache_key(mesh, params)));
+    return dir / name;
+}
+
+uint64_t folder_bytes(const fs::path& dir) {
+    uint64_t total = 0;
+    for (const fs::directory_entry& file : fs::directory_iterator(dir)) total += file.file_size();
+    return total;
+}
+
+void flip_byte(const fs::path& path, std::streamoff at) {
+    std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(at);
+    char c = 0;
+    f.read(&c, 1);
+    c = char(c ^ 0x5A);
+    f.seekp(at);
+    f.write(&c, 1);
 }
 
 TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {
@@ -27,12 +59,16 @@ TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {
     EXPECT_FALSE(generated.from_cache);
     const StippleSet reopened = generate_stipples_cached(mesh, params, dir);
     EXPECT_TRUE(reopened.from_cache);
-    EXPECT_TRUE(same(generated, reopened));
-    // The polygons' selection values (§2.3) come back too: ranking them is the slow part of reopening.
-    EXPECT_EQ(reopened.selection, polygon_selection_values(mesh, params.seed));
-    EXPECT_EQ(generated.selection, reopened.selection);
-    std::printf("%zu stipples: generated in %.3f s, read back in %.4f s\n", generated.size(),
-                generated.generation_seconds, reopened.generation_seconds);
+    EXPECT_TRUE(same(generated, reopened)) << "a hit must give the stipples a miss gave";
+    // The polygons' selection values (§2.3) come back too, on their 16-bit steps.
+    const std::vector<float> ranked = polygon_selection_values(mesh, params.seed);
+    ASSERT_EQ(reopened.selection.size(), ranked.size());
+    for (size_t t = 0; t < ranked.size(); ++t) ASSERT_EQ(selection_step(reopened.selection[t]), selection_step(ranked[t]));
+    const uint64_t bytes = fs::file_size(entry_of(dir, mesh, params));
+    std::printf("%zu stipples on %zu polygons: generated in %.3f s, read back in %.4f s; %.2f bytes per stipple on disk\n",
+                generated.size(), mesh.triangle_count(), generated.generation_seconds, reopened.generation_seconds,
+                double(bytes) / double(generated.size()));
+    EXPECT_LE(double(bytes) / double(generated.size()), 9.0);
 
     GenerationParams other = params;
     other.seed = 2;
@@ -42,34 +78,111 @@ TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {
     EXPECT_FALSE(load_cached_stipples(dir, moved, params).has_value()) << "another mesh is another entry";
 }
 
-TEST(StippleCache, DamagedEntriesAreMissesNotErrors) {
+TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
     const auto dir = test::temp_dir("stipple_cache_damaged");
     const Mesh mesh = make_icosphere(3);
     GenerationParams params;
     params.dmax = 0.02f;
     const StippleSet generated = generate_stipples_cached(mesh, params, dir);
-    char name[32];
-    std::snprintf(name, sizeof(name), "%016llx.stipples",
-                  static_cast<unsigned long long>(stipple_cache_key(mesh, params)));
-    const auto entry = dir / name;
-    ASSERT_TRUE(std::filesystem::exists(entry));
-
-    // A triangle index changed in place: the set would be inconsistent, so it is not used.
-    {
-        std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);
-        f.seekp(48 + std::streamoff(generated.size() * sizeof(glm::vec3)));
-        const uint32_t wrong = 12345;
-        f.write(reinterpret_cast<const char*>(&wrong), 4);
+    const fs::path entry = entry_of(dir, mesh, params);
+    ASSERT_TRUE(fs::exists(entry));
+    const uint64_t size = fs::file_size(entry);
+    const std::vector<char> good = [&] {
+        std::ifstream in(entry, std::ios::binary);
+        return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }();
+    auto restore = [&] {
+        std::ofstream out(entry, std::ios::binary | std::ios::trunc);
+        out.write(good.data(), std::streamsize(good.size()));
+    };
+    struct Damage {
+        const char* what;
+        std::function<void()> apply;
+    };
+    const Damage damages[] = {
+        {"a flipped byte in the compressed stipples", [&] { flip_byte(entry, std::streamoff(size - size / 3)); }},
+        {"a flipped byte in the header", [&] { flip_byte(entry, 20); }},
+        {"a truncated entry", [&] { fs::resize_file(entry, size - 7); }},
+        {"a truncated header", [&] { fs::resize_file(entry, 100); }},
+    };
+    for (const Damage& damage : damages) {
+        SCOPED_TRACE(damage.what);
+        restore();
+        damage.apply();
+        testing::internal::CaptureStderr();
+        EXPECT_FALSE(load_cached_stipples(dir, mesh, params).has_value());
+        const std::string warning = testing::internal::GetCapturedStderr();
+        EXPECT_NE(warning.find("warning: " + entry.string() + ": damaged stipple cache entry"), std::string::npos) << warning;
+        EXPECT_EQ(std::count(warning.begin(), warning.end(), '\n'), 1) << "one line: " << warning;
+        // Regenerated over the damaged entry, and good again.
+        testing::internal::CaptureStderr();
+        const StippleSet again = generate_stipples_cached(mesh, params, dir);
+        testing::internal::GetCapturedStderr();
+        EXPECT_FALSE(again.from_cache);
+        EXPECT_TRUE(same(again, generated));
+        EXPECT_TRUE(load_cached_stipples(dir, mesh, params).has_value());
     }
-    EXPECT_FALSE(load_cached_stipples(dir, mesh, params).has_value());
-    // Truncated.
-    std::filesystem::resize_file(entry, 100);
-    EXPECT_FALSE(load_cached_stipples(dir, mesh, params).has_value());
-    // Regenerated over the damaged entry, and good again.
-    const StippleSet again = generate_stipples_cached(mesh, params, dir);
-    EXPECT_FALSE(again.from_cache);
-    EXPECT_TRUE(same(again, generated));
-    EXPECT_TRUE(load_cached_stipples(dir, mesh, params).has_value());
+}
+
+TEST(StippleCache, TheFolderStaysUnderItsLimitLeastRecentlyUsedFirst) {
+    const auto dir = test::temp_dir("stipple_cache_limit");
+    const Mesh mesh = make_icosphere(2);
+    GenerationParams params;
+    params.dmax = 0.005f;
+    const uint64_t one_entry = [&] {
+        generate_stipples_cached(mesh, params, dir);
+        return fs::file_size(entry_of(dir, mesh, params));
+    }();
+    const uint64_t limit = 3 * one_entry + one_entry / 2;  // room for three entries
+    const GenerationParams first = params;
+    for (uint64_t seed = 2; seed <= 12; ++seed) {
+        params.seed = seed;
+        const StippleSet set = generate_stipples(mesh, params);
+        StippleSet finished = set;
+        finish_generated_stipples(mesh, seed, finished);
+        store_cached_stipples(dir, mesh, params, finished, limit);
+        EXPECT_LE(folder_bytes(dir), limit) << "after entry " << seed;
+        EXPECT_TRUE(fs::exists(entry_of(dir, mesh, params))) << "the entry just written is never evicted";
+        // Reading the first entry makes it the most recently used, so it survives the evictions.
+        if (seed <= 6) {
+            fs::last_write_time(entry_of(dir, mesh, first), fs::file_time_type::clock::now() + std::chrono::seconds(seed));
+        }
+    }
+    EXPECT_EQ(list_cache_entries(dir).size(), 3u);
+    EXPECT_FALSE(fs::exists(entry_of(dir, mesh, [&] { GenerationParams p = params; p.seed = 3; return p; }())))
+        << "an old entry nobody read should have been evicted";
+    EXPECT_GT(clear_cache(dir), 0u);
+    EXPECT_TRUE(list_cache_entries(dir).empty());
+}
+
+TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {
+    const auto dir = test::temp_dir("stipple_cache_killed");
+    const fs::path cache = dir / "cache";
+    const std::string model = (dir / "sphere.obj").string();
+    {
+        const Mesh sphere = make_icosphere(3);
+        std::ofstream out(model);
+        for (const glm::vec3& p : sphere.positions) out << "v " << p.x << " " << p.y << " " << p.z << "\n";
+        for (size_t t = 0; t < sphere.triangle_count(); ++t)
+            out << "f " << sphere.indices[3 * t] + 1 << " " << sphere.indices[3 * t + 1] + 1 << " "
+                << sphere.indices[3 * t + 2] + 1 << "\n";
+    }
+    const std::vector<std::string> info = {"info", model, "--dmax", "0.02", "--cache-dir", cache.string()};
+    ::setenv("STIPPLE_CACHE_CRASH_AFTER_BYTES", "300", 1);  // dies inside the entry's data, as a kill would
+    const test::CommandResult killed = test::run_stipple(info);
+    ::unsetenv("STIPPLE_CACHE_CRASH_AFTER_BYTES");
+    EXPECT_EQ(killed.exit_code, 137);
+    size_t temporaries = 0;
+    for (const fs::directory_entry& file : fs::directory_iterator(cache)) temporaries += file.path().extension() != ".stipples";
+    EXPECT_EQ(temporaries, 1u) << "the killed writer's half file stays a temporary file";
+    EXPECT_TRUE(list_cache_entries(cache).empty()) << "no entry may exist: it would load half an entry";
+
+    const test::CommandResult again = test::run_stipple(info);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(again.err, "") << "a half-written temporary file is never read";
+    EXPECT_NE(again.out.find("generation time"), std::string::npos);
+    const test::CommandResult reopened = test::run_stipple(info);
+    EXPECT_NE(reopened.out.find("read from the stipple cache"), std::string::npos) << reopened.out;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ find_package(glfw3 REQUIRED)
 find_package(meshoptimizer REQUIRED)
 find_package(PkgConfig REQUIRED)
 find_package(nanoflann REQUIRED)                        # libnanoflann-dev: k-d tree for the plotter order
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)  # libzstd-dev: the stipple cache's entries
 pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)  # libcairo2-dev: PDF export
 find_package(tinyxml2 REQUIRED)                         # libtinyxml2-dev: the export tests parse the SVG
 

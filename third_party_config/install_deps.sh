@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglm-dev libglfw3-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
   libimgui-dev libmeshoptimizer-dev libgtest-dev
-  libnanoflann-dev libcairo2-dev libtinyxml2-dev poppler-utils librsvg2-bin
+  libzstd-dev libnanoflann-dev libcairo2-dev libtinyxml2-dev poppler-utils librsvg2-bin
   xvfb xauth xdotool x11-utils
 )
 

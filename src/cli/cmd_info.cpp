@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "cli/args.hpp"
+#include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
@@ -11,7 +12,10 @@ namespace stipple::cli {
 int run_info(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
     flags.insert("--json");
-    Args args(argv, flags, object_options());
+    std::set<std::string> options = object_options();
+    options.merge(cache_options());
+    Args args(argv, flags, options);
+    apply_cache_options(args);
     if (args.positionals().size() != 1) fail("info needs exactly one MODEL (see stipple --help)");
     const std::string path = args.positionals()[0];
     ObjectParams params = read_object_params(args);

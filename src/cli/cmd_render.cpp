@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "cli/args.hpp"
+#include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
@@ -90,9 +91,11 @@ int run_render(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
     flags.insert({"--stats", "--list-devices", "--verbose"});
     std::set<std::string> options = object_options();
+    options.merge(cache_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
                     "--device", "--frames", "--orbit"});
     Args args(argv, flags, options);
+    apply_cache_options(args);
 
     if (args.flag("--list-devices")) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());

@@ -2,6 +2,7 @@
 
 #include "app/viewer.hpp"
 #include "cli/args.hpp"
+#include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
@@ -12,9 +13,11 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
     flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
     std::set<std::string> options = object_options();
+    options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
                     "--save-scene", "--benchmark-frames"});
     Args args(argv, flags, options);
+    apply_cache_options(args);
 
     app::ViewerOptions viewer;
     long long width = args.integer("--width", viewer.width), height = args.integer("--height", viewer.height);

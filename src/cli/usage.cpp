@@ -29,6 +29,7 @@ Usage:
   stipple bench [--quick] [options]
                                   the paper's Table 1 on this machine: results.md, .json, chart.svg
   stipple params [--markdown]     list the per-object parameters: ranges, defaults, scene keys
+  stipple cache --list | --clear  what the stipple cache holds, or empty it
   stipple --help                  this text
 
 MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file. Without MODEL or
@@ -103,6 +104,13 @@ Stipple options (render, view and info; a SCENE.json sets them per object instea
 Info options:
   --json                  print the figures as JSON
 
+Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
+reopened with the same generation parameters skips generation (~2-3 bytes per stipple, checked
+when read; a damaged entry is reported and regenerated)
+  --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else ~/.cache/stipple/stipples)
+  --cache-size SIZE       the folder's limit, e.g. 500M or 2G (default 1G); the least recently used
+                          entries are removed beyond it
+
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
   --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
@@ -116,9 +124,8 @@ Environment:
   STIPPLE_ASSET_DIR       where the default scene is (default: the source folder's assets/)
   STIPPLE_SHARED_MODELS   where bench finds the scans (default: the source folder's ../shared/models)
   STIPPLE_CACHE_DIR       bench's derived models go to $STIPPLE_CACHE_DIR/bench-models (default:
-                          the build folder's bench-models); generated stipples are cached in
-                          $STIPPLE_CACHE_DIR/stipples (default: ~/.cache/stipple/stipples), so a
-                          model reopened with the same parameters skips generation
+                          the build folder's bench-models); the stipple cache is
+                          $STIPPLE_CACHE_DIR/stipples (see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
 
 Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the

@@ -15,6 +15,7 @@
 #include "render/shared_types.hpp"
 #include "render/silhouette_edges.hpp"
 #include "render/stipple_renderer.hpp"
+#include "stipple/barycentric.hpp"
 
 namespace stipple {
 
@@ -23,25 +24,11 @@ using gpu::MemoryUse;
 
 namespace {
 
-// Each candidate as (u, v) in its triangle, position = a + u (b - a) + v (c - a), 16 bits each.
+// Each candidate as (u, v) in its triangle (stipple/barycentric.hpp), 16 bits each.
 std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet& stipples) {
-    auto unorm16 = [](float value) { return uint32_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 65535.0f)); };
     std::vector<gpu::StippleVertex> vertices(stipples.size());
-    for (size_t i = 0; i < vertices.size(); ++i) {
-        const uint32_t t = stipples.triangle[i];
-        const glm::dvec3 a = mesh.positions[mesh.indices[3 * t]];
-        const glm::dvec3 e0 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - a;
-        const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - a;
-        const glm::dvec3 d = glm::dvec3(stipples.positions[i]) - a;
-        const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
-        const double denominator = d00 * d11 - d01 * d01;
-        double u = 0.0, v = 0.0;  // a degenerate polygon holds its stipples at a corner
-        if (denominator > 0.0) {
-            u = (d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / denominator;
-            v = (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / denominator;
-        }
-        vertices[i] = {unorm16(float(u)) | unorm16(float(v)) << 16, t};
-    }
+    for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {pack_barycentric(mesh, stipples.triangle[i], stipples.positions[i]), stipples.triangle[i]};
     return vertices;
 }
 

@@ -7,6 +7,7 @@
 
 #include "render/shared_types.hpp"
 #include "stipple/selection_order.hpp"
+#include "stipple/stipple_cache.hpp"
 
 namespace stipple {
 
@@ -39,9 +40,8 @@ std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const st
         float length = glm::length(cross);
         glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f);
         glm::vec3 center = ((a + b + c) / 3.0f - box_min) * inverse_size;
-        uint32_t selection_step = std::min(uint32_t(selection[t] * 65536.0f), 65535u);
         infos[t].center_xy = unorm16(center.x) | unorm16(center.y) << 16;
-        infos[t].center_z_selection = unorm16(center.z) | selection_step << 16;
+        infos[t].center_z_selection = unorm16(center.z) | uint32_t(selection_step(selection[t])) << 16;
         infos[t].normal = glm::packSnorm2x16(unit_to_octahedral(normal));
         infos[t].area = 0.5f * length;
     }

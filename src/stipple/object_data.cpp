@@ -2,7 +2,6 @@
 
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
-#include "stipple/selection_order.hpp"
 #include "stipple/stipple_cache.hpp"
 
 namespace stipple {
@@ -21,7 +20,7 @@ std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const Generati
     if (source == StippleSource::Cache) return std::make_shared<const StippleSet>(generate_stipples_cached(mesh, params));
     const auto start = Clock::now();
     StippleSet set = generate_stipples(mesh, params);
-    set.selection = polygon_selection_values(mesh, params.seed);  // §2.3, what the cache keeps too
+    finish_generated_stipples(mesh, params.seed, set);  // the selection values of §2.3, as the cache keeps them
     set.generation_seconds = seconds_since(start);               // the ranking counts as preprocessing
     return std::make_shared<const StippleSet>(std::move(set));
 }

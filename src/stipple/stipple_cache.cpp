@@ -1,31 +1,30 @@
 #include "stipple/stipple_cache.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 
+#include <zstd.h>
+
+#include "core/error.hpp"
 #include "core/hash.hpp"
+#include "core/timing.hpp"
 #include "params/param_table.hpp"
+#include "stipple/barycentric.hpp"
+#include "stipple/cache_entry_format.hpp"
 #include "stipple/selection_order.hpp"
 
 namespace stipple {
 
 namespace {
 
-constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
-constexpr uint32_t kVersion = 2;  // 2: the polygons' selection values follow first[]
-
-struct Header {
-    uint64_t magic;
-    uint32_t version;
-    uint32_t triangles;
-    uint64_t key;
-    uint64_t stipples;
-    double density_per_area;
-    double poisson_radius;
-};
+using cache_format::Header;
 
 uint64_t hash_bytes(uint64_t h, const void* data, size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
@@ -41,9 +40,27 @@ uint64_t hash_bytes(uint64_t h, const void* data, size_t bytes) {
 }
 
 std::filesystem::path entry_path(const std::filesystem::path& dir, uint64_t key) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "%016llx.stipples", static_cast<unsigned long long>(key));
+    char name[40];
+    std::snprintf(name, sizeof(name), "%016llx%s", static_cast<unsigned long long>(key), cache_format::kExtension);
     return dir / name;
+}
+
+void warn_damaged(const std::filesystem::path& path, const char* problem) {
+    std::fprintf(stderr, "stipple: warning: %s: damaged stipple cache entry (%s); generating the stipples again\n",
+                 path.c_str(), problem);
+}
+
+template <class T>
+void append(std::vector<unsigned char>& out, const T* data, size_t count) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(data);
+    out.insert(out.end(), bytes, bytes + count * sizeof(T));
+}
+
+// Fault injection for the test that a killed writer leaves no entry: STIPPLE_CACHE_CRASH_AFTER_BYTES=N
+// ends the process abruptly once N bytes of an entry are written, as a kill would.
+void maybe_crash(uint64_t written) {
+    static const char* limit = std::getenv("STIPPLE_CACHE_CRASH_AFTER_BYTES");
+    if (limit && written >= std::strtoull(limit, nullptr, 10)) _exit(137);
 }
 
 }  // namespace
@@ -55,8 +72,34 @@ std::filesystem::path default_stipple_cache_dir() {
     return std::filesystem::temp_directory_path() / "stipple-cache" / "stipples";
 }
 
+StippleCacheSettings& stipple_cache_settings() {
+    static StippleCacheSettings settings = [] {
+        StippleCacheSettings s;
+        const char* off = std::getenv("STIPPLE_NO_CACHE");
+        s.enabled = !(off && std::strcmp(off, "0") != 0);
+        return s;
+    }();
+    return settings;
+}
+
+uint64_t parse_byte_size(const std::string& option, const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    double unit = 1.0;
+    const std::string suffix = end ? std::string(end) : "";
+    if (suffix == "k" || suffix == "K") unit = 1024.0;
+    else if (suffix == "m" || suffix == "M") unit = 1024.0 * 1024.0;
+    else if (suffix == "g" || suffix == "G") unit = 1024.0 * 1024.0 * 1024.0;
+    else if (!suffix.empty()) unit = -1.0;
+    const double bytes = value * unit;
+    if (end == text.c_str() || errno == ERANGE || unit < 0.0 || !std::isfinite(bytes) || bytes < 0.0 || bytes > 1e18)
+        fail(option + ": '" + text + "' is not a size (bytes, or a number with k, M or G)");
+    return uint64_t(bytes);
+}
+
 uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params) {
-    uint64_t h = mix64(kMagic ^ kVersion);
+    uint64_t h = mix64(cache_format::kMagic ^ cache_format::kVersion);
     h = hash_bytes(h, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     h = hash_bytes(h, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
     // The parameters that shape generation, as the parameter table marks them, and the reference view.
@@ -65,90 +108,163 @@ uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params) {
     return hash_bytes(h, values.data(), values.size() * sizeof(double));
 }
 
+void finish_generated_stipples(const Mesh& mesh, uint64_t seed, StippleSet& stipples) {
+    for (size_t i = 0; i < stipples.size(); ++i) {
+        const uint32_t t = stipples.triangle[i];
+        stipples.positions[i] = unpack_barycentric(mesh, t, pack_barycentric(mesh, t, stipples.positions[i]));
+    }
+    stipples.selection = polygon_selection_values(mesh, seed);
+    for (float& value : stipples.selection) value = selection_from_step(selection_step(value));
+}
+
 std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh,
                                                const GenerationParams& params) {
     const uint64_t key = stipple_cache_key(mesh, params);
-    std::ifstream in(entry_path(dir, key), std::ios::binary);
+    const std::filesystem::path path = entry_path(dir, key);
+    std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     Header header{};
-    if (!in.read(reinterpret_cast<char*>(&header), sizeof(header))) return std::nullopt;
     const size_t triangles = mesh.triangle_count();
-    if (header.magic != kMagic || header.version != kVersion || header.key != key || header.triangles != triangles ||
-        header.stipples > (uint64_t(1) << 32))
-        return std::nullopt;
-    // Sizes are checked against the file before anything is allocated: a damaged entry is just a miss.
+    if (!in.read(reinterpret_cast<char*>(&header), sizeof(header))) return warn_damaged(path, "truncated header"), std::nullopt;
+    if (header.magic != cache_format::kMagic || header.version != cache_format::kVersion) return std::nullopt;  // older format
+    if (!cache_format::header_valid(header)) return warn_damaged(path, "header checksum"), std::nullopt;
+    if (header.key != key || header.triangles != triangles) return std::nullopt;  // another mesh's (a 64-bit collision)
+    const uint64_t raw_expected = header.triangles * 6 + header.stipples * 4;
     std::error_code ec;
-    const uintmax_t size = std::filesystem::file_size(entry_path(dir, key), ec);
-    const uintmax_t expected =
-        sizeof(Header) + header.stipples * (sizeof(glm::vec3) + 4) + (triangles + 1) * 4 + triangles * 4;
-    if (ec || size != expected) return std::nullopt;
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    // Sizes are checked against the file before anything is allocated.
+    if (ec || header.raw_bytes != raw_expected || header.stipples > (uint64_t(1) << 32) ||
+        size != sizeof(Header) + header.compressed_bytes)
+        return warn_damaged(path, "sizes"), std::nullopt;
+    std::vector<char> compressed(header.compressed_bytes);
+    if (!in.read(compressed.data(), std::streamsize(compressed.size()))) return warn_damaged(path, "truncated"), std::nullopt;
+    std::vector<unsigned char> raw(header.raw_bytes);
+    const size_t got = ZSTD_decompress(raw.data(), raw.size(), compressed.data(), compressed.size());
+    if (ZSTD_isError(got) || got != raw.size()) return warn_damaged(path, "checksum"), std::nullopt;
+
     StippleSet set;
+    set.first.assign(triangles + 1, 0);
+    set.selection.resize(triangles);
+    const unsigned char* counts = raw.data();
+    const unsigned char* steps = counts + 4 * triangles;
+    const unsigned char* uvs = steps + 2 * triangles;
+    for (size_t t = 0; t < triangles; ++t) {
+        uint32_t count = 0;
+        uint16_t step = 0;
+        std::memcpy(&count, counts + 4 * t, 4);
+        std::memcpy(&step, steps + 2 * t, 2);
+        if (uint64_t(set.first[t]) + count > header.stipples) return warn_damaged(path, "counts"), std::nullopt;
+        set.first[t + 1] = set.first[t] + count;
+        set.selection[t] = selection_from_step(step);
+    }
+    if (set.first.back() != header.stipples) return warn_damaged(path, "counts"), std::nullopt;
     set.positions.resize(header.stipples);
     set.triangle.resize(header.stipples);
-    set.first.resize(triangles + 1);
-    set.selection.resize(triangles);
-    in.read(reinterpret_cast<char*>(set.positions.data()), std::streamsize(set.positions.size() * sizeof(glm::vec3)));
-    in.read(reinterpret_cast<char*>(set.triangle.data()), std::streamsize(set.triangle.size() * 4));
-    in.read(reinterpret_cast<char*>(set.first.data()), std::streamsize(set.first.size() * 4));
-    in.read(reinterpret_cast<char*>(set.selection.data()), std::streamsize(set.selection.size() * 4));
-    if (!in) return std::nullopt;
-    for (float value : set.selection)
-        if (!(value >= 0.0f && value < 1.0f)) return std::nullopt;
-    // Consistency, so a corrupted entry can never reach the GPU.
-    if (set.first.front() != 0 || set.first.back() != header.stipples) return std::nullopt;
-    for (size_t t = 0; t < triangles; ++t) {
-        if (set.first[t] > set.first[t + 1]) return std::nullopt;
-        for (uint32_t s = set.first[t]; s < set.first[t + 1]; ++s)
-            if (set.triangle[s] != t) return std::nullopt;
-    }
+    for (size_t t = 0; t < triangles; ++t)
+        for (uint32_t s = set.first[t]; s < set.first[t + 1]; ++s) {
+            uint32_t uv = 0;
+            std::memcpy(&uv, uvs + 4 * size_t(s), 4);
+            set.triangle[s] = uint32_t(t);
+            set.positions[s] = unpack_barycentric(mesh, uint32_t(t), uv);
+        }
     set.density_per_area = header.density_per_area;
     set.poisson_radius = header.poisson_radius;
+    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);  // its last use
     return set;
 }
 
 void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, const GenerationParams& params,
-                           const StippleSet& stipples) {
+                           const StippleSet& stipples, uint64_t max_bytes) {
+    const size_t triangles = mesh.triangle_count();
+    if (stipples.selection.size() != triangles || stipples.first.size() != triangles + 1) return;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return;
-    const uint64_t key = stipple_cache_key(mesh, params);
-    const std::filesystem::path final_path = entry_path(dir, key);
+    std::vector<unsigned char> raw;
+    raw.reserve(triangles * 6 + stipples.size() * 4);
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t count = stipples.count(t);
+        append(raw, &count, 1);
+    }
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint16_t step = selection_step(stipples.selection[t]);
+        append(raw, &step, 1);
+    }
+    for (size_t i = 0; i < stipples.size(); ++i) {
+        const uint32_t uv = pack_barycentric(mesh, stipples.triangle[i], stipples.positions[i]);
+        append(raw, &uv, 1);
+    }
+    std::vector<char> compressed(ZSTD_compressBound(raw.size()));
+    ZSTD_CCtx* context = ZSTD_createCCtx();
+    if (!context) return;
+    ZSTD_CCtx_setParameter(context, ZSTD_c_compressionLevel, 3);
+    ZSTD_CCtx_setParameter(context, ZSTD_c_checksumFlag, 1);  // zstd verifies the data when it reads it back
+    const size_t packed = ZSTD_compress2(context, compressed.data(), compressed.size(), raw.data(), raw.size());
+    ZSTD_freeCCtx(context);
+    if (ZSTD_isError(packed)) return;
+
+    Header header{};
+    header.magic = cache_format::kMagic;
+    header.version = cache_format::kVersion;
+    header.header_bytes = sizeof(Header);
+    header.key = stipple_cache_key(mesh, params);
+    header.triangles = triangles;
+    header.stipples = stipples.size();
+    header.density_per_area = stipples.density_per_area;
+    header.poisson_radius = stipples.poisson_radius;
+    header.raw_bytes = raw.size();
+    header.compressed_bytes = packed;
+    std::strncpy(header.model, mesh.source.c_str(), sizeof(header.model) - 1);
+    header.header_hash = cache_format::hash_header(header);
+
+    const std::filesystem::path final_path = entry_path(dir, header.key);
     std::filesystem::path temporary = final_path;
-    temporary += ".tmp" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
+    temporary += ".tmp" + std::to_string(getpid()) + "-" + std::to_string(Clock::now().time_since_epoch().count());
     {
         std::ofstream out(temporary, std::ios::binary);
-        Header header{kMagic, kVersion, uint32_t(mesh.triangle_count()), key, stipples.size(),
-                      stipples.density_per_area, stipples.poisson_radius};
         out.write(reinterpret_cast<const char*>(&header), sizeof(header));
-        out.write(reinterpret_cast<const char*>(stipples.positions.data()),
-                  std::streamsize(stipples.positions.size() * sizeof(glm::vec3)));
-        out.write(reinterpret_cast<const char*>(stipples.triangle.data()), std::streamsize(stipples.triangle.size() * 4));
-        out.write(reinterpret_cast<const char*>(stipples.first.data()), std::streamsize(stipples.first.size() * 4));
-        out.write(reinterpret_cast<const char*>(stipples.selection.data()),
-                  std::streamsize(stipples.selection.size() * 4));
-        if (!out || stipples.selection.size() != mesh.triangle_count()) {
+        uint64_t written = sizeof(header);
+        for (size_t at = 0; at < packed && out; at += 1 << 20) {
+            const size_t chunk = std::min<size_t>(packed - at, 1 << 20);
+            out.write(compressed.data() + at, std::streamsize(chunk));
+            written += chunk;
+            maybe_crash(written);
+        }
+        if (!out.flush()) {
             out.close();
             std::filesystem::remove(temporary, ec);
             return;
         }
     }
     std::filesystem::rename(temporary, final_path, ec);
-    if (ec) std::filesystem::remove(temporary, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        return;
+    }
+    enforce_cache_limit(dir, max_bytes, final_path);
+}
+
+StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params) {
+    const StippleCacheSettings& settings = stipple_cache_settings();
+    if (!settings.enabled) {
+        StippleSet set = generate_stipples(mesh, params);
+        finish_generated_stipples(mesh, params.seed, set);  // as a cache hit would return it
+        return set;
+    }
+    return generate_stipples_cached(mesh, params, settings.dir);
 }
 
 StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params,
                                     const std::filesystem::path& dir) {
-    const char* off = std::getenv("STIPPLE_NO_CACHE");
-    if (off && std::strcmp(off, "0") != 0) return generate_stipples(mesh, params);
-    auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     if (std::optional<StippleSet> cached = load_cached_stipples(dir, mesh, params)) {
-        cached->generation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        cached->generation_seconds = seconds_since(start);
         cached->from_cache = true;
         return std::move(*cached);
     }
     StippleSet set = generate_stipples(mesh, params);
-    set.selection = polygon_selection_values(mesh, params.seed);
-    store_cached_stipples(dir, mesh, params, set);
+    finish_generated_stipples(mesh, params.seed, set);
+    store_cached_stipples(dir, mesh, params, set, stipple_cache_settings().max_bytes);
     return set;
 }
 

@@ -1,0 +1,64 @@
+// stipple cache: what the stipple cache holds, and emptying it (src/stipple/stipple_cache.hpp).
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+
+#include "cli/args.hpp"
+#include "cli/cache_options.hpp"
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "stipple/stipple_cache.hpp"
+
+namespace stipple::cli {
+
+namespace {
+
+std::string megabytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / 1e6);
+    return text;
+}
+
+std::string local_time(std::filesystem::file_time_type time) {
+    const auto system = std::chrono::time_point_cast<std::chrono::system_clock::duration>(
+        time - std::filesystem::file_time_type::clock::now() + std::chrono::system_clock::now());
+    const std::time_t t = std::chrono::system_clock::to_time_t(system);
+    std::tm tm{};
+    localtime_r(&t, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", &tm);
+    return text;
+}
+
+}  // namespace
+
+int run_cache(const std::vector<std::string>& argv) {
+    std::set<std::string> options = cache_options();
+    Args args(argv, {"--list", "--clear"}, options);
+    if (!args.positionals().empty()) fail("cache takes no MODEL (see stipple --help)");
+    if (args.flag("--list") == args.flag("--clear")) fail("cache needs one of --list or --clear");
+    apply_cache_options(args);
+    const StippleCacheSettings& settings = stipple_cache_settings();
+    if (args.flag("--clear")) {
+        const uint64_t freed = clear_cache(settings.dir);
+        std::printf("cleared %s: %s freed\n", settings.dir.c_str(), megabytes(freed).c_str());
+        return 0;
+    }
+    uint64_t total = 0;
+    const auto entries = list_cache_entries(settings.dir);
+    std::printf("%s (limit %s; most recently used first)\n", settings.dir.c_str(), megabytes(settings.max_bytes).c_str());
+    for (const CacheEntryInfo& e : entries) {
+        total += e.bytes;
+        if (e.readable)
+            std::printf("  %s  %9s  %10llu stipples  %9llu polygons  %s\n", local_time(e.last_used).c_str(),
+                        megabytes(e.bytes).c_str(), (unsigned long long)e.stipples, (unsigned long long)e.triangles,
+                        e.model.c_str());
+        else
+            std::printf("  %s  %9s  (unreadable: %s)\n", local_time(e.last_used).c_str(), megabytes(e.bytes).c_str(),
+                        e.path.filename().c_str());
+    }
+    std::printf("%zu entries, %s\n", entries.size(), megabytes(total).c_str());
+    return 0;
+}
+
+}  // namespace stipple::cli

@@ -1,0 +1,53 @@
+#pragma once
+// The stipple cache's entry layout (stipple_cache.cpp writes and reads it, cache_folder.cpp lists it):
+// this header, then one zstd frame (with its content checksum) of
+//   uint32 count[triangles]       candidates per polygon
+//   uint16 selection[triangles]   the fixed selection value's 16-bit step (§2.3)
+//   uint32 uv[stipples]           each stipple's (u, v) in its polygon, 16-bit unorm each
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "core/hash.hpp"
+
+namespace stipple::cache_format {
+
+inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
+inline constexpr uint32_t kVersion = 3;  // 3: compressed barycentric entries with checksums
+inline constexpr char kExtension[] = ".stipples";
+
+struct Header {
+    uint64_t magic;
+    uint32_t version;
+    uint32_t header_bytes;  // sizeof(Header)
+    uint64_t key;
+    uint64_t triangles;
+    uint64_t stipples;
+    double density_per_area;
+    double poisson_radius;
+    uint64_t raw_bytes;         // the payload before compression
+    uint64_t compressed_bytes;  // the zstd frame that follows
+    char model[128];            // the mesh's source file (for `stipple cache --list`), NUL-terminated
+    uint64_t header_hash;       // of every byte before it
+};
+static_assert(sizeof(Header) == 208 && offsetof(Header, header_hash) == 200, "no padding: the hash reads raw bytes");
+
+inline uint64_t hash_header(const Header& header) {
+    uint64_t h = mix64(kMagic);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&header);
+    for (size_t i = 0; i < offsetof(Header, header_hash); i += 8) {
+        uint64_t word = 0;
+        std::memcpy(&word, bytes + i, 8);
+        h = mix64(h ^ word);
+    }
+    return h;
+}
+
+// The header is intact: right magic, version, size and hash.
+inline bool header_valid(const Header& header) {
+    return header.magic == kMagic && header.version == kVersion && header.header_bytes == sizeof(Header) &&
+           header.header_hash == hash_header(header) && header.model[sizeof(header.model) - 1] == '\0';
+}
+
+}  // namespace stipple::cache_format

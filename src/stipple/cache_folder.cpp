@@ -1,0 +1,90 @@
+// The stipple cache's folder as a whole: listing, the size limit (least recently used first), clearing.
+#include <algorithm>
+#include <fstream>
+
+#include "stipple/cache_entry_format.hpp"
+#include "stipple/stipple_cache.hpp"
+
+namespace stipple {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_entry(const fs::path& path) { return path.extension() == cache_format::kExtension; }
+// A temporary file of a writer, finished or killed: "<key>.stipples.tmp<pid>-<time>".
+bool is_temporary(const fs::path& path) { return path.filename().string().find(".stipples.tmp") != std::string::npos; }
+
+}  // namespace
+
+std::vector<CacheEntryInfo> list_cache_entries(const fs::path& dir) {
+    std::vector<CacheEntryInfo> entries;
+    std::error_code ec;
+    for (const fs::directory_entry& file : fs::directory_iterator(dir, ec)) {
+        if (!file.is_regular_file(ec) || !is_entry(file.path())) continue;
+        CacheEntryInfo info;
+        info.path = file.path();
+        info.bytes = file.file_size(ec);
+        info.last_used = file.last_write_time(ec);
+        cache_format::Header header{};
+        std::ifstream in(file.path(), std::ios::binary);
+        if (in.read(reinterpret_cast<char*>(&header), sizeof(header)) && cache_format::header_valid(header)) {
+            info.readable = true;
+            info.triangles = header.triangles;
+            info.stipples = header.stipples;
+            info.model = header.model;
+        }
+        entries.push_back(info);
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const CacheEntryInfo& a, const CacheEntryInfo& b) { return a.last_used > b.last_used; });
+    return entries;
+}
+
+uint64_t enforce_cache_limit(const fs::path& dir, uint64_t max_bytes, const fs::path& keep) {
+    struct File {
+        fs::path path;
+        uint64_t bytes;
+        fs::file_time_type time;
+    };
+    std::vector<File> files;
+    uint64_t total = 0, freed = 0;
+    std::error_code ec;
+    const auto now = fs::file_time_type::clock::now();
+    for (const fs::directory_entry& file : fs::directory_iterator(dir, ec)) {
+        if (!file.is_regular_file(ec)) continue;
+        const bool temporary = is_temporary(file.path());
+        if (!temporary && !is_entry(file.path())) continue;  // not ours: never touched
+        const uint64_t bytes = file.file_size(ec);
+        const auto time = file.last_write_time(ec);
+        // A temporary file an hour old belongs to a killed process (a live writer renames within seconds).
+        if (temporary && now - time > std::chrono::hours(1) && fs::remove(file.path(), ec)) {
+            freed += bytes;
+            continue;
+        }
+        total += bytes;
+        if (!temporary && file.path() != keep) files.push_back({file.path(), bytes, time});
+    }
+    std::sort(files.begin(), files.end(), [](const File& a, const File& b) { return a.time < b.time; });
+    for (const File& file : files) {
+        if (total <= max_bytes) break;
+        if (fs::remove(file.path, ec)) {  // another process may have removed it already
+            total -= file.bytes;
+            freed += file.bytes;
+        }
+    }
+    return freed;
+}
+
+uint64_t clear_cache(const fs::path& dir) {
+    uint64_t freed = 0;
+    std::error_code ec;
+    for (const fs::directory_entry& file : fs::directory_iterator(dir, ec)) {
+        if (!file.is_regular_file(ec) || !(is_entry(file.path()) || is_temporary(file.path()))) continue;
+        const uint64_t bytes = file.file_size(ec);
+        if (fs::remove(file.path(), ec)) freed += bytes;
+    }
+    return freed;
+}
+
+}  // namespace stipple
