@@ -20,6 +20,9 @@
 #include <thread>
 
 #include "io/png_io.hpp"
+#include "mesh/ply_writer.hpp"
+#include "mesh/primitives.hpp"
+#include "support/run_command.hpp"
 #include "scene/scene_json.hpp"
 #include "support/test_paths.hpp"
 
@@ -289,6 +292,52 @@ TEST(CliView, DrivenByRealInputUnderXvfb) {
     std::string err = session.err();
     EXPECT_EQ(err.find("validation"), std::string::npos) << err;
     EXPECT_EQ(err.find("error"), std::string::npos) << err;
+}
+
+// Issue 14: a D_max change on the 871k-triangle model makes new stipples in the background while the
+// window keeps drawing the old ones; the frames keep coming (no gap over 250 ms), and the final image is
+// the one an offline render with the new parameters gives.
+TEST(CliView, RegeneratesInTheBackgroundWithoutFreezing) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-background");
+    const std::string model = (dir / "sphere-871k.ply").string();
+    write_ply_binary(model, make_uv_sphere(871'414));  // the paper's largest row, the dragon's polygon count
+    std::ofstream(dir / "script.txt") << "wait 2\nset 0 dmax 0.5\nwait-idle\nwait 0.5\nscreenshot " +
+                                             (dir / "final.png").string() + "\nwait 0.5\nquit\n";
+    const std::string cache = (dir / "cache").string();
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({model, "--width", "640", "--height", "512", "--no-panel", "--script",
+                          (dir / "script.txt").string(), "--frame-log", (dir / "frames.log").string(), "--cache-dir",
+                          cache});
+    const int code = session.viewer().wait_exit(300s);
+    ASSERT_EQ(code, 0) << session.out() << session.err();
+    EXPECT_NE(session.out().find("new stipples: "), std::string::npos) << session.out();
+
+    std::vector<double> times;
+    std::ifstream log(dir / "frames.log");
+    for (double t; log >> t;) times.push_back(t);
+    ASSERT_GT(times.size(), 10u);
+    // From a second into the script (shaders compiled, memory touched) to the end: the set, the whole
+    // background generation, the swap, the screenshot.
+    double worst = 0.0, worst_at = 0.0;
+    size_t counted = 0;
+    for (size_t i = 1; i < times.size(); ++i) {
+        if (times[i - 1] < times[0] + 1000.0) continue;
+        ++counted;
+        if (times[i] - times[i - 1] > worst) worst = times[i] - times[i - 1], worst_at = times[i] - times[0];
+    }
+    std::printf("%zu frames in %.1f s; longest gap %.0f ms (at %.1f s)\n", times.size(),
+                (times.back() - times.front()) / 1000.0, worst, worst_at / 1000.0);
+    EXPECT_GT(counted, 10u);
+    EXPECT_LE(worst, 250.0) << "the window froze while new stipples were made";
+
+    const test::CommandResult offline = test::run_stipple({"render", model, "--dmax", "0.5", "--width", "640", "--height",
+                                                           "512", "-o", (dir / "offline.png").string(), "--cache-dir", cache});
+    ASSERT_EQ(offline.exit_code, 0) << offline.err;
+    const Image shown = read_png((dir / "final.png").string()), rendered = read_png((dir / "offline.png").string());
+    EXPECT_EQ(fraction_differing(shown, rendered, 0), 0.0) << "the viewer shows another image than the offline render";
 }
 
 }  // namespace

@@ -11,7 +11,10 @@ namespace stipple::app {
 LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer)
     : scene_(std::move(scene)), data_(std::move(content.objects)), renderer_(renderer) {
     STIPPLE_CHECK(renderer.object_count() == 0, "LiveScene needs an empty renderer");
-    for (const SceneObject& o : scene_.objects) generated_with_.push_back(o.params);
+    for (const SceneObject& o : scene_.objects) {
+        generated_with_.push_back(o.params);
+        ids_.push_back(next_id_++);
+    }
     add_scene_objects(renderer_, scene_, data_);
 }
 
@@ -23,6 +26,12 @@ std::vector<std::string> LiveScene::names() const {
 
 Sphere LiveScene::bounds() const { return scene_bounds(scene_, data_); }
 
+std::optional<size_t> LiveScene::index_of(uint64_t id) const {
+    for (size_t i = 0; i < ids_.size(); ++i)
+        if (ids_[i] == id) return i;
+    return std::nullopt;
+}
+
 void LiveScene::sync() {
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
         ObjectParams params = scene_.objects[i].params;
@@ -33,19 +42,21 @@ void LiveScene::sync() {
     }
 }
 
-bool LiveScene::regenerate_if_changed(size_t object) {
-    const ObjectParams& wanted = scene_.objects.at(object).params;
-    if (!needs_regeneration(generated_with_[object], wanted)) return false;
-    data_[object].stipples = make_stipples(*data_[object].mesh, wanted.generation);
-    generated_with_[object] = wanted;
-    rebuild_from(object);
-    return true;
+bool LiveScene::generation_changed(size_t object) const {
+    return needs_regeneration(generated_with_.at(object), scene_.objects.at(object).params);
 }
 
-void LiveScene::add_model(const std::string& path) {
-    if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
-    ObjectParams params = scene_.objects.empty() ? ObjectParams{} : scene_.objects.back().params;
-    ObjectData data = load_object_data(path, params.generation);
+void LiveScene::apply_stipples(uint64_t id, const GenerationParams& generation,
+                               std::shared_ptr<const StippleSet> stipples, const ObjectUpload& upload) {
+    const std::optional<size_t> object = index_of(id);
+    if (!object) return;  // removed while its stipples were being made
+    renderer_.replace_object(*object, upload);
+    data_[*object].stipples = std::move(stipples);
+    generated_with_[*object].generation = generation;
+}
+
+void LiveScene::add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload,
+                           const ObjectParams& params) {
     SceneObject object;
     // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
     object.model = std::filesystem::absolute(path).lexically_normal().string();
@@ -57,7 +68,29 @@ void LiveScene::add_model(const std::string& path) {
     scene_.objects.push_back(object);
     data_.push_back(std::move(data));
     generated_with_.push_back(params);
-    renderer_.add_object(*data_.back().mesh, *data_.back().stipples, object.transform.to_matrix(), params);
+    ids_.push_back(next_id_++);
+    renderer_.add_object(upload, object.transform.to_matrix(), params);
+}
+
+ObjectParams LiveScene::params_for_new_object() const {
+    return scene_.objects.empty() ? ObjectParams{} : scene_.objects.back().params;
+}
+
+bool LiveScene::regenerate_if_changed(size_t object) {
+    if (!generation_changed(object)) return false;
+    const GenerationParams wanted = scene_.objects.at(object).params.generation;
+    auto stipples = make_stipples(*data_[object].mesh, wanted);
+    apply_stipples(ids_[object], wanted, stipples,
+                   prepare_object_upload(renderer_.context(), *data_[object].mesh, *stipples, wanted.seed));
+    return true;
+}
+
+void LiveScene::add_model(const std::string& path) {
+    if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
+    const ObjectParams params = params_for_new_object();
+    ObjectData data = load_object_data(path, params.generation);
+    const ObjectUpload upload = prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed);
+    add_loaded(path, std::move(data), upload, params);
 }
 
 void LiveScene::remove(size_t object) {
@@ -66,17 +99,7 @@ void LiveScene::remove(size_t object) {
     scene_.objects.erase(scene_.objects.begin() + std::ptrdiff_t(object));
     data_.erase(data_.begin() + std::ptrdiff_t(object));
     generated_with_.erase(generated_with_.begin() + std::ptrdiff_t(object));
-}
-
-void LiveScene::rebuild_from(size_t first) {
-    // The renderer appends and removes; replacing one object's stipples in place means re-adding the
-    // ones after it too, so the panel's order and the renderer's stay the same.
-    while (renderer_.object_count() > first) renderer_.remove_object(renderer_.object_count() - 1);
-    for (size_t i = first; i < data_.size(); ++i) {
-        ObjectParams params = scene_.objects[i].params;
-        params.generation = generated_with_[i].generation;
-        renderer_.add_object(*data_[i].mesh, *data_[i].stipples, scene_.objects[i].transform.to_matrix(), params);
-    }
+    ids_.erase(ids_.begin() + std::ptrdiff_t(object));
 }
 
 void LiveScene::save(const std::string& path, const OrbitCamera& camera) const {

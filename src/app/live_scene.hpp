@@ -1,7 +1,10 @@
 #pragma once
 // The viewer's scene while it runs: the Scene the panel edits, the objects' CPU data, and the
 // renderer kept in step with both (parameters and transforms every frame; new stipples, added and
-// removed objects when asked).
+// removed objects when they are ready). Objects have ids that survive removals, so work finished in
+// the background (background_work.hpp) lands on the object it was started for.
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,25 +25,37 @@ public:
     std::vector<std::string> names() const;  // file names, for the panel
     Sphere bounds() const;                   // world space, with the current transforms
 
+    uint64_t id(size_t object) const { return ids_.at(object); }
+    std::optional<size_t> index_of(uint64_t id) const;
+    const std::shared_ptr<const Mesh>& mesh(size_t object) const { return data_.at(object).mesh; }
+
     // Copies the panel's edits into the renderer (cheap: a few bytes per object). Before prepare().
     void sync();
-    // New stipples for `object` when its generation parameters differ from those it was generated with.
-    // Returns whether it regenerated.
-    bool regenerate_if_changed(size_t object);
-    // Loads a model and adds it beside the others, scaled like the first object. Throws stipple::Error.
-    void add_model(const std::string& path);
+    // True when the panel's generation parameters differ from those the stipples were made with.
+    bool generation_changed(size_t object) const;
+    // New stipples made elsewhere for object `id` with `generation` (ignored if the object is gone).
+    void apply_stipples(uint64_t id, const GenerationParams& generation, std::shared_ptr<const StippleSet> stipples,
+                        const ObjectUpload& upload);
+    // A model loaded elsewhere, added beside the others and scaled like the first object.
+    void add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload, const ObjectParams& params);
     void remove(size_t object);  // the last object stays
+
+    // The same work done here and now (tests, scripts): new stipples if the generation parameters
+    // changed (returns whether it regenerated); a model loaded and added. Throw stipple::Error.
+    bool regenerate_if_changed(size_t object);
+    void add_model(const std::string& path);
+    // The parameters a model dropped now would get (the last object's).
+    ObjectParams params_for_new_object() const;
 
     // The current state with `camera` as the scene's camera; model paths relative to the file.
     void save(const std::string& path, const OrbitCamera& camera) const;
 
 private:
-    // Renderer objects [first, end) are rebuilt from the CPU data (objects keep their order).
-    void rebuild_from(size_t first);
-
     Scene scene_;
     std::vector<ObjectData> data_;
     std::vector<ObjectParams> generated_with_;
+    std::vector<uint64_t> ids_;
+    uint64_t next_id_ = 1;
     StippleRenderer& renderer_;
 };
 

@@ -33,6 +33,10 @@ void figures_section(const PanelFigures& f, PanelRequests& requests) {
     else
         ImGui::TextDisabled("drawn stipples      (not counted: --no-count-drawn)");
     ImGui::TextDisabled("%s, %ux%u, %s", f.device.c_str(), f.extent.width, f.extent.height, f.present_mode);
+    if (!f.work_label.empty()) {  // the old stipples keep being drawn meanwhile
+        ImGui::ProgressBar(float(f.work_fraction), ImVec2(-1.0f, 0.0f), f.work_label.c_str());
+        if (f.work_queued > 0) ImGui::TextDisabled("%zu more queued", f.work_queued);
+    }
     bool vsync = f.vsync;
     ImGui::BeginDisabled(!f.can_disable_vsync);
     if (ImGui::Checkbox("vsync (V)", &vsync)) requests.toggle_vsync = true;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -59,7 +60,7 @@ std::string ScreenshotCapture::write_pending(const std::filesystem::path& dir) {
         if (bgra) std::swap(image.pixels[i], image.pixels[i + 2]);
         image.pixels[i + 3] = 255;  // a window has no transparency; keep the PNG opaque
     }
-    std::filesystem::path path = next_screenshot_path(dir);
+    const std::filesystem::path path = exact_.empty() ? next_screenshot_path(dir) : std::exchange(exact_, {});
     write_png(path.string(), image);
     return path.string();
 }

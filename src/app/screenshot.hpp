@@ -21,7 +21,11 @@ class ScreenshotCapture {
 public:
     explicit ScreenshotCapture(const gpu::Context& context) : context_(context) {}
 
-    void request() { requested_ = true; }
+    // The next frame, to the next free name in the screenshot folder, or to `exact` when given.
+    void request(std::filesystem::path exact = {}) {
+        requested_ = true;
+        exact_ = std::move(exact);
+    }
     void cancel() { requested_ = false; }
     bool requested() const { return requested_; }
 
@@ -36,6 +40,7 @@ private:
     gpu::Buffer readback_;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
+    std::filesystem::path exact_;
     bool requested_ = false;
     bool copied_ = false;
 };

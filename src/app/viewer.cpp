@@ -7,16 +7,19 @@
 #include <map>
 #include <memory>
 
+#include "app/background_work.hpp"
 #include "app/camera_control.hpp"
 #include "app/live_scene.hpp"
 #include "app/overlay.hpp"
 #include "app/panel.hpp"
 #include "app/screenshot.hpp"
 #include "app/swapchain.hpp"
+#include "app/viewer_script.hpp"
 #include "app/window.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "gpu/vk_check.hpp"
+#include "params/param_table.hpp"
 #include "render/offscreen.hpp"
 
 namespace stipple::app {
@@ -78,6 +81,11 @@ public:
           screenshot_(context_),
           vsync_(options.vsync),
           panel_visible_(options.panel) {
+        if (!options.script.empty()) script_ = read_viewer_script(options.script);
+        if (!options.frame_log.empty()) {
+            frame_log_ = std::fopen(options.frame_log.c_str(), "w");
+            if (!frame_log_) fail_file(options.frame_log, "cannot write the frame log");
+        }
         swapchain_.recreate(window_.framebuffer_size(), vsync_);
         if (options.verbose) print_swapchain();
         overlay_ = std::make_unique<Overlay>(context_, window_.handle(), swapchain_);
@@ -107,6 +115,7 @@ public:
     }
 
     ~Viewer() {
+        if (frame_log_) std::fclose(frame_log_);
         vkDeviceWaitIdle(context_.device);
         vkDestroySemaphore(context_.device, acquired_, nullptr);
         vkDestroyFence(context_.device, frame_done_, nullptr);
@@ -125,6 +134,8 @@ private:
     void message(const std::string& text, bool error = false);
     void save_scene();
     void print_swapchain() const;
+    void apply_finished_work();
+    void run_script();
 
     ViewerOptions options_;
     Window window_;
@@ -149,6 +160,13 @@ private:
     glm::vec4 panel_rect_{0.0f};
     std::deque<std::string> messages_;
     std::vector<size_t> pending_regeneration_;
+    BackgroundWork work_{context_};  // after live_ and context_; destroyed first (joins its worker)
+    std::vector<ScriptAction> script_;
+    size_t script_at_ = 0;
+    std::optional<Clock::time_point> script_wait_until_;
+    bool script_failed_ = false;
+    FILE* frame_log_ = nullptr;
+    Clock::time_point started_ = Clock::now();
     std::optional<size_t> pending_removal_;
     long long frames_drawn_ = 0;
     std::map<std::string, double> bench_gpu_ms_;  // summed over the benchmark's frames
@@ -214,7 +232,67 @@ int Viewer::run() {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s)\n", n);
         return 2;
     }
-    return 0;
+    return script_failed_ ? 1 : 0;
+}
+
+void Viewer::apply_finished_work() {
+    for (FinishedWork& work : work_.take_finished()) {
+        try {
+            switch (work.kind) {
+                case FinishedWork::Kind::Regenerated: {
+                    const auto start = Clock::now();
+                    live_.apply_stipples(work.object_id, work.params.generation, work.data.stipples, *work.upload);
+                    char text[96];
+                    std::snprintf(text, sizeof text, "new stipples: %zu candidates (uploaded in %.0f ms)",
+                                  work.data.stipples->size(), ms_between(start, Clock::now()));
+                    message(text);
+                    break;
+                }
+                case FinishedWork::Kind::Loaded:
+                    live_.add_loaded(work.path, std::move(work.data), *work.upload, work.params);
+                    message("added " + work.path);
+                    break;
+                case FinishedWork::Kind::Failed: message(work.error, true); break;
+            }
+        } catch (const Error& e) {
+            message(e.what(), true);  // e.g. the device refused the upload: the old stipples stay
+        }
+    }
+}
+
+void Viewer::run_script() {
+    while (script_at_ < script_.size()) {
+        const ScriptAction& action = script_[script_at_];
+        switch (action.kind) {
+            case ScriptAction::Kind::Wait:
+                if (!script_wait_until_) script_wait_until_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                                                  std::chrono::duration<double>(action.seconds));
+                if (Clock::now() < *script_wait_until_) return;
+                script_wait_until_.reset();
+                break;
+            case ScriptAction::Kind::WaitIdle:
+                if (!pending_regeneration_.empty() || !work_.idle()) return;
+                break;
+            case ScriptAction::Kind::Set: {
+                if (action.object >= live_.size()) {
+                    message(options_.script + ":" + std::to_string(action.line) + ": there is no object " +
+                                std::to_string(action.object), true);
+                    script_failed_ = true;
+                    window_.request_close();
+                    return;
+                }
+                const ParamSpec& spec = *find_param(action.key);
+                spec.set(live_.scene().objects[action.object].params, action.value);
+                if (spec.effect == ParamEffect::Regenerate) pending_regeneration_.push_back(action.object);
+                message("script: object " + std::to_string(action.object) + " " + action.key + " = " +
+                        format_param_value(spec, action.value));
+                break;
+            }
+            case ScriptAction::Kind::Screenshot: screenshot_.request(action.path); break;
+            case ScriptAction::Kind::Quit: window_.request_close(); break;
+        }
+        ++script_at_;
+    }
 }
 
 void Viewer::finish_previous_frame() {
@@ -278,12 +356,13 @@ void Viewer::handle_input(const Input& input, float aspect) {
         }
     }
     for (const std::string& path : input.dropped) {
-        try {
-            live_.add_model(path);
-            message("added " + path);
-        } catch (const Error& e) {
-            message(e.what(), true);  // a bad file costs a message, never the session
+        // Loaded in the background; a bad file costs a message, never the session.
+        if (is_scene_file(path)) {
+            message(path + ": is a scene file: open it with `stipple view " + path + "`", true);
+            continue;
         }
+        work_.load(path, live_.params_for_new_object());
+        message("loading " + path);
     }
 }
 
@@ -308,15 +387,13 @@ void Viewer::frame() {
     VkExtent2D size = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
     float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
 
-    for (size_t object : pending_regeneration_) {
-        if (object >= live_.size()) continue;
-        try {
-            if (live_.regenerate_if_changed(object)) message("new stipples for object " + std::to_string(object));
-        } catch (const Error& e) {
-            message(e.what(), true);
-        }
-    }
+    // New stipples are made in the background; the old ones are drawn until they are ready.
+    for (size_t object : pending_regeneration_)
+        if (object < live_.size() && live_.generation_changed(object))
+            work_.regenerate(live_.id(object), live_.mesh(object), live_.scene().objects[object].params);
     pending_regeneration_.clear();
+    apply_finished_work();
+    run_script();
     if (pending_removal_) live_.remove(*pending_removal_);
     pending_removal_.reset();
     handle_input(window_.take_input(), aspect);
@@ -342,6 +419,10 @@ void Viewer::frame() {
         figures_.scene_path = options_.scene_path;
         figures_.screenshot_dir = options_.screenshot_dir;
         figures_.messages.assign(messages_.begin(), messages_.end());
+        const auto status = work_.status();
+        figures_.work_label = status ? status->label : "";
+        figures_.work_fraction = status ? status->fraction : 0.0;
+        figures_.work_queued = status ? status->queued : 0;
         handle_requests(draw_panel(live_.scene(), live_.names(), figures_), aspect);
     }
     record(image);
@@ -362,6 +443,7 @@ void Viewer::frame() {
     figures_.cpu_frame_ms = ms_between(start, Clock::now());
 
     VkResult presented = swapchain_.present(context_.queue, image);
+    if (frame_log_) std::fprintf(frame_log_, "%.3f\n", ms_between(started_, Clock::now()));
     if (presented != VK_SUCCESS) recreate_ = true;  // out of date or suboptimal: a new swapchain next frame
     ++frames_drawn_;
     ++fps_frames_;

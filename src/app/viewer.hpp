@@ -18,6 +18,8 @@ struct ViewerOptions {
     long long benchmark_frames = 0;   // > 0: draw this many frames after a warm-up, print the mean fps, exit
     int device_index = -1;
     bool verbose = false;
+    std::string script;     // --script: timed actions (viewer_script.hpp)
+    std::string frame_log;  // --frame-log: one line per presented frame, milliseconds since start
 };
 
 // Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit

@@ -15,7 +15,7 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames"});
+                    "--save-scene", "--benchmark-frames", "--script", "--frame-log"});
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -32,6 +32,8 @@ int run_view(const std::vector<std::string>& argv) {
     viewer.verbose = args.flag("--verbose");
     viewer.device_index = int(args.integer("--device", -1));
     viewer.screenshot_dir = args.get("--screenshot-dir", ".");
+    viewer.script = args.get("--script", "");
+    viewer.frame_log = args.get("--frame-log", "");
     viewer.benchmark_frames = args.integer("--benchmark-frames", 0);
     if (viewer.benchmark_frames < 0 || viewer.benchmark_frames > 1000000)
         fail("--benchmark-frames = " + std::to_string(viewer.benchmark_frames) + " must be in 0..1000000");

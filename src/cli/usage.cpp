@@ -72,13 +72,19 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
                           stipple-scene.json)
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
   --verbose               print the device and every swapchain (re)creation
+  --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
+                          or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
+                          scene key), screenshot PATH, quit
+  --frame-log FILE        write one line per presented frame: milliseconds since the start
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
   H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
   vsync, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
-  (generation parameters take effect on release or Enter, they make new stipples), the light,
-  paper and ink colours, and shows fps, CPU frame time, GPU time per pass and stipple counts.
+  (generation parameters take effect on release or Enter: new stipples are made in the background
+  with a progress bar while the old ones are drawn, and a newer value cancels an older one; dropped
+  models load in the background too), the light, paper and ink colours, and shows fps, CPU frame
+  time, GPU time per pass and stipple counts.
 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",

@@ -10,10 +10,18 @@ namespace stipple {
 
 namespace {
 constexpr int kBarWidth = 30;
+thread_local ProgressObserver* current_observer = nullptr;
+}  // namespace
+
+ScopedProgressObserver::ScopedProgressObserver(ProgressObserver* observer) : previous_(current_observer) {
+    current_observer = observer;
 }
+
+ScopedProgressObserver::~ScopedProgressObserver() { current_observer = previous_; }
 
 ProgressBar::ProgressBar(std::string label, bool enabled)
     : label_(std::move(label)),
+      observer_(current_observer),
       active_(enabled && isatty(STDERR_FILENO) == 1),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
@@ -23,8 +31,12 @@ ProgressBar::~ProgressBar() {
 }
 
 void ProgressBar::update(double fraction) {
-    if (!active_) return;
     if (!(fraction >= 0.0)) fraction = 0.0;  // also catches NaN
+    if (observer_) {
+        if (observer_->cancelled()) throw Cancelled();
+        observer_->report(std::min(fraction, 1.0));
+    }
+    if (!active_) return;
     const int permille = static_cast<int>(std::min(fraction, 1.0) * 1000.0);
     // Whole percents only: the cheap atomic check keeps hot loops from taking the lock.
     if (permille / 10 == shown_.load(std::memory_order_relaxed) / 10) return;

@@ -149,16 +149,34 @@ void Image::reset() {
 }
 
 Buffer create_device_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage) {
-    Buffer buffer(context, data.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal);
-    if (data.empty()) return buffer;
-    Buffer staging(context, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-    std::memcpy(staging.mapped(), data.data(), data.size());
-    staging.flush();
-    VkCommandBuffer cb = context.begin_one_shot();
-    VkBufferCopy region{0, 0, data.size()};
-    vkCmdCopyBuffer(cb, staging.handle(), buffer.handle(), 1, &region);
-    context.submit_and_wait(cb);
-    return buffer;
+    const StagedBuffer staged = stage_buffer(context, data, usage);
+    return std::move(upload_staged(context, std::span(&staged, 1)).front());
+}
+
+StagedBuffer stage_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage) {
+    StagedBuffer staged;
+    staged.size = data.size();
+    staged.usage = usage;
+    if (data.empty()) return staged;
+    staged.staging = Buffer(context, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+    std::memcpy(staged.staging.mapped(), data.data(), data.size());
+    staged.staging.flush();
+    return staged;
+}
+
+std::vector<Buffer> upload_staged(const Context& context, std::span<const StagedBuffer> staged) {
+    std::vector<Buffer> buffers;
+    buffers.reserve(staged.size());
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    for (const StagedBuffer& s : staged) {
+        buffers.emplace_back(context, s.size, s.usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal);
+        if (s.size == 0) continue;
+        if (!cb) cb = context.begin_one_shot();
+        const VkBufferCopy region{0, 0, s.size};
+        vkCmdCopyBuffer(cb, s.staging.handle(), buffers.back().handle(), 1, &region);
+    }
+    if (cb) context.submit_and_wait(cb);
+    return buffers;
 }
 
 std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer) {

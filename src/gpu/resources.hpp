@@ -77,6 +77,22 @@ private:
 // A device-local buffer filled once from host data through a staging buffer (waits for completion).
 Buffer create_device_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage);
 
+// Host data already in a staging buffer, waiting to become a device-local buffer. Staging uses no queue
+// and no command pool, so it may run on any thread (the viewer stages new stipples in the background);
+// upload_staged then needs the thread that submits.
+struct StagedBuffer {
+    Buffer staging;
+    VkDeviceSize size = 0;
+    VkBufferUsageFlags usage = 0;
+};
+StagedBuffer stage_buffer(const Context& context, std::span<const std::byte> data, VkBufferUsageFlags usage);
+template <typename T>
+StagedBuffer stage_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage) {
+    return stage_buffer(context, std::as_bytes(data), usage);
+}
+// Device-local buffers of the staged data, all copied in one submission (waits for completion).
+std::vector<Buffer> upload_staged(const Context& context, std::span<const StagedBuffer> staged);
+
 template <typename T>
 Buffer create_device_buffer(const Context& context, std::span<const T> data, VkBufferUsageFlags usage) {
     return create_device_buffer(context, std::as_bytes(data), usage);

@@ -32,26 +32,7 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
     return vertices;
 }
 
-ObjectGeometry upload_geometry(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples) {
-    ObjectGeometry geometry;
-    geometry.index_count = uint32_t(mesh.indices.size());
-    geometry.triangle_count = uint32_t(mesh.triangle_count());
-    geometry.stipple_count = uint32_t(stipples.size());
-    geometry.first_stipple.assign(stipples.first.begin(), stipples.first.end());
-    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    // The stipple shaders read the corners of the polygons whose stipples they place.
-    geometry.positions =
-        gpu::create_device_buffer(context, std::span(mesh.positions), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
-    geometry.normals = gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    geometry.indices =
-        gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
-    std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
-    geometry.stipples = gpu::create_device_buffer(context, std::span<const gpu::StippleVertex>(vertices),
-                                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
-    // A placeholder until the object first draws lines (the descriptor set needs a buffer in every binding).
-    geometry.silhouette_edges = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
-    return geometry;
-}
+enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
 
 Buffer make_lines_buffer(const gpu::Context& context, VkDeviceSize bytes) {
     return Buffer(context, bytes,
@@ -60,12 +41,31 @@ Buffer make_lines_buffer(const gpu::Context& context, VkDeviceSize bytes) {
                   MemoryUse::DeviceLocal);
 }
 
-ObjectFrame create_frame_state(const gpu::Context& context, const ObjectGeometry& geometry, bool count_drawn) {
-    ObjectFrame frame;
+// Every buffer of a new object, from its upload (one submission for all the staged data).
+void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool count_drawn, ObjectGpu& object) {
+    STIPPLE_CHECK(upload.staged.size() == kStagedCount, "object upload is not staged");
+    std::vector<Buffer> buffers = gpu::upload_staged(context, upload.staged);
+    ObjectGeometry& geometry = object.geometry;
+    geometry.index_count = upload.index_count;
+    geometry.triangle_count = upload.triangle_count;
+    geometry.stipple_count = upload.stipple_count;
+    geometry.first_stipple = upload.first_stipple;
+    geometry.positions = std::move(buffers[kPositions]);
+    geometry.normals = std::move(buffers[kNormals]);
+    geometry.indices = std::move(buffers[kIndices]);
+    geometry.stipples = std::move(buffers[kStipples]);
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    std::vector<gpu::TriangleDraw> draws(geometry.triangle_count);
-    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, geometry.first_stipple[t]};
-    frame.triangle_draw = gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
+    // A placeholder until the object first draws lines (the descriptor set needs a buffer in every binding).
+    geometry.silhouette_edges = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+
+    object.polygons.cpu = upload.polygons.cpu;
+    object.polygons.bounds = upload.polygons.bounds;
+    object.polygons.box_min = upload.polygons.box_min;
+    object.polygons.box_size = upload.polygons.box_size;
+    object.polygons.gpu = std::move(buffers[kPolygons]);
+
+    ObjectFrame& frame = object.frame;
+    frame.triangle_draw = std::move(buffers[kDensities]);
     for (PathBuffer kind : kPathBuffers)
         path_buffer(frame, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
     frame.silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
@@ -74,7 +74,6 @@ ObjectFrame create_frame_state(const gpu::Context& context, const ObjectGeometry
                          MemoryUse::Readback);
     frame.object_uniforms =
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
-    return frame;
 }
 
 // Lengths scale by this much from object to world (the mean for non-uniform scales).
@@ -86,12 +85,34 @@ ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
 }
 
-std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
-                                             const Buffer& frame_uniforms, const Mesh& mesh,
-                                             const StippleSet& stipples, const glm::mat4& model,
-                                             const ObjectParams& params, bool count_drawn) {
-    validate_params(params);
+ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
+                                   uint64_t seed) {
     STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
+    ObjectUpload upload;
+    upload.index_count = uint32_t(mesh.indices.size());
+    upload.triangle_count = uint32_t(mesh.triangle_count());
+    upload.stipple_count = uint32_t(stipples.size());
+    upload.first_stipple.assign(stipples.first.begin(), stipples.first.end());
+    upload.polygons = compute_polygon_constants(mesh, stipples, seed);
+    const std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
+    std::vector<gpu::TriangleDraw> draws(upload.triangle_count);
+    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, upload.first_stipple[t]};
+    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    upload.staged.resize(kStagedCount);
+    // The stipple shaders read the corners of the polygons whose stipples they place.
+    upload.staged[kPositions] = gpu::stage_buffer(context, std::span(mesh.positions), vertex | storage);
+    upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex);
+    upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
+    upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage);
+    upload.staged[kPolygons] = gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage);
+    upload.staged[kDensities] = gpu::stage_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);
+    return upload;
+}
+
+std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
+                                             const Buffer& frame_uniforms, const ObjectUpload& upload,
+                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn) {
+    validate_params(params);
     if (params.point_size > context.features.max_point_size)
         fail("--point-size " + std::to_string(params.point_size) + " exceeds this device's maximum of " +
              std::to_string(context.features.max_point_size));
@@ -101,9 +122,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->frame_uniforms = frame_uniforms.handle();
     object->params = params;
     object->model = model;
-    object->geometry = upload_geometry(context, mesh, stipples);
-    object->polygons = make_polygon_constants(context, mesh, stipples, params.generation.seed);
-    object->frame = create_frame_state(context, object->geometry, count_drawn);
+    upload_object(context, upload, count_drawn, *object);
     create_object_descriptors(context, set_layout, *object);
     ensure_path_buffers(*object, params.density_path);
     return object;

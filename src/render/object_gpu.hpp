@@ -80,10 +80,23 @@ struct ObjectGpu {
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
+// The first half of creating an object: everything computed from the mesh and its stipples (packed
+// candidates, polygon constants) and put in staging buffers. It uses no queue, so the viewer prepares it
+// on its worker thread and the UI thread only records the copies (one submission).
+struct ObjectUpload {
+    uint32_t index_count = 0, triangle_count = 0, stipple_count = 0;
+    std::vector<uint32_t> first_stipple;
+    PolygonConstants polygons;  // without its GPU buffer
+    // The GPU's initial data, in this order: positions, normals, indices, stipples (StippleVertex),
+    // polygon constants (TriangleInfo), densities (TriangleDraw, zero, with each first stipple).
+    std::vector<gpu::StagedBuffer> staged;
+};
+ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
+                                   uint64_t seed);
+
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
-                                             const gpu::Buffer& frame_uniforms, const Mesh& mesh,
-                                             const StippleSet& stipples, const glm::mat4& model,
-                                             const ObjectParams& params, bool count_drawn);
+                                             const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,
+                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn);
 
 // Builds the object's edge table (§3.1 lines drawn from edges) the first time it is needed; the GPU must
 // not be using the object (StippleRenderer::prepare's contract).

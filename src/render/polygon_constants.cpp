@@ -48,8 +48,7 @@ std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const st
     return infos;
 }
 
-PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
-                                        uint64_t seed) {
+PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed) {
     PolygonConstants polygons;
     polygons.bounds = compute_bounding_sphere(mesh);
     const Bounds box = compute_bounds(mesh);
@@ -59,8 +58,6 @@ PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh&
                                              ? stipples.selection
                                              : polygon_selection_values(mesh, seed);
     polygons.cpu = pack_polygon_constants(mesh, selection, polygons.box_min, polygons.box_size);
-    polygons.gpu = gpu::create_device_buffer(context, std::span<const gpu::TriangleInfo>(polygons.cpu),
-                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     return polygons;
 }
 

@@ -9,10 +9,10 @@
 
 namespace stipple {
 
-// The constants of `mesh` in its current shape: the CPU copy, its bounds and quantisation box, and the
-// GPU buffer. Selection values come from `stipples` when it carries them, else are ranked here (seeded).
-PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
-                                        uint64_t seed);
+// The constants of `mesh` in its current shape: the CPU copy, its bounds and quantisation box (the GPU
+// buffer is left for create_object_gpu). Selection values come from `stipples` when it carries them, else
+// are ranked here (seeded). CPU only: safe on any thread.
+PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed);
 
 // Packs the polygons of `mesh` with centroids in the box [box_min, box_min + box_size].
 std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const std::vector<float>& selection,

@@ -115,9 +115,23 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
                                    const ObjectParams& params) {
-    objects_.push_back(create_object_gpu(context_, layouts_.object_set, frame_uniforms_, mesh, stipples, model, params,
-                                         options_.count_drawn));
+    return add_object(prepare_object_upload(context_, mesh, stipples, params.generation.seed), model, params);
+}
+
+size_t StippleRenderer::add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params) {
+    objects_.push_back(
+        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn));
     return objects_.size() - 1;
+}
+
+void StippleRenderer::replace_object(size_t object, const ObjectUpload& upload) {
+    STIPPLE_CHECK(object < objects_.size(), "replace_object: no such object");
+    const ObjectParams params = objects_[object]->params;
+    const glm::mat4 model = objects_[object]->model;
+    auto replacement =
+        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn);
+    VK_CHECK(vkDeviceWaitIdle(context_.device));  // the old object's buffers may be in use
+    objects_[object] = std::move(replacement);
 }
 
 void StippleRenderer::remove_object(size_t object) {

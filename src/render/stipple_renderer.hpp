@@ -72,6 +72,10 @@ public:
 
     size_t add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
                       const ObjectParams& params);
+    // The same from the CPU half prepared beforehand (prepare_object_upload, e.g. on a worker thread).
+    size_t add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params);
+    // New mesh or stipples for an object, in place (waits for the GPU); its transform and parameters stay.
+    void replace_object(size_t object, const ObjectUpload& upload);
     size_t object_count() const { return objects_.size(); }
     void remove_object(size_t object);  // waits for the GPU; later objects move down by one
     ObjectParams& params(size_t object);  // validated again at the next prepare()
@@ -89,6 +93,7 @@ public:
     std::vector<float> read_densities(size_t object) const;  // the last frame's
     const gpu::FrameUniforms& frame_uniforms() const { return frame_; }
     const ObjectGpu& object(size_t index) const { return *objects_.at(index); }
+    const gpu::Context& context() const { return context_; }
 
 private:
     void create_pipelines(VkFormat color_format, VkFormat depth_format);

@@ -1,0 +1,120 @@
+#include "app/background_work.hpp"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace stipple::app {
+
+BackgroundWork::BackgroundWork(const gpu::Context& context) : context_(context), worker_([this] { run(); }) {}
+
+BackgroundWork::~BackgroundWork() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+        queue_.clear();
+        if (observer_) observer_->cancel();
+    }
+    wake_.notify_all();
+    worker_.join();
+}
+
+void BackgroundWork::regenerate(uint64_t object_id, std::shared_ptr<const Mesh> mesh, const ObjectParams& params) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto same_object = [&](const Job& job) {
+        return job.kind == FinishedWork::Kind::Regenerated && job.object_id == object_id;
+    };
+    // The newest value wins: older requests for this object are dropped, a running one is cancelled.
+    queue_.erase(std::remove_if(queue_.begin(), queue_.end(), same_object), queue_.end());
+    if (running_ && same_object(*running_) && observer_) observer_->cancel();
+    queue_.push_back({FinishedWork::Kind::Regenerated, object_id, "", std::move(mesh), params,
+                      "new stipples for object " + std::to_string(object_id)});
+    wake_.notify_one();
+}
+
+void BackgroundWork::load(const std::string& path, const ObjectParams& params) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    queue_.push_back({FinishedWork::Kind::Loaded, 0, path, nullptr, params, "loading " + path});
+    wake_.notify_one();
+}
+
+std::vector<FinishedWork> BackgroundWork::take_finished() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::exchange(finished_, {});
+}
+
+std::optional<BackgroundWork::Status> BackgroundWork::status() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!running_) return std::nullopt;
+    return Status{running_->label, observer_ ? observer_->fraction() : 0.0, queue_.size()};
+}
+
+bool BackgroundWork::idle() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !running_ && queue_.empty() && finished_.empty();
+}
+
+void BackgroundWork::run() {
+    // Below the UI thread: on a CPU renderer (lavapipe) generation and drawing share the cores, and the
+    // frames must keep coming. A Linux thread's nice value is its own and passes to the threads it
+    // starts (the generation's parallel loops).
+    setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), 10);
+    for (;;) {
+        Job job;
+        std::shared_ptr<ProgressObserver> observer = std::make_shared<ProgressObserver>();
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+            if (stopping_) return;
+            job = std::move(queue_.front());
+            queue_.pop_front();
+            running_ = job;
+            observer_ = observer;
+        }
+        std::optional<FinishedWork> result;
+        try {
+            ScopedProgressObserver watch(observer.get());
+            result = execute(job);
+        } catch (const Cancelled&) {
+            // A newer request replaced it: nothing to hand back.
+        } catch (const Error& e) {
+            result.emplace();
+            result->kind = FinishedWork::Kind::Failed;
+            result->path = job.path;
+            result->error = e.what();
+        } catch (const std::bad_alloc&) {
+            result.emplace();
+            result->kind = FinishedWork::Kind::Failed;
+            result->path = job.path;
+            result->error = "out of memory while " + job.label;
+        }
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (result && !observer->cancelled()) finished_.push_back(std::move(*result));
+        running_.reset();
+        observer_.reset();
+    }
+}
+
+FinishedWork BackgroundWork::execute(const Job& job) {
+    FinishedWork work;
+    work.kind = job.kind;
+    work.object_id = job.object_id;
+    work.path = job.path;
+    work.params = job.params;
+    if (job.kind == FinishedWork::Kind::Loaded) {
+        work.data = load_object_data(job.path, job.params.generation);
+    } else {
+        work.data.mesh = job.mesh;
+        work.data.stipples = make_stipples(*job.mesh, job.params.generation);
+    }
+    work.upload = std::make_unique<ObjectUpload>(
+        prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed));
+    return work;
+}
+
+}  // namespace stipple::app

@@ -1,0 +1,77 @@
+#include "app/viewer_script.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "params/param_table.hpp"
+
+namespace stipple::app {
+
+namespace {
+
+double parse_number(const std::string& text, bool* ok) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    *ok = end != text.c_str() && *end == '\0' && std::isfinite(value);
+    return value;
+}
+
+}  // namespace
+
+std::vector<ScriptAction> read_viewer_script(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) fail_file(path, "cannot open the script (missing or unreadable)");
+    std::vector<ScriptAction> actions;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        std::istringstream words(line);
+        std::string verb;
+        if (!(words >> verb) || verb[0] == '#') continue;
+        const std::string where = path + ":" + std::to_string(number);
+        auto bad = [&](const std::string& problem) { fail(where + ": " + problem); };
+        ScriptAction action{};
+        action.line = number;
+        std::vector<std::string> rest;
+        for (std::string w; words >> w;) rest.push_back(w);
+        bool ok = false;
+        if (verb == "wait" && rest.size() == 1) {
+            action.kind = ScriptAction::Kind::Wait;
+            action.seconds = parse_number(rest[0], &ok);
+            if (!ok || action.seconds < 0.0 || action.seconds > 3600.0) bad("wait needs seconds in 0..3600");
+        } else if (verb == "wait-idle" && rest.empty()) {
+            action.kind = ScriptAction::Kind::WaitIdle;
+        } else if (verb == "set" && rest.size() == 3) {
+            action.kind = ScriptAction::Kind::Set;
+            const double object = parse_number(rest[0], &ok);
+            if (!ok || object < 0.0 || object != std::floor(object)) bad("set needs an object number, got '" + rest[0] + "'");
+            action.object = size_t(object);
+            const ParamSpec* spec = find_param(rest[1]);
+            if (!spec) bad("'" + rest[1] + "' is not a parameter (see stipple params)");
+            action.key = rest[1];
+            if (spec->type == ParamType::Bool) {
+                if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false");
+                action.value = rest[2] == "true" ? 1.0 : 0.0;
+            } else {
+                try {
+                    action.value = parse_param_text(*spec, rest[2]);
+                } catch (const Error& e) {
+                    bad(e.what());
+                }
+            }
+        } else if (verb == "screenshot" && rest.size() == 1) {
+            action.kind = ScriptAction::Kind::Screenshot;
+            action.path = rest[0];
+        } else if (verb == "quit" && rest.empty()) {
+            action.kind = ScriptAction::Kind::Quit;
+        } else {
+            bad("unknown or incomplete line '" + line + "' (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, quit)");
+        }
+        actions.push_back(action);
+    }
+    return actions;
+}
+
+}  // namespace stipple::app
