@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "io/png_io.hpp"
@@ -103,6 +105,21 @@ INSTANTIATE_TEST_SUITE_P(
                                "1000000000000"},
                       BadInput{"unknown_extension", "model.xyz", "hello", "extension"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what
+// the object needs, what the device has and what to lower; no image; never an abort or a lost device.
+TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
+    const auto out = test::temp_dir("cli-device-limit") / "never.png";
+    ::setenv("STIPPLE_GPU_MEMORY_LIMIT", "2M", 1);
+    const test::CommandResult r = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+    ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const char* part : {"blobby.glb: its ", " stipples on ", "of GPU memory, and the device has 2.0 MiB free",
+                             "lower --dmax or --max-stipples"})
+        EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
 
 TEST(CliRender, BadParametersAreRejectedClearly) {
     struct Case {

@@ -133,6 +133,8 @@ Environment:
                           the build folder's bench-models); the stipple cache is
                           $STIPPLE_CACHE_DIR/stipples (see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
+  STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory free: how
+                          a smaller GPU refuses an object too big for it, tried on a big one
 
 Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the
 file and the problem), 2 on a bad command line or Vulkan validation messages.

@@ -1,5 +1,6 @@
 #include "gpu/context.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -250,6 +251,14 @@ void Context::create_device(const ContextOptions& options) {
 
     std::vector<const char*> extensions;
     if (options.swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    // How much memory is left, for a clear message before an object that cannot fit is uploaded.
+    uint32_t available_count = 0;
+    vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, nullptr);
+    std::vector<VkExtensionProperties> available(available_count);
+    vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, available.data());
+    for (const VkExtensionProperties& e : available)
+        if (std::strcmp(e.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME) == 0) memory_budget_ = true;
+    if (memory_budget_) extensions.push_back(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
 
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &enabled12;
@@ -293,6 +302,28 @@ void Context::submit_and_wait(VkCommandBuffer cb) const {
     vkDestroyFence(device, fence, nullptr);
     vkFreeCommandBuffers(device, command_pool, 1, &cb);
     VK_CHECK(result);
+}
+
+uint64_t Context::device_memory_available() const {
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+    VkPhysicalDeviceMemoryProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
+    if (memory_budget_) properties2.pNext = &budget;
+    vkGetPhysicalDeviceMemoryProperties2(physical_device, &properties2);
+    uint64_t best = 0;
+    for (uint32_t h = 0; h < memory_properties.memoryHeapCount; ++h) {
+        if (!(memory_properties.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)) continue;
+        uint64_t left = memory_properties.memoryHeaps[h].size;
+        if (memory_budget_) left = budget.heapBudget[h] > budget.heapUsage[h] ? budget.heapBudget[h] - budget.heapUsage[h] : 0;
+        best = std::max(best, left);
+    }
+    if (const char* limit = std::getenv("STIPPLE_GPU_MEMORY_LIMIT")) {
+        char* end = nullptr;
+        double value = std::strtod(limit, &end);
+        const std::string unit = end ? end : "";
+        value *= unit == "G" ? 1073741824.0 : unit == "M" ? 1048576.0 : unit == "k" ? 1024.0 : 1.0;
+        if (value > 0.0) best = std::min(best, uint64_t(value));
+    }
+    return best;
 }
 
 uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,

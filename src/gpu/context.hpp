@@ -81,6 +81,13 @@ public:
     uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                               VkMemoryPropertyFlags preferred = 0) const;
 
+    // Bytes of device-local memory this process may still allocate: the budget minus what is in use
+    // (VK_EXT_memory_budget) where the device offers it, else the largest device-local heap. Lowered by
+    // STIPPLE_GPU_MEMORY_LIMIT (e.g. 64M: how a smaller device would refuse, tried on a big one).
+    uint64_t device_memory_available() const;
+    // The largest storage buffer a shader may read (maxStorageBufferRange).
+    uint64_t max_storage_buffer_bytes() const { return properties.limits.maxStorageBufferRange; }
+
     // Lists the devices Vulkan sees, "index: name (type)", for --help-style output and errors.
     static std::vector<std::string> list_devices();
 
@@ -90,6 +97,7 @@ private:
     void create_device(const ContextOptions& options);
 
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    bool memory_budget_ = false;  // VK_EXT_memory_budget enabled
     std::atomic<uint32_t> validation_messages_{0};
     static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                          VkDebugUtilsMessageTypeFlagsEXT types,

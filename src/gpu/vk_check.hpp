@@ -11,6 +11,9 @@ namespace stipple::gpu {
 const char* vk_result_name(VkResult result);
 
 inline void vk_check(VkResult result, const char* call, const char* file, int line) {
+    if (result == VK_ERROR_DEVICE_LOST)
+        fail("the GPU device was lost (its driver reset it or crashed) in " + std::string(call) +
+             ": nothing more can be drawn; start again, and if it repeats lower the load (--dmax, image size)");
     if (result != VK_SUCCESS)
         fail(std::string("Vulkan call failed: ") + call + " returned " + vk_result_name(result) + " (" + file + ":" +
              std::to_string(line) + ")");

@@ -32,6 +32,32 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
     return vertices;
 }
 
+std::string mebibytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / 1048576.0);
+    return text;
+}
+
+// Before anything is staged: an object the device cannot hold is refused in one line saying what it
+// needs, what there is and what to lower, instead of a failed allocation half way or a lost device.
+void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples) {
+    const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
+    const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
+    // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
+    // buffers (the splat's list, the indirect draws), beside the drawn-stipple mask.
+    const uint64_t needed = 24 * v + 12 * t + 8 * s + 16 * t + 8 * t + 16 * t + s / 8;
+    const std::string what = mesh.source.empty() ? std::string("the object") : mesh.source;
+    const std::string lower = ": lower --dmax or --max-stipples, or use a simplified model";
+    if (largest > context.max_storage_buffer_bytes())
+        fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need a " +
+             mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(context.max_storage_buffer_bytes()) +
+             lower);
+    const uint64_t available = context.device_memory_available();
+    if (needed > available)
+        fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
+             mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + lower);
+}
+
 enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
 
 Buffer make_lines_buffer(const gpu::Context& context, VkDeviceSize bytes) {
@@ -88,6 +114,7 @@ ObjectGpu::~ObjectGpu() {
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                                    uint64_t seed) {
     STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
+    check_device_fits(context, mesh, stipples.size());
     ObjectUpload upload;
     upload.index_count = uint32_t(mesh.indices.size());
     upload.triangle_count = uint32_t(mesh.triangle_count());
