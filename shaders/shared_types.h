@@ -29,6 +29,7 @@ STIPPLE_CONST uint kMaxMergedPolygons = 256;
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
 STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp: the depth words are X8_D24 (else float bits)
+STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -43,6 +44,7 @@ STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's 
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
+STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + VisibleStipple[] (storage), when recording
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -135,6 +137,20 @@ struct DrawCommandsHeader {
 struct DebugCounters {
     uint drawn;  // stipples drawn this frame
     uint pad0, pad1, pad2;
+};
+
+// The stipples a frame drew, as vector output needs them (kSpecRecordVisible): each drawn stipple
+// (index below its polygon's density, §3.2) that inked at least one pixel after the depth test
+// (hidden-stipple removal, §2.1), at its exact window position, with its intensity (the last one's
+// fraction, §2.1; the toon fade is in the density). At most one entry per candidate.
+struct VisibleStipplesHeader {
+    uint count;
+    uint pad0, pad1, pad2;
+};
+struct VisibleStipple {
+    float x, y;       // window pixels, origin top-left, y down (the PNG's)
+    float intensity;  // (0, 1]
+    uint index;       // the candidate (its polygon: ObjectGeometry::first_stipple)
 };
 
 // One indirect draw, laid out as VkDrawIndirectCommand.

@@ -23,6 +23,7 @@ layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 // The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
 layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
+layout(constant_id = kSpecRecordVisible) const bool kRecordVisible = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -35,6 +36,10 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnLi
 layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
     DebugCounters counters;
     uint drawn_mask[];
+};
+layout(set = 0, binding = kBindingVisibleStipples, std430) buffer Visible {
+    VisibleStipplesHeader visible;
+    VisibleStipple visible_stipples[];
 };
 layout(set = 1, binding = kBindingSplatBackground, std430) readonly buffer Background { uint background[]; };
 layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
@@ -83,6 +88,7 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
     bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
     bool full = intensity >= 1.0f;
     uint ink_word = pack_color(frame.ink_color.rgb, 0.0);
+    bool inked = false;
     for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {
             if (round_points) {
@@ -91,6 +97,7 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
             }
             uint at = uint(y) * uint(size.x) + uint(x);
             if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
+            inked = true;
             if (full) {
                 color[at] = ink_word;  // the least word there is: no other stipple replaces it
             } else {
@@ -98,6 +105,10 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
                 atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
             }
         }
+    if (kRecordVisible && inked) {
+        uint slot = atomicAdd(visible.count, 1u);
+        visible_stipples[slot] = VisibleStipple(window.x, window.y, intensity, index);
+    }
 }
 
 void main() {

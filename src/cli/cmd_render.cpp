@@ -6,7 +6,10 @@
 
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
+#include "app/frame_export.hpp"
 #include "cli/commands.hpp"
+#include "cli/vector_options.hpp"
+#include "export/plot_file.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
@@ -90,8 +93,10 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
 int run_render(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
     flags.insert({"--stats", "--list-devices", "--verbose"});
+    flags.merge(vector_flags());
     std::set<std::string> options = object_options();
     options.merge(cache_options());
+    options.merge(vector_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
                     "--device", "--frames", "--orbit"});
     Args args(argv, flags, options);
@@ -103,6 +108,12 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (args.positionals().size() > 1) fail("render takes at most one MODEL or SCENE.json (see stipple --help)");
     const std::string output = args.get("--output", args.get("-o", "stipple.png"));
+    // -o x.svg, x.pdf or x.csv: the frame's visible stipples and lines as vector output.
+    const bool vector = plot::is_plot_path(output);
+    const plot::ExportOptions vector_options = read_vector_options(args);
+    if (!vector)
+        for (const std::string& name : {"--page", "--margin", "--pen-width", "--dot-style"})
+            if (args.has(name)) fail(name + " is for vector output: give -o a .svg, .pdf or .csv file");
     long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
     if (width < 1 || width > 16384 || height < 1 || height > 16384)
         fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
@@ -160,7 +171,13 @@ int run_render(const std::vector<std::string>& argv) {
         auto render_start = std::chrono::steady_clock::now();
         frame = target.render(renderer, view);
         render_seconds = seconds_since(render_start);
-        write_png(output_path(output, i, sequence), frame.color);
+        if (vector) {
+            const plot::PlotStats plot =
+                app::export_frame(context, scene, content.objects, view, vector_options, output_path(output, i, sequence));
+            if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(plot).c_str());
+        } else {
+            write_png(output_path(output, i, sequence), frame.color);
+        }
         if (args.has("--mask")) write_png(output_path(args.get("--mask", ""), i, sequence), frame.coverage_mask());
         bar.update(double(i + 1) / double(cameras.size()));
     }

@@ -95,6 +95,8 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     for (PathBuffer kind : kPathBuffers)
         path_buffer(frame, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
     frame.silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
+    frame.visible_stipples = Buffer(context, kPathBufferPlaceholderBytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryUse::DeviceLocal);
     const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((geometry.stipple_count + 31) / 32) : 0;
     frame.debug = Buffer(context, sizeof(gpu::DebugCounters) + mask_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback);

@@ -56,9 +56,11 @@ struct ObjectFrame {
     gpu::Buffer cpu_commands;      // cpu path: DrawCommand per surviving range
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
     gpu::Buffer debug;             // DebugCounters + drawn bit mask, when counting
+    gpu::Buffer visible_stipples;  // VisibleStipplesHeader + VisibleStipple per candidate, when recording
     uint32_t cpu_command_count = 0;   // cpu path: draws written this frame
     uint32_t cpu_drawn_polygons = 0;  // cpu-splat path: polygons in this frame's list
     float line_width = 1.0f;          // Raskar-Cohen line width this frame (thinned)
+    bool splatted = false;            // drawn by the compute splat this frame
 };
 
 struct ObjectGpu {

@@ -106,8 +106,10 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
 
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
-    splat_pipeline_ = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline,
-                                                   {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}}});
+    const uint32_t record = options_.record_visible ? 1u : 0u;
+    splat_pipeline_ = gpu::create_compute_pipeline(
+        context_, "splat.comp", layouts_.splat_pipeline,
+        {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}, {gpu::kSpecRecordVisible, record}}});
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layouts_.pipeline);
@@ -164,6 +166,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         validate_params(object->params);
         ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
         if (object->params.silhouette_lines) ensure_silhouette_edges(*object);
+        if (options_.record_visible) ensure_visible_list(*object);
         object->frame.uniforms = make_object_uniforms(*object, view);
         object->frame.line_width = object_line_width(*object, view, context_.features.max_line_width);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
@@ -200,6 +203,9 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     for (auto& object : objects_) {
         if (object->geometry.triangle_count == 0) continue;
         if (options_.count_drawn) vkCmdFillBuffer(cb, object->frame.debug.handle(), 0, VK_WHOLE_SIZE, 0);
+        if (options_.record_visible)
+            vkCmdFillBuffer(cb, object->frame.visible_stipples.handle(), 0, sizeof(gpu::VisibleStipplesHeader), 0);
+        object->frame.splatted = uses_splat(*object);
         const bool splat = uses_splat(*object);
         if (density_on_cpu(object->params.density_path)) {
             VkBufferCopy regions[2] = {{0, 0, staged_list_offset(*object)},
@@ -561,6 +567,33 @@ std::vector<float> StippleRenderer::read_densities(size_t object) const {
     for (size_t t = 0; t < densities.size(); ++t)
         std::memcpy(&densities[t], bytes.data() + t * sizeof(gpu::TriangleDraw), sizeof(float));
     return densities;
+}
+
+}  // namespace stipple
+
+namespace stipple {
+
+void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
+    const VkDeviceSize bytes =
+        sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * VkDeviceSize(object.geometry.stipple_count);
+    if (object.frame.visible_stipples.size() >= bytes) return;
+    object.frame.visible_stipples = gpu::Buffer(
+        context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
+    write_object_descriptors(object);
+}
+
+std::vector<gpu::VisibleStipple> StippleRenderer::read_visible_stipples(size_t index) const {
+    const ObjectGpu& object = *objects_.at(index);
+    if (!options_.record_visible || !object.frame.splatted)
+        fail("read_visible_stipples: object " + std::to_string(index) +
+             " was not drawn by the splat with recording on (RendererOptions::record_visible, a splat path)");
+    const std::vector<std::byte> bytes = gpu::read_buffer(context_, object.frame.visible_stipples);
+    gpu::VisibleStipplesHeader header{};
+    std::memcpy(&header, bytes.data(), sizeof header);
+    STIPPLE_CHECK(header.count <= object.geometry.stipple_count, "more visible stipples than candidates");
+    std::vector<gpu::VisibleStipple> visible(header.count);
+    std::memcpy(visible.data(), bytes.data() + sizeof header, sizeof(gpu::VisibleStipple) * visible.size());
+    return visible;
 }
 
 }  // namespace stipple

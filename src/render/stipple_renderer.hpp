@@ -51,6 +51,9 @@ struct RenderTargets {
 
 struct RendererOptions {
     bool count_drawn = false;  // record every drawn stipple (drawn_count, drawn_mask): tests, --stats
+    // List the stipples the splat draws, with their window positions (read_visible_stipples): vector
+    // output. Objects on the splat paths only (the export draws every object with one of them).
+    bool record_visible = false;
 };
 
 struct FrameStats {
@@ -91,6 +94,9 @@ public:
     std::vector<uint32_t> drawn_mask(size_t object) const;
     // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).
     std::vector<float> read_densities(size_t object) const;  // the last frame's
+    // The stipples the last frame drew of an object and that inked a pixel (record_visible only; the
+    // object must have been drawn by the splat). Throws stipple::Error otherwise.
+    std::vector<gpu::VisibleStipple> read_visible_stipples(size_t object) const;
     const gpu::FrameUniforms& frame_uniforms() const { return frame_; }
     const ObjectGpu& object(size_t index) const { return *objects_.at(index); }
     const gpu::Context& context() const { return context_; }
@@ -107,6 +113,7 @@ private:
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
+    void ensure_visible_list(ObjectGpu& object);       // record_visible: room for every candidate
 
     const gpu::Context& context_;
     RendererOptions options_;
