@@ -9,6 +9,7 @@ packages=(
   libglm-dev libglfw3-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
   libimgui-dev libmeshoptimizer-dev libgtest-dev
   xvfb xauth xdotool x11-utils
+  clang-15 libfuzzer-15-dev llvm-15  # the sanitized build and the fuzzers (tools/run_sanitized_tests.sh, run_fuzzers.sh)
 )
 
 missing=()

@@ -21,11 +21,13 @@ std::string lower_extension(const std::string& path) {
 
 // Normals from a file are kept only when every one is usable; a partial set is worse than a
 // consistent computed one, so any bad normal means recomputing them all.
+// Lengths in double: in float a normal of 1e20 squares to infinity and one of 1e-20 to zero, and
+// either normalises to a zero vector (found by fuzzing).
 bool normals_usable(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return false;
     for (const glm::vec3& n : mesh.normals) {
         if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return false;
-        if (glm::dot(n, n) == 0.0f) return false;
+        if (glm::length(glm::dvec3(n)) == 0.0) return false;
     }
     return true;
 }
@@ -56,7 +58,7 @@ Mesh finish(Mesh mesh, const std::string& name) {
     mesh.source = name;
     if (mesh.indices.empty()) fail_file(name, "the model has no triangles");
     if (normals_usable(mesh)) {
-        for (glm::vec3& n : mesh.normals) n = glm::normalize(n);
+        for (glm::vec3& n : mesh.normals) n = glm::vec3(glm::normalize(glm::dvec3(n)));
     } else {
         compute_vertex_normals(mesh);  // tolerates bad indices; validate_mesh reports them
     }
