@@ -1,6 +1,6 @@
-// glTF 2.0 (.gltf with external or data: buffers, and .glb) through tinygltf. tinygltf parses the
-// JSON and loads the buffers; everything that points into those buffers (accessors, buffer
-// views, indices, node references) is checked here, because tinygltf does not check it.
+// glTF 2.0 (.gltf with external or data: buffers, and .glb) through tinygltf, after gltf_validate has
+// checked the JSON's fields. tinygltf parses the JSON and loads the buffers; what points into those
+// buffers (accessors, buffer views, indices, node references) is checked again here as it is used.
 #include <tiny_gltf.h>  // the implementation lives in Debian's libtinygltf, so no TINYGLTF_IMPLEMENTATION
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "mesh/gltf_validate.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple {
@@ -266,9 +267,10 @@ Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::file
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const bool binary = ext == ".glb";
-    if (binary && (bytes.size() < 4 || std::memcmp(bytes.data(), "glTF", 4) != 0))
-        fail_file(path, "not a binary glTF file (it does not start with 'glTF')");
     if (bytes.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
+    // tinygltf reads a field of the wrong type as absent, and trusts sizes: every field we (and the
+    // animation reader) use is checked first, and named when it is wrong.
+    validate_gltf(path, bytes, binary, base_dir);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
