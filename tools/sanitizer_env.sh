@@ -17,9 +17,10 @@ for s in llvm-symbolizer-15 llvm-symbolizer; do
   if command -v "$s" >/dev/null; then export ASAN_SYMBOLIZER_PATH="$(command -v "$s")"; break; fi
 done
 supp="$STIPPLE_ROOT/tests/sanitizers"
-# halt_on_error with -fno-sanitize-recover: the first report ends the process with a non-zero exit.
+# halt_on_error with -fno-sanitize-recover: the first report ends the process, with exit code 99 so that
+# a CLI test expecting exit 1 for bad input cannot mistake a report for the clean refusal.
 # Leaks are checked (LSan) with lsan.supp naming the libraries whose leaks are not ours; asan.supp
 # likewise for errors the interceptors see inside those libraries.
-export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1:suppressions=$supp/asan.supp:print_suppressions=0"
+export ASAN_OPTIONS="halt_on_error=1:exitcode=99:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1:suppressions=$supp/asan.supp:print_suppressions=0"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
-export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$supp/ubsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="halt_on_error=1:exitcode=99:print_stacktrace=1:suppressions=$supp/ubsan.supp:print_suppressions=0"

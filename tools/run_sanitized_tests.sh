@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds the whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (clang-15, in
+# build-asan) and runs it under ctest with the Vulkan validation layer on. Any sanitizer report (ASan,
+# LeakSanitizer, UBSan) ends its process with exit code 99 and so fails its test; the suppressions in
+# tests/sanitizers/ cover only the Vulkan loader's and lavapipe's own code (tools/sanitizer_env.sh).
+# Usage: tools/run_sanitized_tests.sh [more ctest arguments, e.g. -R Loader]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/sanitizer_env.sh"
+cd "$STIPPLE_ROOT"
+third_party_config/install_deps.sh
+configure_sanitized_build
+cmake --build "$STIPPLE_ASAN_BUILD" -j "$STIPPLE_JOBS"
+export STIPPLE_VALIDATION=1
+ctest --test-dir "$STIPPLE_ASAN_BUILD" --output-on-failure -j "$STIPPLE_JOBS" --timeout 900 "$@"
