@@ -309,7 +309,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e390
         std::string message = e.what();
         if (size_t bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
             message = message.substr(bracket + 2);  // drop nlohmann's "[json.exception.parse_error.101] "
