@@ -29,6 +29,9 @@ const Regression kRegressions[] = {
     {"ply_normal_length_overflows_float.ply", ""},
     // A number beyond double range made nlohmann::json throw out_of_range, which escaped parse_scene.
     {"scene_number_overflow_1e390.json", "not valid JSON: number overflow parsing '1e390'"},
+    // A field name with a backspace ("o\bj_y") was quoted raw, breaking the one-line message.
+    {"scene_control_character_in_field_name.json",
+     "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},
 };
 
 class FuzzRegression : public ::testing::TestWithParam<Regression> {};

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple {
 
@@ -35,7 +36,8 @@ public:
     explicit Reader(std::string source) : source_(std::move(source)) {}
 
     [[noreturn]] void error(const std::string& where, const std::string& problem) const {
-        fail_file(source_, (where.empty() ? std::string() : where + ": ") + problem);
+        // Field names come from the file: a control character in one ("o\bj") must not break the line.
+        fail_file(source_, one_line((where.empty() ? std::string() : where + ": ") + problem));
     }
 
     static std::string field(const std::string& where, const std::string& key) {
