@@ -17,3 +17,11 @@ if(STIPPLE_FUZZ)
     message(FATAL_ERROR "STIPPLE_FUZZ needs clang (e.g. -DCMAKE_CXX_COMPILER=clang++-15) and -DSTIPPLE_SANITIZE=ON")
   endif()
 endif()
+
+if(STIPPLE_SANITIZE)
+  # Keeps lavapipe and the validation layer mapped in sanitized processes (see the source's comment).
+  add_library(stipple_keep_loaded SHARED ${CMAKE_SOURCE_DIR}/tests/sanitizers/keep_loaded.c)
+  target_compile_options(stipple_keep_loaded PRIVATE -fno-sanitize=all)
+  target_link_options(stipple_keep_loaded PRIVATE -fno-sanitize=all)
+  target_link_libraries(stipple_keep_loaded PRIVATE ${CMAKE_DL_LIBS})
+endif()

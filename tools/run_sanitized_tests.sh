@@ -12,13 +12,15 @@ third_party_config/install_deps.sh
 configure_sanitized_build
 cmake --build "$STIPPLE_ASAN_BUILD" -j "$STIPPLE_JOBS"
 export STIPPLE_VALIDATION=1
-# The Vulkan loader unloads lavapipe and the validation layer when an instance is destroyed; preloaded,
-# they stay mapped, so that LeakSanitizer can name them and lsan.supp can suppress their leaks by
-# library (an unloaded library's frames have no name, and ours must never be suppressed wholesale).
-preload=()
+# The Vulkan loader unloads lavapipe and the validation layer when an instance is destroyed; the
+# preloaded helper (tests/sanitizers/keep_loaded.c) keeps them mapped so that LeakSanitizer can name
+# them and lsan.supp can suppress their leaks by library (an unloaded library's frames have no name,
+# and ours must never be suppressed wholesale).
+keep=()
 for lib in libvulkan_lvp.so libVkLayer_khronos_validation.so; do
   path=$(find /usr/lib /usr/local/lib -name "$lib" -print -quit 2>/dev/null || true)
-  [ -n "$path" ] && preload+=("$path")
+  if [ -n "$path" ]; then keep+=("$path"); fi
 done
-LD_PRELOAD="$(IFS=:; echo "${preload[*]}")" \
-ctest --test-dir "$STIPPLE_ASAN_BUILD" --output-on-failure -j "$STIPPLE_JOBS" --timeout 900 "$@"
+export STIPPLE_KEEP_LOADED="$(IFS=:; echo "${keep[*]}")"
+LD_PRELOAD="$(cd "$STIPPLE_ASAN_BUILD" && pwd)/libstipple_keep_loaded.so" \
+  ctest --test-dir "$STIPPLE_ASAN_BUILD" --output-on-failure -j "$STIPPLE_JOBS" --timeout 900 "$@"
