@@ -103,7 +103,21 @@ INSTANTIATE_TEST_SUITE_P(
                                "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
                                "property float x\nproperty float y\nproperty float z\nend_header\n",
                                "1000000000000"},
-                      BadInput{"unknown_extension", "model.xyz", "hello", "extension"}),
+                      BadInput{"unknown_extension", "model.xyz", "hello", "extension"},
+                      BadInput{"zero_area", "line.obj", "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 3 2 1\n",
+                               "no triangle with non-zero area"},
+                      BadInput{"gltf_wrong_type", "types.gltf",
+                               R"({"asset":{"version":"2.0"},"accessors":[{"componentType":5126,"count":-1,"type":"VEC3"}]})",
+                               "accessors[0].count: expected a non-negative integer, got -1"},
+                      BadInput{"gltf_misspelt_extension", "ext.gltf",
+                               R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_unlitt"]})",
+                               "did you mean 'KHR_materials_unlit'?"},
+                      BadInput{"gltf_1", "old.gltf", R"({"asset":{"version":"1.0"},"meshes":{}})",
+                               "glTF 1.0 is not supported (convert to glTF 2.0)"},
+                      BadInput{"ply_2_31_vertices", "claims.ply",
+                               "ply\nformat binary_little_endian 1.0\nelement vertex 2147483648\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\nabcd",
+                               "header claims 2147483648 vertices, more than the file can hold"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what

@@ -370,7 +370,7 @@ TEST(BadInput, GarbageBytes) {
     expect_load_error(write_file(dir / "noise.ply", bytes), "not a PLY file");
     expect_load_error(write_file(dir / "noise.obj", bytes), "not a text OBJ file");
     expect_load_error(write_file(dir / "noise.glb", bytes), "not a binary glTF file");
-    expect_load_error(write_file(dir / "noise.gltf", bytes), "cannot read glTF");
+    expect_load_error(write_file(dir / "noise.gltf", bytes), "not valid JSON");
 }
 
 TEST(BadInput, ObjIndexOutOfRange) {

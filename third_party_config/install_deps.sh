@@ -10,6 +10,7 @@ packages=(
   libimgui-dev libmeshoptimizer-dev libgtest-dev
   libzstd-dev libnanoflann-dev libcairo2-dev libtinyxml2-dev poppler-utils librsvg2-bin
   xvfb xauth xdotool x11-utils
+  clang-15 libfuzzer-15-dev llvm-15  # the sanitized build and the fuzzers (tools/run_sanitized_tests.sh, run_fuzzers.sh)
 )
 
 missing=()

@@ -1,6 +1,6 @@
-// glTF 2.0 (.gltf with external or data: buffers, and .glb) through tinygltf. tinygltf parses the
-// JSON and loads the buffers; everything that points into those buffers (accessors, buffer
-// views, indices, node references) is checked here, because tinygltf does not check it.
+// glTF 2.0 (.gltf with external or data: buffers, and .glb) through tinygltf, after gltf_validate has
+// checked the JSON's fields. tinygltf parses the JSON and loads the buffers; what points into those
+// buffers (accessors, buffer views, indices, node references) is checked again here as it is used.
 #include <tiny_gltf.h>  // the implementation lives in Debian's libtinygltf, so no TINYGLTF_IMPLEMENTATION
 
 #include <algorithm>
@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "mesh/gltf_validate.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple {
@@ -250,27 +250,37 @@ private:
     Mesh mesh_;
 };
 
-bool has_glb_magic(const std::string& path) {
-    char magic[4] = {};
-    std::ifstream in(path, std::ios::binary);
-    in.read(magic, 4);
-    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+// Bytes from memory have no folder: a reference to an external file is refused, not looked up in
+// the current directory.
+bool no_external_file(std::vector<unsigned char>*, std::string* err, const std::string& uri, void*) {
+    if (err) *err = "external file '" + uri + "' cannot be read: the model was not loaded from a file";
+    return false;
 }
+bool no_file_exists(const std::string&, void*) { return false; }
+std::string unexpanded(const std::string& path, void*) { return path; }
+bool no_file_written(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
 }  // namespace
 
-Mesh load_gltf(const std::string& path, const LoadOptions& options) {
+Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
+                const LoadOptions& options) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const bool binary = ext == ".glb";
-    if (binary && !has_glb_magic(path)) fail_file(path, "not a binary glTF file (it does not start with 'glTF')");
+    if (bytes.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
+    // tinygltf reads a field of the wrong type as absent, and trusts sizes: every field we (and the
+    // animation reader) use is checked first, and named when it is wrong.
+    validate_gltf(path, bytes, binary, base_dir);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
+    if (!base_dir) loader.SetFsCallbacks({&no_file_exists, &unexpanded, &no_external_file, &no_file_written, nullptr});
+    const std::string dir = base_dir ? base_dir->string() : std::string();
     tinygltf::Model model;
     std::string err, warn;
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, dir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
     if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
     if (!warn.empty()) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
     return Loader(path, model, options).run();

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple {
 
@@ -20,13 +21,56 @@ std::string lower_extension(const std::string& path) {
 
 // Normals from a file are kept only when every one is usable; a partial set is worse than a
 // consistent computed one, so any bad normal means recomputing them all.
+// Lengths in double: in float a normal of 1e20 squares to infinity and one of 1e-20 to zero, and
+// either normalises to a zero vector (found by fuzzing).
 bool normals_usable(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return false;
     for (const glm::vec3& n : mesh.normals) {
         if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return false;
-        if (glm::dot(n, n) == 0.0f) return false;
+        if (glm::length(glm::dvec3(n)) == 0.0) return false;
     }
     return true;
+}
+
+enum class Format { obj, ply, gltf };
+
+Format format_of(const std::string& name) {
+    const std::string ext = lower_extension(name);
+    if (ext == ".obj") return Format::obj;
+    if (ext == ".ply") return Format::ply;
+    if (ext == ".gltf" || ext == ".glb") return Format::gltf;
+    fail_file(name, (ext.empty() ? std::string("has no file extension") : "unknown model format '" + ext + "'") +
+                        " (expected .obj, .ply, .gltf or .glb)");
+}
+
+Mesh parse(Format format, const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
+           const LoadOptions& options) {
+    switch (format) {
+        case Format::obj: return parse_obj(name, bytes, options);
+        case Format::ply: return parse_ply(name, bytes, options);
+        case Format::gltf: return parse_gltf(name, bytes, base_dir, options);
+    }
+    fail_file(name, "unknown model format");
+}
+
+// What every format shares once its parser is done: normals, validation, outward winding.
+Mesh finish(Mesh mesh, const std::string& name) {
+    mesh.source = name;
+    if (mesh.indices.empty()) fail_file(name, "the model has no triangles");
+    if (normals_usable(mesh)) {
+        for (glm::vec3& n : mesh.normals) n = glm::vec3(glm::normalize(glm::dvec3(n)));
+    } else {
+        compute_vertex_normals(mesh);  // tolerates bad indices; validate_mesh reports them
+    }
+    validate_mesh(mesh);
+    // A model of degenerate triangles only would load, get no stipple and draw a blank image.
+    bool has_area = false;
+    for (size_t t = 0; t < mesh.triangle_count() && !has_area; ++t) has_area = triangle_area(mesh, t) > 0.0;
+    if (!has_area)
+        fail_file(name, "no triangle with non-zero area (all " + std::to_string(mesh.triangle_count()) +
+                            " triangles are degenerate)");
+    orient_outward(mesh);
+    return mesh;
 }
 
 }  // namespace
@@ -43,29 +87,24 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) fail_file(path, "cannot read the file size: " + ec.message());
     if (size == 0) fail_file(path, "file is empty");
+    const Format format = format_of(path);
+    const std::string bytes = read_file(path);
+    const fs::path base_dir = fs::path(path).parent_path();
+    return finish(parse(format, path, bytes, &base_dir, options), path);
+}
 
-    const std::string ext = lower_extension(path);
-    Mesh mesh;
-    if (ext == ".obj")
-        mesh = load_obj(path, options);
-    else if (ext == ".ply")
-        mesh = load_ply(path, options);
-    else if (ext == ".gltf" || ext == ".glb")
-        mesh = load_gltf(path, options);
-    else
-        fail_file(path, (ext.empty() ? std::string("has no file extension") : "unknown model format '" + ext + "'") +
-                            " (expected .obj, .ply, .gltf or .glb)");
+Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
+    if (bytes.empty()) fail_file(name, "file is empty");
+    return finish(parse(format_of(name), name, bytes, nullptr, options), name);
+}
 
-    mesh.source = path;
-    if (mesh.indices.empty()) fail_file(path, "the model has no triangles");
-    if (normals_usable(mesh)) {
-        for (glm::vec3& n : mesh.normals) n = glm::normalize(n);
-    } else {
-        compute_vertex_normals(mesh);  // tolerates bad indices; validate_mesh reports them
-    }
-    validate_mesh(mesh);
-    orient_outward(mesh);
-    return mesh;
+Mesh load_obj(const std::string& path, const LoadOptions& options) { return parse_obj(path, read_file(path), options); }
+
+Mesh load_ply(const std::string& path, const LoadOptions& options) { return parse_ply(path, read_file(path), options); }
+
+Mesh load_gltf(const std::string& path, const LoadOptions& options) {
+    const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
+    return parse_gltf(path, read_file(path), &base_dir, options);
 }
 
 Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options) {

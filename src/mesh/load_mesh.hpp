@@ -1,5 +1,7 @@
 #pragma once
+#include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "mesh/mesh.hpp"
 
@@ -21,8 +23,20 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 // load_mesh, then optimize_draw_order: what every renderer draws (render, view, info, bench).
 Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options = {});
 
+// The same from bytes already in memory (fuzzers, data that never was a file): `name` chooses the
+// format by its extension and names the model in every message. A .gltf read this way cannot refer
+// to external buffer files (data: URIs and .glb chunks work).
+Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options = {});
+
 Mesh load_obj(const std::string& path, const LoadOptions& options);
 Mesh load_ply(const std::string& path, const LoadOptions& options);
 Mesh load_gltf(const std::string& path, const LoadOptions& options);  // .gltf and .glb
+
+// The parsers proper, on the file's bytes; `name` is for messages. `base_dir` is the folder that
+// external glTF buffers are resolved against, or nullptr when there is none (bytes from memory).
+Mesh parse_obj(const std::string& name, std::string_view text, const LoadOptions& options);
+Mesh parse_ply(const std::string& name, std::string_view bytes, const LoadOptions& options);
+Mesh parse_gltf(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
+                const LoadOptions& options);
 
 }  // namespace stipple

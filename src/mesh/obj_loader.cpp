@@ -147,8 +147,7 @@ private:
 
 }  // namespace
 
-Mesh load_obj(const std::string& path, const LoadOptions& options) {
-    std::string text = read_file(path);
+Mesh parse_obj(const std::string& path, std::string_view text, const LoadOptions& options) {
     const Counts counts = Prescan(path).run(text);
     // tinyobjloader indexes with int; the limit keeps its allocations bounded as well.
     const uint64_t limit = std::min<uint64_t>(options.max_elements, std::numeric_limits<int32_t>::max());
@@ -161,7 +160,7 @@ Mesh load_obj(const std::string& path, const LoadOptions& options) {
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warn, err;
-    std::istringstream in(std::move(text));
+    std::istringstream in{std::string(text)};
     // No material reader: materials play no part in stippling, and a missing .mtl must not matter.
     const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, /*triangulate=*/true);
     if (!ok || !err.empty()) fail_file(path, one_line(err.empty() ? warn : err));

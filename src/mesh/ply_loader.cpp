@@ -467,8 +467,7 @@ void read_body(Reader& r, const Header& h, Target& t) {
 
 }  // namespace
 
-Mesh load_ply(const std::string& path, const LoadOptions& options) {
-    const std::string file = read_file(path);
+Mesh parse_ply(const std::string& path, std::string_view file, const LoadOptions& options) {
     const Header h = parse_header(path, file, options);
     uint64_t vertex_count = 0;
     int vertex_elements = 0;

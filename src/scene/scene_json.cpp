@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "mesh/loader_util.hpp"
 #include "params/param_table.hpp"
 
 namespace stipple {
@@ -36,7 +37,8 @@ public:
     explicit Reader(std::string source) : source_(std::move(source)) {}
 
     [[noreturn]] void error(const std::string& where, const std::string& problem) const {
-        fail_file(source_, (where.empty() ? std::string() : where + ": ") + problem);
+        // Field names come from the file: a control character in one ("o\bj") must not break the line.
+        fail_file(source_, one_line((where.empty() ? std::string() : where + ": ") + problem));
     }
 
     static std::string field(const std::string& where, const std::string& key) {
@@ -254,7 +256,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e390
         std::string message = e.what();
         if (size_t bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
             message = message.substr(bracket + 2);  // drop nlohmann's "[json.exception.parse_error.101] "

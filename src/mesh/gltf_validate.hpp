@@ -1,0 +1,37 @@
+#pragma once
+// glTF 2.0 files checked against the fields stipple reads, before tinygltf parses them. tinygltf is
+// silent about a field of the wrong JSON type (a string where a number belongs reads as if absent), so
+// a broken file would load as some other model, or fail later with a message that names nothing.
+// Here every problem is one line naming the field, in the form of the scene files' messages:
+//   "<file>: accessors[3].count: expected a non-negative integer, got -1"
+//
+// Checked: the container (GLB header and chunks; glTF 1.0 is named as such), the JSON itself (syntax,
+// nesting depth), and for JSON type and index range every field that the static loader reads
+// (scene, scenes, nodes, meshes, primitives, accessors, buffer views, buffers) and that animation
+// reads (skins, animations with their samplers and channels, morph targets, weights), and the
+// extension lists. Sizes are checked against the bytes that are really there (the GLB's BIN chunk, a
+// data: URI, an external file), so no count in the JSON can make a reader allocate beyond the file.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace stipple {
+
+// The JSON and binary chunks of a .glb, after its header and chunk lengths are checked.
+struct GlbChunks {
+    std::string_view json;
+    bool has_bin = false;
+    std::string_view bin;
+};
+
+// Splits a .glb container; throws stipple::Error "<name>: ..." for a bad header or chunk, and for a
+// glTF 1.0 binary file.
+GlbChunks split_glb(const std::string& name, std::string_view bytes);
+
+// Validates a whole .gltf (binary == false: the bytes are JSON) or .glb file. `base_dir` is the folder
+// external buffers are resolved against; nullptr when the bytes did not come from a file, and then an
+// external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>".
+void validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir);
+
+}  // namespace stipple

@@ -1,0 +1,89 @@
+// Inputs the fuzzers found (tests/fuzz/regressions/, one file per finding, named after it), read the
+// way their harness read them: each must be refused with the one-line error listed here, or load and
+// keep every promise of a loaded mesh. Every file in the folder must be listed, so none is forgotten.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+#include "scene/scene_json.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kFolder = fs::path(STIPPLE_SOURCE_DIR) / "tests" / "fuzz" / "regressions";
+
+struct Regression {
+    const char* file;
+    const char* expected;  // the error's problem (after "<path>: "); "" when the file must load
+};
+
+const Regression kRegressions[] = {
+    // File normals of 7e31 square to infinity in float and normalised to zero vectors.
+    {"ply_normal_length_overflows_float.ply", ""},
+    // A number beyond double range made nlohmann::json throw out_of_range, which escaped parse_scene.
+    {"scene_number_overflow_1e390.json", "not valid JSON: number overflow parsing '1e390'"},
+    // A field name with a backspace ("o\bj_y") was quoted raw, breaking the one-line message.
+    {"scene_control_character_in_field_name.json",
+     "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},
+};
+
+class FuzzRegression : public ::testing::TestWithParam<Regression> {};
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST_P(FuzzRegression, RefusedInOneLineOrLoadedWhole) {
+    const fs::path path = kFolder / GetParam().file;
+    const std::string expected = GetParam().expected;
+    ASSERT_TRUE(fs::is_regular_file(path)) << path;
+    try {
+        if (path.extension() == ".json") {
+            stipple::parse_scene(read_text(path), path.string(), kFolder);
+            EXPECT_TRUE(expected.empty()) << "read without the expected error: " << expected;
+            return;
+        }
+        const stipple::Mesh mesh = stipple::load_mesh(path.string());
+        EXPECT_TRUE(expected.empty()) << "loaded without the expected error: " << expected;
+        ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+        for (uint32_t i : mesh.indices) ASSERT_LT(i, mesh.positions.size());
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            for (int axis = 0; axis < 3; ++axis) ASSERT_TRUE(std::isfinite(mesh.positions[v][axis])) << "vertex " << v;
+            EXPECT_NEAR(glm::length(mesh.normals[v]), 1.0f, 1e-5f) << "normal " << v;
+        }
+    } catch (const stipple::Error& e) {
+        const std::string message = e.what();
+        EXPECT_FALSE(expected.empty()) << "refused: " << message;
+        EXPECT_EQ(message, path.string() + ": " + expected);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, FuzzRegression, ::testing::ValuesIn(kRegressions), [](const auto& info) {
+    std::string name = info.param.file;
+    for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return name;
+});
+
+TEST(FuzzRegressions, EveryFileInTheFolderIsListed) {
+    size_t files = 0;
+    for (const fs::directory_entry& entry : fs::directory_iterator(kFolder)) {
+        if (entry.path().filename() == "README.md") continue;
+        ++files;
+        bool listed = false;
+        for (const Regression& r : kRegressions) listed = listed || entry.path().filename() == r.file;
+        EXPECT_TRUE(listed) << entry.path() << " is not listed in kRegressions";
+    }
+    EXPECT_EQ(files, std::size(kRegressions));
+}
+
+}  // namespace
