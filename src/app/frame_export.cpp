@@ -34,7 +34,7 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
         const ObjectGpu& object = renderer.object(i);
         drawing.objects.push_back({std::filesystem::path(scene.objects[i].model).stem().string(), object.frame.line_width});
         const std::vector<uint32_t>& first = object.geometry.first_stipple;
-        const float radius = 0.5f * object.params.point_size;
+        const float radius = stipple_ink_radius(object.params.point_size);  // the same ink as on screen
         for (const gpu::VisibleStipple& s : renderer.read_visible_stipples(i)) {
             // The polygon whose candidates hold this index.
             const uint32_t polygon = uint32_t(std::upper_bound(first.begin(), first.end(), s.index) - first.begin() - 1);

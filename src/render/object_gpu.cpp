@@ -193,7 +193,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.shading) flags |= gpu::kFlagShading;
     if (p.extrinsic) flags |= gpu::kFlagExtrinsic;
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
-    if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
+    if (draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
     const ObjectGeometry& g = object.geometry;
     u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);

@@ -104,6 +104,16 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
 // not be using the object (StippleRenderer::prepare's contract).
 void ensure_silhouette_edges(ObjectGpu& object);
 
+// Stipples of this size in pixels and below are square points (the rasteriser's, and the splat's
+// copy of them); above, round dots.
+inline constexpr float kRoundPointsAbovePx = 2.5f;
+inline bool draws_round_points(float point_size) { return point_size > kRoundPointsAbovePx; }
+// The radius of the disc with a stipple's ink area: a square point of side s inks s^2, so r = s / sqrt(pi);
+// a round dot is a disc of diameter s. Vector output draws stipples as discs of this radius.
+inline float stipple_ink_radius(float point_size) {
+    return draws_round_points(point_size) ? 0.5f * point_size : point_size / 1.7724539f;
+}
+
 // The object's uniforms for this frame (view-dependent terms included).
 gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view);
 
