@@ -98,6 +98,7 @@ struct GltfCase {
     std::function<void(json&)> change;
     const char* expected;
 };
+void PrintTo(const GltfCase& c, std::ostream* os) { *os << c.name; }
 
 class GltfFields : public ::testing::TestWithParam<GltfCase> {};
 

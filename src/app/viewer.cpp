@@ -443,7 +443,9 @@ void Viewer::frame() {
     figures_.cpu_frame_ms = ms_between(start, Clock::now());
 
     VkResult presented = swapchain_.present(context_.queue, image);
-    if (frame_log_) std::fprintf(frame_log_, "%.3f\n", ms_between(started_, Clock::now()));
+    // The second column says whether background work (new stipples, a model) was under way, so that a
+    // test can see frames keep coming while it runs, whatever the machine's load.
+    if (frame_log_) std::fprintf(frame_log_, "%.3f %d\n", ms_between(started_, Clock::now()), work_.idle() ? 0 : 1);
     if (presented != VK_SUCCESS) recreate_ = true;  // out of date or suboptimal: a new swapchain next frame
     ++frames_drawn_;
     ++fps_frames_;

@@ -19,7 +19,7 @@ struct ViewerOptions {
     int device_index = -1;
     bool verbose = false;
     std::string script;     // --script: timed actions (viewer_script.hpp)
-    std::string frame_log;  // --frame-log: one line per presented frame, milliseconds since start
+    std::string frame_log;  // --frame-log: one line per presented frame: milliseconds since start, 1 if background work ran
 };
 
 // Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit

@@ -76,6 +76,7 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
                           scene key), screenshot PATH, quit
   --frame-log FILE        write one line per presented frame: milliseconds since the start
+                          and 1 while background work (new stipples, a model) runs, else 0
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
