@@ -168,7 +168,8 @@ struct FrameUniforms {
     vec4 ink_color;      // rgb ink, a unused
     vec4 paper_color;    // rgb paper (background), a unused
     vec4 viewport;       // width, height, 1/width, 1/height
-    vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2); y: near; z: far
+    vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2 / detail), for the
+                         // densities; y: near; z: far; w: detail scale (FrameView::detail_scale)
 };
 
 struct ObjectUniforms {

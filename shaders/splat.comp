@@ -86,6 +86,15 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
     bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
+    // Print detail (frame.projection.w > 1): a stipple is a disc many pixels wide while the depth pass's
+    // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
+    // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
+    // its pixels only need a surface under them (it stops at the outline, as the screen's points do).
+    bool whole_dot = frame.projection.w > 1.0;
+    if (whole_dot) {
+        ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
+        if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
+    }
     bool full = intensity >= 1.0f;
     uint ink_word = pack_color(frame.ink_color.rgb, 0.0);
     bool inked = false;
@@ -96,7 +105,7 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
                 if (dot(d, d) > 0.25) continue;
             }
             uint at = uint(y) * uint(size.x) + uint(x);
-            if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
+            if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z, scene_depth[at])) continue;
             inked = true;
             if (full) {
                 color[at] = ink_word;  // the least word there is: no other stipple replaces it

@@ -1,27 +1,82 @@
 #include "app/frame_export.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.hpp"
 #include "export/plot_file.hpp"
 #include "gpu/context.hpp"
 #include "render/offscreen.hpp"
+#include "render/tiled_render.hpp"
 #include "scene/scene_content.hpp"
 
 namespace stipple::app {
 
-plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                              const FrameView& view) {
+namespace {
+
+// The scene's objects in `renderer`, each drawn by the splat (its CPU-density variant for the CPU paths):
+// all density paths draw the same stipples (tests/test_gpu_density.cpp), and the splat has no point-size
+// limit and records what it inks.
+void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects) {
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
-    RendererOptions options;
-    options.record_visible = true;
-    StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
     for (size_t i = 0; i < objects.size(); ++i) {
         ObjectParams params = scene.objects[i].params;
         params.density_path = density_on_cpu(params.density_path) ? DensityPath::CpuSplat : DensityPath::Splat;
         renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(), params);
     }
+}
+
+}  // namespace
+
+PrintLayout print_layout(const PrintOptions& options) {
+    if (!(options.dpi >= 50.0 && options.dpi <= 2400.0))
+        fail("--dpi = " + std::to_string(options.dpi) + " must be in 50..2400");
+    const double px_per_mm = options.dpi / 25.4;
+    const double inner_w = options.page.width_mm - 2.0 * options.margin_mm, inner_h = options.page.height_mm - 2.0 * options.margin_mm;
+    if (!(options.margin_mm >= 0.0) || inner_w < 1.0 || inner_h < 1.0)
+        fail("--margin " + std::to_string(options.margin_mm) + " mm leaves no room on the page");
+    PrintLayout layout;
+    layout.page_px = {uint32_t(std::lround(options.page.width_mm * px_per_mm)), uint32_t(std::lround(options.page.height_mm * px_per_mm))};
+    if (layout.page_px.width > 65536 || layout.page_px.height > 65536)
+        fail("the page is " + std::to_string(layout.page_px.width) + "x" + std::to_string(layout.page_px.height) +
+             " pixels at " + std::to_string(int(options.dpi)) + " dpi: at most 65536 a side (lower --dpi)");
+    const uint32_t margin = uint32_t(std::lround(options.margin_mm * px_per_mm));
+    layout.drawing_at = {int32_t(margin), int32_t(margin)};
+    layout.drawing_px = {std::max(1u, layout.page_px.width - 2 * margin), std::max(1u, layout.page_px.height - 2 * margin)};
+    layout.detail_scale = float(layout.drawing_px.height) / float(options.screen_height);
+    return layout;
+}
+
+Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                   const FrameView& view, const PrintOptions& options) {
+    const PrintLayout layout = print_layout(options);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+    add_splat_objects(renderer, scene, objects);
+    FrameView print = view;
+    print.extent = layout.drawing_px;
+    print.detail_scale = layout.detail_scale;
+    const Image drawing = render_tiled(context, renderer, print, options.max_tile);
+    Image page;
+    page.width = int(layout.page_px.width);
+    page.height = int(layout.page_px.height);
+    page.channels = 4;
+    page.pixels.resize(size_t(page.width) * page.height * 4);
+    const glm::u8vec4 paper(glm::round(glm::clamp(view.paper_color, 0.0f, 1.0f) * 255.0f), 255);
+    for (size_t i = 0; i < page.pixels.size(); i += 4) std::memcpy(&page.pixels[i], &paper, 4);
+    for (int y = 0; y < drawing.height; ++y)
+        std::memcpy(&page.pixels[((size_t(layout.drawing_at.y) + y) * page.width + layout.drawing_at.x) * 4],
+                    &drawing.pixels[size_t(y) * drawing.width * 4], size_t(drawing.width) * 4);
+    return page;
+}
+
+plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                              const FrameView& view) {
+    RendererOptions options;
+    options.record_visible = true;
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
+    add_splat_objects(renderer, scene, objects);
     OffscreenTarget target(context, view.extent);
     target.draw(renderer, view);
 

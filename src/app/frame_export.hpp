@@ -9,6 +9,7 @@
 #include "export/drawing.hpp"
 #include "export/plot_plan.hpp"
 #include "export/plot_stats.hpp"
+#include "io/png_io.hpp"
 #include "render/stipple_renderer.hpp"
 #include "scene/scene.hpp"
 #include "stipple/object_data.hpp"
@@ -19,6 +20,30 @@ namespace stipple::app {
 // variant for the CPU paths): all density paths draw the same stipples (tests/test_gpu_density.cpp).
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                               const FrameView& view);
+
+// Print-resolution images (`-o poster.png --page A3 --dpi 600`): the page at the resolution asked for,
+// the drawing inside the margins, enlarged from the screen image it would be at `screen_height` pixels
+// (FrameView::detail_scale): the same stipples, as discs of the same ink, so the print has the screen's
+// tone. Drawn in tiles of at most `max_tile` pixels a side.
+struct PrintOptions {
+    plot::PageSize page;
+    double margin_mm = 10.0;
+    double dpi = 300.0;
+    uint32_t screen_height = 1024;
+    uint32_t max_tile = 4096;
+};
+struct PrintLayout {
+    VkExtent2D page_px{};     // the whole PNG
+    VkOffset2D drawing_at{};  // where the drawing starts (the margin)
+    VkExtent2D drawing_px{};  // the drawing inside the margins
+    float detail_scale = 1.0f;
+};
+// Throws stipple::Error for a resolution out of 50..2400 dpi, a margin that leaves no room, or a page
+// beyond 65536 pixels a side.
+PrintLayout print_layout(const PrintOptions& options);
+// `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
+Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                   const FrameView& view, const PrintOptions& options);
 
 // Captures, lays out on the page, orders for the plotter and writes `path` (.svg, .pdf or .csv).
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,

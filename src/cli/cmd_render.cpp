@@ -111,9 +111,14 @@ int run_render(const std::vector<std::string>& argv) {
     // -o x.svg, x.pdf or x.csv: the frame's visible stipples and lines as vector output.
     const bool vector = plot::is_plot_path(output);
     const plot::ExportOptions vector_options = read_vector_options(args);
-    if (!vector)
-        for (const std::string& name : {"--page", "--margin", "--pen-width", "--dot-style"})
-            if (args.has(name)) fail(name + " is for vector output: give -o a .svg, .pdf or .csv file");
+    // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
+    const std::optional<app::PrintOptions> print = read_print_options(args);
+    if (print && vector) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
+    if (!vector && !print)
+        for (const char* name : {"--page", "--margin", "--pen-width", "--dot-style"})
+            if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
+    if (print && (args.has("--repeat") || args.has("--mask")))
+        fail("--dpi renders a print image; --repeat and --mask are for screen images");
     long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
     if (width < 1 || width > 16384 || height < 1 || height > 16384)
         fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
@@ -139,6 +144,10 @@ int run_render(const std::vector<std::string>& argv) {
     double prepare_seconds = seconds_since(start);
 
     float aspect = float(width) / float(height);
+    if (print) {
+        const VkExtent2D drawing = app::print_layout(*print).drawing_px;
+        aspect = float(drawing.width) / float(drawing.height);
+    }
     Sphere bounds = scene_bounds(scene, content.objects);
     std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit);
     const bool sequence = cameras.size() > 1;
@@ -167,8 +176,16 @@ int run_render(const std::vector<std::string>& argv) {
     FrameView view;
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
-        view = scene_frame_view(scene, cameras[i], bounds, extent);
+        // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
+        view = scene_frame_view(scene, cameras[i], bounds, print ? app::print_layout(*print).drawing_px : extent);
         auto render_start = std::chrono::steady_clock::now();
+        if (print) {
+            const Image page = app::render_print(context, scene, content.objects, view, *print);
+            render_seconds = seconds_since(render_start);
+            write_png(output_path(output, i, sequence), page);
+            bar.update(double(i + 1) / double(cameras.size()));
+            continue;
+        }
         frame = target.render(renderer, view);
         render_seconds = seconds_since(render_start);
         if (vector) {
@@ -227,7 +244,11 @@ int run_render(const std::vector<std::string>& argv) {
     if (sequence)
         std::printf("wrote %zu frames %s .. %s (%lldx%lld)\n", cameras.size(), frame_path(output, 0).c_str(),
                     frame_path(output, cameras.size() - 1).c_str(), width, height);
-    else
+    else if (print) {
+        const VkExtent2D page = app::print_layout(*print).page_px;
+        std::printf("wrote %s (%ux%u, %s at %g dpi)\n", output_path(output, 0, false).c_str(), page.width, page.height,
+                    args.get("--page", "").c_str(), print->dpi);
+    } else
         std::printf("wrote %s (%lldx%lld)\n", output_path(output, 0, false).c_str(), width, height);
 
     if (uint32_t messages = context.validation_message_count()) {

@@ -57,6 +57,23 @@ Render options:
   --orbit DEG             turn the camera by DEG in total around the scene's centre, DEG*i/N at
                           frame i (so 360 loops without a repeated frame); needs --frames
 
+Vector and print output (render):
+  -o x.svg | x.pdf | x.csv
+                          the stipples the frame draws (after density, hidden-stipple removal, toon
+                          fade) as dots, and its visible lines, on a page in mm, ordered for pen
+                          plotters; layers per object and kind (see docs/plot-export.md)
+  --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
+                          (default A4)
+  --margin MM             white border around the drawing (default 10)
+  --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
+                          dots 0.3)
+  --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)
+  --fill-paper            paint the page in the scene's paper colour
+  --dpi N                 with -o x.png and --page: a print-resolution page (50..2400 dpi) that looks
+                          like the screen image enlarged: the same stipples, each a disc of the same
+                          share of ink, as at --height pixels (default 1024) for the drawing's height
+  --tile N                print images are drawn in tiles of at most N pixels a side (default 4096)
+
   With several frames, -o (and --mask) must hold a frame number in printf style: -o frames/%%04d.png
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%). A progress bar shows on a
   terminal; the same command always writes the same files. With a SCENE.json, --yaw, --pitch,

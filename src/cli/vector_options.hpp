@@ -5,13 +5,18 @@
 #include <string>
 
 #include "cli/args.hpp"
+#include <optional>
+
+#include "app/frame_export.hpp"
 #include "export/plot_plan.hpp"
 
 namespace stipple::cli {
 
-std::set<std::string> vector_options();  // --page, --margin, --pen-width, --dot-style
+std::set<std::string> vector_options();  // --page, --margin, --pen-width, --dot-style, --dpi, --tile
 std::set<std::string> vector_flags();    // --fill-paper
 // The export's options from the command line; throws stipple::Error naming the option.
 plot::ExportOptions read_vector_options(const Args& args);
+// -o x.png with --dpi: a print-resolution page (--page, --margin; --height is the screen image it enlarges).
+std::optional<app::PrintOptions> read_print_options(const Args& args);
 
 }  // namespace stipple::cli

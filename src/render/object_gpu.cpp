@@ -184,7 +184,10 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     u.normal_view = glm::inverseTranspose(u.model_view);
     float scale = linear_scale(object.model);
     float radius_world = std::max(bounds.radius * scale, 1e-20f);
-    u.shading = glm::vec4(p.shading_exponent, p.point_size, p.toon_sharpness, 0.0f);
+    // At print detail a stipple is drawn as the disc of its screen ink, enlarged (FrameView::detail_scale).
+    const bool print = view.detail_scale != 1.0f;
+    const float point_size = print ? 2.0f * stipple_ink_radius(p.point_size) * view.detail_scale : p.point_size;
+    u.shading = glm::vec4(p.shading_exponent, point_size, p.toon_sharpness, 0.0f);
     // Reference view of generation: the bounding-sphere radius spans kReferenceHeight / 2 pixels.
     u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_world, scale * scale);
     glm::vec3 center_view = glm::vec3(u.model_view * glm::vec4(bounds.center, 1.0f));
@@ -193,7 +196,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.shading) flags |= gpu::kFlagShading;
     if (p.extrinsic) flags |= gpu::kFlagExtrinsic;
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
-    if (draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
+    if (print || draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
     const ObjectGeometry& g = object.geometry;
     u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);
@@ -207,10 +210,12 @@ float object_line_width(const ObjectGpu& object, const FrameView& view, float ma
     float radius_world = bounds.radius * linear_scale(object.model);
     glm::vec3 center_view = glm::vec3(view.camera.view * object.model * glm::vec4(bounds.center, 1.0f));
     float distance = std::max(-center_view.z, 1e-6f);
-    float projected_radius = radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / distance;
+    // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
+    float projected_radius =
+        radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);
     float width = formulas::silhouette_line_width(object.params.silhouette_width, projected_radius,
                                                   object.params.silhouette_thinning);
-    return std::min(width, max_width);
+    return std::min(width * view.detail_scale, max_width);
 }
 
 }  // namespace stipple

@@ -155,8 +155,9 @@ void StippleRenderer::prepare(const FrameView& view) {
     frame_.paper_color = glm::vec4(view.paper_color, 1.0f);
     frame_.viewport = glm::vec4(view.extent.width, view.extent.height, 1.0f / view.extent.width,
                                 1.0f / view.extent.height);
-    frame_.projection = glm::vec4(view.camera.proj[1][1] * 0.5f * float(view.extent.height), view.camera.near_plane,
-                                  view.camera.far_plane, 0.0f);
+    // Pixels per unit at unit distance, for the densities: as at the extent the stipples are chosen for.
+    frame_.projection = glm::vec4(view.camera.proj[1][1] * 0.5f * float(view.extent.height) / view.detail_scale,
+                                  view.camera.near_plane, view.camera.far_plane, view.detail_scale);
     std::memcpy(frame_uniforms_.mapped(), &frame_, sizeof(frame_));
     frame_uniforms_.flush();
 

@@ -33,6 +33,11 @@ struct FrameView {
     glm::vec3 light_view{-0.45f, 0.55f, 0.70f};  // toward the light, view space (x right, y up, z to viewer)
     glm::vec3 ink_color{0.0f};
     glm::vec3 paper_color{1.0f};
+    // Print: the image is drawn at this many times the resolution its stipples are chosen for. Densities
+    // (§2.1-2.3) are computed as for an extent this much smaller, and stipples and lines are drawn this
+    // much larger (stipples as discs of their ink area), so a poster is the screen image enlarged: the
+    // same stipples, the same tone. 1 for everything else.
+    float detail_scale = 1.0f;
 };
 
 // Images the frame is drawn into. Layouts on entry are ignored (contents are cleared); on exit the

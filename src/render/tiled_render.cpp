@@ -1,0 +1,55 @@
+#include "render/tiled_render.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <memory>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "render/offscreen.hpp"
+
+namespace stipple {
+
+glm::mat4 tile_projection(const glm::mat4& proj, VkExtent2D full, VkOffset2D origin, VkExtent2D tile) {
+    // NDC x runs left to right over the full width; NDC y runs bottom to top while rows run top down.
+    const float sx = float(full.width) / float(tile.width), sy = float(full.height) / float(tile.height);
+    const float cx = (2.0f * float(origin.x) + float(tile.width)) / float(full.width) - 1.0f;
+    const float cy = 1.0f - (2.0f * float(origin.y) + float(tile.height)) / float(full.height);
+    glm::mat4 to_tile(1.0f);  // ndc' = s * (ndc - c), as a clip-space transform (it keeps w)
+    to_tile[0][0] = sx;
+    to_tile[1][1] = sy;
+    to_tile[3][0] = -sx * cx;
+    to_tile[3][1] = -sy * cy;
+    return to_tile * proj;
+}
+
+Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile) {
+    const VkExtent2D full = view.extent;
+    const uint32_t limit = std::min<uint32_t>(max_tile, context.properties.limits.maxImageDimension2D);
+    STIPPLE_CHECK(limit >= 16, "render_tiled: tiles of at least 16 pixels");
+    Image image;
+    image.width = int(full.width);
+    image.height = int(full.height);
+    image.channels = 4;
+    image.pixels.resize(size_t(full.width) * full.height * 4);
+    std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<OffscreenTarget>> targets;  // one per tile size
+    for (uint32_t y0 = 0; y0 < full.height; y0 += limit)
+        for (uint32_t x0 = 0; x0 < full.width; x0 += limit) {
+            const VkExtent2D tile{std::min(limit, full.width - x0), std::min(limit, full.height - y0)};
+            auto& target = targets[{tile.width, tile.height}];
+            if (!target) target = std::make_unique<OffscreenTarget>(context, tile);
+            FrameView part = view;
+            part.extent = tile;
+            part.camera.proj = tile_projection(view.camera.proj, full, VkOffset2D{int32_t(x0), int32_t(y0)}, tile);
+            // The densities are the full image's: the tile's projection scales pixels per unit back up to them.
+            part.detail_scale = view.detail_scale;
+            const RenderedFrame frame = target->render(renderer, part);
+            for (uint32_t y = 0; y < tile.height; ++y)
+                std::memcpy(&image.pixels[((size_t(y0) + y) * full.width + x0) * 4], &frame.color.pixels[size_t(y) * tile.width * 4],
+                            size_t(tile.width) * 4);
+        }
+    return image;
+}
+
+}  // namespace stipple

@@ -1,0 +1,123 @@
+// Print-resolution images (issue 15): `stipple render -o poster.png --page A3 --dpi 600` draws the page
+// in tiles, each stipple a disc of the screen's share of ink, so that the print is the screen image
+// enlarged. Downsampled to the screen image's size, its mean ink inside the object is the screen's;
+// tiles join without seams (a tiled page is the page drawn in one piece).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "io/png_io.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+void run_ok(const std::vector<std::string>& args) {
+    const test::CommandResult r = test::run_stipple(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
+double darkness(const Image& image, size_t x, size_t y) {
+    const uint8_t* p = &image.pixels[(y * size_t(image.width) + x) * size_t(image.channels)];
+    return 1.0 - (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
+}
+
+// Mean ink over the screen mask's covered pixels: of the screen image itself, and of the print's
+// drawing (the page less its margin) box-filtered onto the screen's pixels.
+struct InkPair {
+    double screen = 0.0, print = 0.0;
+};
+InkPair ink_inside(const Image& screen, const Image& mask, const Image& page, int margin_px) {
+    const int dw = page.width - 2 * margin_px, dh = page.height - 2 * margin_px;
+    std::vector<double> sum(size_t(screen.width) * screen.height, 0.0);
+    std::vector<uint32_t> count(sum.size(), 0);
+    for (int y = 0; y < dh; ++y) {
+        const size_t sy = size_t(y) * size_t(screen.height) / size_t(dh);
+        for (int x = 0; x < dw; ++x) {
+            const size_t sx = size_t(x) * size_t(screen.width) / size_t(dw);
+            sum[sy * screen.width + sx] += darkness(page, size_t(x + margin_px), size_t(y + margin_px));
+            ++count[sy * screen.width + sx];
+        }
+    }
+    InkPair ink;
+    size_t covered = 0;
+    for (int y = 0; y < screen.height; ++y)
+        for (int x = 0; x < screen.width; ++x) {
+            if (darkness(mask, size_t(x), size_t(y)) > 0.5) continue;  // white where a surface covers
+            const size_t i = size_t(y) * screen.width + x;
+            ink.screen += darkness(screen, size_t(x), size_t(y));
+            ink.print += sum[i] / double(std::max(1u, count[i]));
+            ++covered;
+        }
+    ink.screen /= double(covered);
+    ink.print /= double(covered);
+    return ink;
+}
+
+// A3 at 600 dpi with 10 mm margins: a 6543 x 9449 drawing, beyond the 4096-pixel tiles, so tiled.
+// The screen image has the drawing's aspect (277:400) at 800 pixels high, the height --height gives
+// the print's stipples.
+TEST(CliPrint, A3At600DpiIsTheScreenImageEnlarged) {
+    const auto dir = test::temp_dir("cli-print-a3");
+    const std::string screen = (dir / "screen.png").string(), mask = (dir / "mask.png").string(),
+                      poster = (dir / "poster.png").string();
+    run_ok({"render", "--width", "554", "--height", "800", "-o", screen, "--mask", mask});
+    const test::CommandResult r = test::run_stipple({"render", "--page", "A3", "--dpi", "600", "--height", "800", "-o", poster});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("7016x9921"), std::string::npos) << r.out;
+    const Image page = read_png(poster);
+    ASSERT_EQ(page.width, 7016);
+    ASSERT_EQ(page.height, 9921);
+    const int margin = int(std::lround(10.0 * 600.0 / 25.4));
+    const InkPair ink = ink_inside(read_png(screen), read_png(mask), page, margin);
+    std::printf("mean ink inside the object: screen %.4f, A3 600 dpi downsampled %.4f (ratio %.3f)\n", ink.screen,
+                ink.print, ink.print / ink.screen);
+    EXPECT_GT(ink.screen, 0.05);
+    EXPECT_NEAR(ink.print / ink.screen, 1.0, 0.05);
+    // The margin stays paper.
+    double margin_ink = 0.0;
+    for (int x = 0; x < page.width; ++x) margin_ink += darkness(page, size_t(x), 3) + darkness(page, size_t(x), size_t(page.height - 3));
+    EXPECT_EQ(margin_ink, 0.0);
+}
+
+TEST(CliPrint, TilesJoinWithoutSeams) {
+    const auto dir = test::temp_dir("cli-print-tiles");
+    const std::string whole = (dir / "whole.png").string(), tiled = (dir / "tiled.png").string();
+    const std::vector<std::string> common = {"render", "--page", "A5", "--dpi", "200", "--height", "600", "--yaw", "30"};
+    std::vector<std::string> a = common, b = common;
+    a.insert(a.end(), {"-o", whole});
+    b.insert(b.end(), {"-o", tiled, "--tile", "300"});  // 1165 x 1654 pixels: 4 x 6 tiles
+    run_ok(a);
+    run_ok(b);
+    const Image one = read_png(whole), many = read_png(tiled);
+    ASSERT_EQ(one.width, many.width);
+    ASSERT_EQ(one.height, many.height);
+    size_t differing = 0, inked = 0;
+    for (size_t i = 0; i < one.pixels.size(); i += 4) {
+        differing += std::abs(int(one.pixels[i]) - int(many.pixels[i])) > 2;
+        inked += one.pixels[i] < 128;
+    }
+    std::printf("%zu of %zu pixels differ between one piece and 300-px tiles (%zu inked)\n", differing,
+                one.pixels.size() / 4, inked);
+    EXPECT_GT(inked, 10000u);
+    EXPECT_LE(double(differing), 0.001 * double(inked));
+}
+
+TEST(CliPrint, OptionsOutOfRangeAreNamed) {
+    for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--dpi", "30", "--page", "A4"}, "--dpi = 30"},
+             {{"--dpi", "300"}, "--dpi needs --page"},
+             {{"--tile", "512"}, "--tile is for print-resolution images"},
+             {{"--dpi", "2400", "--page", "5000x5000mm"}, "at most 65536 a side"}}) {
+        std::vector<std::string> argv = {"render", "-o", (test::temp_dir("cli-print-bad") / "x.png").string()};
+        argv.insert(argv.end(), args.begin(), args.end());
+        const test::CommandResult r = test::run_stipple(argv);
+        EXPECT_NE(r.exit_code, 0);
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace stipple
