@@ -28,7 +28,8 @@ STIPPLE_CONST uint kMaxMergedPolygons = 256;
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
-STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp: the depth words are X8_D24 (else float bits)
+STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
+STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -43,6 +44,8 @@ STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's 
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
+STIPPLE_CONST uint kBindingFacing = 12;           // uint[] (storage): one bit per polygon, set when it faces away
+STIPPLE_CONST uint kBindingLinePieces = 13;       // LinePiecesHeader + LinePiece[] (storage): visible object-space lines
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -57,6 +60,12 @@ STIPPLE_CONST uint kFlagIntrinsic = 4u;        // §2.3 intrinsic depth enhancem
 STIPPLE_CONST uint kFlagRoundPoints = 8u;      // discard outside the disc for large points
 STIPPLE_CONST uint kFlagBackfaceCull = 16u;    // polygons facing away get no stipples (§2.1)
 STIPPLE_CONST uint kFlagToonFade = 32u;        // §3.1 stipples fade near the silhouette (toon mode)
+STIPPLE_CONST uint kFlagTwoSided = 64u;        // polygons facing away are stippled with the flipped normal
+STIPPLE_CONST uint kFlagFacingBits = 128u;     // the density pass writes the facing bits (kBindingFacing)
+STIPPLE_CONST uint kFlagSilhouetteLines = 256u;  // §3.1 Raskar-Cohen lines (the indexed wide-line draw)
+STIPPLE_CONST uint kFlagContours = 512u;       // object-space lines: edges between a front and a back face
+STIPPLE_CONST uint kFlagBorders = 1024u;       // object-space lines: edges of one polygon
+STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral angle above the crease angle
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
@@ -123,6 +132,28 @@ struct SilhouetteLines {
     uint pad0, pad1, pad2;
 };
 
+// Object-space lines (beyond the paper): line_edges.comp walks each contour, border and crease edge
+// across the screen in pixel steps against the depth pass and appends the pieces it finds visible,
+// in pixels (origin at the top-left corner, y down, as plot::Segment); line_pieces.vert draws each
+// piece as a capsule. The header is a VkDrawIndirectCommand (6 vertices per piece appended, so it
+// may exceed 6 * capacity: the pieces beyond the capacity are dropped, and their vertices culled).
+STIPPLE_CONST uint kLineKindContour = 1u;  // the values of plot::LineKind (0 is the Raskar-Cohen silhouette)
+STIPPLE_CONST uint kLineKindBorder = 2u;
+STIPPLE_CONST uint kLineKindCrease = 3u;
+struct LinePiecesHeader {
+    uint vertex_count;
+    uint instance_count;
+    uint first_vertex;
+    uint first_instance;
+    uint capacity;  // pieces the buffer holds after this header
+    uint pad0, pad1, pad2;
+};
+struct LinePiece {
+    float ax, ay, bx, by;  // the visible piece, pixels
+    uint edge;             // index into the edge table (SilhouetteEdge)
+    uint kind;             // kLineKind*
+};
+
 // The indirect path's draw list (kBindingDrawCommands): this header, then DrawCommand per polygon at
 // most. The count is vkCmdDrawIndirectCount's count; the draws start sizeof(DrawCommandsHeader) in.
 struct DrawCommandsHeader {
@@ -165,6 +196,7 @@ struct ObjectUniforms {
     uvec4 flags;            // x: kFlag* bits; y: triangle count; z: silhouette edge count; w: candidate count
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
     vec4 box_size;          // xyz: the box's extent
+    vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; zw: unused
 };
 
 #ifdef __cplusplus

@@ -103,7 +103,8 @@ Info options:
   --json                  print the figures as JSON
 
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
-  --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames
+  --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames, only
+                          the paper's columns (without the contours, borders and creases columns)
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR

@@ -28,6 +28,8 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingMeshIndices, kStorage}, [](const O& o) { return o.geometry.indices.handle(); }},
     {{gpu::kBindingSilhouetteEdges, kStorage}, [](const O& o) { return o.geometry.silhouette_edges.handle(); }},
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
+    {{gpu::kBindingFacing, kStorage}, [](const O& o) { return o.frame.facing.handle(); }},
+    {{gpu::kBindingLinePieces, kStorage}, [](const O& o) { return o.frame.line_pieces.handle(); }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {
