@@ -46,6 +46,7 @@ STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage):
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 STIPPLE_CONST uint kBindingFacing = 12;           // uint[] (storage): one bit per polygon, set when it faces away
 STIPPLE_CONST uint kBindingLinePieces = 13;       // LinePiecesHeader + LinePiece[] (storage): visible object-space lines
+STIPPLE_CONST uint kBindingLineCandidates = 14;   // LineCandidates + uint[] (storage): the edges to walk this frame
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -140,6 +141,17 @@ struct SilhouetteLines {
 STIPPLE_CONST uint kLineKindContour = 1u;  // the values of plot::LineKind (0 is the Raskar-Cohen silhouette)
 STIPPLE_CONST uint kLineKindBorder = 2u;
 STIPPLE_CONST uint kLineKindCrease = 3u;
+// The edges with an object-space line this frame (line_edges.comp lists them, line_walk.comp walks
+// them): a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the count, then one uint
+// per edge: its index in the edge table, its kind in the top two bits.
+STIPPLE_CONST uint kLineKindShift = 30u;
+STIPPLE_CONST uint kLineEdgeMask = (1u << kLineKindShift) - 1u;
+struct LineCandidates {
+    uint groups_x;
+    uint groups_y;
+    uint groups_z;
+    uint count;
+};
 struct LinePiecesHeader {
     uint vertex_count;
     uint instance_count;

@@ -30,6 +30,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
     {{gpu::kBindingFacing, kStorage}, [](const O& o) { return o.frame.facing.handle(); }},
     {{gpu::kBindingLinePieces, kStorage}, [](const O& o) { return o.frame.line_pieces.handle(); }},
+    {{gpu::kBindingLineCandidates, kStorage}, [](const O& o) { return o.frame.line_candidates.handle(); }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

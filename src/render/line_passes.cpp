@@ -1,7 +1,8 @@
 // The frame's lines, drawn from each object's edge table (render/silhouette_edges.hpp):
 //   line edges (compute, after the depth pass): per edge, from its polygons' facing bits, the §3.1
-//     Raskar-Cohen index list and, for contours, borders and creases, the visible pieces found by
-//     walking the edge against the depth pass (shaders/line_edges.comp);
+//     Raskar-Cohen index list and the list of contours, borders and creases (shaders/line_edges.comp);
+//     then per listed edge, its visible pieces, found by walking it against the depth pass
+//     (shaders/line_walk.comp);
 //   lines (one rendering scope): Raskar-Cohen wide lines behind the front faces' depth, and the
 //     object-space pieces as capsules (shaders/line_pieces.*), which need no depth test: the pieces
 //     are already the visible parts, so a line is never nibbled by the surface it lies on.
@@ -41,34 +42,49 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     pieces.depth_format = depth_format_;
     line_pieces_pipeline_ = gpu::create_graphics_pipeline(context_, pieces, layouts_.pipeline);
 
+    line_edges_pipeline_ = gpu::create_compute_pipeline(context_, "line_edges.comp", layouts_.pipeline);
     // Reads the depth pass's words from the splat's frame set (set 1), hence the splat's layout.
     const uint32_t unorm24 = depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
-    line_edges_pipeline_ = gpu::create_compute_pipeline(context_, "line_edges.comp", layouts_.splat_pipeline,
-                                                        {{{gpu::kSpecDepthUnorm24, unorm24}}});
+    line_walk_pipeline_ = gpu::create_compute_pipeline(context_, "line_walk.comp", layouts_.splat_pipeline,
+                                                       {{{gpu::kSpecDepthUnorm24, unorm24}}});
 }
 
 void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
+    bool any_walk = false;
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
         // One instance, no indices yet; the indices follow the header (shared_types.h: why not a bind offset).
         const gpu::SilhouetteLines empty{0u, 1u, gpu::kSilhouetteLinesFirstIndex, 0, 0u, 0u, 0u, 0u};
         vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
+        if (!draws_object_space_lines(object->params)) continue;
+        any_walk = true;
+        const gpu::LineCandidates no_edges{0u, 1u, 1u, 0u};  // no groups yet (y and z are 1)
+        vkCmdUpdateBuffer(cb, object->frame.line_candidates.handle(), 0, sizeof no_edges, &no_edges);
         const gpu::LinePiecesHeader no_pieces{0u, 1u, 0u, 0u, object->frame.line_piece_capacity, 0u, 0u, 0u};
         vkCmdUpdateBuffer(cb, object->frame.line_pieces.handle(), 0, sizeof no_pieces, &no_pieces);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    // The scene depth's buffer exists once a frame has copied the depth; without object-space lines or
-    // the splat this frame the shader does not read it, but set 1 must still be valid.
-    ensure_frame_buffers(splat_extent_.width ? splat_extent_ : VkExtent2D{1, 1});
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_edges_pipeline_);
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
-        VkDescriptorSet sets[] = {object->set, image_set_};
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0, nullptr);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0, nullptr);
         vkCmdDispatch(cb, (object->geometry.silhouette_edge_count + group - 1) / group, 1, 1);
+    }
+    if (any_walk) {  // the listed edges, walked against the depth pass (copied by copy_scene_depth)
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_walk_pipeline_);
+        for (const auto& object : objects_) {
+            if (!draws_edge_lines(*object) || !draws_object_space_lines(object->params)) continue;
+            VkDescriptorSet sets[] = {object->set, image_set_};
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
+                                    nullptr);
+            vkCmdDispatchIndirect(cb, object->frame.line_candidates.handle(), 0);
+        }
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT |

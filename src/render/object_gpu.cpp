@@ -83,6 +83,7 @@ ObjectFrame create_frame_state(const gpu::Context& context, const ObjectGeometry
         path_buffer(frame, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
     frame.silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     frame.facing = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+    frame.line_candidates = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     frame.line_pieces = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((geometry.stipple_count + 31) / 32) : 0;
     frame.debug = Buffer(context, sizeof(gpu::DebugCounters) + mask_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -137,6 +138,9 @@ void ensure_line_buffers(ObjectGpu& object) {
     geometry.border_edge_count = uint32_t(
         std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second_polygon == gpu::kNoPolygon; }));
     if (edges.empty()) return;
+    if (edges.size() > gpu::kLineEdgeMask)
+        fail(std::to_string(edges.size()) + " edges: object-space lines take at most " +
+             std::to_string(gpu::kLineEdgeMask) + " per object");
     const gpu::Context& context = *object.context;
     geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges),
                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -144,6 +148,8 @@ void ensure_line_buffers(ObjectGpu& object) {
         make_lines_buffer(context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
+    object.frame.line_candidates =
+        make_lines_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
     // Room for one visible piece per edge: most edges draw no object-space line, and few of those
     // that do are split by an occluder. Pieces beyond it are dropped (and reported by the read-back).
     object.frame.line_piece_capacity = uint32_t(edges.size()) + 256;
@@ -157,7 +163,9 @@ bool draws_edge_lines(const ObjectGpu& object) {
 }
 
 bool depth_holds_back_faces(const ObjectGpu& object) {
-    return object.params.two_sided || (draws_edge_lines(object) && object.geometry.border_edge_count > 0);
+    // The Raskar-Cohen lines keep the paper's front-face depth (docs/paper-reading.md, "Open surfaces").
+    const bool object_space_lines = draws_object_space_lines(object.params) && draws_edge_lines(object);
+    return object.params.two_sided || (object_space_lines && object.geometry.border_edge_count > 0);
 }
 
 glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center) {

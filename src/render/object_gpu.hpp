@@ -58,6 +58,7 @@ struct ObjectFrame {
     gpu::Buffer cpu_commands;      // cpu path: DrawCommand per surviving range
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
     gpu::Buffer facing;            // one bit per polygon: it faces away this frame (objects with lines)
+    gpu::Buffer line_candidates;   // LineCandidates + this frame's edges with an object-space line
     gpu::Buffer line_pieces;       // LinePiecesHeader + this frame's visible object-space line pieces
     uint32_t line_piece_capacity = 0;
     gpu::Buffer debug;             // DebugCounters + drawn bit mask, when counting
@@ -98,7 +99,7 @@ void ensure_line_buffers(ObjectGpu& object);
 // Whether the object draws lines from its edge table this frame (any kind; the table is built).
 bool draws_edge_lines(const ObjectGpu& object);
 // Whether its depth pass also holds the polygons facing away: they can be seen through an opening
-// (two-sided stipples on them, or lines that they must hide).
+// (two-sided stipples on them, or object-space lines that they must hide).
 bool depth_holds_back_faces(const ObjectGpu& object);
 
 // The rotation about the object's bounding-sphere centre that turns its up axis (ObjectParams::up) to +y.

@@ -36,7 +36,8 @@ StippleRenderer::~StippleRenderer() {
     objects_.clear();
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, density_pipeline_,
                          density_list_pipeline_, facing_pipeline_, draw_commands_pipeline_, toon_pipeline_,
-                         toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_pieces_pipeline_,
+                         toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
+                         line_pieces_pipeline_,
                          splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);

@@ -136,6 +136,7 @@ private:
     VkPipeline facing_pipeline_ = VK_NULL_HANDLE;      // facing bits alone (objects with CPU densities and lines)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
     VkPipeline line_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines from the edge table
+    VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
     VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
     VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
