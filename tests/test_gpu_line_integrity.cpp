@@ -31,11 +31,13 @@ namespace {
 // Every GPU test of this file shares one fixture name, so a failure names its suite.
 class LineIntegrity : public test::GpuTest {};
 
-// Every static mesh of ../shared/models (each skipped with a message when absent), the default scene,
-// and a generated open bowl (empty path) whose inside the views look into.
+// Every mesh of ../shared/models (each skipped with a message when absent; the animated ones in their
+// rest pose: the fox is a triangle soup, the morph cube has split corners), the default scene, and a
+// generated open bowl (empty path) whose inside the views look into.
 std::vector<std::pair<std::string, std::string>> model_files() {
     std::vector<std::pair<std::string, std::string>> files;
-    for (const char* name : {"stanford-bunny.obj", "horse.ply", "ogre.obj", "igea.ply", "spot.obj"}) {
+    for (const char* name : {"stanford-bunny.obj", "horse.ply", "ogre.obj", "igea.ply", "spot.obj", "fox.glb",
+                             "AnimatedMorphCube.gltf"}) {
         std::string path = test::shared_model(name);
         if (path.empty())
             std::printf("%s: absent from the shared models, skipped\n", name);
@@ -65,7 +67,10 @@ Model load_model(const std::string& name, const std::string& path) {
     Model m{name, test::prepare(std::move(mesh), params), {}};
     // Ranked once here rather than by each renderer the model is added to (the costliest part of adding it).
     m.object.stipples.selection = polygon_selection_values(m.object.mesh, params.generation.seed);
-    const std::vector<uint32_t>& indices = m.object.mesh.indices;
+    // The edges as the renderer keys them: corners at one position are one vertex.
+    std::vector<uint32_t> indices = m.object.mesh.indices;
+    const std::vector<uint32_t> welded = weld_by_position(m.object.mesh.positions);
+    for (uint32_t& index : indices) index = welded[index];
     for (size_t t = 0; t + 2 < indices.size(); t += 3)
         for (int k = 0; k < 3; ++k) m.edges.insert(edge_key(indices[t + k], indices[t + (k + 1) % 3]));
     m.table = build_silhouette_edges(indices);

@@ -80,9 +80,12 @@ struct DrawnEdge {
     float length_px = 0.0f;
 };
 
-// The pieces' edges, as vertex pairs of the mesh.
+// The pieces' edges, as vertex pairs of the mesh (its corners welded by position, as the renderer does).
 std::map<std::pair<uint32_t, uint32_t>, DrawnEdge> piece_edges(const Mesh& mesh, const std::vector<gpu::LinePiece>& pieces) {
-    std::vector<gpu::SilhouetteEdge> table = build_silhouette_edges(mesh.indices);
+    std::vector<uint32_t> indices = mesh.indices;
+    const std::vector<uint32_t> welded = weld_by_position(mesh.positions);
+    for (uint32_t& index : indices) index = welded[index];
+    std::vector<gpu::SilhouetteEdge> table = build_silhouette_edges(indices);
     std::map<std::pair<uint32_t, uint32_t>, DrawnEdge> edges;
     for (const gpu::LinePiece& p : pieces) {
         const gpu::SilhouetteEdge& e = table.at(p.edge);
@@ -171,8 +174,23 @@ TEST_F(ObjectLines, HiddenContoursAreRemovedBehindANearerSurface) {
     EXPECT_EQ(deep_inside_near, 0u);
 }
 
+// The mesh with every triangle's corners its own (a triangle soup, as a glTF primitive without indices).
+Mesh triangle_soup(const Mesh& mesh) {
+    Mesh soup = mesh;
+    soup.positions.clear();
+    soup.normals.clear();
+    for (uint32_t& index : soup.indices) {
+        soup.positions.push_back(mesh.positions[index]);
+        soup.normals.push_back(mesh.normals[index]);
+        index = uint32_t(soup.positions.size() - 1);
+    }
+    return soup;
+}
+
 TEST_F(ObjectLines, CreasesAreACubesTwelveEdgesAndNoneOnASphere) {
-    test::Prepared cube = test::prepare(test::make_box(glm::vec3(1.0f)), line_params());
+    // The cube as a triangle soup: its corners are welded by position, so its edges join two faces.
+    test::Prepared cube = test::prepare(triangle_soup(test::make_box(glm::vec3(1.0f))), line_params());
+    ASSERT_EQ(cube.mesh.positions.size(), 36u);
     std::set<std::pair<uint32_t, uint32_t>> seen;
     for (auto [yaw, pitch] : {std::pair{30.0f, 25.0f}, std::pair{210.0f, -25.0f}}) {
         Lines lines = render_lines(*context, cube, line_params(), set_creases, {320, 320}, yaw, pitch);

@@ -133,6 +133,11 @@ void ensure_line_buffers(ObjectGpu& object) {
     std::vector<std::byte> bytes = gpu::read_buffer(*object.context, geometry.indices);
     std::vector<uint32_t> indices(geometry.index_count);
     std::memcpy(indices.data(), bytes.data(), sizeof(uint32_t) * indices.size());
+    bytes = gpu::read_buffer(*object.context, geometry.positions);
+    std::vector<glm::vec3> positions(bytes.size() / sizeof(glm::vec3));
+    std::memcpy(positions.data(), bytes.data(), sizeof(glm::vec3) * positions.size());
+    const std::vector<uint32_t> welded = weld_by_position(positions);
+    for (uint32_t& index : indices) index = welded[index];
     std::vector<gpu::SilhouetteEdge> edges = build_silhouette_edges(indices);
     geometry.silhouette_edge_count = uint32_t(edges.size());
     geometry.border_edge_count = uint32_t(
