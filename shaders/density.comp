@@ -1,6 +1,9 @@
 #version 460
 // The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon. The kListDrawn
-// variant also appends each polygon that draws a stipple to the splat's work list.
+// variant also appends each polygon that draws a stipple to the splat's work list. For objects that
+// draw lines (kFlagFacingBits) it also records which polygons face away, one bit each, so that the
+// line pass reads two bits per edge instead of evaluating both polygons again; the kFacingOnly variant
+// does only that (for objects whose densities come from the CPU).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
@@ -8,6 +11,7 @@
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
+layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -17,15 +21,37 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
 };
+layout(set = 0, binding = kBindingFacing, std430) writeonly buffer Facing { uint facing_away[]; };
+
+const uint kWordsPerGroup = kDensityWorkgroupSize / 32u;
+shared uint group_facing[kWordsPerGroup];
+
+// The group's facing bits gathered in shared memory, then written as whole words (no clear, no
+// global atomics). Called by every invocation of the group (it holds barriers).
+void write_facing_bits(bool in_range, PolygonView p) {
+    uint local = gl_LocalInvocationIndex;
+    if (local < kWordsPerGroup) group_facing[local] = 0u;
+    barrier();
+    if (in_range && polygon_faces_away(p.center, p.normal)) atomicOr(group_facing[local >> 5u], 1u << (local & 31u));
+    barrier();
+    uint word = gl_WorkGroupID.x * kWordsPerGroup + local;
+    if (local < kWordsPerGroup && word < (object.flags.y + 31u) / 32u) facing_away[word] = group_facing[local];
+}
 
 void main() {
     uint t = gl_GlobalInvocationID.x;
-    if (t >= object.flags.y) return;
+    bool in_range = t < object.flags.y;
     // The candidates run from this polygon's first stipple to the next one's (first_stipple is constant,
     // written once at creation).
-    uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
-    float candidates = float(end - draws[t].first_stipple);
-    float density = polygon_density(polygon_view(infos[t], candidates, object), density_params(frame, object));
+    float candidates = 0.0f;
+    if (in_range && !kFacingOnly) {
+        uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
+        candidates = float(end - draws[t].first_stipple);
+    }
+    PolygonView p = polygon_view(infos[in_range ? t : 0u], candidates, object);
+    if ((object.flags.x & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
+    if (kFacingOnly || !in_range) return;
+    float density = polygon_density(p, density_params(frame, object));
     draws[t].density = density;
     if (!kListDrawn) return;
     // One atomic add per subgroup hands out its slots; the slot ranges tile 0, 1, 2, ..., so each

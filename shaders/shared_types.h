@@ -28,8 +28,9 @@ STIPPLE_CONST uint kMaxMergedPolygons = 256;
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
-STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp: the depth words are X8_D24 (else float bits)
+STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
+STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -45,6 +46,9 @@ STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's t
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + VisibleStipple[] (storage), when recording
+STIPPLE_CONST uint kBindingFacing = 13;           // uint[] (storage): one bit per polygon, set when it faces away
+STIPPLE_CONST uint kBindingLinePieces = 14;       // LinePiecesHeader + LinePiece[] (storage): visible object-space lines
+STIPPLE_CONST uint kBindingLineCandidates = 15;   // LineCandidates + uint[] (storage): the edges to walk this frame
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -59,6 +63,12 @@ STIPPLE_CONST uint kFlagIntrinsic = 4u;        // §2.3 intrinsic depth enhancem
 STIPPLE_CONST uint kFlagRoundPoints = 8u;      // discard outside the disc for large points
 STIPPLE_CONST uint kFlagBackfaceCull = 16u;    // polygons facing away get no stipples (§2.1)
 STIPPLE_CONST uint kFlagToonFade = 32u;        // §3.1 stipples fade near the silhouette (toon mode)
+STIPPLE_CONST uint kFlagTwoSided = 64u;        // polygons facing away are stippled with the flipped normal
+STIPPLE_CONST uint kFlagFacingBits = 128u;     // the density pass writes the facing bits (kBindingFacing)
+STIPPLE_CONST uint kFlagSilhouetteLines = 256u;  // §3.1 Raskar-Cohen lines (the indexed wide-line draw)
+STIPPLE_CONST uint kFlagContours = 512u;       // object-space lines: edges between a front and a back face
+STIPPLE_CONST uint kFlagBorders = 1024u;       // object-space lines: edges of one polygon
+STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral angle above the crease angle
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
@@ -125,6 +135,39 @@ struct SilhouetteLines {
     uint pad0, pad1, pad2;
 };
 
+// Object-space lines (beyond the paper): line_edges.comp walks each contour, border and crease edge
+// across the screen in pixel steps against the depth pass and appends the pieces it finds visible,
+// in pixels (origin at the top-left corner, y down, as plot::Segment); line_pieces.vert draws each
+// piece as a capsule. The header is a VkDrawIndirectCommand (6 vertices per piece appended, so it
+// may exceed 6 * capacity: the pieces beyond the capacity are dropped, and their vertices culled).
+STIPPLE_CONST uint kLineKindContour = 1u;  // the values of plot::LineKind (0 is the Raskar-Cohen silhouette)
+STIPPLE_CONST uint kLineKindBorder = 2u;
+STIPPLE_CONST uint kLineKindCrease = 3u;
+// The edges with an object-space line this frame (line_edges.comp lists them, line_walk.comp walks
+// them): a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the count, then one uint
+// per edge: its index in the edge table, its kind in the top two bits.
+STIPPLE_CONST uint kLineKindShift = 30u;
+STIPPLE_CONST uint kLineEdgeMask = (1u << kLineKindShift) - 1u;
+struct LineCandidates {
+    uint groups_x;
+    uint groups_y;
+    uint groups_z;
+    uint count;
+};
+struct LinePiecesHeader {
+    uint vertex_count;
+    uint instance_count;
+    uint first_vertex;
+    uint first_instance;
+    uint capacity;  // pieces the buffer holds after this header
+    uint pad0, pad1, pad2;
+};
+struct LinePiece {
+    float ax, ay, bx, by;  // the visible piece, pixels
+    uint edge;             // index into the edge table (SilhouetteEdge)
+    uint kind;             // kLineKind*
+};
+
 // The indirect path's draw list (kBindingDrawCommands): this header, then DrawCommand per polygon at
 // most. The count is vkCmdDrawIndirectCount's count; the draws start sizeof(DrawCommandsHeader) in.
 struct DrawCommandsHeader {
@@ -182,6 +225,7 @@ struct ObjectUniforms {
     uvec4 flags;            // x: kFlag* bits; y: triangle count; z: silhouette edge count; w: candidate count
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
     vec4 box_size;          // xyz: the box's extent
+    vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; zw: unused
 };
 
 #ifdef __cplusplus

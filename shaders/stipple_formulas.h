@@ -85,10 +85,32 @@ STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_
     return clamp(user_width * projected_radius_px / kLineReferenceRadiusPx, 1.0f, user_width);
 }
 
-// §3.1 Whether a polygon faces away from the viewer (its stipples are culled, its edges drawn as
-// Raskar-Cohen lines): N.E <= 0 against the eye ray to its centroid, the test polygon_density_terms uses.
+// §3.1 Whether a polygon faces away from the viewer (its stipples are culled unless two-sided; an edge
+// between one that does and one that does not is a contour): N.E <= 0 against the eye ray to its
+// centroid, the test polygon_density_terms uses. The density pass records it per polygon (one bit).
 STIPPLE_FN bool polygon_faces_away(vec3 view_center, vec3 view_normal) {
     return dot(view_normal, -view_center) <= 0.0f;
+}
+
+// Which lines an edge of the mesh carries this frame, from whether the polygons on either side face
+// away (a border edge has no second polygon: `has_second` false) and the cosine of its dihedral angle.
+// Raskar-Cohen (§3.1) draws the back faces' edges and lets the front faces' depth keep the silhouette;
+// of those edges we keep the ones that can be a silhouette: one side faces away and the other does not
+// or is missing. An edge between two back faces passes the depth test only within a line width of a
+// contour, which its own wide line covers (on a closed mesh every back face lies behind the front
+// surface), so little is lost; and on an open mesh those are the edges that inked the back faces
+// seen through an opening as a solid patch.
+STIPPLE_FN bool raskar_cohen_edge(bool first_away, bool has_second, bool second_away) {
+    return first_away != (has_second && second_away);
+}
+
+STIPPLE_FN bool contour_edge(bool first_away, bool has_second, bool second_away) {
+    return has_second && first_away != second_away;
+}
+
+// A crease: the polygons' unit normals make an angle above the crease angle (its cosine given).
+STIPPLE_FN bool crease_edge(bool has_second, vec3 first_normal, vec3 second_normal, float cos_crease_angle) {
+    return has_second && dot(first_normal, second_normal) < cos_crease_angle;
 }
 
 // §2.1 No popping: a polygon with fractional density d draws stipples 0..ceil(d)-1, the last one
@@ -180,6 +202,12 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     float distance = -p.center.z;
     if (distance <= 0.0f || p.candidates <= 0.0f) return result;
     float facing = dot(p.normal, -p.center) / length(p.center);
+    // Two-sided: a polygon facing away is seen from its inside (through an opening), so it takes the
+    // outside's tone rule with its normal flipped (shading, orientation, toon fade).
+    if ((q.flags & kFlagTwoSided) != 0u && facing < 0.0f) {
+        p.normal = -p.normal;
+        facing = -facing;
+    }
     if ((q.flags & kFlagBackfaceCull) != 0u && facing <= 0.0f) return result;
 
     float density = p.candidates;

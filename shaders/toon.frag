@@ -13,7 +13,9 @@ layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms fram
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 
 void main() {
-    vec3 normal = normalize(in_normal_view);
+    // A polygon facing away is drawn only when it can be seen through an opening (its object is
+    // two-sided or has borders): it is seen from its inside, so its normal is flipped.
+    vec3 normal = gl_FrontFacing ? normalize(in_normal_view) : -normalize(in_normal_view);
     vec3 to_eye = normalize(-in_position_view);
     float ink = toon_surface_ink(dot(normal, to_eye), object.shading.z);
     out_color = vec4(mix(frame.paper_color.rgb, frame.ink_color.rgb, ink), 1.0);

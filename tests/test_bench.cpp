@@ -322,7 +322,14 @@ TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     EXPECT_FALSE(j["scans_found"].get<bool>());
     ASSERT_EQ(j["models"].size(), 1u);
     EXPECT_TRUE(j["models"][0]["procedural"].get<bool>());
-    EXPECT_EQ(j["models"][0]["cells"].size(), 2u);  // indirect, without and with lines
+    // Indirect without lines, with Raskar-Cohen lines, then with each kind of object-space line.
+    ASSERT_EQ(j["models"][0]["cells"].size(), 5u);
+    const char* columns[] = {"indirect", "indirect + lines", "indirect + contours", "indirect + borders",
+                             "indirect + creases"};
+    for (size_t i = 0; i < 5; ++i) {
+        EXPECT_EQ(j["models"][0]["cells"][i]["column"], columns[i]);
+        EXPECT_EQ(j["models"][0]["cells"][i]["paper_fps"].is_null(), i >= 2) << columns[i];  // beyond the paper
+    }
     // Compared with the row of the same polygon count (the report's header says the models are spheres).
     EXPECT_DOUBLE_EQ(j["models"][0]["cells"][0]["paper_fps"].get<double>(), 60.39);
 }

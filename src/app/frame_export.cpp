@@ -30,6 +30,13 @@ void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std:
 
 }  // namespace
 
+std::vector<plot::Segment> visible_line_segments(const StippleRenderer& renderer, size_t object) {
+    std::vector<plot::Segment> segments;
+    for (const gpu::LinePiece& p : renderer.read_line_pieces(object).pieces)
+        segments.push_back({{p.ax, p.ay}, {p.bx, p.by}, uint32_t(object), plot::LineKind(p.kind)});
+    return segments;
+}
+
 PrintLayout print_layout(const PrintOptions& options) {
     if (!(options.dpi >= 50.0 && options.dpi <= 2400.0))
         fail("--dpi = " + std::to_string(options.dpi) + " must be in 50..2400");
@@ -95,6 +102,10 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
             const uint32_t polygon = uint32_t(std::upper_bound(first.begin(), first.end(), s.index) - first.begin() - 1);
             drawing.dots.push_back({{s.x, s.y}, radius, s.intensity, uint32_t(i), polygon});
         }
+        // The visible pieces of the object-space lines (contours, borders, creases), walked against the
+        // depth pass on the GPU. The image-space Raskar-Cohen lines are wide back-face edges drawn under
+        // the surface: they have no visible pieces to export (see docs/plot-export.md).
+        for (const plot::Segment& segment : visible_line_segments(renderer, i)) drawing.segments.push_back(segment);
     }
     return drawing;
 }

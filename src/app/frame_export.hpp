@@ -21,6 +21,10 @@ namespace stipple::app {
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                               const FrameView& view);
 
+// The last frame's visible object-space line pieces of one object as the export takes them (pixels,
+// origin top-left, y down).
+std::vector<plot::Segment> visible_line_segments(const StippleRenderer& renderer, size_t object);
+
 // Print-resolution images (`-o poster.png --page A3 --dpi 600`): the page at the resolution asked for,
 // the drawing inside the margins, enlarged from the screen image it would be at `screen_height` pixels
 // (FrameView::detail_scale): the same stipples, as discs of the same ink, so the print has the screen's

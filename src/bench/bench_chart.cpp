@@ -48,7 +48,7 @@ struct Series {
     std::string label;
     std::string colour;
     bool dashed = false;
-    bool square = false;  // marker: squares for "+ lines", circles otherwise
+    bool square = false;  // marker: squares for columns with lines (any kind), circles otherwise
     std::vector<std::pair<double, double>> points;  // (polygons, fps), sorted by polygons
 };
 
@@ -95,10 +95,10 @@ std::string tick_label(double v, bool polygons) {
 std::vector<Series> collect_series(const BenchResults& r) {
     std::vector<Series> series;
     for (const Column& c : r.columns) {
-        Series s{"ours: " + c.name(), path_colour(c.path), false, c.lines, {}};
+        Series s{"ours: " + c.name(), path_colour(c.path), false, c.lines || c.object_lines != ObjectLines::None, {}};
         for (const ModelResult& m : r.models)
             for (const CellResult& cell : m.cells)
-                if (cell.column.path == c.path && cell.column.lines == c.lines && cell.median_fps > 0)
+                if (cell.column == c && cell.median_fps > 0)
                     s.points.emplace_back(double(m.entry.triangles), cell.median_fps);
         std::sort(s.points.begin(), s.points.end());
         if (!s.points.empty()) series.push_back(std::move(s));

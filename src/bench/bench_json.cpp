@@ -17,6 +17,7 @@ json cell_json(const CellResult& cell) {
     json j = {
         {"path", density_path_name(cell.column.path)},
         {"silhouettes", cell.column.lines ? "lines" : "none"},
+        {"object_lines", object_lines_name(cell.column.object_lines)},
         {"column", cell.column.name()},
         {"median_fps", cell.median_fps},
         {"min_fps", cell.min_fps},
@@ -78,6 +79,7 @@ std::string json_report(const BenchResults& r) {
         columns.push_back({{"name", c.name()},
                            {"path", density_path_name(c.path)},
                            {"silhouettes", c.lines ? "lines" : "none"},
+                           {"object_lines", object_lines_name(c.object_lines)},
                            {"paper_column", paper_column_name(c)}});
     json paper = json::array();
     for (const PaperRow& row : kPaperTable)

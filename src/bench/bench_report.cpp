@@ -20,7 +20,7 @@ std::string format(const char* fmt, auto... args) {
 
 const CellResult* find_cell(const ModelResult& model, const Column& column) {
     for (const CellResult& cell : model.cells)
-        if (cell.column.path == column.path && cell.column.lines == column.lines) return &cell;
+        if (cell.column == column) return &cell;
     return nullptr;
 }
 
@@ -66,7 +66,8 @@ void table1_layout(std::ostringstream& md, const BenchResults& r) {
             for (bool cpu : {false, true}) {
                 const CellResult* best = nullptr;
                 for (const CellResult& cell : m.cells)
-                    if (cell.column.lines == lines && density_on_cpu(cell.column.path) == cpu && cell.paper_fps &&
+                    if (cell.column.lines == lines && cell.column.object_lines == ObjectLines::None &&
+                        density_on_cpu(cell.column.path) == cpu && cell.paper_fps &&
                         (!best || cell.median_fps > best->median_fps))
                         best = &cell;
                 if (best)
@@ -85,7 +86,8 @@ void comparison_table(std::ostringstream& md, const BenchResults& r) {
     md << "Each cell: our median fps / the paper's (GeForce3 Ti 500, 2002) = the ratio ours/paper, **bold** where we "
           "are below the paper. The paper's columns say where the density is computed: \"vertex program\" (GPU) is "
           "compared with our vertex, indirect and splat paths, \"no vertex program\" (CPU) with our cpu and "
-          "cpu-splat paths; \"+ lines\" adds Raskar-Cohen silhouettes.\n\n";
+          "cpu-splat paths; \"+ lines\" adds Raskar-Cohen silhouettes; \"+ contours\", \"+ borders\" and \"+ creases\" "
+          "add one kind of object-space line instead (beyond the paper, so without a paper figure).\n\n";
     md << "| model | polygons (paper) | triangles (ours) |";
     for (const Column& c : r.columns) md << " " << c.name() << " |";
     md << "\n|---|---:|---:|";

@@ -55,6 +55,9 @@ void set_column(StippleRenderer& renderer, const Column& column) {
     ObjectParams& params = renderer.params(0);
     params.density_path = column.path;
     params.silhouette_lines = column.lines;
+    params.contours = column.object_lines == ObjectLines::Contours;
+    params.borders = column.object_lines == ObjectLines::Borders;
+    params.creases = column.object_lines == ObjectLines::Creases;
 }
 
 // Share of covered pixels (depth < 1) whose red channel is below 128.
@@ -180,7 +183,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     results.models_dir = options.models_dir.string();
     results.cache_dir = options.cache_dir.string();
     results.scans_found = scans_available(options.models_dir);
-    results.columns = make_columns(options.paths.empty() ? all_density_paths() : options.paths);
+    results.columns = make_columns(options.paths.empty() ? all_density_paths() : options.paths, options.object_lines);
 
     // The device first: a bad --device fails before any model is derived.
     gpu::ContextOptions context_options;

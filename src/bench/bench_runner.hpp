@@ -36,6 +36,7 @@ struct BenchOptions {
     uint32_t width = 1280, height = 1024;
     int device = -1;                  // Vulkan device index (-1: the best)
     bool quick = false;               // recorded in the results (the caller picks the reduced set)
+    bool object_lines = true;         // also the columns with contours, borders, creases (beyond the paper)
     std::filesystem::path models_dir = ModelSetOptions::default_models_dir();
     std::filesystem::path cache_dir = ModelSetOptions::default_cache_dir();
     std::filesystem::path image_dir;  // where to write each model's standard frame as PNG ("" = none)

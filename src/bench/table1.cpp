@@ -14,9 +14,25 @@ std::string paper_row_names() {
     return names;
 }
 
-std::string Column::name() const { return std::string(density_path_name(path)) + (lines ? " + lines" : ""); }
+const char* object_lines_name(ObjectLines lines) {
+    switch (lines) {
+        case ObjectLines::None: return "none";
+        case ObjectLines::Contours: return "contours";
+        case ObjectLines::Borders: return "borders";
+        case ObjectLines::Creases: break;
+    }
+    return "creases";
+}
+
+std::string Column::name() const {
+    std::string name = density_path_name(path);
+    if (lines) name += " + lines";
+    if (object_lines != ObjectLines::None) name += std::string(" + ") + object_lines_name(object_lines);
+    return name;
+}
 
 std::optional<double> paper_fps(const PaperRow& row, const Column& column) {
+    if (column.object_lines != ObjectLines::None) return std::nullopt;
     if (density_on_cpu(column.path)) return column.lines ? row.cpu_lines : row.cpu;
     return column.lines ? row.vertex_lines : row.vertex;
 }
@@ -26,10 +42,13 @@ std::string paper_column_name(const Column& column) {
     return (column.lines ? "stipple & silhouette, " : "stipple only, ") + program;
 }
 
-std::vector<Column> make_columns(const std::vector<DensityPath>& paths) {
+std::vector<Column> make_columns(const std::vector<DensityPath>& paths, bool object_lines) {
     std::vector<Column> columns;
     for (bool lines : {false, true})
         for (DensityPath path : paths) columns.push_back({path, lines});
+    if (object_lines)
+        for (ObjectLines kind : {ObjectLines::Contours, ObjectLines::Borders, ObjectLines::Creases})
+            for (DensityPath path : paths) columns.push_back({path, false, kind});
     return columns;
 }
 

@@ -36,23 +36,32 @@ const PaperRow* find_paper_row(const std::string& name);
 // Names of all rows, comma separated (for messages).
 std::string paper_row_names();
 
-// A column of our table: a density path, without or with Raskar-Cohen lines (§3.1).
+// Beyond the paper: one kind of object-space line per column (ObjectParams::contours, borders, creases).
+enum class ObjectLines { None, Contours, Borders, Creases };
+const char* object_lines_name(ObjectLines lines);  // "none", "contours", "borders", "creases"
+
+// A column of our table: a density path, without or with Raskar-Cohen lines (§3.1), or with one kind
+// of object-space line instead.
 struct Column {
     DensityPath path = DensityPath::Vertex;
-    bool lines = false;
+    bool lines = false;  // the paper's silhouettes (Raskar-Cohen)
+    ObjectLines object_lines = ObjectLines::None;
 
-    std::string name() const;  // "vertex", "vertex + lines"
+    std::string name() const;  // "vertex", "vertex + lines", "vertex + contours"
+    bool operator==(const Column&) const = default;
 };
 
-// The paper's figure for the matching column. The paper's columns say where the density is computed:
+// The paper's figure for the matching column (none for object-space lines, which it does not have).
+// The paper's columns say where the density is computed:
 // "vertex program" on the GPU (our vertex, indirect and splat paths), "no vertex program" on the CPU
 // (our cpu and cpu-splat paths). How the stipples are then drawn is ours to choose.
 std::optional<double> paper_fps(const PaperRow& row, const Column& column);
 // The paper's column title for our column.
 std::string paper_column_name(const Column& column);
 
-// The columns for these paths: each path without lines, then each with lines.
-std::vector<Column> make_columns(const std::vector<DensityPath>& paths);
+// The columns for these paths: each path without lines, then each with lines, then (with
+// `object_lines`) each with contours, with borders and with creases.
+std::vector<Column> make_columns(const std::vector<DensityPath>& paths, bool object_lines = false);
 
 // Every density path the renderer has (kAllDensityPaths), in its order.
 std::vector<DensityPath> all_density_paths();

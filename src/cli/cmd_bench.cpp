@@ -49,6 +49,7 @@ int run_bench(const std::vector<std::string>& argv) {
 
     bench::BenchOptions options;
     options.quick = args.flag("--quick");
+    options.object_lines = !options.quick;  // --quick keeps to the paper's columns
     // --quick: the two smallest rows, the paper's two paths with and without lines, 5 timed frames.
     options.frames = int(bounded(args, "--frames", options.quick ? 5 : 20, 1, 100000));
     options.warmup = int(bounded(args, "--warmup", 3, 0, 1000));

@@ -136,7 +136,8 @@ when read; a damaged entry is reported and regenerated)
                           entries are removed beyond it
 
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
-  --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames
+  --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames, only
+                          the paper's columns (without the contours, borders and creases columns)
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR

@@ -25,6 +25,11 @@ inline constexpr DensityPath kAllDensityPaths[] = {DensityPath::Vertex, DensityP
 inline bool density_on_cpu(DensityPath path) { return path == DensityPath::Cpu || path == DensityPath::CpuSplat; }
 inline bool draws_by_splat(DensityPath path) { return path == DensityPath::Splat || path == DensityPath::CpuSplat; }
 
+// Which axis of the model file points up. The object is turned about its bounding-sphere centre so
+// that this axis becomes +y, before the scene's transform places it (scanned and CAD models are often
+// z-up; the viewer's orbit and the default light assume y-up).
+enum class UpAxis { X, Y, Z, NegX, NegY, NegZ };
+
 const char* density_path_name(DensityPath path);
 std::optional<DensityPath> parse_density_path(const std::string& name);
 
@@ -58,7 +63,19 @@ struct ObjectParams {
     float silhouette_width = 4.0f;    // line width in pixels at the object's reference size
     bool silhouette_thinning = true;  // lines thin as the projected bounding sphere shrinks (Fig. 8)
     float toon_sharpness = 4.0f;      // steepness of the toon ramps (surface darkening, stipple fade)
+    // Object-space lines from the mesh's edges (beyond the paper), hidden parts removed.
+    bool contours = false;            // edges between a polygon facing the viewer and one facing away
+    bool borders = false;             // edges of one polygon (the rims of open surfaces)
+    bool creases = false;             // edges whose polygons' normals differ by more than crease_angle
+    float crease_angle = 60.0f;       // degrees
+    // Open surfaces: polygons facing away, seen through an opening, get stipples with the flipped normal.
+    bool two_sided = false;
+    UpAxis up = UpAxis::Y;
 };
+
+// Whether the object draws any kind of line from the mesh's edges (Raskar-Cohen or object-space).
+inline bool draws_object_space_lines(const ObjectParams& p) { return p.contours || p.borders || p.creases; }
+inline bool draws_edge_lines(const ObjectParams& p) { return p.silhouette_lines || draws_object_space_lines(p); }
 
 // Throws stipple::Error naming the first parameter out of its range (param_table.hpp's wording).
 void validate_params(const ObjectParams& params);

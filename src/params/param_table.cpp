@@ -16,6 +16,7 @@ using P = ObjectParams;
 
 constexpr const char* kDensityPathNames[] = {"vertex", "cpu", "indirect", "splat", "cpu-splat"};
 constexpr const char* kSilhouetteNames[] = {"none", "lines", "toon", "both"};
+constexpr const char* kUpAxisNames[] = {"x", "y", "z", "-x", "-y", "-z"};  // UpAxis's order
 
 // The old single switch for both §3.1 methods, read into the two independent ones.
 double silhouette_alias_get(const P& p) { return double(int(p.silhouette_lines) | int(p.toon) << 1); }
@@ -90,6 +91,16 @@ const ParamSpec kTable[] = {
      ParamType::Choice, 0, 0, false, kDensityPathNames, ParamEffect::Frame, ParamWidget::Combo, false,
      [](const P& p) { return double(int(p.density_path)); },
      [](P& p, double v) { p.density_path = DensityPath(int(v)); }},
+    {"two_sided", "two-sided", "two-sided", kDrawing,
+     "polygons facing away, seen through an opening of an open surface, get stipples and shading with "
+     "their normal flipped (by the outside's tone rule)",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.two_sided); }, [](P& p, double v) { p.two_sided = v != 0.0; }},
+    {"up", "up", "up axis", kDrawing,
+     "the model's up axis: the object is turned about its bounding-sphere centre so that this axis points "
+     "up (+y), before the scene's transform",
+     ParamType::Choice, 0, 0, false, kUpAxisNames, ParamEffect::Frame, ParamWidget::Combo, false,
+     [](const P& p) { return double(int(p.up)); }, [](P& p, double v) { p.up = UpAxis(int(v)); }},
 
     {"silhouette_lines", "silhouette-lines", "silhouette lines", kLines,
      "Raskar-Cohen silhouette lines: the edges of polygons facing away drawn as wide lines behind the "
@@ -111,6 +122,24 @@ const ParamSpec kTable[] = {
      "steepness of the toon ramps (surface darkening, stipple fade)", ParamType::Float, 0.5, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::LogSlider, false, [](const P& p) { return double(p.toon_sharpness); },
      [](P& p, double v) { p.toon_sharpness = float(v); }},
+    {"contours", "contours", "contours", kLines,
+     "object-space contour lines (beyond the paper): edges between a polygon facing the viewer and one "
+     "facing away, hidden parts removed, as wide as the silhouette lines",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.contours); }, [](P& p, double v) { p.contours = v != 0.0; }},
+    {"borders", "borders", "borders", kLines,
+     "object-space border lines: edges of one polygon (the rims of open surfaces), hidden parts removed",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.borders); }, [](P& p, double v) { p.borders = v != 0.0; }},
+    {"creases", "creases", "creases", kLines,
+     "object-space crease lines: edges whose polygons' normals differ by more than the crease angle, "
+     "hidden parts removed",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.creases); }, [](P& p, double v) { p.creases = v != 0.0; }},
+    {"crease_angle", "crease-angle", "crease angle deg", kLines,
+     "the dihedral angle in degrees above which an edge is a crease", ParamType::Float, 0.0, 180.0, false, {},
+     ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.crease_angle); },
+     [](P& p, double v) { p.crease_angle = float(v); }},
     {"silhouette", "silhouette", "silhouette", kLines,
      "the old single switch: none, lines (silhouette lines), toon, or both; sets silhouette_lines and toon",
      ParamType::Choice, 0, 0, false, kSilhouetteNames, ParamEffect::Frame, ParamWidget::Hidden, true,

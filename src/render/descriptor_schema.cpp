@@ -29,6 +29,9 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingSilhouetteEdges, kStorage}, [](const O& o) { return o.geometry.silhouette_edges.handle(); }},
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
     {{gpu::kBindingVisibleStipples, kStorage}, [](const O& o) { return o.frame.visible_stipples.handle(); }},
+    {{gpu::kBindingFacing, kStorage}, [](const O& o) { return o.frame.facing.handle(); }},
+    {{gpu::kBindingLinePieces, kStorage}, [](const O& o) { return o.frame.line_pieces.handle(); }},
+    {{gpu::kBindingLineCandidates, kStorage}, [](const O& o) { return o.frame.line_candidates.handle(); }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

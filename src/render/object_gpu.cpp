@@ -97,6 +97,9 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     frame.silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     frame.visible_stipples = Buffer(context, kPathBufferPlaceholderBytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                     MemoryUse::DeviceLocal);
+    frame.facing = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+    frame.line_candidates = make_lines_buffer(context, kPathBufferPlaceholderBytes);
+    frame.line_pieces = make_lines_buffer(context, kPathBufferPlaceholderBytes);
     const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((geometry.stipple_count + 31) / 32) : 0;
     frame.debug = Buffer(context, sizeof(gpu::DebugCounters) + mask_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback);
@@ -157,7 +160,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     return object;
 }
 
-void ensure_silhouette_edges(ObjectGpu& object) {
+void ensure_line_buffers(ObjectGpu& object) {
     ObjectGeometry& geometry = object.geometry;
     if (geometry.silhouette_edges_built) return;
     geometry.silhouette_edges_built = true;
@@ -165,22 +168,73 @@ void ensure_silhouette_edges(ObjectGpu& object) {
     std::vector<std::byte> bytes = gpu::read_buffer(*object.context, geometry.indices);
     std::vector<uint32_t> indices(geometry.index_count);
     std::memcpy(indices.data(), bytes.data(), sizeof(uint32_t) * indices.size());
+    bytes = gpu::read_buffer(*object.context, geometry.positions);
+    std::vector<glm::vec3> positions(bytes.size() / sizeof(glm::vec3));
+    std::memcpy(positions.data(), bytes.data(), sizeof(glm::vec3) * positions.size());
+    const std::vector<uint32_t> welded = weld_by_position(positions);
+    for (uint32_t& index : indices) index = welded[index];
     std::vector<gpu::SilhouetteEdge> edges = build_silhouette_edges(indices);
     geometry.silhouette_edge_count = uint32_t(edges.size());
+    geometry.border_edge_count = uint32_t(
+        std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second_polygon == gpu::kNoPolygon; }));
     if (edges.empty()) return;
-    geometry.silhouette_edges = gpu::create_device_buffer(*object.context, std::span<const gpu::SilhouetteEdge>(edges),
+    if (edges.size() > gpu::kLineEdgeMask)
+        fail(std::to_string(edges.size()) + " edges: object-space lines take at most " +
+             std::to_string(gpu::kLineEdgeMask) + " per object");
+    const gpu::Context& context = *object.context;
+    geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges),
                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     object.frame.silhouette_lines =
-        make_lines_buffer(*object.context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
+        make_lines_buffer(context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
+    object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
+    object.frame.line_candidates =
+        make_lines_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
+    // Room for one visible piece per edge: most edges draw no object-space line, and few of those
+    // that do are split by an occluder. Pieces beyond it are dropped (and reported by the read-back).
+    object.frame.line_piece_capacity = uint32_t(edges.size()) + 256;
+    object.frame.line_pieces =
+        make_lines_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
     write_object_descriptors(object);
 }
 
-gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view) {
+bool draws_edge_lines(const ObjectGpu& object) {
+    return draws_edge_lines(object.params) && object.geometry.silhouette_edge_count > 0;
+}
+
+bool depth_holds_back_faces(const ObjectGpu& object) {
+    // The Raskar-Cohen lines keep the paper's front-face depth (docs/paper-reading.md, "Open surfaces").
+    const bool object_space_lines = draws_object_space_lines(object.params) && draws_edge_lines(object);
+    return object.params.two_sided || (object_space_lines && object.geometry.border_edge_count > 0);
+}
+
+glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center) {
+    // Columns: where the model's x, y and z axes go. Each is a proper rotation taking `up` to +y.
+    glm::mat3 r(1.0f);
+    switch (up) {
+        case UpAxis::Y: return glm::mat4(1.0f);
+        case UpAxis::Z: r = glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)); break;     // -90 about x
+        case UpAxis::NegZ: r = glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)); break;  // +90 about x
+        case UpAxis::X: r = glm::mat3(glm::vec3(0, 1, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 0, 1)); break;     // +90 about z
+        case UpAxis::NegX: r = glm::mat3(glm::vec3(0, -1, 0), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1)); break;  // -90 about z
+        case UpAxis::NegY: r = glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 0, 1)); break; // 180 about z
+    }
+    // About the bounding-sphere centre: the object stays where its scene (and the camera's framing) put it.
+    glm::mat4 m(r);
+    m[3] = glm::vec4(center - r * center, 1.0f);
+    return m;
+}
+
+glm::mat4 object_to_world(const ObjectGpu& object) {
+    return object.model * up_axis_rotation(object.params.up, object.polygons.bounds.center);
+}
+
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, float line_width) {
     const ObjectParams& p = object.params;
     const Sphere& bounds = object.polygons.bounds;
     gpu::ObjectUniforms u{};
-    u.model = object.model;
-    u.model_view = view.camera.view * object.model;
+    u.model = object_to_world(object);
+    u.model_view = view.camera.view * u.model;
     u.normal_view = glm::inverseTranspose(u.model_view);
     float scale = linear_scale(object.model);
     float radius_world = std::max(bounds.radius * scale, 1e-20f);
@@ -198,17 +252,26 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
     if (print || draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
+    if (p.two_sided) flags |= gpu::kFlagTwoSided;
     const ObjectGeometry& g = object.geometry;
+    if (draws_edge_lines(object)) {
+        flags |= gpu::kFlagFacingBits;
+        if (p.silhouette_lines) flags |= gpu::kFlagSilhouetteLines;
+        if (p.contours) flags |= gpu::kFlagContours;
+        if (p.borders) flags |= gpu::kFlagBorders;
+        if (p.creases) flags |= gpu::kFlagCreases;
+    }
     u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);
     u.box_min = glm::vec4(object.polygons.box_min, 0.0f);
     u.box_size = glm::vec4(object.polygons.box_size, 0.0f);
+    u.lines = glm::vec4(line_width, std::cos(glm::radians(p.crease_angle)), 0.0f, 0.0f);
     return u;
 }
 
 float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width) {
     const Sphere& bounds = object.polygons.bounds;
     float radius_world = bounds.radius * linear_scale(object.model);
-    glm::vec3 center_view = glm::vec3(view.camera.view * object.model * glm::vec4(bounds.center, 1.0f));
+    glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
     float distance = std::max(-center_view.z, 1e-6f);
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
     float projected_radius =

@@ -32,9 +32,11 @@ struct ObjectGeometry {
     gpu::Buffer normals;    // mesh vertex normals (toon silhouettes)
     gpu::Buffer indices;    // mesh triangles
     gpu::Buffer stipples;   // StippleVertex per candidate: (u, v) in its polygon, so it follows the surface
-    // Every edge of the mesh once with its polygons (§3.1 lines), built the first time lines are drawn.
+    // Every edge of the mesh once with its polygons (§3.1 and object-space lines), built the first time
+    // lines are drawn.
     gpu::Buffer silhouette_edges;
     uint32_t silhouette_edge_count = 0;
+    uint32_t border_edge_count = 0;  // edges with one polygon: the surface is open
     bool silhouette_edges_built = false;
 };
 
@@ -55,11 +57,15 @@ struct ObjectFrame {
     gpu::Buffer gpu_commands;      // indirect path: DrawCommandsHeader + DrawCommand per polygon
     gpu::Buffer cpu_commands;      // cpu path: DrawCommand per surviving range
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
+    gpu::Buffer facing;            // one bit per polygon: it faces away this frame (objects with lines)
+    gpu::Buffer line_candidates;   // LineCandidates + this frame's edges with an object-space line
+    gpu::Buffer line_pieces;       // LinePiecesHeader + this frame's visible object-space line pieces
+    uint32_t line_piece_capacity = 0;
     gpu::Buffer debug;             // DebugCounters + drawn bit mask, when counting
     gpu::Buffer visible_stipples;  // VisibleStipplesHeader + VisibleStipple per candidate, when recording
     uint32_t cpu_command_count = 0;   // cpu path: draws written this frame
     uint32_t cpu_drawn_polygons = 0;  // cpu-splat path: polygons in this frame's list
-    float line_width = 1.0f;          // Raskar-Cohen line width this frame (thinned)
+    float line_width = 1.0f;          // line width this frame (thinned, §3.1), every kind of line
     bool splatted = false;            // drawn by the compute splat this frame
 };
 
@@ -70,7 +76,7 @@ struct ObjectGpu {
     ObjectGpu& operator=(const ObjectGpu&) = delete;
 
     ObjectParams params;
-    glm::mat4 model{1.0f};
+    glm::mat4 model{1.0f};  // the scene's transform (object_to_world adds the up-axis rotation)
     ObjectGeometry geometry;
     PolygonConstants polygons;
     ObjectFrame frame;
@@ -100,9 +106,10 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,
                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn);
 
-// Builds the object's edge table (§3.1 lines drawn from edges) the first time it is needed; the GPU must
-// not be using the object (StippleRenderer::prepare's contract).
-void ensure_silhouette_edges(ObjectGpu& object);
+// Builds the object's edge table and the buffers its lines use (facing bits, the Raskar-Cohen index
+// list, the object-space line pieces) the first time it draws lines; the GPU must not be using the
+// object (StippleRenderer::prepare's contract).
+void ensure_line_buffers(ObjectGpu& object);
 
 // Stipples of this size in pixels and below are square points (the rasteriser's, and the splat's
 // copy of them); above, round dots.
@@ -114,8 +121,19 @@ inline float stipple_ink_radius(float point_size) {
     return draws_round_points(point_size) ? 0.5f * point_size : point_size / 1.7724539f;
 }
 
-// The object's uniforms for this frame (view-dependent terms included).
-gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view);
+// Whether the object draws lines from its edge table this frame (any kind; the table is built).
+bool draws_edge_lines(const ObjectGpu& object);
+// Whether its depth pass also holds the polygons facing away: they can be seen through an opening
+// (two-sided stipples on them, or object-space lines that they must hide).
+bool depth_holds_back_faces(const ObjectGpu& object);
+
+// The rotation about the object's bounding-sphere centre that turns its up axis (ObjectParams::up) to +y.
+glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center);
+// Object to world as drawn: the scene's transform after the up-axis rotation.
+glm::mat4 object_to_world(const ObjectGpu& object);
+
+// The object's uniforms for this frame (view-dependent terms included); `line_width` from object_line_width.
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, float line_width);
 
 // The silhouette line width this frame (§3.1 thinning), at most `max_width` (the device's limit).
 float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width);

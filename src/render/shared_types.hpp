@@ -29,6 +29,13 @@ static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
 static_assert(offsetof(SilhouetteLines, first_instance) == 16);
 static_assert(kSilhouetteLinesFirstIndex * sizeof(uint32_t) == sizeof(SilhouetteLines));  // indices right after it
 
+static_assert(sizeof(LineCandidates) == 16);
+static_assert(offsetof(LineCandidates, count) == 12);
+static_assert(sizeof(LinePiecesHeader) == 32);
+static_assert(offsetof(LinePiecesHeader, capacity) == 16);
+static_assert(sizeof(LinePiece) == 24);
+static_assert(offsetof(LinePiece, edge) == 16);
+
 static_assert(sizeof(DrawCommandsHeader) == 16);
 static_assert(offsetof(DrawCommandsHeader, count) == 0);
 static_assert(sizeof(DebugCounters) == 16);
@@ -50,7 +57,7 @@ static_assert(offsetof(FrameUniforms, paper_color) == 160);
 static_assert(offsetof(FrameUniforms, viewport) == 176);
 static_assert(offsetof(FrameUniforms, projection) == 192);
 
-static_assert(sizeof(ObjectUniforms) == 3 * 64 + 6 * 16);
+static_assert(sizeof(ObjectUniforms) == 3 * 64 + 7 * 16);
 static_assert(offsetof(ObjectUniforms, normal_view) == 64);
 static_assert(offsetof(ObjectUniforms, model) == 128);
 static_assert(offsetof(ObjectUniforms, shading) == 192);
@@ -59,5 +66,6 @@ static_assert(offsetof(ObjectUniforms, intrinsic) == 224);
 static_assert(offsetof(ObjectUniforms, flags) == 240);
 static_assert(offsetof(ObjectUniforms, box_min) == 256);
 static_assert(offsetof(ObjectUniforms, box_size) == 272);
+static_assert(offsetof(ObjectUniforms, lines) == 288);
 
 }  // namespace stipple::gpu

@@ -34,9 +34,11 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
 StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
-    for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, density_list_pipeline_,
-                         draw_commands_pipeline_, silhouette_edges_pipeline_,
-                         toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
+    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, density_pipeline_,
+                         density_list_pipeline_, facing_pipeline_, draw_commands_pipeline_, toon_pipeline_,
+                         toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
+                         line_pieces_pipeline_,
+                         splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     destroy_render_layouts(context_, layouts_);
@@ -57,6 +59,11 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     depth.color_format = color_format;
     depth.depth_format = depth_format;
     depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layouts_.pipeline);
+    // Objects whose faces facing away can be seen, through an opening (depth_holds_back_faces): they
+    // hide what lies behind them and carry two-sided stipples, at the same polygon offset.
+    gpu::GraphicsPipelineDesc depth_two_sided = depth;
+    depth_two_sided.cull_mode = VK_CULL_MODE_NONE;
+    depth_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, depth_two_sided, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc stipple;
     stipple.vertex_shader = "stipple.vert";
@@ -81,28 +88,15 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon.vertex_attributes.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
     toon.color_write = true;  // opaque: the nearest surface's toon ink wins with the depth test
     toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
-
-    // Raskar-Cohen: the back faces' edges as wide lines (selected each frame by silhouette_edges.comp, each
-    // edge once); the front faces' depth lets only the silhouette through.
-    gpu::GraphicsPipelineDesc lines;
-    lines.vertex_shader = "depth.vert";
-    lines.fragment_shader = "silhouette.frag";
-    lines.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
-    lines.vertex_bindings = depth.vertex_bindings;
-    lines.vertex_attributes = depth.vertex_attributes;
-    lines.depth_write = false;
-    lines.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-    lines.dynamic_line_width = true;
-    lines.stencil = gpu::CoverageStencil::None;  // outlines lie half outside the surface
-    lines.color_format = color_format;
-    lines.depth_format = depth_format;
-    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layouts_.pipeline);
-    silhouette_edges_pipeline_ =
-        gpu::create_compute_pipeline(context_, "silhouette_edges.comp", layouts_.pipeline);
+    toon.cull_mode = VK_CULL_MODE_NONE;  // toon.frag flips the normal of faces seen from behind
+    toon_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
 
     density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline);
     density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                           {{{gpu::kSpecListDrawn, 1u}}});
+    facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
+                                                    {{{gpu::kSpecFacingOnly, 1u}}});
+    create_line_pipelines(depth);
 
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
@@ -165,11 +159,11 @@ void StippleRenderer::prepare(const FrameView& view) {
     auto cpu_start = std::chrono::steady_clock::now();
     for (auto& object : objects_) {
         validate_params(object->params);
-        ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
-        if (object->params.silhouette_lines) ensure_silhouette_edges(*object);
+        ensure_path_buffers(*object, object->params.density_path);
+        if (draws_edge_lines(object->params)) ensure_line_buffers(*object);  // before the uniforms, which count the edges
         if (options_.record_visible) ensure_visible_list(*object);
-        object->frame.uniforms = make_object_uniforms(*object, view);
         object->frame.line_width = object_line_width(*object, view, context_.features.max_line_width);
+        object->frame.uniforms = make_object_uniforms(*object, view, object->frame.line_width);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
         if (density_on_cpu(object->params.density_path)) {
@@ -214,6 +208,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                         sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * object->frame.cpu_drawn_polygons}};
             vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.triangle_draw.handle(), 1, &regions[0]);
             if (splat) vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
+            if (draws_edge_lines(*object)) dispatch(*object, facing_pipeline_);  // the lines' facing bits
             continue;
         }
         any_pass = true;
@@ -258,7 +253,9 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
         if (object->geometry.index_count == 0) continue;
         // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
         bool toon = object->params.toon;
-        VkPipeline pipeline = toon ? toon_pipeline_ : depth_pipeline_;
+        bool back_faces = depth_holds_back_faces(*object);
+        VkPipeline pipeline = toon ? (back_faces ? toon_two_sided_pipeline_ : toon_pipeline_)
+                                   : (back_faces ? depth_two_sided_pipeline_ : depth_pipeline_);
         if (pipeline != bound) {
             vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             vkCmdSetDepthBias(cb, kDepthBiasConstant, 0.0f, kDepthBiasSlope);
@@ -271,50 +268,6 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
         vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
         vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
-    }
-}
-
-bool StippleRenderer::draws_lines(const ObjectGpu& object) const {
-    return object.params.silhouette_lines && object.geometry.silhouette_edge_count > 0;
-}
-
-void StippleRenderer::record_silhouette_edges(VkCommandBuffer cb) {
-    for (const auto& object : objects_) {
-        if (!draws_lines(*object)) continue;
-        // One instance, no indices yet; the indices follow the header (shared_types.h: why not a bind offset).
-        const gpu::SilhouetteLines empty{0u, 1u, gpu::kSilhouetteLinesFirstIndex, 0, 0u, 0u, 0u, 0u};
-        vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
-    }
-    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, silhouette_edges_pipeline_);
-    const uint32_t group = gpu::kDensityWorkgroupSize;
-    for (const auto& object : objects_) {
-        if (!draws_lines(*object)) continue;
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
-                                nullptr);
-        vkCmdDispatch(cb, (object->geometry.silhouette_edge_count + group - 1) / group, 1, 1);
-    }
-    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,
-                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT);
-}
-
-void StippleRenderer::record_silhouette_lines(VkCommandBuffer cb) {
-    bool any = false;
-    for (const auto& object : objects_) {
-        if (!draws_lines(*object)) continue;
-        if (!any) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
-        any = true;
-        VkDeviceSize offset = 0;
-        VkBuffer vb = object->geometry.positions.handle();
-        vkCmdSetLineWidth(cb, object->frame.line_width);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
-                                nullptr);
-        vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
     }
 }
 
@@ -355,11 +308,11 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     record_density(cb);
     timer_.mark(cb, "density");
     const bool any_lines =
-        std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_lines(*o); });
-    if (any_lines) {  // this frame's Raskar-Cohen lines, before the rendering scopes begin
-        record_silhouette_edges(cb);
-        timer_.mark(cb, "edges");
-    }
+        std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_edge_lines(*o); });
+    const bool any_splat = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); });
+    const bool any_object_space_lines = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
+        return draws_edge_lines(*o) && draws_object_space_lines(o->params);
+    });
 
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -382,6 +335,10 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
     vkCmdEndRendering(cb);
     timer_.mark(cb, "depth");
+    if (any_splat || any_object_space_lines) {  // the depth as words in a buffer, for compute passes to test against
+        copy_scene_depth(cb, targets);
+        timer_.mark(cb, "depth_copy");
+    }
     const bool any_points =
         std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_points(*o); });
     if (any_points) {
@@ -390,15 +347,17 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
         vkCmdEndRendering(cb);
         timer_.mark(cb, "stipples");
     }
-    if (std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); })) {
+    if (any_splat) {
         record_splat(cb, targets);
         timer_.mark(cb, "splat_out");
     }
     if (any_lines) {  // extra pipelines cost nothing when off: not even a pass is recorded
+        record_line_edges(cb);  // after the depth pass: the object-space lines are tested against it
+        timer_.mark(cb, "edges");
         begin_rendering(cb, targets, false);
-        record_silhouette_lines(cb);
+        record_lines(cb);
         vkCmdEndRendering(cb);
-        timer_.mark(cb, "silhouettes");
+        timer_.mark(cb, "lines");
     }
 }
 
@@ -444,27 +403,47 @@ void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& t
     vkCmdSetScissor(cb, 0, 1, &scissor);
 }
 
-void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targets) {
-    const VkDeviceSize pixels = VkDeviceSize(targets.extent.width) * targets.extent.height;
-    const bool fresh = splat_extent_.width != targets.extent.width || splat_extent_.height != targets.extent.height;
-    if (fresh) {
-        const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-        splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                        gpu::MemoryUse::DeviceLocal);
-        splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                   gpu::MemoryUse::DeviceLocal);
-        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
-        splat_extent_ = targets.extent;
-    }
+void StippleRenderer::ensure_frame_buffers(VkExtent2D extent) {
+    if (splat_extent_.width == extent.width && splat_extent_.height == extent.height) return;
+    const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
+    const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    gpu::MemoryUse::DeviceLocal);
+    splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               gpu::MemoryUse::DeviceLocal);
+    splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+    splat_extent_ = extent;
     // In the order of splat_frame_bindings(): background, scene depth, colour. The previous frame has completed.
     const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(), splat_color_.handle()};
     gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
+}
 
+void StippleRenderer::copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets) {
+    ensure_frame_buffers(targets.extent);
     const bool stencil = gpu::format_has_stencil(depth_format_);
     const VkImageAspectFlags depth_aspect =
         stencil ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
     const VkImageLayout depth_attachment =
         stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    gpu::image_barrier(cb, targets.depth, depth_aspect, depth_attachment, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    region.imageExtent = {targets.extent.width, targets.extent.height, 1};
+    vkCmdCopyImageToBuffer(cb, targets.depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_depth_.handle(), 1, &region);
+    gpu::image_barrier(cb, targets.depth, depth_aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth_attachment,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    // The compute passes that read it (splat, line edges) follow.
+    gpu::buffer_barrier(cb, splat_depth_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+// The scene depth is already in splat_depth_ (copy_scene_depth).
+void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targets) {
+    const VkDeviceSize pixels = VkDeviceSize(targets.extent.width) * targets.extent.height;
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {targets.extent.width, targets.extent.height, 1};
@@ -483,13 +462,6 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     if (!paper_only)
         vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(), 1,
                                &region);
-    gpu::image_barrier(cb, targets.depth, depth_aspect, depth_attachment, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    VkBufferImageCopy depth_region = region;
-    depth_region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    vkCmdCopyImageToBuffer(cb, targets.depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_depth_.handle(), 1,
-                           &depth_region);
     if (paper_only) {
         const glm::vec4 paper = blue_first ? glm::vec4(glm::vec3(view_.paper_color.b, view_.paper_color.g,
                                                                  view_.paper_color.r), 1.0f)
@@ -522,7 +494,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     }
     timer_.mark(cb, "splat");
 
-    // Back into the colour image, and both images back to attachments for what follows.
+    // Back into the colour image, and back to an attachment for what follows.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
@@ -533,10 +505,6 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    gpu::image_barrier(cb, targets.depth, depth_aspect, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth_attachment,
-                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
 
 void StippleRenderer::collect() {

@@ -1,7 +1,10 @@
 #pragma once
 // Owns every object's GPU data and the stipple pipelines, and records a frame:
-//   density (compute pass, or CPU upload) -> depth pass (polygon offset) -> stipple pass (points).
-// The same recording serves offscreen renders and the window's swapchain images.
+//   density (compute pass, or CPU upload; facing bits) -> depth pass (polygon offset) -> stipples
+//   (points, or the compute splat) -> line edges (compute: Raskar-Cohen list, visible object-space
+//   pieces) -> lines (wide lines, capsules).
+// The same recording serves offscreen renders and the window's swapchain images. The line passes
+// live in line_passes.cpp.
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,7 +45,8 @@ struct FrameView {
 
 // Images the frame is drawn into. Layouts on entry are ignored (contents are cleared); on exit the
 // colour image is in COLOR_ATTACHMENT_OPTIMAL and the depth image in DEPTH_STENCIL_ATTACHMENT_OPTIMAL
-// (or DEPTH_ATTACHMENT_OPTIMAL for a depth format without stencil).
+// (or DEPTH_ATTACHMENT_OPTIMAL for a depth format without stencil). The depth image needs
+// TRANSFER_SRC usage: the splat and the object-space lines read a copy of it.
 struct RenderTargets {
     VkImage color = VK_NULL_HANDLE;
     VkImageView color_view = VK_NULL_HANDLE;
@@ -106,15 +110,27 @@ public:
     const ObjectGpu& object(size_t index) const { return *objects_.at(index); }
     const gpu::Context& context() const { return context_; }
 
+    // The last frame's visible object-space line pieces (contours, borders, creases) of one object, in
+    // pixels of that frame (origin at the top-left corner, y down); the pieces of one line share their
+    // endpoints. Read back: call after the frame has completed. app::visible_line_segments gives them
+    // as the export consumes them.
+    struct LinePieces {
+        std::vector<gpu::LinePiece> pieces;  // as stored (with the edge each lies on)
+        uint32_t appended = 0;               // pieces found; more than pieces.size() when the buffer overflowed
+    };
+    LinePieces read_line_pieces(size_t object) const;
+
 private:
     void create_pipelines(VkFormat color_format, VkFormat depth_format);
+    void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
     void record_depth(VkCommandBuffer cb);
     void record_stipples(VkCommandBuffer cb);
-    void record_silhouette_edges(VkCommandBuffer cb);
-    void record_silhouette_lines(VkCommandBuffer cb);
-    bool draws_lines(const ObjectGpu& object) const;  // Raskar-Cohen lines on, and the mesh has edges
+    void record_line_edges(VkCommandBuffer cb);  // line_passes.cpp
+    void record_lines(VkCommandBuffer cb);       // line_passes.cpp
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
+    void ensure_frame_buffers(VkExtent2D extent);
+    void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
@@ -130,16 +146,21 @@ private:
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_list_pipeline_ = VK_NULL_HANDLE;  // also lists the polygons that draw, for the splat
     VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
+    VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline facing_pipeline_ = VK_NULL_HANDLE;      // facing bits alone (objects with CPU densities and lines)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
-    VkPipeline silhouette_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines: edges of back faces
+    VkPipeline line_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines from the edge table
+    VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
+    VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
     VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
     gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it
-    gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's depth test
+    gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
     VkExtent2D splat_extent_{};
     bool splat_targets_ = false;  // this frame's targets support the splat
     gpu::Buffer frame_uniforms_;

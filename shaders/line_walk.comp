@@ -1,0 +1,98 @@
+#version 460
+// Object-space lines (beyond the paper): hidden-line removal and the visible pieces. One invocation
+// per edge that line_edges.comp listed (a contour, border or crease this frame) walks the edge across
+// the screen in pixel steps against the depth pass, and appends each run of visible samples as a
+// piece in pixels, drawn as a capsule by line_pieces.vert and read back by the CPU for vector output.
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+#include "stipple_position.h"
+
+layout(local_size_x = kDensityWorkgroupSize) in;
+// The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
+layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
+
+layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
+layout(set = 0, binding = kBindingSilhouetteEdges, std430) readonly buffer Edges { SilhouetteEdge edges[]; };
+layout(set = 0, binding = kBindingLineCandidates, std430) readonly buffer Candidates {
+    LineCandidates candidates;
+    uint candidate[];
+};
+layout(set = 0, binding = kBindingLinePieces, std430) buffer Pieces {
+    LinePiecesHeader pieces;
+    LinePiece piece[];
+};
+layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
+
+// A sample of a line may lie this far behind the depth pass's surface and still count as visible, on
+// top of the depth pass's own polygon offset (which already covers the surface's slope across the
+// pixel the sample falls in): the rasteriser's and this shader's arithmetic differ by a few ulps.
+const uint kDepthToleranceUnorm24 = 4u;           // in 2^-24 steps
+const float kDepthToleranceFloat = 4.0 / 16777216.0;
+
+// Longest walk, in pixel steps (an edge longer on screen is sampled more coarsely).
+const uint kMaxSteps = 8192u;
+
+// Whether a line point at window position `px` (pixels, top row first) and window depth z is in front
+// of the depth pass's surface there (or no surface covers the pixel).
+bool sample_visible(vec2 px, float z) {
+    ivec2 p = ivec2(floor(px));
+    ivec2 size = ivec2(frame.viewport.xy);
+    if (p.x < 0 || p.y < 0 || p.x >= size.x || p.y >= size.y) return false;  // off the image: not drawn
+    uint word = scene_depth[uint(p.y) * uint(size.x) + uint(p.x)];
+    if (kDepthUnorm24) {
+        uint surface = word & 0xFFFFFFu;
+        return surface == 0xFFFFFFu || uint(z * 16777215.0 + 0.5) <= surface + kDepthToleranceUnorm24;
+    }
+    float surface = uintBitsToFloat(word);
+    return surface >= 1.0 || z <= surface + kDepthToleranceFloat;
+}
+
+void append_piece(vec2 a, vec2 b, uint edge, uint kind) {
+    uint slot = atomicAdd(pieces.vertex_count, 6u) / 6u;
+    if (slot >= pieces.capacity) return;  // counted, not stored: the read-back reports the overflow
+    piece[slot] = LinePiece(a.x, a.y, b.x, b.y, edge, kind);
+}
+
+// Walks the edge between object-space points p0 and p1 in pixel steps and appends its visible runs.
+// A run ends halfway between its last visible sample and the first hidden one; a run reaching an end
+// of the edge ends exactly at the projected vertex, so the pieces of neighbouring edges meet exactly.
+// A run of one sample is below what the test resolves and is dropped: where a hidden edge leaves a
+// vertex of the outline, the surface in front shares that vertex, and the first sample passes.
+void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
+    mat4 model_view_proj = frame.view_proj * object.model;
+    vec4 c0 = model_view_proj * vec4(p0, 1.0);
+    vec4 c1 = model_view_proj * vec4(p1, 1.0);
+    if (c0.z < 0.0 && c1.z < 0.0) return;  // wholly before the near plane (Vulkan clip z >= 0)
+    if (c0.z < 0.0) c0 = mix(c0, c1, c0.z / (c0.z - c1.z));
+    else if (c1.z < 0.0) c1 = mix(c1, c0, c1.z / (c1.z - c0.z));
+    vec3 n0 = c0.xyz / c0.w, n1 = c1.xyz / c1.w;
+    // Window coordinates with the renderer's negative-height viewport (y up in NDC, top row first); the
+    // window depth is linear in screen space along the projected edge.
+    vec2 size = frame.viewport.xy;
+    vec2 s0 = vec2(0.5 * (n0.x + 1.0) * size.x, 0.5 * (1.0 - n0.y) * size.y);
+    vec2 s1 = vec2(0.5 * (n1.x + 1.0) * size.x, 0.5 * (1.0 - n1.y) * size.y);
+    float length_px = distance(s0, s1);
+    if (!(length_px < 1e6)) return;  // not finite: degenerate projection
+    uint steps = clamp(uint(ceil(length_px)), 1u, kMaxSteps);
+    float step = 1.0 / float(steps);
+    uint run = 0u;  // visible samples in a row
+    float start = 0.0;
+    for (uint i = 0u; i <= steps; ++i) {
+        float u = float(i) * step;
+        bool visible = sample_visible(mix(s0, s1, u), mix(n0.z, n1.z, u));
+        if (visible && run == 0u) start = i == 0u ? 0.0 : u - 0.5 * step;
+        if (!visible && run > 1u) append_piece(mix(s0, s1, start), mix(s0, s1, u - 0.5 * step), edge, kind);
+        run = visible ? run + 1u : 0u;
+    }
+    if (run > 1u) append_piece(mix(s0, s1, start), s1, edge, kind);
+}
+
+void main() {
+    uint slot = gl_GlobalInvocationID.x;
+    if (slot >= candidates.count) return;
+    uint listed = candidate[slot];
+    uint e = listed & kLineEdgeMask;
+    SilhouetteEdge edge = edges[e];
+    walk_edge(mesh_vertex(edge.first_vertex), mesh_vertex(edge.second_vertex), e, listed >> kLineKindShift);
+}

@@ -1,0 +1,134 @@
+// The frame's lines, drawn from each object's edge table (render/silhouette_edges.hpp):
+//   line edges (compute, after the depth pass): per edge, from its polygons' facing bits, the §3.1
+//     Raskar-Cohen index list and the list of contours, borders and creases (shaders/line_edges.comp);
+//     then per listed edge, its visible pieces, found by walking it against the depth pass
+//     (shaders/line_walk.comp);
+//   lines (one rendering scope): Raskar-Cohen wide lines behind the front faces' depth, and the
+//     object-space pieces as capsules (shaders/line_pieces.*), which need no depth test: the pieces
+//     are already the visible parts, so a line is never nibbled by the surface it lies on.
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "render/shared_types.hpp"
+#include "render/stipple_renderer.hpp"
+
+namespace stipple {
+
+void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& depth) {
+    // Raskar-Cohen: edges with a face facing away as wide lines; the front faces' depth lets only the
+    // silhouette through.
+    gpu::GraphicsPipelineDesc lines;
+    lines.vertex_shader = "depth.vert";
+    lines.fragment_shader = "silhouette.frag";
+    lines.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
+    lines.vertex_bindings = depth.vertex_bindings;
+    lines.vertex_attributes = depth.vertex_attributes;
+    lines.depth_write = false;
+    lines.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    lines.dynamic_line_width = true;
+    lines.stencil = gpu::CoverageStencil::None;  // outlines lie half outside the surface
+    lines.color_format = color_format_;
+    lines.depth_format = depth_format_;
+    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layouts_.pipeline);
+
+    gpu::GraphicsPipelineDesc pieces;
+    pieces.vertex_shader = "line_pieces.vert";
+    pieces.fragment_shader = "line_pieces.frag";
+    pieces.depth_test = false;  // the pieces are the visible parts (line_edges.comp tested them)
+    pieces.depth_write = false;
+    pieces.color_format = color_format_;
+    pieces.depth_format = depth_format_;
+    line_pieces_pipeline_ = gpu::create_graphics_pipeline(context_, pieces, layouts_.pipeline);
+
+    line_edges_pipeline_ = gpu::create_compute_pipeline(context_, "line_edges.comp", layouts_.pipeline);
+    // Reads the depth pass's words from the splat's frame set (set 1), hence the splat's layout.
+    const uint32_t unorm24 = depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
+    line_walk_pipeline_ = gpu::create_compute_pipeline(context_, "line_walk.comp", layouts_.splat_pipeline,
+                                                       {{{gpu::kSpecDepthUnorm24, unorm24}}});
+}
+
+void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
+    bool any_walk = false;
+    for (const auto& object : objects_) {
+        if (!draws_edge_lines(*object)) continue;
+        // One instance, no indices yet; the indices follow the header (shared_types.h: why not a bind offset).
+        const gpu::SilhouetteLines empty{0u, 1u, gpu::kSilhouetteLinesFirstIndex, 0, 0u, 0u, 0u, 0u};
+        vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
+        if (!draws_object_space_lines(object->params)) continue;
+        any_walk = true;
+        const gpu::LineCandidates no_edges{0u, 1u, 1u, 0u};  // no groups yet (y and z are 1)
+        vkCmdUpdateBuffer(cb, object->frame.line_candidates.handle(), 0, sizeof no_edges, &no_edges);
+        const gpu::LinePiecesHeader no_pieces{0u, 1u, 0u, 0u, object->frame.line_piece_capacity, 0u, 0u, 0u};
+        vkCmdUpdateBuffer(cb, object->frame.line_pieces.handle(), 0, sizeof no_pieces, &no_pieces);
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_edges_pipeline_);
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    for (const auto& object : objects_) {
+        if (!draws_edge_lines(*object)) continue;
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0, nullptr);
+        vkCmdDispatch(cb, (object->geometry.silhouette_edge_count + group - 1) / group, 1, 1);
+    }
+    if (any_walk) {  // the listed edges, walked against the depth pass (copied by copy_scene_depth)
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_walk_pipeline_);
+        for (const auto& object : objects_) {
+            if (!draws_edge_lines(*object) || !draws_object_space_lines(object->params)) continue;
+            VkDescriptorSet sets[] = {object->set, image_set_};
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
+                                    nullptr);
+            vkCmdDispatchIndirect(cb, object->frame.line_candidates.handle(), 0);
+        }
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT |
+                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT |
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+void StippleRenderer::record_lines(VkCommandBuffer cb) {
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& object : objects_) {
+        if (!draws_edge_lines(*object)) continue;
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
+                                nullptr);
+        if (object->params.silhouette_lines) {
+            if (bound != silhouette_pipeline_) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
+            bound = silhouette_pipeline_;
+            VkDeviceSize offset = 0;
+            VkBuffer vb = object->geometry.positions.handle();
+            vkCmdSetLineWidth(cb, object->frame.line_width);
+            vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
+            vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
+        }
+        if (draws_object_space_lines(object->params)) {
+            if (bound != line_pieces_pipeline_) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, line_pieces_pipeline_);
+            bound = line_pieces_pipeline_;
+            vkCmdDrawIndirect(cb, object->frame.line_pieces.handle(), 0, 1, sizeof(gpu::LinePiecesHeader));
+        }
+    }
+}
+
+StippleRenderer::LinePieces StippleRenderer::read_line_pieces(size_t object) const {
+    const ObjectGpu& o = *objects_.at(object);
+    LinePieces result;
+    if (!draws_edge_lines(o) || !draws_object_space_lines(o.params)) return result;
+    std::vector<std::byte> bytes = gpu::read_buffer(context_, o.frame.line_pieces);
+    gpu::LinePiecesHeader header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    result.appended = header.vertex_count / 6;
+    const size_t stored = std::min<size_t>(result.appended, o.frame.line_piece_capacity);
+    result.pieces.resize(stored);
+    std::memcpy(result.pieces.data(), bytes.data() + sizeof header, stored * sizeof(gpu::LinePiece));
+    return result;
+}
+
+}  // namespace stipple

@@ -1,0 +1,89 @@
+#include "support/test_shapes.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace stipple::test {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Flips the triangles that face toward `inside` (every shape here is convex about its inside point,
+// or flat with a known front), so that all of them face outward.
+void face_outward(Mesh& mesh, glm::vec3 inside, glm::vec3 flat_front = glm::vec3(0.0f)) {
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        uint32_t* i = &mesh.indices[3 * t];
+        glm::vec3 a = mesh.positions[i[0]], b = mesh.positions[i[1]], c = mesh.positions[i[2]];
+        glm::vec3 normal = glm::cross(b - a, c - a);
+        glm::vec3 outward = flat_front != glm::vec3(0.0f) ? flat_front : (a + b + c) / 3.0f - inside;
+        if (glm::dot(normal, outward) < 0.0f) std::swap(i[1], i[2]);
+    }
+    compute_vertex_normals(mesh);
+}
+
+// Rings of `segments` vertices around a pole vertex (index 0): ring k's vertices follow, and each
+// band of quads is split into two triangles; `point(k, s)` places ring k's vertex s (k from 1).
+template <class Point>
+Mesh polar_grid(int segments, int rings, glm::vec3 pole, Point point) {
+    Mesh mesh;
+    mesh.positions.push_back(pole);
+    for (int k = 1; k <= rings; ++k)
+        for (int s = 0; s < segments; ++s) mesh.positions.push_back(point(k, s));
+    auto at = [&](int k, int s) { return uint32_t(1 + (k - 1) * segments + (s % segments)); };
+    for (int s = 0; s < segments; ++s) mesh.indices.insert(mesh.indices.end(), {0u, at(1, s), at(1, s + 1)});
+    for (int k = 1; k < rings; ++k)
+        for (int s = 0; s < segments; ++s)
+            mesh.indices.insert(mesh.indices.end(),
+                                {at(k, s), at(k + 1, s), at(k + 1, s + 1), at(k, s), at(k + 1, s + 1), at(k, s + 1)});
+    return mesh;
+}
+
+}  // namespace
+
+Mesh make_open_hemisphere(int segments, int rings) {
+    Mesh mesh = polar_grid(segments, rings, glm::vec3(0.0f, -1.0f, 0.0f), [&](int k, int s) {
+        float polar = 0.5f * kPi * float(k) / float(rings);  // from the bottom pole to the rim
+        float around = 2.0f * kPi * float(s) / float(segments);
+        return glm::vec3(std::sin(polar) * std::cos(around), -std::cos(polar), std::sin(polar) * std::sin(around));
+    });
+    mesh.source = "open hemisphere";
+    face_outward(mesh, glm::vec3(0.0f));
+    return mesh;
+}
+
+Mesh make_disc(int segments, int rings) {
+    Mesh mesh = polar_grid(segments, rings, glm::vec3(0.0f), [&](int k, int s) {
+        float radius = float(k) / float(rings);
+        float around = 2.0f * kPi * float(s) / float(segments);
+        return glm::vec3(radius * std::cos(around), radius * std::sin(around), 0.0f);
+    });
+    mesh.source = "disc";
+    face_outward(mesh, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    return mesh;
+}
+
+Mesh make_box(glm::vec3 size) {
+    Mesh mesh;
+    mesh.source = "box";
+    for (int corner = 0; corner < 8; ++corner)
+        mesh.positions.push_back(0.5f * size * glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f,
+                                                         corner & 4 ? 1.0f : -1.0f));
+    // Each face as a quad of corner numbers in cyclic order, split along one diagonal.
+    const uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    for (const auto& q : faces) mesh.indices.insert(mesh.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+    face_outward(mesh, glm::vec3(0.0f));
+    return mesh;
+}
+
+std::string obj_text(const Mesh& mesh) {
+    std::string text;
+    for (const glm::vec3& p : mesh.positions)
+        text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    for (size_t t = 0; t < mesh.triangle_count(); ++t)
+        text += "f " + std::to_string(mesh.indices[3 * t] + 1) + " " + std::to_string(mesh.indices[3 * t + 1] + 1) +
+                " " + std::to_string(mesh.indices[3 * t + 2] + 1) + "\n";
+    return text;
+}
+
+}  // namespace stipple::test

@@ -1,0 +1,26 @@
+#pragma once
+// Small meshes whose lines are known exactly, for the line tests: an open bowl, a flat disc, a box.
+// Each is wound counter-clockwise seen from its outside (a disc: from +z), with vertex normals.
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "mesh/mesh.hpp"
+
+namespace stipple::test {
+
+// The lower half of the unit sphere, open at the top (its rim is the circle y = 0, radius 1):
+// `segments` around, `rings` from the bottom pole up to the rim.
+Mesh make_open_hemisphere(int segments, int rings);
+
+// A flat disc of radius 1 in the z = 0 plane, facing +z: `rings` rings of `segments` each.
+Mesh make_disc(int segments, int rings);
+
+// A box centred on the origin with these side lengths: 8 shared corners, 12 triangles, so each of its
+// 12 edges joins two faces at 90 degrees and each face's diagonal joins two triangles of one plane.
+Mesh make_box(glm::vec3 size);
+
+// The mesh as a Wavefront OBJ file's text (positions and faces).
+std::string obj_text(const Mesh& mesh);
+
+}  // namespace stipple::test
