@@ -55,19 +55,21 @@ std::filesystem::path default_stipple_cache_dir() {
     return std::filesystem::temp_directory_path() / "stipple-cache" / "stipples";
 }
 
-uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params) {
+uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     uint64_t h = mix64(kMagic ^ kVersion);
     h = hash_bytes(h, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     h = hash_bytes(h, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
     // The parameters that shape generation, as the parameter table marks them, and the reference view.
     std::vector<double> values = generation_values(params);
     values.push_back(kReferenceHeight);
-    return hash_bytes(h, values.data(), values.size() * sizeof(double));
+    h = hash_bytes(h, values.data(), values.size() * sizeof(double));
+    // Only animated models hash their headroom, so a static model's key is what it always was.
+    return headroom.empty() ? h : hash_bytes(mix64(h ^ 0x48454144524F4F4Dull), headroom.data(), headroom.size_bytes());
 }
 
 std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh,
-                                               const GenerationParams& params) {
-    const uint64_t key = stipple_cache_key(mesh, params);
+                                               const GenerationParams& params, std::span<const float> headroom) {
+    const uint64_t key = stipple_cache_key(mesh, params, headroom);
     std::ifstream in(entry_path(dir, key), std::ios::binary);
     if (!in) return std::nullopt;
     Header header{};
@@ -107,11 +109,11 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
 }
 
 void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, const GenerationParams& params,
-                           const StippleSet& stipples) {
+                           const StippleSet& stipples, std::span<const float> headroom) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return;
-    const uint64_t key = stipple_cache_key(mesh, params);
+    const uint64_t key = stipple_cache_key(mesh, params, headroom);
     const std::filesystem::path final_path = entry_path(dir, key);
     std::filesystem::path temporary = final_path;
     temporary += ".tmp" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
@@ -137,18 +139,18 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
 }
 
 StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params,
-                                    const std::filesystem::path& dir) {
+                                    const std::filesystem::path& dir, std::span<const float> headroom) {
     const char* off = std::getenv("STIPPLE_NO_CACHE");
-    if (off && std::strcmp(off, "0") != 0) return generate_stipples(mesh, params);
+    if (off && std::strcmp(off, "0") != 0) return generate_stipples(mesh, params, headroom);
     auto start = std::chrono::steady_clock::now();
-    if (std::optional<StippleSet> cached = load_cached_stipples(dir, mesh, params)) {
+    if (std::optional<StippleSet> cached = load_cached_stipples(dir, mesh, params, headroom)) {
         cached->generation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         cached->from_cache = true;
         return std::move(*cached);
     }
-    StippleSet set = generate_stipples(mesh, params);
+    StippleSet set = generate_stipples(mesh, params, headroom);
     set.selection = polygon_selection_values(mesh, params.seed);
-    store_cached_stipples(dir, mesh, params, set);
+    store_cached_stipples(dir, mesh, params, set, headroom);
     return set;
 }
 
