@@ -13,6 +13,7 @@ layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms fram
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
+layout(set = 0, binding = kBindingFullAreas, std430) readonly buffer FullAreas { float full_areas[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
@@ -25,7 +26,10 @@ void main() {
     // written once at creation).
     uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
     float candidates = float(end - draws[t].first_stipple);
-    float density = polygon_density(polygon_view(infos[t], candidates, object), density_params(frame, object));
+    TriangleInfo info = infos[t];
+    PolygonView view = polygon_view(info, candidates, object);
+    if ((object.flags.x & kFlagStretch) != 0u) view.due = stretched_due(candidates, info.area, full_areas[t]);
+    float density = polygon_density(view, density_params(frame, object));
     draws[t].density = density;
     if (!kListDrawn) return;
     // One atomic add per subgroup hands out its slots; the slot ranges tile 0, 1, 2, ..., so each

@@ -43,6 +43,9 @@ STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's 
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
+// float[] (storage), per polygon, constant: the object-space area at which all of its candidates are due
+// (its rest area times its stretch headroom, src/anim/headroom.hpp). Read with kFlagStretch only.
+STIPPLE_CONST uint kBindingFullAreas = 12;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -57,6 +60,7 @@ STIPPLE_CONST uint kFlagIntrinsic = 4u;        // §2.3 intrinsic depth enhancem
 STIPPLE_CONST uint kFlagRoundPoints = 8u;      // discard outside the disc for large points
 STIPPLE_CONST uint kFlagBackfaceCull = 16u;    // polygons facing away get no stipples (§2.1)
 STIPPLE_CONST uint kFlagToonFade = 32u;        // §3.1 stipples fade near the silhouette (toon mode)
+STIPPLE_CONST uint kFlagStretch = 64u;         // animated: a polygon's due count follows its current area
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
@@ -75,8 +79,9 @@ struct TriangleDraw {
     uint first_stipple;  // index of the triangle's first stipple in the stipple buffer
 };
 
-// Per triangle, constant: what the density computation reads, in one 16-byte load (a software GPU's
-// compute is bound by its buffer loads). Unpacked by polygon_view() in stipple_formulas.h; the
+// Per triangle, constant for a static object (an animated one's are rewritten each frame from its
+// deformed mesh by shaders/polygon_constants.comp): what the density computation reads, in one 16-byte
+// load (a software GPU's compute is bound by its buffer loads). Unpacked by polygon_view() in stipple_formulas.h; the
 // candidate count is the difference of consecutive TriangleDraw.first_stipple.
 struct TriangleInfo {
     uint center_xy;           // centroid x | y << 16: 16-bit unorm in the object's box (ObjectUniforms.box_*)

@@ -28,6 +28,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingMeshIndices, kStorage}, [](const O& o) { return o.geometry.indices.handle(); }},
     {{gpu::kBindingSilhouetteEdges, kStorage}, [](const O& o) { return o.geometry.silhouette_edges.handle(); }},
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
+    {{gpu::kBindingFullAreas, kStorage}, [](const O& o) { return o.polygons.full_areas.handle(); }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "render/density_formulas.hpp"
+#include "render/deform_pass.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/path_buffers.hpp"
 #include "render/polygon_constants.hpp"
@@ -55,7 +56,9 @@ ObjectGeometry upload_geometry(const gpu::Context& context, const Mesh& mesh, co
     // The stipple shaders read the corners of the polygons whose stipples they place.
     geometry.positions =
         gpu::create_device_buffer(context, std::span(mesh.positions), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
-    geometry.normals = gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    // Storage too: an animated object's deformation pass writes them.
+    geometry.normals =
+        gpu::create_device_buffer(context, std::span(mesh.normals), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | storage);
     geometry.indices =
         gpu::create_device_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
     std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
@@ -102,7 +105,8 @@ ObjectGpu::~ObjectGpu() {
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const Buffer& frame_uniforms, const Mesh& mesh,
                                              const StippleSet& stipples, const glm::mat4& model,
-                                             const ObjectParams& params, bool count_drawn) {
+                                             const ObjectParams& params, bool count_drawn,
+                                             const anim::Motion& motion) {
     validate_params(params);
     STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
     if (params.point_size > context.features.max_point_size)
@@ -115,8 +119,11 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->params = params;
     object->model = model;
     object->geometry = upload_geometry(context, mesh, stipples);
-    object->polygons = make_polygon_constants(context, mesh, stipples, params.generation.seed);
+    object->polygons = make_polygon_constants(context, mesh, stipples, params.generation.seed,
+                                              motion ? &motion.headroom->bounds : nullptr);
     object->frame = create_frame_state(context, object->geometry, count_drawn);
+    if (motion) object->animation = create_object_animation(context, *object, mesh, motion);
+    check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);
     ensure_path_buffers(*object, params.density_path);
     return object;
@@ -160,6 +167,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.intrinsic) flags |= gpu::kFlagIntrinsic;
     if (p.point_size > 2.5f) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
+    if (object.animation) flags |= gpu::kFlagStretch;
     const ObjectGeometry& g = object.geometry;
     u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);
     u.box_min = glm::vec4(object.polygons.box_min, 0.0f);

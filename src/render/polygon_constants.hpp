@@ -11,8 +11,10 @@ namespace stipple {
 
 // The constants of `mesh` in its current shape: the CPU copy, its bounds and quantisation box, and the
 // GPU buffer. Selection values come from `stipples` when it carries them, else are ranked here (seeded).
+// `box`: the quantisation box when it must hold more than this shape (every pose of an animation).
+// full_areas is a placeholder (create_object_animation fills an animated object's).
 PolygonConstants make_polygon_constants(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
-                                        uint64_t seed);
+                                        uint64_t seed, const Bounds* box = nullptr);
 
 // Packs the polygons of `mesh` with centroids in the box [box_min, box_min + box_size].
 std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const std::vector<float>& selection,

@@ -28,12 +28,14 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       timer_(context) {
     layouts_ = create_render_layouts(context);
     create_pipelines(color_format, depth_format);
+    deform_pass_ = std::make_unique<DeformPass>(context, layouts_.pipeline);
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 }
 
 StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
+    deform_pass_.reset();
     for (VkPipeline p : {depth_pipeline_, stipple_pipeline_, density_pipeline_, density_list_pipeline_,
                          draw_commands_pipeline_, silhouette_edges_pipeline_,
                          toon_pipeline_, silhouette_pipeline_, splat_pipeline_})
@@ -114,9 +116,9 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
 }
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
-                                   const ObjectParams& params) {
+                                   const ObjectParams& params, const anim::Motion& motion) {
     objects_.push_back(create_object_gpu(context_, layouts_.object_set, frame_uniforms_, mesh, stipples, model, params,
-                                         options_.count_drawn));
+                                         options_.count_drawn, motion));
     return objects_.size() - 1;
 }
 
@@ -128,6 +130,17 @@ void StippleRenderer::remove_object(size_t object) {
 
 ObjectParams& StippleRenderer::params(size_t object) { return objects_.at(object)->params; }
 glm::mat4& StippleRenderer::model(size_t object) { return objects_.at(object)->model; }
+
+void StippleRenderer::set_animation(size_t object, int animation, double seconds, bool loop) {
+    ObjectAnimation* a = objects_.at(object)->animation.get();
+    STIPPLE_CHECK(a, "set_animation: the object is not animated");
+    STIPPLE_CHECK(animation == anim::kRestPose ||
+                      (animation >= 0 && size_t(animation) < a->motion.model->animations.size()),
+                  "set_animation: no such animation");
+    a->animation = animation;
+    a->seconds = seconds;
+    a->loop = loop;
+}
 
 void StippleRenderer::prepare(const FrameView& view) {
     view_ = view;
@@ -148,6 +161,7 @@ void StippleRenderer::prepare(const FrameView& view) {
     auto cpu_start = std::chrono::steady_clock::now();
     for (auto& object : objects_) {
         validate_params(object->params);
+        check_animated_path(*object);
         ensure_path_buffers(*object, object->params.density_path);  // before the uniforms, which count the edges
         if (object->params.silhouette_lines) ensure_silhouette_edges(*object);
         object->frame.uniforms = make_object_uniforms(*object, view);
@@ -162,6 +176,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         stats_.candidate_stipples += object->geometry.stipple_count;
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+    DeformPass::evaluate(objects_);
 }
 
 bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
@@ -331,6 +346,7 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
                               color_format_ == VK_FORMAT_R8G8B8A8_SRGB || color_format_ == VK_FORMAT_B8G8R8A8_SRGB;
     splat_targets_ = packed_color && targets.splat_transfers;
     timer_.begin_frame(cb);
+    if (deform_pass_->record(cb, objects_)) timer_.mark(cb, "deform");
     record_density(cb);
     timer_.mark(cb, "density");
     const bool any_lines =

@@ -15,6 +15,7 @@
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
+#include "render/deform_pass.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/object_gpu.hpp"
 #include "params/object_params.hpp"
@@ -70,12 +71,18 @@ public:
     StippleRenderer(const StippleRenderer&) = delete;
     StippleRenderer& operator=(const StippleRenderer&) = delete;
 
+    // `motion`: an animated model (its rest mesh is `mesh`, its stipples generated with its headroom);
+    // the object then deforms every frame at the time set_animation gives (animation 0 at 0 s until then).
     size_t add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
-                      const ObjectParams& params);
+                      const ObjectParams& params, const anim::Motion& motion = {});
     size_t object_count() const { return objects_.size(); }
     void remove_object(size_t object);  // waits for the GPU; later objects move down by one
     ObjectParams& params(size_t object);  // validated again at the next prepare()
     glm::mat4& model(size_t object);
+    bool is_animated(size_t object) const { return objects_.at(object)->animation != nullptr; }
+    // An animated object's pose for the next frames: `animation` (an index of its model's, or
+    // anim::kRestPose) at `seconds`, wrapped into the animation when looping, else clamped.
+    void set_animation(size_t object, int animation, double seconds, bool loop = true);
 
     // CPU part of a frame (uniforms, CPU-path densities). The GPU must have finished the previous frame.
     void prepare(const FrameView& view);
@@ -108,6 +115,7 @@ private:
     VkFormat color_format_;
     VkFormat depth_format_;
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
+    std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
     VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
