@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 
+#include "cli/animation_options.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
@@ -69,6 +70,7 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
         // Paths stay as typed, so that loader errors name the file as the user wrote it.
         for (const std::string& path : args.positionals()) scene.objects.push_back({path, {}, params});
     }
+    apply_animation_option(args, scene);
     // Explicit view options override the scene's camera and light.
     if (args.has("--yaw")) scene.camera.yaw_deg = float(args.number("--yaw", 0.0));
     if (args.has("--pitch")) scene.camera.pitch_deg = float(args.number("--pitch", 0.0));
@@ -92,6 +94,7 @@ int run_render(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
                     "--device", "--frames", "--orbit"});
+    options.merge(animation_options());
     Args args(argv, flags, options);
 
     if (args.flag("--list-devices")) {
@@ -124,9 +127,11 @@ int run_render(const std::vector<std::string>& argv) {
     SceneContent content = load_scene_content(scene);
     double prepare_seconds = seconds_since(start);
 
+    const bool animated = any_animated(content.objects);
+    const AnimationClock clock = read_animation_clock(args, animated);
     float aspect = float(width) / float(height);
     Sphere bounds = scene_bounds(scene, content.objects);
-    std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit);
+    std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit, animated);
     const bool sequence = cameras.size() > 1;
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
@@ -154,6 +159,7 @@ int run_render(const std::vector<std::string>& argv) {
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
         view = scene_frame_view(scene, cameras[i], bounds, extent);
+        if (animated) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
         auto render_start = std::chrono::steady_clock::now();
         frame = target.render(renderer, view);
         render_seconds = seconds_since(render_start);
@@ -188,6 +194,14 @@ int run_render(const std::vector<std::string>& argv) {
             if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
                 paths += std::string(paths.empty() ? "" : ", ") + density_path_name(o.params.density_path);
         std::printf("density path:       %s\n", paths.c_str());
+        for (size_t i = 0; i < content.objects.size(); ++i) {
+            const ObjectData& o = content.objects[i];
+            if (!o.motion) continue;
+            const anim::Animation& a = o.motion.model->animations[size_t(resolve_animation(o, scene.objects[i].animation))];
+            std::printf("animation:          object %zu: '%s' (%.3f s) at %.3f s%s\n", i, a.name.c_str(), a.duration,
+                        scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
+                        sequence ? " (last frame)" : "");
+        }
         for (const auto& [pass, ms] : stats.gpu_ms) std::printf("gpu %-16s%.3f ms\n", (pass + ":").c_str(), ms);
         if (stats.cpu_draw_commands > 0 || paths.find("cpu") != std::string::npos)
             std::printf("cpu density:        %.3f ms, %llu draws\n", stats.cpu_density_ms,

@@ -55,6 +55,11 @@ Render options:
                           N evenly spaced points (a camera_path alone gives one frame per keyframe)
   --orbit DEG             turn the camera by DEG in total around the scene's centre, DEG*i/N at
                           frame i (so 360 loops without a repeated frame); needs --frames
+  --animation NAME|N      what an animated glTF MODEL plays: an animation's name or index (default:
+                          its first); `stipple info MODEL` lists them
+  --time SECONDS          the scene clock of the (first) frame (default 0); animations loop
+  --fps F                 frames per second of a --frames N sequence (default 30): frame i shows
+                          --time + i/F; with an animated model --frames alone renders the animation
 
   With several frames, -o (and --mask) must hold a frame number in printf style: -o frames/%%04d.png
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%). A progress bar shows on a
@@ -70,14 +75,17 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
+  --animation NAME|N, --time SECONDS   as for render: the animation MODELs play, the clock's start
   --verbose               print the device and every swapchain (re)creation
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
   H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
-  vsync, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
+  vsync, Space plays or pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
   (generation parameters take effect on release or Enter, they make new stipples), the light,
-  paper and ink colours, and shows fps, CPU frame time, GPU time per pass and stipple counts.
+  paper and ink colours, and shows fps, CPU frame time, GPU time per pass and stipple counts. With an
+  animated model a timeline window plays, pauses and scrubs the animation, sets its speed and loop,
+  and chooses each object's animation.
 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
@@ -87,7 +95,9 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
     // The parameters come from the one table (src/params/param_table.cpp): never retyped here.
     std::istringstream example(param_scene_example());
     for (std::string line; std::getline(example, line);) std::printf("                %s\n", line.c_str());
-    std::printf(R"(   }],
+    std::printf(R"(                (an animated glTF model also: "animation": {"name": "Walk" or an index (default:
+                 its first), "start": seconds into it at time 0, "speed": 1, "loop": true})
+   }],
    "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
               "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
    "camera_path": [camera, camera, ...],
@@ -101,12 +111,15 @@ Stipple options (render, view and info; a SCENE.json sets them per object instea
     std::printf(R"(
 Info options:
   --json                  print the figures as JSON
+  An animated glTF model also lists its animations (durations, channels), skins (joints) and morph
+  targets, and its stretch headroom: the largest area any polygon reaches and the candidates that buys.
 
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
   --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
+  --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none)
 
 Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any
