@@ -23,20 +23,29 @@ std::vector<std::string> LiveScene::names() const {
 
 Sphere LiveScene::bounds() const { return scene_bounds(scene_, data_); }
 
-void LiveScene::sync() {
+std::vector<std::string> LiveScene::sync(double scene_seconds) {
+    std::vector<std::string> refused;
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
-        ObjectParams params = scene_.objects[i].params;
+        ObjectParams& wanted = scene_.objects[i].params;
+        if (data_[i].motion && density_on_cpu(wanted.density_path)) {
+            refused.push_back(data_[i].mesh->source + ": the " + density_path_name(wanted.density_path) +
+                              " density path cannot draw an animated model (its densities come from the rest pose)");
+            wanted.density_path = renderer_.params(i).density_path;
+        }
+        ObjectParams params = wanted;
         // Generation parameters only change with new stipples; until then the object keeps the old ones.
         params.generation = generated_with_[i].generation;
         renderer_.params(i) = params;
         renderer_.model(i) = scene_.objects[i].transform.to_matrix();
     }
+    set_scene_time(renderer_, scene_, data_, scene_seconds);
+    return refused;
 }
 
 bool LiveScene::regenerate_if_changed(size_t object) {
     const ObjectParams& wanted = scene_.objects.at(object).params;
     if (!needs_regeneration(generated_with_[object], wanted)) return false;
-    data_[object].stipples = make_stipples(*data_[object].mesh, wanted.generation);
+    data_[object].stipples = make_stipples(data_[object], wanted.generation);
     generated_with_[object] = wanted;
     rebuild_from(object);
     return true;
@@ -57,7 +66,8 @@ void LiveScene::add_model(const std::string& path) {
     scene_.objects.push_back(object);
     data_.push_back(std::move(data));
     generated_with_.push_back(params);
-    renderer_.add_object(*data_.back().mesh, *data_.back().stipples, object.transform.to_matrix(), params);
+    renderer_.add_object(*data_.back().mesh, *data_.back().stipples, object.transform.to_matrix(), params,
+                         data_.back().motion);
 }
 
 void LiveScene::remove(size_t object) {
@@ -75,7 +85,8 @@ void LiveScene::rebuild_from(size_t first) {
     for (size_t i = first; i < data_.size(); ++i) {
         ObjectParams params = scene_.objects[i].params;
         params.generation = generated_with_[i].generation;
-        renderer_.add_object(*data_[i].mesh, *data_[i].stipples, scene_.objects[i].transform.to_matrix(), params);
+        renderer_.add_object(*data_[i].mesh, *data_[i].stipples, scene_.objects[i].transform.to_matrix(), params,
+                             data_[i].motion);
     }
 }
 

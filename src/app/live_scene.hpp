@@ -20,10 +20,13 @@ public:
     const Scene& scene() const { return scene_; }
     size_t size() const { return scene_.objects.size(); }
     std::vector<std::string> names() const;  // file names, for the panel
+    const std::vector<ObjectData>& objects() const { return data_; }  // per scene object, what was loaded
     Sphere bounds() const;                   // world space, with the current transforms
 
-    // Copies the panel's edits into the renderer (cheap: a few bytes per object). Before prepare().
-    void sync();
+    // Copies the panel's edits into the renderer (cheap: a few bytes per object) and poses the animated
+    // objects at `scene_seconds`. Before prepare(). An edit the renderer refuses (a CPU density path for
+    // an animated object) is undone; the reasons come back, one line each.
+    std::vector<std::string> sync(double scene_seconds = 0.0);
     // New stipples for `object` when its generation parameters differ from those it was generated with.
     // Returns whether it regenerated.
     bool regenerate_if_changed(size_t object);

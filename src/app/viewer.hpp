@@ -18,6 +18,7 @@ struct ViewerOptions {
     long long benchmark_frames = 0;   // > 0: draw this many frames after a warm-up, print the mean fps, exit
     int device_index = -1;
     bool verbose = false;
+    double start_time = 0.0;          // the animation timeline's clock at the start (--time)
 };
 
 // Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit
