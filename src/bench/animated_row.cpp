@@ -27,11 +27,14 @@ constexpr double kAnimationFps = 30.0;  // animation seconds advance 1/30 per ti
 
 struct Timing {
     double frame_ms = 0.0, gpu_ms = 0.0, deform_ms = 0.0;
+    std::string passes;  // "deform 6.05 density 1.20 ...": the median of each pass
 };
 
 // Warm-up and timed frames as the cells time them; an animated object moves on 1/30 s per frame.
 Timing time_frames(OffscreenTarget& target, StippleRenderer& renderer, const FrameView& view, const BenchOptions& options) {
     std::vector<double> frame_ms, gpu_ms, deform_ms;
+    std::map<std::string, std::vector<double>> per_pass;
+    std::vector<std::string> order;
     const int total = options.warmup + options.frames;
     for (int i = 0; i < total; ++i) {
         if (renderer.is_animated(0)) renderer.set_animation(0, 0, double(i) / kAnimationFps);
@@ -42,11 +45,15 @@ Timing time_frames(OffscreenTarget& target, StippleRenderer& renderer, const Fra
         for (const auto& [pass, pass_ms] : renderer.stats().gpu_ms) {
             sum += pass_ms;
             if (pass == "deform") deform = pass_ms;
+            if (!per_pass.count(pass)) order.push_back(pass);
+            per_pass[pass].push_back(pass_ms);
         }
         gpu_ms.push_back(sum);
         deform_ms.push_back(deform);
     }
-    return {median(frame_ms), median(gpu_ms), median(deform_ms)};
+    std::string passes;
+    for (const std::string& pass : order) passes += format(" %s %.2f", pass.c_str(), median(per_pass[pass]));
+    return {median(frame_ms), median(gpu_ms), median(deform_ms), passes};
 }
 
 int64_t counted_drawn(const gpu::Context& context, OffscreenTarget& target, const ObjectData& model,
@@ -108,6 +115,7 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
         const Timing t = time_frames(target, renderer, view, options);
         row.static_frame_ms = t.frame_ms;
         row.static_gpu_ms = t.gpu_ms;
+        log("  static passes (GPU ms):" + t.passes);
     }
     {
         StippleRenderer renderer(context, kColorFormat, context.depth_format);
@@ -116,6 +124,7 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
         row.animated_frame_ms = t.frame_ms;
         row.animated_gpu_ms = t.gpu_ms;
         row.deform_gpu_ms = t.deform_ms;
+        log("  animated passes (GPU ms):" + t.passes);
     }
     log(format("animated row: %s, %llu triangles, %llu vertices; candidates %llu static, %llu with headroom "
                "(largest stretch %.2fx); drawn %lld static, %lld animated",

@@ -198,7 +198,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     set_options.cache_dir = options.cache_dir;
     set_options.only = options.models;
     set_options.log = log;
-    std::vector<ModelEntry> entries = prepare_model_set(set_options);
+    std::vector<ModelEntry> entries = options.animated_only ? std::vector<ModelEntry>{} : prepare_model_set(set_options);
 
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);

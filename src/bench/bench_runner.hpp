@@ -42,6 +42,7 @@ struct BenchOptions {
     // The animated row (issue 16): a skinned bending cylinder of at least this many triangles, timed with
     // and without its animation. 0: no animated row.
     uint32_t animated_triangles = 100'000;
+    bool animated_only = false;  // the animated row alone (no Table 1 rows)
     std::string command;              // the command line, recorded in the results
 };
 

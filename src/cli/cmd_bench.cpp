@@ -38,7 +38,7 @@ long long bounded(const Args& args, const std::string& name, long long fallback,
 }  // namespace
 
 int run_bench(const std::vector<std::string>& argv) {
-    Args args(argv, {"--quick", "--list-devices"},
+    Args args(argv, {"--quick", "--list-devices", "--animated-only"},
               {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
                "--models-dir", "--cache-dir", "--animated-triangles"});
     if (args.flag("--list-devices")) {
@@ -58,6 +58,8 @@ int run_bench(const std::vector<std::string>& argv) {
     // The animated row's skinned cylinder: >= 100k triangles (issue 16), fewer for --quick; 0 skips it.
     options.animated_triangles =
         uint32_t(bounded(args, "--animated-triangles", options.quick ? 20'000 : 100'000, 0, 10'000'000));
+    options.animated_only = args.flag("--animated-only");
+    if (options.animated_only && options.animated_triangles == 0) fail("--animated-only needs --animated-triangles > 0");
     if (args.has("--models")) {
         for (const std::string& name : split_list("--models", args.get("--models", "")))
             if (!bench::find_paper_row(name))

@@ -120,6 +120,7 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none)
+  --animated-only         the animated row alone
 
 Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any
