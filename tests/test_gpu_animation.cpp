@@ -269,14 +269,15 @@ TEST_F(GpuAnimation, FoxAndMorphCubeRenderAtSeveralTimes) {
     struct Model {
         std::string name;
         std::vector<double> times;
-        float dmax;  // the cube's large flat faces hold many candidates: fewer keep the test quick
+        float dmax;      // the cube's large flat faces hold many candidates: fewer keep the test quick
+        double min_ink;  // and draw lighter (at 2 s its one large face turns to the light)
     };
     const Model models[] = {
-        {"fox.glb", {0.0, 0.4, 1.1, 2.5}, ObjectParams{}.generation.dmax},
-        {"AnimatedMorphCube.gltf", {0.0, 0.5, 1.0, 2.0}, 0.05f},
+        {"fox.glb", {0.0, 0.4, 1.1, 2.5}, ObjectParams{}.generation.dmax, 0.2},
+        {"AnimatedMorphCube.gltf", {0.0, 0.5, 1.0, 2.0}, 0.05f, 0.01},
     };
     size_t rendered = 0;
-    for (const auto& [name, times, dmax] : models) {
+    for (const auto& [name, times, dmax, min_ink] : models) {
         ObjectParams params;
         params.generation.dmax = dmax;
         const std::string path = test::shared_model(name);
@@ -298,7 +299,7 @@ TEST_F(GpuAnimation, FoxAndMorphCubeRenderAtSeveralTimes) {
             std::printf("%s at %.2f s: %zu covered pixels, ink %.1f%%, %lld stipples drawn\n", name.c_str(), t, ink.covered,
                         100.0 * ink.ink_fraction(), (long long)r->stats().drawn_stipples);
             EXPECT_GT(ink.covered, 2000u) << name << " at " << t;
-            EXPECT_GT(ink.ink_fraction(), 0.03) << name << " at " << t;
+            EXPECT_GT(ink.ink_fraction(), min_ink) << name << " at " << t;
             EXPECT_LT(ink.ink_fraction(), 0.8) << name << " at " << t;
             EXPECT_EQ(ink.inked_outside, 0u) << name << ": no ink beside the surface";
             write_png(test::output_path("gpu_animation_" + name + "_" + std::to_string(int(t * 100)) + ".png").string(),
