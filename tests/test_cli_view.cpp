@@ -120,9 +120,10 @@ class ViewerSession {
 public:
     explicit ViewerSession(const std::filesystem::path& dir) : dir_(dir) {}
 
-    // An unused display number: no socket and no lock file.
-    bool start_x() {
-        for (int n = 87; n < 200; ++n) {
+    // An unused display number: no socket and no lock file. Tests that ctest may run at the same time
+    // start from different numbers, so they never race for one.
+    bool start_x(int first_display = 87) {
+        for (int n = first_display; n < first_display + 100; ++n) {
             if (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(n)) ||
                 std::filesystem::exists("/tmp/.X" + std::to_string(n) + "-lock"))
                 continue;
@@ -301,7 +302,7 @@ TEST(CliView, AnimationPlaysAndPauses) {
     auto dir = test::temp_dir("cli-view-animation");
     const std::string model = test::write_rig(anim::rigs::bending_cylinder(), "cli-view-animation-model", "cylinder");
     ViewerSession session(dir);
-    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    ASSERT_TRUE(session.start_x(300)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
     session.start_viewer({model, "--dmax", "0.05", "--width", "480", "--height", "400", "--screenshot-dir",
                           (dir / "shots").string()});
     ASSERT_TRUE(session.find_window()) << "no window appeared\n" << session.err();

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "anim/deform_cpu.hpp"
+#include "app/live_scene.hpp"
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
 #include "render/density_formulas.hpp"
@@ -226,6 +227,28 @@ TEST_F(GpuAnimation, CpuDensityPathsAreRefused) {
     cpu.density_path = DensityPath::Cpu;
     r->add_object(*loaded.model.mesh, *loaded.stipples, glm::mat4(1.0f), cpu);
     EXPECT_NO_THROW(target.render(*r, test::framed_view(loaded.model.bounds, target.extent())));
+}
+
+TEST_F(GpuAnimation, TheViewerUndoesACpuPathForAnAnimatedObject) {
+    // The panel can pick any density path; for an animated object the viewer's scene undoes a CPU one and
+    // says why (the renderer's one line), instead of failing the next frame.
+    Scene scene;
+    scene.objects.push_back({test::write_rig(anim::rigs::bending_cylinder(), "gpu_anim_live", "cylinder"), {}, {}});
+    scene.objects[0].params.generation.dmax = 0.02f;
+    auto r = renderer();
+    app::LiveScene live(scene, load_scene_content(scene), *r);
+    live.scene().objects[0].params.density_path = DensityPath::CpuSplat;
+    const std::vector<std::string> refused = live.sync(0.5);
+    ASSERT_EQ(refused.size(), 1u);
+    EXPECT_NE(refused[0].find("cannot draw an animated model"), std::string::npos) << refused[0];
+    EXPECT_EQ(live.scene().objects[0].params.density_path, DensityPath::Splat) << "the choice is undone";
+    EXPECT_EQ(r->params(0).density_path, DensityPath::Splat);
+    OffscreenTarget target(*context, {64, 64});
+    EXPECT_NO_THROW(target.render(*r, test::framed_view(live.bounds(), target.extent())));
+    // A GPU path is taken as it is.
+    live.scene().objects[0].params.density_path = DensityPath::Vertex;
+    EXPECT_TRUE(live.sync(0.5).empty());
+    EXPECT_EQ(r->params(0).density_path, DensityPath::Vertex);
 }
 
 TEST_F(GpuAnimation, SilhouetteLinesFollowTheDeformedMesh) {

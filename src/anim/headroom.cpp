@@ -41,12 +41,13 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
 }
 
 std::string describe_headroom(const StretchHeadroom& h, size_t triangles) {
+    const std::string where = h.max_animation.empty() ? std::string() : " (" + h.max_animation + ")";
     char line[320];
     std::snprintf(line, sizeof line,
                   "polygons reach up to %.2fx their rest area%s; candidates generated for up to %.3gx: %zu of %zu "
                   "polygons stretched, %zu capped; %.2fx the static candidates",
-                  double(h.max_ratio), h.max_animation.empty() ? "" : (" (" + h.max_animation + ")").c_str(),
-                  double(h.cap), h.stretched_triangles, triangles, h.capped_triangles, h.candidate_factor);
+                  double(h.max_ratio), where.c_str(), double(h.cap), h.stretched_triangles, triangles,
+                  h.capped_triangles, h.candidate_factor);
     return line;
 }
 

@@ -27,15 +27,17 @@ std::vector<std::string> LiveScene::sync(double scene_seconds) {
     std::vector<std::string> refused;
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
         ObjectParams& wanted = scene_.objects[i].params;
-        if (data_[i].motion && density_on_cpu(wanted.density_path)) {
-            refused.push_back(data_[i].mesh->source + ": the " + density_path_name(wanted.density_path) +
-                              " density path cannot draw an animated model (its densities come from the rest pose)");
-            wanted.density_path = renderer_.params(i).density_path;
-        }
         ObjectParams params = wanted;
         // Generation parameters only change with new stipples; until then the object keeps the old ones.
         params.generation = generated_with_[i].generation;
+        const DensityPath previous = renderer_.params(i).density_path;
         renderer_.params(i) = params;
+        try {
+            check_animated_path(renderer_.object(i));  // the renderer's own rule and wording
+        } catch (const Error& e) {
+            refused.push_back(e.what());
+            wanted.density_path = renderer_.params(i).density_path = previous;
+        }
         renderer_.model(i) = scene_.objects[i].transform.to_matrix();
     }
     set_scene_time(renderer_, scene_, data_, scene_seconds);
