@@ -55,9 +55,11 @@ int run_bench(const std::vector<std::string>& argv) {
     options.width = uint32_t(bounded(args, "--width", 1280, 1, 16384));
     options.height = uint32_t(bounded(args, "--height", 1024, 1, 16384));
     options.device = int(args.integer("--device", -1));
-    // The animated row's skinned cylinder: >= 100k triangles (issue 16), fewer for --quick; 0 skips it.
-    options.animated_triangles =
-        uint32_t(bounded(args, "--animated-triangles", options.quick ? 20'000 : 100'000, 0, 10'000'000));
+    // The animated row's skinned cylinder: >= 100k triangles (issue 16), fewer for --quick; 0 skips it, and
+    // so does naming rows with --models unless the row is asked for.
+    const bool rows_named = args.has("--models") && !args.has("--animated-triangles") && !args.flag("--animated-only");
+    options.animated_triangles = uint32_t(
+        bounded(args, "--animated-triangles", rows_named ? 0 : options.quick ? 20'000 : 100'000, 0, 10'000'000));
     options.animated_only = args.flag("--animated-only");
     if (options.animated_only && options.animated_triangles == 0) fail("--animated-only needs --animated-triangles > 0");
     if (args.has("--models")) {

@@ -119,7 +119,8 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
-  --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none)
+  --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
+                          not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
 
 Environment:
