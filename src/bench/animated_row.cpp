@@ -44,7 +44,7 @@ Timing time_frames(OffscreenTarget& target, StippleRenderer& renderer, const Fra
         double sum = 0.0, deform = 0.0;
         for (const auto& [pass, pass_ms] : renderer.stats().gpu_ms) {
             sum += pass_ms;
-            if (pass == "deform") deform = pass_ms;
+            if (pass == "skinning" || pass == "polygons") deform += pass_ms;  // the deformation pass's two halves
             if (!per_pass.count(pass)) order.push_back(pass);
             per_pass[pass].push_back(pass_ms);
         }

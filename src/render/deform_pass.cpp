@@ -56,27 +56,34 @@ void DeformPass::evaluate(std::span<const std::unique_ptr<ObjectGpu>> objects) {
     }
 }
 
-bool DeformPass::record(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const {
+bool DeformPass::record_skinning(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const {
     bool any = false;
     for (const auto& object : objects) {
         if (!object->animation || object->geometry.triangle_count == 0) continue;
         any = true;
         // The deformer orders itself after last frame's readers of the mesh (and, with one global
-        // barrier, of the polygons this pass rewrites).
+        // barrier, of the polygons record_polygons rewrites).
         object->animation->deformer->record(cb, object->animation->pose);
-        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    }
+    return any;
+}
+
+void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const {
+    // The deformed vertices before the polygons read them.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    for (const auto& object : objects) {
+        if (!object->animation || object->geometry.triangle_count == 0) continue;
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &object->set, 0, nullptr);
-        const uint32_t group = gpu::kDensityWorkgroupSize;
         vkCmdDispatch(cb, (object->geometry.triangle_count + group - 1) / group, 1, 1);
     }
-    if (any)  // deformed vertices and polygons before everything that draws or densifies from them
-        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    return any;
+    // Deformed vertices and polygons before everything that draws or densifies from them.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 }  // namespace stipple

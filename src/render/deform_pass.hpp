@@ -56,10 +56,12 @@ public:
 
     // Evaluates each animated object's pose (CPU; a few matrices per joint).
     static void evaluate(std::span<const std::unique_ptr<ObjectGpu>> objects);
-    // Records deformation and polygon constants for every animated object, then orders every later
-    // reader of the mesh and the polygons (vertex input, vertex shaders, compute) after them. Returns
-    // whether anything was recorded.
-    bool record(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const;
+    // Records the deformation of every animated object (skinning and morphing into its mesh buffers).
+    // Returns whether there was any; then record_polygons must follow.
+    bool record_skinning(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const;
+    // Their polygon constants from the deformed meshes, then orders every later reader of the mesh and the
+    // polygons (vertex input, vertex shaders, compute) after both passes.
+    void record_polygons(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const;
 
 private:
     const gpu::Context& context_;

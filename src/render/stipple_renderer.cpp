@@ -346,7 +346,11 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
                               color_format_ == VK_FORMAT_R8G8B8A8_SRGB || color_format_ == VK_FORMAT_B8G8R8A8_SRGB;
     splat_targets_ = packed_color && targets.splat_transfers;
     timer_.begin_frame(cb);
-    if (deform_pass_->record(cb, objects_)) timer_.mark(cb, "deform");
+    if (deform_pass_->record_skinning(cb, objects_)) {  // animated objects (render/deform_pass.hpp)
+        timer_.mark(cb, "skinning");
+        deform_pass_->record_polygons(cb, objects_);
+        timer_.mark(cb, "polygons");
+    }
     record_density(cb);
     timer_.mark(cb, "density");
     const bool any_lines =
