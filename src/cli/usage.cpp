@@ -79,13 +79,13 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --verbose               print the device and every swapchain (re)creation
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
-  window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
-  H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
-  vsync, Space plays or pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
-  (generation parameters take effect on release or Enter, they make new stipples), the light,
-  paper and ink colours, and shows fps, CPU frame time, GPU time per pass and stipple counts. With an
-  animated model a timeline window plays, pauses and scrubs the animation, sets its speed and loop,
-  and chooses each object's animation.
+  window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything, H
+  hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
+  vsync, Space plays or pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
+  sets every per-object parameter (generation parameters take effect on release or Enter, they make
+  new stipples), the light, paper and ink colours, and shows fps, CPU frame time, GPU time per pass
+  and stipple counts. With an animated model a timeline window plays, pauses and scrubs the
+  animation, sets its speed and loop, and chooses each object's animation.
 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
