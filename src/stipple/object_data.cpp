@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "anim/animated_model.hpp"
+#include "anim/gltf_probe.hpp"
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "stipple/selection_order.hpp"
@@ -35,7 +36,7 @@ std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* s
 ObjectData load_model_data(const std::string& path) {
     ObjectData object;
     const auto start = Clock::now();
-    if (is_gltf(path)) {
+    if (is_gltf(path) && anim::gltf_declares_animations(path)) {
         // One read serves both: the animated loader's rest mesh is exactly load_mesh_for_drawing's.
         auto model = std::make_shared<anim::AnimatedModel>(anim::load_animated_model(path));
         if (model->is_animated()) {
