@@ -17,6 +17,7 @@ layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms fram
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
+layout(set = 0, binding = kBindingFullAreas, std430) readonly buffer FullAreas { float full_areas[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
@@ -48,9 +49,11 @@ void main() {
         uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
         candidates = float(end - draws[t].first_stipple);
     }
-    PolygonView p = polygon_view(infos[in_range ? t : 0u], candidates, object);
+    TriangleInfo info = infos[in_range ? t : 0u];
+    PolygonView p = polygon_view(info, candidates, object);
     if ((object.flags.x & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
     if (kFacingOnly || !in_range) return;
+    if ((object.flags.x & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);
     float density = polygon_density(p, density_params(frame, object));
     draws[t].density = density;
     if (!kListDrawn) return;

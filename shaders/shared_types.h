@@ -49,6 +49,9 @@ STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + Vis
 STIPPLE_CONST uint kBindingFacing = 13;           // uint[] (storage): one bit per polygon, set when it faces away
 STIPPLE_CONST uint kBindingLinePieces = 14;       // LinePiecesHeader + LinePiece[] (storage): visible object-space lines
 STIPPLE_CONST uint kBindingLineCandidates = 15;   // LineCandidates + uint[] (storage): the edges to walk this frame
+// float[] (storage), per polygon, constant: the object-space area at which all of its candidates are due
+// (its rest area times its stretch headroom, src/anim/headroom.hpp). Read with kFlagStretch only.
+STIPPLE_CONST uint kBindingFullAreas = 16;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -69,6 +72,7 @@ STIPPLE_CONST uint kFlagSilhouetteLines = 256u;  // §3.1 Raskar-Cohen lines (th
 STIPPLE_CONST uint kFlagContours = 512u;       // object-space lines: edges between a front and a back face
 STIPPLE_CONST uint kFlagBorders = 1024u;       // object-space lines: edges of one polygon
 STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral angle above the crease angle
+STIPPLE_CONST uint kFlagStretch = 4096u;       // animated: a polygon's due count follows its current area
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
@@ -87,8 +91,9 @@ struct TriangleDraw {
     uint first_stipple;  // index of the triangle's first stipple in the stipple buffer
 };
 
-// Per triangle, constant: what the density computation reads, in one 16-byte load (a software GPU's
-// compute is bound by its buffer loads). Unpacked by polygon_view() in stipple_formulas.h; the
+// Per triangle, constant for a static object (an animated one's are rewritten each frame from its
+// deformed mesh by shaders/polygon_constants.comp): what the density computation reads, in one 16-byte
+// load (a software GPU's compute is bound by its buffer loads). Unpacked by polygon_view() in stipple_formulas.h; the
 // candidate count is the difference of consecutive TriangleDraw.first_stipple.
 struct TriangleInfo {
     uint center_xy;           // centroid x | y << 16: 16-bit unorm in the object's box (ObjectUniforms.box_*)

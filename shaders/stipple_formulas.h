@@ -122,7 +122,9 @@ STIPPLE_FN float stipple_intensity(float density, float index) {
 
 // Everything one polygon's density depends on, in view space.
 struct PolygonView {
-    float candidates;     // N_max of the polygon (its stipple count)
+    float candidates;     // N_max of the polygon (its stipple count): no more can be drawn
+    float due;            // the candidates due at its current shape: all of them, or fewer for a polygon
+                          // generated with stretch headroom (stretched_due)
     float selection;      // fixed selection value in [0, 1) (src/stipple/selection_order.cpp)
     float area;           // world-space area
     vec3 center;          // view-space centroid (the eye at the origin looking down -z)
@@ -143,6 +145,25 @@ struct DensityParams {
     uint flags;                // kFlag* bits
 };
 
+// The inverse of octahedral_to_unit: the unit sphere onto the octahedron, the lower half folded out.
+STIPPLE_FN vec2 unit_to_octahedral(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 p = vec2(n.x, n.y);
+    if (n.z < 0.0f) {
+        vec2 side = vec2(p.x >= 0.0f ? 1.0f : -1.0f, p.y >= 0.0f ? 1.0f : -1.0f);
+        p = (vec2(1.0f) - abs(vec2(p.y, p.x))) * side;
+    }
+    return p;
+}
+
+// Density follows stretch (animated objects): a polygon's candidates were generated for `full_area`,
+// its rest area times its headroom, so at its current `area` (both object space) it is due that share
+// of them. A polygon at twice its rest area is due twice its rest count (while the candidates last); a
+// shrunk one fewer, so the tone stays even on the moving surface.
+STIPPLE_FN float stretched_due(float candidates, float area, float full_area) {
+    return full_area > 0.0f ? candidates * (area / full_area) : 0.0f;
+}
+
 // A unit vector from its octahedral encoding in [-1, 1]^2 (the lower hemisphere folded outward).
 STIPPLE_FN vec3 octahedral_to_unit(vec2 e) {
     vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
@@ -161,6 +182,7 @@ STIPPLE_FN float polygon_selection(TriangleInfo info) {
 STIPPLE_FN PolygonView polygon_view(TriangleInfo info, float candidates, ObjectUniforms o) {
     PolygonView p;
     p.candidates = candidates;
+    p.due = candidates;
     p.selection = polygon_selection(info);
     p.area = info.area * o.extrinsic.w;
     vec2 xy = unpackUnorm2x16(info.center_xy);
@@ -200,7 +222,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     result.density = 0.0f;
     result.probability = 1.0f;
     float distance = -p.center.z;
-    if (distance <= 0.0f || p.candidates <= 0.0f) return result;
+    if (distance <= 0.0f || p.candidates <= 0.0f || p.due <= 0.0f) return result;
     float facing = dot(p.normal, -p.center) / length(p.center);
     // Two-sided: a polygon facing away is seen from its inside (through an opening), so it takes the
     // outside's tone rule with its normal flipped (shading, orientation, toon fade).
@@ -210,7 +232,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     }
     if ((q.flags & kFlagBackfaceCull) != 0u && facing <= 0.0f) return result;
 
-    float density = p.candidates;
+    float density = p.due;
     if ((q.flags & kFlagShading) != 0u) density *= shading_fraction(p.normal, q.to_light, q.shading_exponent);
     if ((q.flags & kFlagIntrinsic) != 0u) density *= intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
     if ((q.flags & kFlagToonFade) != 0u) density *= toon_stipple_fade(facing, q.toon_sharpness);

@@ -7,6 +7,7 @@
 
 #include "anim/deform_cpu.hpp"
 #include "anim/describe.hpp"
+#include "anim/gltf_probe.hpp"
 #include "anim/pose.hpp"
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
@@ -205,6 +206,26 @@ TEST(AnimLoading, OnlyGltfFilesAnimate) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), path + ": animation needs a glTF file (.gltf or .glb)");
     }
+}
+
+TEST(AnimLoading, ProbeTellsAnimatedFilesBeforeLoading) {
+    // What decides whether a model is loaded by the animated loader or only by the static one.
+    EXPECT_TRUE(gltf_declares_animations(test::write_rig(rigs::bending_cylinder(), "anim_probe", "cylinder")));
+    EXPECT_TRUE(gltf_declares_animations(test::write_rig(rigs::morphed_quad(), "anim_probe_quad", "quad")));
+    EXPECT_FALSE(gltf_declares_animations(std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb"));
+    const auto dir = test::temp_dir("anim_probe_text");
+    auto write = [&](const std::string& name, const std::string& text) {
+        const std::string path = (dir / name).string();
+        FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs(text.c_str(), f);
+        std::fclose(f);
+        return path;
+    };
+    EXPECT_FALSE(gltf_declares_animations(write("none.gltf", R"({"asset": {"version": "2.0"}, "animations": []})")));
+    EXPECT_TRUE(gltf_declares_animations(write("one.gltf", R"({"asset": {"version": "2.0"}, "animations": [{}]})")));
+    // Cannot tell: the full loader will say what is wrong.
+    EXPECT_TRUE(gltf_declares_animations(write("broken.gltf", "{ not json")));
+    EXPECT_TRUE(gltf_declares_animations((dir / "missing.glb").string()));
 }
 
 }  // namespace

@@ -307,6 +307,16 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
     EXPECT_NE(md.find("| low-res dragon"), std::string::npos);
     EXPECT_NE(r.out.find("## Frames per second"), std::string::npos);  // the table is printed too
     EXPECT_NE(read_bytes(out / "chart.svg").find("</svg>"), std::string::npos);
+    // The animated row (issue 16): the skinned cylinder static and playing, its deformation timed.
+    ASSERT_TRUE(j.contains("animated"));
+    const nlohmann::json& a = j["animated"];
+    EXPECT_GE(a["triangles"].get<uint64_t>(), 20000u);
+    EXPECT_GT(a["deform_gpu_ms"].get<double>(), 0.0);
+    EXPECT_GT(a["animated_gpu_ms"].get<double>(), a["deform_gpu_ms"].get<double>());
+    EXPECT_GT(a["static_frame_ms"].get<double>(), 0.0);
+    EXPECT_GT(a["animated_drawn"].get<int64_t>(), 0);
+    EXPECT_GT(a["animated_candidates"].get<uint64_t>(), a["static_candidates"].get<uint64_t>()) << "stretch headroom";
+    EXPECT_NE(md.find("## Animated row"), std::string::npos);
 }
 
 TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
@@ -332,6 +342,7 @@ TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     }
     // Compared with the row of the same polygon count (the report's header says the models are spheres).
     EXPECT_DOUBLE_EQ(j["models"][0]["cells"][0]["paper_fps"].get<double>(), 60.39);
+    EXPECT_FALSE(j.contains("animated")) << "rows named with --models: no animated row unless asked";
 }
 
 TEST(BenchCommand, BadArgumentsFailWithOneLine) {

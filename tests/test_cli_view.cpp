@@ -19,11 +19,13 @@
 #include <sstream>
 #include <thread>
 
+#include "anim/procedural_rigs.hpp"
 #include "io/png_io.hpp"
 #include "mesh/ply_writer.hpp"
 #include "mesh/primitives.hpp"
 #include "support/run_command.hpp"
 #include "scene/scene_json.hpp"
+#include "support/anim_files.hpp"
 #include "support/test_paths.hpp"
 
 namespace stipple {
@@ -121,9 +123,10 @@ class ViewerSession {
 public:
     explicit ViewerSession(const std::filesystem::path& dir) : dir_(dir) {}
 
-    // An unused display number: no socket and no lock file.
-    bool start_x() {
-        for (int n = 87; n < 200; ++n) {
+    // An unused display number: no socket and no lock file. Tests that ctest may run at the same time
+    // start from different numbers, so they never race for one.
+    bool start_x(int first_display = 87) {
+        for (int n = first_display; n < first_display + 100; ++n) {
             if (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(n)) ||
                 std::filesystem::exists("/tmp/.X" + std::to_string(n) + "-lock"))
                 continue;
@@ -355,6 +358,49 @@ TEST(CliView, RegeneratesInTheBackgroundWithoutFreezing) {
     ASSERT_EQ(offline.exit_code, 0) << offline.err;
     const Image shown = read_png((dir / "final.png").string()), rendered = read_png((dir / "offline.png").string());
     EXPECT_EQ(fraction_differing(shown, rendered, 0), 0.0) << "the viewer shows another image than the offline render";
+}
+
+TEST(CliView, AnimationPlaysAndPauses) {
+    // An animated model plays in the viewer (its timeline's clock follows wall time), Space pauses it
+    // (the drawing then stays exactly still) and resumes it.
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-animation");
+    const std::string model = test::write_rig(anim::rigs::bending_cylinder(), "cli-view-animation-model", "cylinder");
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x(300)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({model, "--dmax", "0.05", "--width", "480", "--height", "400", "--screenshot-dir",
+                          (dir / "shots").string()});
+    ASSERT_TRUE(session.find_window()) << "no window appeared\n" << session.err();
+    session.focus();
+
+    auto shot = [&] {
+        std::string path = session.screenshot();
+        EXPECT_FALSE(path.empty()) << session.out() << session.err();
+        return path.empty() ? Image{} : read_png(path);
+    };
+    const Image playing_a = shot();
+    std::this_thread::sleep_for(400ms);
+    const Image playing_b = shot();
+    EXPECT_GT(fraction_differing(playing_a, playing_b, 8), 0.002) << "the animation did not move";
+
+    session.xdotool("key space");
+    std::this_thread::sleep_for(300ms);
+    const Image paused_a = shot();
+    std::this_thread::sleep_for(400ms);
+    const Image paused_b = shot();
+    EXPECT_EQ(fraction_differing(paused_a, paused_b, 0), 0.0) << "paused, the drawing must not change";
+
+    session.xdotool("key space");
+    std::this_thread::sleep_for(400ms);
+    const Image resumed = shot();
+    EXPECT_GT(fraction_differing(paused_b, resumed, 8), 0.002) << "Space did not resume the animation";
+
+    session.xdotool("key q");
+    EXPECT_EQ(session.viewer().wait_exit(30s), 0) << session.err();
+    const std::string err = session.err();
+    EXPECT_EQ(err.find("validation"), std::string::npos) << err;
+    EXPECT_EQ(err.find("error"), std::string::npos) << err;
 }
 
 }  // namespace

@@ -6,7 +6,7 @@ set(allowed_core core)
 set(allowed_io core io)
 set(allowed_params core params)
 set(allowed_mesh core mesh)
-set(allowed_stipple core mesh params stipple)
+set(allowed_stipple core mesh params anim stipple)  # anim: ObjectData carries a model's motion, its headroom shapes generation
 set(allowed_gpu core gpu)
 set(allowed_anim core mesh gpu anim)
 set(allowed_export core export)

@@ -24,7 +24,9 @@ BackgroundWork::~BackgroundWork() {
     worker_.join();
 }
 
-void BackgroundWork::regenerate(uint64_t object_id, std::shared_ptr<const Mesh> mesh, const ObjectParams& params) {
+void BackgroundWork::regenerate(uint64_t object_id, const ObjectData& model, const ObjectParams& params) {
+    ObjectData shape = model;
+    shape.stipples.reset();  // the old set is not needed by the worker
     std::lock_guard<std::mutex> lock(mutex_);
     auto same_object = [&](const Job& job) {
         return job.kind == FinishedWork::Kind::Regenerated && job.object_id == object_id;
@@ -32,14 +34,14 @@ void BackgroundWork::regenerate(uint64_t object_id, std::shared_ptr<const Mesh> 
     // The newest value wins: older requests for this object are dropped, a running one is cancelled.
     queue_.erase(std::remove_if(queue_.begin(), queue_.end(), same_object), queue_.end());
     if (running_ && same_object(*running_) && observer_) observer_->cancel();
-    queue_.push_back({FinishedWork::Kind::Regenerated, object_id, "", std::move(mesh), params,
+    queue_.push_back({FinishedWork::Kind::Regenerated, object_id, "", std::move(shape), params,
                       "new stipples for object " + std::to_string(object_id)});
     wake_.notify_one();
 }
 
 void BackgroundWork::load(const std::string& path, const ObjectParams& params) {
     std::lock_guard<std::mutex> lock(mutex_);
-    queue_.push_back({FinishedWork::Kind::Loaded, 0, path, nullptr, params, "loading " + path});
+    queue_.push_back({FinishedWork::Kind::Loaded, 0, path, ObjectData{}, params, "loading " + path});
     wake_.notify_one();
 }
 
@@ -109,11 +111,12 @@ FinishedWork BackgroundWork::execute(const Job& job) {
     if (job.kind == FinishedWork::Kind::Loaded) {
         work.data = load_object_data(job.path, job.params.generation);
     } else {
-        work.data.mesh = job.mesh;
-        work.data.stipples = make_stipples(*job.mesh, job.params.generation);
+        work.data = job.model;
+        work.data.stipples = make_stipples(job.model, job.params.generation);
     }
     work.upload = std::make_unique<ObjectUpload>(
-        prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed));
+        prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed,
+                              work.data.motion));
     return work;
 }
 

@@ -38,7 +38,8 @@ public:
     BackgroundWork(const BackgroundWork&) = delete;
     BackgroundWork& operator=(const BackgroundWork&) = delete;
 
-    void regenerate(uint64_t object_id, std::shared_ptr<const Mesh> mesh, const ObjectParams& params);
+    // New stipples for a loaded model (its mesh, and an animated one's motion: its headroom shapes them).
+    void regenerate(uint64_t object_id, const ObjectData& model, const ObjectParams& params);
     void load(const std::string& path, const ObjectParams& params);
 
     std::vector<FinishedWork> take_finished();
@@ -57,7 +58,7 @@ private:
         FinishedWork::Kind kind;
         uint64_t object_id = 0;
         std::string path;
-        std::shared_ptr<const Mesh> mesh;
+        ObjectData model;  // regenerations: the mesh and motion (no stipples)
         ObjectParams params;
         std::string label;
     };

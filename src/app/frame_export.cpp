@@ -19,13 +19,16 @@ namespace {
 // The scene's objects in `renderer`, each drawn by the splat (its CPU-density variant for the CPU paths):
 // all density paths draw the same stipples (tests/test_gpu_density.cpp), and the splat has no point-size
 // limit and records what it inks.
-void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects) {
+void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects,
+                       double scene_seconds) {
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
     for (size_t i = 0; i < objects.size(); ++i) {
         ObjectParams params = scene.objects[i].params;
         params.density_path = density_on_cpu(params.density_path) ? DensityPath::CpuSplat : DensityPath::Splat;
-        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(), params);
+        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(), params,
+                            objects[i].motion);
     }
+    set_scene_time(renderer, scene, objects, scene_seconds);
 }
 
 }  // namespace
@@ -57,10 +60,10 @@ PrintLayout print_layout(const PrintOptions& options) {
 }
 
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                   const FrameView& view, const PrintOptions& options) {
+                   const FrameView& view, const PrintOptions& options, double scene_seconds) {
     const PrintLayout layout = print_layout(options);
     StippleRenderer renderer(context, kColorFormat, context.depth_format);
-    add_splat_objects(renderer, scene, objects);
+    add_splat_objects(renderer, scene, objects, scene_seconds);
     FrameView print = view;
     print.extent = layout.drawing_px;
     print.detail_scale = layout.detail_scale;
@@ -79,11 +82,11 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
 }
 
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                              const FrameView& view) {
+                              const FrameView& view, double scene_seconds) {
     RendererOptions options;
     options.record_visible = true;
     StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
-    add_splat_objects(renderer, scene, objects);
+    add_splat_objects(renderer, scene, objects, scene_seconds);
     OffscreenTarget target(context, view.extent);
     target.draw(renderer, view);
 
@@ -111,8 +114,9 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
 }
 
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                             const FrameView& view, const plot::ExportOptions& options, const std::string& path) {
-    const plot::PlotPlan plan = plot::make_plot_plan(capture_drawing(context, scene, objects, view), options);
+                             const FrameView& view, const plot::ExportOptions& options, const std::string& path,
+                             double scene_seconds) {
+    const plot::PlotPlan plan = plot::make_plot_plan(capture_drawing(context, scene, objects, view, scene_seconds), options);
     plot::write_plot_file(plan, path);
     return plot::plot_stats(plan);
 }

@@ -18,8 +18,9 @@ namespace stipple::app {
 
 // The scene's frame as the export reads it. Every object is drawn by the splat (its CPU-density
 // variant for the CPU paths): all density paths draw the same stipples (tests/test_gpu_density.cpp).
+// `scene_seconds`: where animated objects are in their animations (set_scene_time).
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                              const FrameView& view);
+                              const FrameView& view, double scene_seconds = 0.0);
 
 // The last frame's visible object-space line pieces of one object as the export takes them (pixels,
 // origin top-left, y down).
@@ -47,10 +48,11 @@ struct PrintLayout {
 PrintLayout print_layout(const PrintOptions& options);
 // `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                   const FrameView& view, const PrintOptions& options);
+                   const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0);
 
 // Captures, lays out on the page, orders for the plotter and writes `path` (.svg, .pdf or .csv).
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                             const FrameView& view, const plot::ExportOptions& options, const std::string& path);
+                             const FrameView& view, const plot::ExportOptions& options, const std::string& path,
+                             double scene_seconds = 0.0);
 
 }  // namespace stipple::app

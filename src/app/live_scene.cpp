@@ -32,14 +32,25 @@ std::optional<size_t> LiveScene::index_of(uint64_t id) const {
     return std::nullopt;
 }
 
-void LiveScene::sync() {
+std::vector<std::string> LiveScene::sync(double scene_seconds) {
+    std::vector<std::string> refused;
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
-        ObjectParams params = scene_.objects[i].params;
+        ObjectParams& wanted = scene_.objects[i].params;
+        ObjectParams params = wanted;
         // Generation parameters only change with new stipples; until then the object keeps the old ones.
         params.generation = generated_with_[i].generation;
+        const DensityPath previous = renderer_.params(i).density_path;
         renderer_.params(i) = params;
+        try {
+            check_animated_path(renderer_.object(i));  // the renderer's own rule and wording
+        } catch (const Error& e) {
+            refused.push_back(e.what());
+            wanted.density_path = renderer_.params(i).density_path = previous;
+        }
         renderer_.model(i) = scene_.objects[i].transform.to_matrix();
     }
+    set_scene_time(renderer_, scene_, data_, scene_seconds);
+    return refused;
 }
 
 bool LiveScene::generation_changed(size_t object) const {
@@ -79,9 +90,10 @@ ObjectParams LiveScene::params_for_new_object() const {
 bool LiveScene::regenerate_if_changed(size_t object) {
     if (!generation_changed(object)) return false;
     const GenerationParams wanted = scene_.objects.at(object).params.generation;
-    auto stipples = make_stipples(*data_[object].mesh, wanted);
+    auto stipples = make_stipples(data_[object], wanted);
     apply_stipples(ids_[object], wanted, stipples,
-                   prepare_object_upload(renderer_.context(), *data_[object].mesh, *stipples, wanted.seed));
+                   prepare_object_upload(renderer_.context(), *data_[object].mesh, *stipples, wanted.seed,
+                                         data_[object].motion));
     return true;
 }
 
@@ -89,7 +101,8 @@ void LiveScene::add_model(const std::string& path) {
     if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
     const ObjectParams params = params_for_new_object();
     ObjectData data = load_object_data(path, params.generation);
-    const ObjectUpload upload = prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed);
+    const ObjectUpload upload =
+        prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed, data.motion);
     add_loaded(path, std::move(data), upload, params);
 }
 

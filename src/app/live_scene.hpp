@@ -23,14 +23,17 @@ public:
     const Scene& scene() const { return scene_; }
     size_t size() const { return scene_.objects.size(); }
     std::vector<std::string> names() const;  // file names, for the panel
+    const std::vector<ObjectData>& objects() const { return data_; }  // per scene object, what was loaded
     Sphere bounds() const;                   // world space, with the current transforms
 
     uint64_t id(size_t object) const { return ids_.at(object); }
     std::optional<size_t> index_of(uint64_t id) const;
-    const std::shared_ptr<const Mesh>& mesh(size_t object) const { return data_.at(object).mesh; }
+    const ObjectData& model(size_t object) const { return data_.at(object); }
 
-    // Copies the panel's edits into the renderer (cheap: a few bytes per object). Before prepare().
-    void sync();
+    // Copies the panel's edits into the renderer (cheap: a few bytes per object) and poses the animated
+    // objects at `scene_seconds`. Before prepare(). An edit the renderer refuses (a CPU density path for
+    // an animated object) is undone; the reasons come back, one line each.
+    std::vector<std::string> sync(double scene_seconds = 0.0);
     // True when the panel's generation parameters differ from those the stipples were made with.
     bool generation_changed(size_t object) const;
     // New stipples made elsewhere for object `id` with `generation` (ignored if the object is gone).

@@ -6,6 +6,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "app/background_work.hpp"
 #include "app/camera_control.hpp"
@@ -15,6 +16,7 @@
 #include "app/screenshot.hpp"
 #include "app/swapchain.hpp"
 #include "app/viewer_script.hpp"
+#include "app/timeline.hpp"
 #include "app/window.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -93,9 +95,10 @@ public:
         // panel the panel's even when it comes before the frame that would have noticed the cursor there.
         window_.set_capture_queries(
             [this](glm::dvec2 cursor) {
-                const glm::vec4& r = panel_rect_;
-                bool over_panel = cursor.x >= r.x && cursor.y >= r.y && cursor.x < r.x + r.z && cursor.y < r.y + r.w;
-                return panel_visible_ && (over_panel || overlay_->wants_mouse());
+                auto over = [&](const glm::vec4& r) {
+                    return cursor.x >= r.x && cursor.y >= r.y && cursor.x < r.x + r.z && cursor.y < r.y + r.w;
+                };
+                return panel_visible_ && (over(panel_rect_) || over(timeline_rect_) || overlay_->wants_mouse());
             },
             [this] { return panel_visible_ && overlay_->wants_text(); });
         VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
@@ -112,6 +115,7 @@ public:
         VkExtent2D size = window_.framebuffer_size();
         float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
         camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
+        timeline_.set_time(options.start_time);
     }
 
     ~Viewer() {
@@ -158,6 +162,9 @@ private:
     bool paused_ = false;
     PanelFigures figures_;
     glm::vec4 panel_rect_{0.0f};
+    Timeline timeline_;
+    glm::vec4 timeline_rect_{0.0f};
+    std::optional<Clock::time_point> last_frame_;  // when the timeline last moved on
     std::deque<std::string> messages_;
     std::vector<size_t> pending_regeneration_;
     BackgroundWork work_{context_};  // after live_ and context_; destroyed first (joins its worker)
@@ -353,6 +360,7 @@ void Viewer::handle_input(const Input& input, float aspect) {
                 break;
             case KeyCommand::SaveScene: save_scene(); break;
             case KeyCommand::Quit: window_.request_close(); break;
+            case KeyCommand::TogglePlay: timeline_.toggle_play(); break;
         }
     }
     for (const std::string& path : input.dropped) {
@@ -390,13 +398,17 @@ void Viewer::frame() {
     // New stipples are made in the background; the old ones are drawn until they are ready.
     for (size_t object : pending_regeneration_)
         if (object < live_.size() && live_.generation_changed(object))
-            work_.regenerate(live_.id(object), live_.mesh(object), live_.scene().objects[object].params);
+            work_.regenerate(live_.id(object), live_.model(object), live_.scene().objects[object].params);
     pending_regeneration_.clear();
     apply_finished_work();
     run_script();
     if (pending_removal_) live_.remove(*pending_removal_);
     pending_removal_.reset();
     handle_input(window_.take_input(), aspect);
+    // The clock moves with real time, whatever the frame rate.
+    const Clock::time_point now = Clock::now();
+    if (last_frame_) timeline_.advance(std::chrono::duration<double>(now - *last_frame_).count(), live_.scene(), live_.objects());
+    last_frame_ = now;
     if (window_.should_close() || !ensure_swapchain()) return;
 
     uint32_t image = 0;
@@ -424,6 +436,7 @@ void Viewer::frame() {
         figures_.work_fraction = status ? status->fraction : 0.0;
         figures_.work_queued = status ? status->queued : 0;
         handle_requests(draw_panel(live_.scene(), live_.names(), figures_), aspect);
+        timeline_rect_ = timeline_.draw(live_.scene(), live_.objects(), live_.names(), float(figures_.extent.height));
     }
     record(image);
 
@@ -458,7 +471,7 @@ void Viewer::frame() {
 }
 
 void Viewer::record(uint32_t image) {
-    live_.sync();
+    for (const std::string& refused : live_.sync(timeline_.time())) message(refused, true);
     FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), swapchain_.extent());
     renderer_.prepare(view);
 

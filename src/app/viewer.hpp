@@ -20,6 +20,7 @@ struct ViewerOptions {
     bool verbose = false;
     std::string script;     // --script: timed actions (viewer_script.hpp)
     std::string frame_log;  // --frame-log: one line per presented frame: milliseconds since start, 1 if background work ran
+    double start_time = 0.0;          // the animation timeline's clock at the start (--time)
 };
 
 // Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit

@@ -150,6 +150,7 @@ void Window::on_char(GLFWwindow* w, unsigned int c) {
         case 's': case 'S': out.push_back(KeyCommand::Screenshot); break;
         case 'v': case 'V': out.push_back(KeyCommand::ToggleVsync); break;
         case 'q': case 'Q': out.push_back(KeyCommand::Quit); break;
+        case ' ': out.push_back(KeyCommand::TogglePlay); break;
         default: break;
     }
 }

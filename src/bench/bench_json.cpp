@@ -111,6 +111,23 @@ std::string json_report(const BenchResults& r) {
         {"validation_messages", r.validation_messages},
         {"notes", r.notes},
     };
+    if (r.animated) {
+        const AnimatedRow& a = *r.animated;
+        j["animated"] = {{"model", a.model},
+                         {"triangles", a.triangles},
+                         {"vertices", a.vertices},
+                         {"static_candidates", a.static_candidates},
+                         {"animated_candidates", a.animated_candidates},
+                         {"max_area_ratio", a.max_area_ratio},
+                         {"static_frame_ms", a.static_frame_ms},
+                         {"animated_frame_ms", a.animated_frame_ms},
+                         {"static_gpu_ms", a.static_gpu_ms},
+                         {"animated_gpu_ms", a.animated_gpu_ms},
+                         {"deform_gpu_ms", a.deform_gpu_ms},
+                         {"deform_share_of_gpu_frame", a.deform_share()},
+                         {"static_drawn", a.static_drawn},
+                         {"animated_drawn", a.animated_drawn}};
+    }
     return j.dump(2) + "\n";
 }
 

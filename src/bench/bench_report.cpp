@@ -174,6 +174,29 @@ std::string fps_text(double fps) {
     return format("%.2f", fps);
 }
 
+namespace {
+
+// The animated row: the same skinned model static and playing its animation (issue 16).
+void animated_table(std::ostringstream& md, const BenchResults& r) {
+    if (!r.animated) return;
+    const AnimatedRow& a = *r.animated;
+    md << "## Animated row\n\n";
+    md << a.model << ", " << with_commas(a.triangles) << " triangles, " << with_commas(a.vertices)
+       << " vertices, splat path, standard view; animated: its \"Bend\" animation advancing 1/30 s per frame, "
+          "the mesh skinned and its polygons recomputed on the GPU each frame (candidates with stretch headroom: "
+       << with_commas(a.animated_candidates) << " against " << with_commas(a.static_candidates)
+       << " static; largest stretch " << format("%.2f", double(a.max_area_ratio)) << "x).\n\n";
+    md << "| | ms/frame | fps | GPU ms | deformation GPU ms | share of the GPU frame | drawn |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|\n";
+    md << format("| static | %.2f | %s | %.2f | – | – | %s |\n", a.static_frame_ms, fps_text(1000.0 / a.static_frame_ms).c_str(),
+                 a.static_gpu_ms, drawn_text(a.static_drawn).c_str());
+    md << format("| animated | %.2f | %s | %.2f | %.2f | %.1f%% | %s |\n\n", a.animated_frame_ms,
+                 fps_text(1000.0 / a.animated_frame_ms).c_str(), a.animated_gpu_ms, a.deform_gpu_ms,
+                 100.0 * a.deform_share(), drawn_text(a.animated_drawn).c_str());
+}
+
+}  // namespace
+
 std::string markdown_report(const BenchResults& results) {
     std::ostringstream md;
     header_lines(md, results);
@@ -181,6 +204,7 @@ std::string markdown_report(const BenchResults& results) {
     comparison_table(md, results);
     cell_table(md, results);
     model_table(md, results);
+    animated_table(md, results);
     for (const std::string& note : results.notes) md << "**Note:** " << note << "\n\n";
     if (results.validation_messages > 0)
         md << "**" << results.validation_messages << " Vulkan validation message(s) during the run: the figures are "

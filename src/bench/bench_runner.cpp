@@ -1,5 +1,7 @@
 #include "bench/bench_runner.hpp"
 
+#include "bench/animated_row.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -199,7 +201,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     set_options.cache_dir = options.cache_dir;
     set_options.only = options.models;
     set_options.log = log;
-    std::vector<ModelEntry> entries = prepare_model_set(set_options);
+    std::vector<ModelEntry> entries = options.animated_only ? std::vector<ModelEntry>{} : prepare_model_set(set_options);
 
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
@@ -266,6 +268,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                    model.bytes_per_candidate(), model.stipple_bytes_per_candidate(), by_path.c_str()));
         results.models.push_back(std::move(model));
     }
+    if (options.animated_triangles > 0) results.animated = run_animated_row(context, target, options, log);
     target_holder.reset();  // everything but the context is gone: destruction messages are counted too
     results.validation_messages = context.validation_message_count();
     results.total_seconds = seconds_since(run_start);

@@ -40,6 +40,10 @@ struct BenchOptions {
     std::filesystem::path models_dir = ModelSetOptions::default_models_dir();
     std::filesystem::path cache_dir = ModelSetOptions::default_cache_dir();
     std::filesystem::path image_dir;  // where to write each model's standard frame as PNG ("" = none)
+    // The animated row (issue 16): a skinned bending cylinder of at least this many triangles, timed with
+    // and without its animation. 0: no animated row.
+    uint32_t animated_triangles = 100'000;
+    bool animated_only = false;  // the animated row alone (no Table 1 rows)
     std::string command;              // the command line, recorded in the results
 };
 
@@ -79,6 +83,20 @@ struct ModelResult {
     }
 };
 
+// The animated row: the same skinned model drawn static (its rest mesh, stipples without headroom) and
+// playing its animation (deformation pass each frame, stipples with headroom), standard view, splat path.
+struct AnimatedRow {
+    std::string model;                  // what it is, e.g. "bending cylinder, 2 joints (200 rings x 256 segments)"
+    uint64_t triangles = 0, vertices = 0;
+    uint64_t static_candidates = 0, animated_candidates = 0;
+    float max_area_ratio = 1.0f;        // the animation's largest polygon stretch
+    double static_frame_ms = 0.0, animated_frame_ms = 0.0;  // median wall time per frame (as the cells)
+    double static_gpu_ms = 0.0, animated_gpu_ms = 0.0;      // median GPU time of all passes
+    double deform_gpu_ms = 0.0;         // median GPU time of the deformation pass (skinning + polygon constants)
+    int64_t static_drawn = -1, animated_drawn = -1;  // drawn stipples in a counting frame
+    double deform_share() const { return animated_gpu_ms > 0.0 ? deform_gpu_ms / animated_gpu_ms : 0.0; }
+};
+
 struct BenchResults {
     std::string command;
     std::string device;
@@ -91,6 +109,7 @@ struct BenchResults {
     std::string cache_dir;
     std::vector<Column> columns;
     std::vector<ModelResult> models;
+    std::optional<AnimatedRow> animated;
     double total_seconds = 0.0;
     uint32_t validation_messages = 0;
     std::vector<std::string> notes;  // checks that did not hold (printed and written with the tables)

@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "anim/describe.hpp"
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
@@ -8,6 +9,54 @@
 #include "stipple/object_data.hpp"
 
 namespace stipple::cli {
+
+namespace {
+
+std::string json_string(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+// The animation fields of --json (an empty "animations" list for a static model).
+std::string animation_json(const ObjectData& object) {
+    std::string out = "\"animations\": [";
+    if (!object.motion) return out + "]";
+    const anim::AnimationDescription d = anim::describe_animation(*object.motion.model);
+    for (size_t i = 0; i < d.animations.size(); ++i)
+        out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.animations[i].name) +
+               ", \"duration\": " + std::to_string(d.animations[i].duration) +
+               ", \"channels\": " + std::to_string(d.animations[i].channels) + "}";
+    out += "], \"skins\": [";
+    for (size_t i = 0; i < d.skins.size(); ++i)
+        out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.skins[i].name) +
+               ", \"joints\": " + std::to_string(d.skins[i].joints) + "}";
+    out += "], \"morph_targets\": [";
+    for (size_t i = 0; i < d.morphs.size(); ++i) {
+        out += (i ? ", " : "") + std::string("{\"mesh\": ") + json_string(d.morphs[i].mesh_name) + ", \"targets\": [";
+        for (size_t k = 0; k < d.morphs[i].target_names.size(); ++k)
+            out += (k ? ", " : "") + json_string(d.morphs[i].target_names[k]);
+        out += "]}";
+    }
+    const anim::StretchHeadroom& h = *object.motion.headroom;
+    char stretch[256];
+    std::snprintf(stretch, sizeof stretch,
+                  "], \"stretch\": {\"max_area_ratio\": %.6g, \"headroom_cap\": %.6g, \"stretched_polygons\": %zu, "
+                  "\"capped_polygons\": %zu, \"candidate_factor\": %.6g}",
+                  double(h.max_ratio), double(h.cap), h.stretched_triangles, h.capped_triangles, h.candidate_factor);
+    return out + stretch;
+}
+
+}  // namespace
 
 int run_info(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
@@ -33,12 +82,13 @@ int run_info(const std::vector<std::string>& argv) {
             "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
-            "\"from_cache\": %s}\n",
+            "\"from_cache\": %s, %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
             object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
             stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
-            stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false");
+            stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
+            animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());
         std::printf("triangles:           %zu\n", mesh.triangle_count());
@@ -47,8 +97,15 @@ int run_info(const std::vector<std::string>& argv) {
         std::printf("surface area:        %.6g\n", area);
         std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,
                     bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
-        std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g\n", object.bounds.center.x,
-                    object.bounds.center.y, object.bounds.center.z, object.bounds.radius);
+        std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g%s\n", object.bounds.center.x,
+                    object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
+                    object.motion ? " (every pose of every animation)" : "");
+        if (object.motion) {
+            const auto lines = anim::describe_lines(anim::describe_animation(*object.motion.model));
+            for (size_t i = 0; i < lines.size(); ++i) std::printf("%-21s%s\n", i ? "" : "motion:", lines[i].c_str());
+            std::printf("stretch headroom:    %s\n",
+                        anim::describe_headroom(*object.motion.headroom, mesh.triangle_count()).c_str());
+        }
         std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
                     object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);
         if (stipples.from_cache)

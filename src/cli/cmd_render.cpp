@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 
+#include "cli/animation_options.hpp"
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
 #include "app/frame_export.hpp"
@@ -73,6 +74,7 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
         // Paths stay as typed, so that loader errors name the file as the user wrote it.
         for (const std::string& path : args.positionals()) scene.objects.push_back({path, {}, params});
     }
+    apply_animation_option(args, scene);
     // Explicit view options override the scene's camera and light.
     if (args.has("--yaw")) scene.camera.yaw_deg = float(args.number("--yaw", 0.0));
     if (args.has("--pitch")) scene.camera.pitch_deg = float(args.number("--pitch", 0.0));
@@ -99,6 +101,7 @@ int run_render(const std::vector<std::string>& argv) {
     options.merge(vector_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
                     "--device", "--frames", "--orbit"});
+    options.merge(animation_options());
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -143,13 +146,15 @@ int run_render(const std::vector<std::string>& argv) {
     SceneContent content = load_scene_content(scene);
     double prepare_seconds = seconds_since(start);
 
+    const bool animated = any_animated(content.objects);
+    const AnimationClock clock = read_animation_clock(args, animated);
     float aspect = float(width) / float(height);
     if (print) {
         const VkExtent2D drawing = app::print_layout(*print).drawing_px;
         aspect = float(drawing.width) / float(drawing.height);
     }
     Sphere bounds = scene_bounds(scene, content.objects);
-    std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit);
+    std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit, animated);
     const bool sequence = cameras.size() > 1;
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
@@ -178,9 +183,10 @@ int run_render(const std::vector<std::string>& argv) {
     for (size_t i = 0; i < cameras.size(); ++i) {
         // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
         view = scene_frame_view(scene, cameras[i], bounds, print ? app::print_layout(*print).drawing_px : extent);
+        if (animated) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
         auto render_start = std::chrono::steady_clock::now();
         if (print) {
-            const Image page = app::render_print(context, scene, content.objects, view, *print);
+            const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0);
             render_seconds = seconds_since(render_start);
             write_png(output_path(output, i, sequence), page);
             bar.update(double(i + 1) / double(cameras.size()));
@@ -190,7 +196,8 @@ int run_render(const std::vector<std::string>& argv) {
         render_seconds = seconds_since(render_start);
         if (vector) {
             const plot::PlotStats plot =
-                app::export_frame(context, scene, content.objects, view, vector_options, output_path(output, i, sequence));
+                app::export_frame(context, scene, content.objects, view, vector_options, output_path(output, i, sequence),
+                                  animated ? clock.frame_time(i) : 0.0);
             if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(plot).c_str());
         } else {
             write_png(output_path(output, i, sequence), frame.color);
@@ -225,6 +232,14 @@ int run_render(const std::vector<std::string>& argv) {
             if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
                 paths += std::string(paths.empty() ? "" : ", ") + density_path_name(o.params.density_path);
         std::printf("density path:       %s\n", paths.c_str());
+        for (size_t i = 0; i < content.objects.size(); ++i) {
+            const ObjectData& o = content.objects[i];
+            if (!o.motion) continue;
+            const anim::Animation& a = o.motion.model->animations[size_t(resolve_animation(o, scene.objects[i].animation))];
+            std::printf("animation:          object %zu: '%s' (%.3f s) at %.3f s%s\n", i, a.name.c_str(), a.duration,
+                        scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
+                        sequence ? " (last frame)" : "");
+        }
         for (const auto& [pass, ms] : stats.gpu_ms) std::printf("gpu %-16s%.3f ms\n", (pass + ":").c_str(), ms);
         if (stats.cpu_draw_commands > 0 || paths.find("cpu") != std::string::npos)
             std::printf("cpu density:        %.3f ms, %llu draws\n", stats.cpu_density_ms,

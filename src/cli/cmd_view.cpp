@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "app/viewer.hpp"
+#include "cli/animation_options.hpp"
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
@@ -15,7 +16,7 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames", "--script", "--frame-log"});
+                    "--save-scene", "--benchmark-frames", "--script", "--frame-log", "--animation", "--time"});
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -41,6 +42,7 @@ int run_view(const std::vector<std::string>& argv) {
     Scene scene = scene_from_command_line(args, "view");
     viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
     SceneContent content = load_scene_content(scene);
+    viewer.start_time = read_animation_clock(args, any_animated(content.objects)).time;
     if (scene.source.empty() && scene.objects.size() > 1) {
         // Models given side by side on the command line come in any units; line them up.
         std::vector<Sphere> spheres;

@@ -56,6 +56,11 @@ Render options:
                           N evenly spaced points (a camera_path alone gives one frame per keyframe)
   --orbit DEG             turn the camera by DEG in total around the scene's centre, DEG*i/N at
                           frame i (so 360 loops without a repeated frame); needs --frames
+  --animation NAME|N      what an animated glTF MODEL plays: an animation's name or index (default:
+                          its first); `stipple info MODEL` lists them
+  --time SECONDS          the scene clock of the (first) frame (default 0); animations loop
+  --fps F                 frames per second of a --frames N sequence (default 30): frame i shows
+                          --time + i/F; with an animated model --frames alone renders the animation
 
 Vector and print output (render):
   -o x.svg | x.pdf | x.csv
@@ -88,6 +93,7 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
+  --animation NAME|N, --time SECONDS   as for render: the animation MODELs play, the clock's start
   --verbose               print the device and every swapchain (re)creation
   --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
@@ -98,11 +104,13 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
   H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
-  vsync, Ctrl+S saves the scene, Escape or Q quits. The panel sets every per-object parameter
-  (generation parameters take effect on release or Enter: new stipples are made in the background
-  with a progress bar while the old ones are drawn, and a newer value cancels an older one; dropped
-  models load in the background too), the light, paper and ink colours, and shows fps, CPU frame
-  time, GPU time per pass and stipple counts.
+  vsync, Space plays or pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
+  sets every per-object parameter (generation parameters take effect on release or Enter: new
+  stipples are made in the background with a progress bar while the old ones are drawn, and a newer
+  value cancels an older one; dropped models load in the background too), the light, paper and ink
+  colours, and shows fps, CPU frame time, GPU time per pass and stipple counts. With an animated
+  model a timeline window plays, pauses and scrubs the animation, sets its speed and loop, and
+  chooses each object's animation.
 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
@@ -112,7 +120,9 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
     // The parameters come from the one table (src/params/param_table.cpp): never retyped here.
     std::istringstream example(param_scene_example());
     for (std::string line; std::getline(example, line);) std::printf("                %s\n", line.c_str());
-    std::printf(R"(   }],
+    std::printf(R"(                (an animated glTF model also: "animation": {"name": "Walk" or an index (default:
+                 its first), "start": seconds into it at time 0, "speed": 1, "loop": true})
+   }],
    "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
               "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
    "camera_path": [camera, camera, ...],
@@ -127,6 +137,8 @@ Stipple options (render, view and info; a SCENE.json sets them per object instea
     std::printf(R"(
 Info options:
   --json                  print the figures as JSON
+  An animated glTF model also lists its animations (durations, channels), skins (joints) and morph
+  targets, and its stretch headroom: the largest area any polygon reaches and the candidates that buys.
 
 Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
 reopened with the same generation parameters skips generation (~2-3 bytes per stipple, checked
@@ -141,6 +153,9 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
+  --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
+                          not run when --models names rows, unless this is given)
+  --animated-only         the animated row alone
 
 Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any

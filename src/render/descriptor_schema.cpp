@@ -32,6 +32,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingFacing, kStorage}, [](const O& o) { return o.frame.facing.handle(); }},
     {{gpu::kBindingLinePieces, kStorage}, [](const O& o) { return o.frame.line_pieces.handle(); }},
     {{gpu::kBindingLineCandidates, kStorage}, [](const O& o) { return o.frame.line_candidates.handle(); }},
+    {{gpu::kBindingFullAreas, kStorage}, [](const O& o) { return o.polygons.full_areas.handle(); }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "render/density_formulas.hpp"
+#include "render/deform_pass.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/path_buffers.hpp"
 #include "render/polygon_constants.hpp"
@@ -89,6 +90,8 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     object.polygons.box_min = upload.polygons.box_min;
     object.polygons.box_size = upload.polygons.box_size;
     object.polygons.gpu = std::move(buffers[kPolygons]);
+    // Filled for animated objects (create_object_animation); the descriptor set needs a buffer.
+    object.polygons.full_areas = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
 
     ObjectFrame& frame = object.frame;
     frame.triangle_draw = std::move(buffers[kDensities]);
@@ -117,7 +120,7 @@ ObjectGpu::~ObjectGpu() {
 }
 
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
-                                   uint64_t seed) {
+                                   uint64_t seed, const anim::Motion& motion) {
     STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
     check_device_fits(context, mesh, stipples.size());
     ObjectUpload upload;
@@ -125,7 +128,11 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     upload.triangle_count = uint32_t(mesh.triangle_count());
     upload.stipple_count = uint32_t(stipples.size());
     upload.first_stipple.assign(stipples.first.begin(), stipples.first.end());
-    upload.polygons = compute_polygon_constants(mesh, stipples, seed);
+    upload.polygons = compute_polygon_constants(mesh, stipples, seed, motion ? &motion.headroom->bounds : nullptr);
+    if (motion) {
+        upload.motion = motion;
+        upload.full_areas = animated_full_areas(mesh, motion);
+    }
     const std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
     std::vector<gpu::TriangleDraw> draws(upload.triangle_count);
     for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, upload.first_stipple[t]};
@@ -133,7 +140,8 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     upload.staged.resize(kStagedCount);
     // The stipple shaders read the corners of the polygons whose stipples they place.
     upload.staged[kPositions] = gpu::stage_buffer(context, std::span(mesh.positions), vertex | storage);
-    upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex);
+    // Storage too: an animated object's deformation pass writes them.
+    upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex | storage);
     upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
     upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage);
     upload.staged[kPolygons] = gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage);
@@ -155,6 +163,8 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->params = params;
     object->model = model;
     upload_object(context, upload, count_drawn, *object);
+    if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);
+    check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);
     ensure_path_buffers(*object, params.density_path);
     return object;
@@ -253,6 +263,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (print || draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
     if (p.two_sided) flags |= gpu::kFlagTwoSided;
+    if (object.animation) flags |= gpu::kFlagStretch;
     const ObjectGeometry& g = object.geometry;
     if (draws_edge_lines(object)) {
         flags |= gpu::kFlagFacingBits;

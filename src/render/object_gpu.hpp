@@ -2,8 +2,8 @@
 // One object's data on the GPU, in three parts by how often they change:
 //   ObjectGeometry    uploaded once: the mesh (depth pass, stipple placement) and the candidate stipples;
 //   PolygonConstants  the per-polygon constants the density reads (centroid, normal, area, selection),
-//                     with the bounds and quantisation box of the object's current shape: computed on
-//                     the CPU at creation today, rewritable per frame by a pass that deforms the mesh;
+//                     with the bounds and quantisation box of the object's shape: computed on the CPU at
+//                     creation, and rewritten each frame for an animated object (render/deform_pass.hpp);
 //   ObjectFrame       this frame's uniforms, densities and the buffers of the density paths in use.
 // The CPU density paths read PolygonConstants::cpu and ObjectGeometry::first_stipple (nothing else).
 #include <memory>
@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "anim/headroom.hpp"
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
@@ -20,6 +21,7 @@
 namespace stipple {
 
 struct FrameView;
+struct ObjectAnimation;
 
 struct ObjectGeometry {
     uint32_t index_count = 0;
@@ -28,8 +30,10 @@ struct ObjectGeometry {
     std::vector<uint32_t> first_stipple;  // per polygon, and one more: where the last one's candidates end
     float candidates(size_t triangle) const { return float(first_stipple[triangle + 1] - first_stipple[triangle]); }
 
-    gpu::Buffer positions;  // mesh vertices (depth pass, line passes; the stipple shaders read the corners)
-    gpu::Buffer normals;    // mesh vertex normals (toon silhouettes)
+    // Mesh vertices (depth pass, line passes; the stipple shaders read the corners) and vertex normals
+    // (toon silhouettes): an animated object's are rewritten each frame by the deformation pass.
+    gpu::Buffer positions;
+    gpu::Buffer normals;
     gpu::Buffer indices;    // mesh triangles
     gpu::Buffer stipples;   // StippleVertex per candidate: (u, v) in its polygon, so it follows the surface
     // Every edge of the mesh once with its polygons (§3.1 and object-space lines), built the first time
@@ -42,9 +46,12 @@ struct ObjectGeometry {
 
 struct PolygonConstants {
     gpu::Buffer gpu;                      // TriangleInfo per polygon (16 bytes, packed)
-    std::vector<gpu::TriangleInfo> cpu;   // the same, for the CPU density paths
-    Sphere bounds;                        // object space, of the current shape (distance enhancement, thinning)
-    glm::vec3 box_min{0.0f}, box_size{0.0f};  // object space: the box the centroids are quantised in
+    std::vector<gpu::TriangleInfo> cpu;   // the same, for the CPU density paths (an animated object's: its rest pose)
+    // Object space, of the rest shape (distance enhancement's reference scale, thinning): the sphere
+    // generation framed in its reference view.
+    Sphere bounds;
+    glm::vec3 box_min{0.0f}, box_size{0.0f};  // object space: the box the centroids are quantised in (every pose)
+    gpu::Buffer full_areas;  // animated objects: float per polygon, rest area x headroom; else a placeholder
 };
 
 struct ObjectFrame {
@@ -80,6 +87,7 @@ struct ObjectGpu {
     ObjectGeometry geometry;
     PolygonConstants polygons;
     ObjectFrame frame;
+    std::unique_ptr<ObjectAnimation> animation;  // null for a static object
 
     // The object's descriptor set (render/descriptor_schema.hpp says which buffer each binding reads).
     const gpu::Context* context = nullptr;
@@ -98,9 +106,12 @@ struct ObjectUpload {
     // The GPU's initial data, in this order: positions, normals, indices, stipples (StippleVertex),
     // polygon constants (TriangleInfo), densities (TriangleDraw, zero, with each first stipple).
     std::vector<gpu::StagedBuffer> staged;
+    anim::Motion motion;             // an animated object's (empty for a static one)
+    std::vector<float> full_areas;   // animated: per polygon, rest area x headroom (animated_full_areas)
 };
+// `motion`: an animated glTF's (the mesh is its rest mesh): the quantisation box holds every pose.
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
-                                   uint64_t seed);
+                                   uint64_t seed, const anim::Motion& motion = {});
 
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "render/density_formulas.hpp"
+#include "render/path_buffers.hpp"
 #include "render/shared_types.hpp"
 #include "stipple/selection_order.hpp"
 #include "stipple/stipple_cache.hpp"
@@ -12,17 +14,6 @@
 namespace stipple {
 
 namespace {
-
-// The inverse of formulas::octahedral_to_unit: the unit sphere onto the octahedron, the lower half folded out.
-glm::vec2 unit_to_octahedral(glm::vec3 n) {
-    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
-    glm::vec2 p(n.x, n.y);
-    if (n.z < 0.0f) {
-        glm::vec2 sign(p.x >= 0.0f ? 1.0f : -1.0f, p.y >= 0.0f ? 1.0f : -1.0f);
-        p = (1.0f - glm::abs(glm::vec2(p.y, p.x))) * sign;
-    }
-    return p;
-}
 
 uint32_t unorm16(float value) { return uint32_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 65535.0f)); }
 
@@ -42,16 +33,17 @@ std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const st
         glm::vec3 center = ((a + b + c) / 3.0f - box_min) * inverse_size;
         infos[t].center_xy = unorm16(center.x) | unorm16(center.y) << 16;
         infos[t].center_z_selection = unorm16(center.z) | uint32_t(selection_step(selection[t])) << 16;
-        infos[t].normal = glm::packSnorm2x16(unit_to_octahedral(normal));
+        infos[t].normal = glm::packSnorm2x16(formulas::unit_to_octahedral(normal));
         infos[t].area = 0.5f * length;
     }
     return infos;
 }
 
-PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed) {
+PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed,
+                                           const Bounds* quantisation_box) {
     PolygonConstants polygons;
     polygons.bounds = compute_bounding_sphere(mesh);
-    const Bounds box = compute_bounds(mesh);
+    const Bounds box = quantisation_box ? *quantisation_box : compute_bounds(mesh);
     polygons.box_min = box.min;
     polygons.box_size = box.max - box.min;
     const std::vector<float> selection = stipples.selection.size() == mesh.triangle_count()

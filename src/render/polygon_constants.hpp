@@ -10,9 +10,11 @@
 namespace stipple {
 
 // The constants of `mesh` in its current shape: the CPU copy, its bounds and quantisation box (the GPU
-// buffer is left for create_object_gpu). Selection values come from `stipples` when it carries them, else
-// are ranked here (seeded). CPU only: safe on any thread.
-PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed);
+// buffers are left for create_object_gpu). Selection values come from `stipples` when it carries them,
+// else are ranked here (seeded). `box`: the quantisation box when it must hold more than this shape
+// (every pose of an animation). CPU only: safe on any thread.
+PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& stipples, uint64_t seed,
+                                           const Bounds* box = nullptr);
 
 // Packs the polygons of `mesh` with centroids in the box [box_min, box_min + box_size].
 std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const std::vector<float>& selection,

@@ -28,12 +28,14 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       timer_(context) {
     layouts_ = create_render_layouts(context);
     create_pipelines(color_format, depth_format);
+    deform_pass_ = std::make_unique<DeformPass>(context, layouts_.pipeline);
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 }
 
 StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
+    deform_pass_.reset();
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, density_pipeline_,
                          density_list_pipeline_, facing_pipeline_, draw_commands_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
@@ -110,8 +112,8 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
 }
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
-                                   const ObjectParams& params) {
-    return add_object(prepare_object_upload(context_, mesh, stipples, params.generation.seed), model, params);
+                                   const ObjectParams& params, const anim::Motion& motion) {
+    return add_object(prepare_object_upload(context_, mesh, stipples, params.generation.seed, motion), model, params);
 }
 
 size_t StippleRenderer::add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params) {
@@ -139,6 +141,17 @@ void StippleRenderer::remove_object(size_t object) {
 ObjectParams& StippleRenderer::params(size_t object) { return objects_.at(object)->params; }
 glm::mat4& StippleRenderer::model(size_t object) { return objects_.at(object)->model; }
 
+void StippleRenderer::set_animation(size_t object, int animation, double seconds, bool loop) {
+    ObjectAnimation* a = objects_.at(object)->animation.get();
+    STIPPLE_CHECK(a, "set_animation: the object is not animated");
+    STIPPLE_CHECK(animation == anim::kRestPose ||
+                      (animation >= 0 && size_t(animation) < a->motion.model->animations.size()),
+                  "set_animation: no such animation");
+    a->animation = animation;
+    a->seconds = seconds;
+    a->loop = loop;
+}
+
 void StippleRenderer::prepare(const FrameView& view) {
     view_ = view;
     frame_ = {};
@@ -159,6 +172,7 @@ void StippleRenderer::prepare(const FrameView& view) {
     auto cpu_start = std::chrono::steady_clock::now();
     for (auto& object : objects_) {
         validate_params(object->params);
+        check_animated_path(*object);
         ensure_path_buffers(*object, object->params.density_path);
         if (draws_edge_lines(object->params)) ensure_line_buffers(*object);  // before the uniforms, which count the edges
         if (options_.record_visible) ensure_visible_list(*object);
@@ -174,6 +188,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         stats_.candidate_stipples += object->geometry.stipple_count;
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+    DeformPass::evaluate(objects_);
 }
 
 bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
@@ -305,6 +320,11 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
                               color_format_ == VK_FORMAT_R8G8B8A8_SRGB || color_format_ == VK_FORMAT_B8G8R8A8_SRGB;
     splat_targets_ = packed_color && targets.splat_transfers;
     timer_.begin_frame(cb);
+    if (deform_pass_->record_skinning(cb, objects_)) {  // animated objects (render/deform_pass.hpp)
+        timer_.mark(cb, "skinning");
+        deform_pass_->record_polygons(cb, objects_);
+        timer_.mark(cb, "polygons");
+    }
     record_density(cb);
     timer_.mark(cb, "density");
     const bool any_lines =

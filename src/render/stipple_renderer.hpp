@@ -18,6 +18,7 @@
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
+#include "render/deform_pass.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/object_gpu.hpp"
 #include "params/object_params.hpp"
@@ -82,8 +83,10 @@ public:
     StippleRenderer(const StippleRenderer&) = delete;
     StippleRenderer& operator=(const StippleRenderer&) = delete;
 
+    // `motion`: an animated model (its rest mesh is `mesh`, its stipples generated with its headroom);
+    // the object then deforms every frame at the time set_animation gives (animation 0 at 0 s until then).
     size_t add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
-                      const ObjectParams& params);
+                      const ObjectParams& params, const anim::Motion& motion = {});
     // The same from the CPU half prepared beforehand (prepare_object_upload, e.g. on a worker thread).
     size_t add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params);
     // New mesh or stipples for an object, in place (waits for the GPU); its transform and parameters stay.
@@ -92,6 +95,10 @@ public:
     void remove_object(size_t object);  // waits for the GPU; later objects move down by one
     ObjectParams& params(size_t object);  // validated again at the next prepare()
     glm::mat4& model(size_t object);
+    bool is_animated(size_t object) const { return objects_.at(object)->animation != nullptr; }
+    // An animated object's pose for the next frames: `animation` (an index of its model's, or
+    // anim::kRestPose) at `seconds`, wrapped into the animation when looping, else clamped.
+    void set_animation(size_t object, int animation, double seconds, bool loop = true);
 
     // CPU part of a frame (uniforms, CPU-path densities). The GPU must have finished the previous frame.
     void prepare(const FrameView& view);
@@ -141,6 +148,7 @@ private:
     VkFormat color_format_;
     VkFormat depth_format_;
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
+    std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
     VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;

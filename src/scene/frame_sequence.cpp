@@ -24,7 +24,7 @@ OrbitCamera lerp(const OrbitCamera& a, const OrbitCamera& b, float t) {
 }  // namespace
 
 std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_bounds, float aspect, size_t frames,
-                                       std::optional<float> orbit_deg) {
+                                       std::optional<float> orbit_deg, bool animated) {
     std::vector<OrbitCamera> cameras;
     if (orbit_deg) {
         if (frames == 0) fail("--orbit needs --frames N (N >= 1)");
@@ -37,8 +37,9 @@ std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_b
         return cameras;
     }
     if (scene.camera_path.empty()) {
-        if (frames > 1) fail("a frame sequence needs --orbit DEG or a camera_path in the scene file");
-        cameras.push_back(resolve_camera(scene.camera, scene_bounds, aspect));
+        if (frames > 1 && !animated)
+            fail("a frame sequence needs --orbit DEG, a camera_path in the scene file or an animated model");
+        cameras.assign(std::max<size_t>(frames, 1), resolve_camera(scene.camera, scene_bounds, aspect));
         return cameras;
     }
     std::vector<OrbitCamera> keys;

@@ -14,10 +14,10 @@ namespace stipple {
 // orbit_deg * i / frames around the target (so 360 over N frames loops without a repeated frame).
 // Without it, the scene's camera_path is sampled at `frames` evenly spaced points, linearly
 // between keyframes, the first and last frames on the first and last keyframes (frames == 0: one
-// frame per keyframe). Without either, one frame of the scene's camera. Throws on a sequence that
-// has no camera motion to follow.
+// frame per keyframe). Without either, one frame of the scene's camera, or `frames` of it when the
+// scene is `animated` (the animation is the motion). Throws on a sequence that has no motion to follow.
 std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_bounds, float aspect, size_t frames,
-                                       std::optional<float> orbit_deg);
+                                       std::optional<float> orbit_deg, bool animated = false);
 
 // True when `pattern` holds a frame number conversion: %d or %0Nd (printf style; %% is a literal %).
 // Throws on any other conversion or on more than one frame number.

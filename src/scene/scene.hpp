@@ -25,10 +25,24 @@ struct Transform {
     glm::mat4 to_matrix() const;
 };
 
+// What an animated model plays (glTF animations, issue 16): scene files' "animation" field, and
+// `--animation` / `--time` for models given on the command line. Ignored for a static model, which
+// rejects a name.
+struct AnimationChoice {
+    std::string name;     // the animation's name, or its index ("0", "1", ...); "" for the model's first
+    double start = 0.0;   // seconds into the animation at scene time 0
+    double speed = 1.0;   // animation seconds per scene second (negative plays backwards)
+    bool loop = true;     // past its end the animation starts again; else it holds its last pose
+
+    double time_at(double scene_seconds) const { return start + speed * scene_seconds; }
+    bool is_default() const { return name.empty() && start == 0.0 && speed == 1.0 && loop; }
+};
+
 struct SceneObject {
     std::string model;  // as written in the scene file (relative to Scene::base_dir) or absolute
     Transform transform;
     ObjectParams params;
+    AnimationChoice animation;
 };
 
 // Where the camera looks from. By default it orbits the centre of the scene's bounds at a multiple

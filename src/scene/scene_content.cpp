@@ -3,6 +3,7 @@
 #include <map>
 #include <vector>
 
+#include "anim/pose.hpp"
 #include "core/error.hpp"
 #include "core/timing.hpp"
 #include "params/param_table.hpp"
@@ -19,33 +20,38 @@ using GenerationKey = std::pair<std::string, std::vector<double>>;
 
 SceneContent load_scene_content(const Scene& scene) {
     SceneContent content;
-    std::map<std::string, std::pair<std::shared_ptr<const Mesh>, Sphere>> meshes;
+    std::map<std::string, ObjectData> models;
     std::map<GenerationKey, std::shared_ptr<const StippleSet>> stipples;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const std::string path = scene.model_path(i);
         const ObjectParams& params = scene.objects[i].params;
         validate_params(params);
         ObjectData object;
+        // A scene file names itself and the object; a bare model keeps the loader's own line.
+        const auto in_scene = [&](const std::string& field, const Error& e) {
+            if (scene.source.empty()) throw e;
+            fail_file(scene.source, "objects[" + std::to_string(i) + "]." + field + ": " + e.what());
+        };
         try {
-            auto found = meshes.find(path);
-            if (found == meshes.end()) {
-                double seconds = 0.0;
-                auto mesh = load_drawing_mesh(path, &seconds);
-                content.load_seconds += seconds;
-                found = meshes.emplace(path, std::make_pair(mesh, compute_bounding_sphere(*mesh))).first;
+            auto found = models.find(path);
+            if (found == models.end()) {
+                found = models.emplace(path, load_model_data(path)).first;
+                content.load_seconds += found->second.load_seconds;
             }
-            object.mesh = found->second.first;
-            object.bounds = found->second.second;
+            object = found->second;
         } catch (const Error& e) {
-            // A scene file names itself and the object; a bare model keeps the loader's own line.
-            if (scene.source.empty()) throw;
-            fail_file(scene.source, "objects[" + std::to_string(i) + "].model: " + e.what());
+            in_scene("model", e);
+        }
+        try {
+            resolve_animation(object, scene.objects[i].animation);
+        } catch (const Error& e) {
+            in_scene("animation.name", e);
         }
         const GenerationKey key{path, generation_values(params.generation)};
         auto set = stipples.find(key);
         if (set == stipples.end()) {
             const auto start = Clock::now();
-            set = stipples.emplace(key, make_stipples(*object.mesh, params.generation)).first;
+            set = stipples.emplace(key, make_stipples(object, params.generation)).first;
             content.generation_seconds += seconds_since(start);
         }
         object.stipples = set->second;
@@ -68,7 +74,27 @@ void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std:
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
     for (size_t i = 0; i < objects.size(); ++i)
         renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(),
-                            scene.objects[i].params);
+                            scene.objects[i].params, objects[i].motion);
+}
+
+int resolve_animation(const ObjectData& model, const AnimationChoice& choice) {
+    if (!model.motion) {
+        if (choice.name.empty()) return anim::kRestPose;
+        fail_file(model.mesh ? model.mesh->source : std::string("model"),
+                  "has no animation to play (animation '" + choice.name + "' was asked for)");
+    }
+    return choice.name.empty() ? 0 : anim::find_animation(*model.motion.model, choice.name);
+}
+
+void set_scene_time(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects,
+                    double scene_seconds) {
+    STIPPLE_CHECK(scene.objects.size() == objects.size() && renderer.object_count() == objects.size(),
+                  "one ObjectData and one renderer object per scene object");
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (!objects[i].motion) continue;
+        const AnimationChoice& choice = scene.objects[i].animation;
+        renderer.set_animation(i, resolve_animation(objects[i], choice), choice.time_at(scene_seconds), choice.loop);
+    }
 }
 
 FrameView scene_frame_view(const Scene& scene, const OrbitCamera& camera, const Sphere& bounds, VkExtent2D extent) {

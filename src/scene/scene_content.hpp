@@ -21,15 +21,25 @@ struct SceneContent {
 };
 
 // Loads every model once and generates stipples (a progress bar for big models on a terminal).
-// A scene from a file prefixes loader errors with "<scene>: objects[i].model: ".
+// A scene from a file prefixes loader errors with "<scene>: objects[i].model: " and an unknown
+// animation with "<scene>: objects[i].animation.name: ".
 SceneContent load_scene_content(const Scene& scene);
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.
 Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects);
 
-// Adds every object, with its transform and parameters, to `renderer` (in scene order).
+// Adds every object, with its transform, parameters and motion, to `renderer` (in scene order).
 void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects);
+
+// The animation `choice` names in `model`: its index ("" is the first). Throws a one-line error naming
+// the model and its animations when there is no such animation or the model has none to play.
+int resolve_animation(const ObjectData& model, const AnimationChoice& choice);
+
+// Poses every animated object at `scene_seconds` of the scene's clock (each object's choice sets its
+// animation, start, speed and loop). Renderer objects are the scene's, in order.
+void set_scene_time(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects,
+                    double scene_seconds);
 
 // The frame a scene's camera sees: matrices with near/far hugging the scene's bounds, its light and colours.
 FrameView scene_frame_view(const Scene& scene, const OrbitCamera& camera, const Sphere& bounds, VkExtent2D extent);

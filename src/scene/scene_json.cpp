@@ -166,6 +166,42 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
     return t;
 }
 
+// "animation": {"name": "Walk" (or an index), "start": seconds, "speed": factor, "loop": true}.
+AnimationChoice read_animation(const json& j, const Reader& r, const std::string& where) {
+    r.expect_object(j, where, {"name", "start", "speed", "loop"});
+    AnimationChoice a;
+    if (j.contains("name")) {
+        const json& name = j["name"];
+        const std::string w = Reader::field(where, "name");
+        if (name.is_number_unsigned())
+            a.name = std::to_string(name.get<uint64_t>());
+        else if (name.is_string() && !name.get<std::string>().empty())
+            a.name = name.get<std::string>();
+        else
+            r.error(w, std::string("expected an animation name or index, got ") +
+                           (name.is_string() ? "an empty string" : name.type_name()));
+    }
+    if (j.contains("start")) {
+        a.start = r.number(j["start"], Reader::field(where, "start"));
+        if (std::abs(a.start) > 1e6) r.error(Reader::field(where, "start"), "must be in -1e6..1e6 seconds");
+    }
+    if (j.contains("speed")) {
+        a.speed = r.number(j["speed"], Reader::field(where, "speed"));
+        if (std::abs(a.speed) > 1000.0) r.error(Reader::field(where, "speed"), "must be in -1000..1000");
+    }
+    if (j.contains("loop")) a.loop = r.boolean(j["loop"], Reader::field(where, "loop"));
+    return a;
+}
+
+json animation_json(const AnimationChoice& a) {
+    json j = json::object();
+    if (!a.name.empty()) j["name"] = a.name;
+    j["start"] = number(float(a.start));
+    j["speed"] = number(float(a.speed));
+    j["loop"] = a.loop;
+    return j;
+}
+
 SceneCamera read_camera(const json& j, const Reader& r, const std::string& where) {
     r.expect_object(j, where, {"yaw", "pitch", "distance", "world_distance", "target", "fov_y"});
     SceneCamera c;
@@ -275,13 +311,15 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     for (size_t i = 0; i < objects.size(); ++i) {
         std::string where = "objects[" + std::to_string(i) + "]";
         const json& o = objects[i];
-        r.expect_object(o, where, {"model", "transform", "params"});
+        r.expect_object(o, where, {"model", "transform", "params", "animation"});
         SceneObject object;
         if (!o.contains("model")) r.error(Reader::field(where, "model"), "required field is missing");
         object.model = r.string(o["model"], Reader::field(where, "model"));
         if (object.model.empty()) r.error(Reader::field(where, "model"), "the model path is empty");
         if (o.contains("transform")) object.transform = read_transform(o["transform"], r, Reader::field(where, "transform"));
         if (o.contains("params")) object.params = read_params(o["params"], r, Reader::field(where, "params"));
+        if (o.contains("animation"))
+            object.animation = read_animation(o["animation"], r, Reader::field(where, "animation"));
         scene.objects.push_back(std::move(object));
     }
     if (root.contains("camera")) scene.camera = read_camera(root["camera"], r, "camera");
@@ -335,6 +373,7 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
         for (const ParamSpec& spec : param_table())
             if (!spec.alias) params[spec.key] = param_json(spec, spec.get(o.params));
         object["params"] = params;
+        if (!o.animation.is_default()) object["animation"] = animation_json(o.animation);
         objects.push_back(object);
     }
     json root = {{"objects", objects}, {"camera", camera_json(scene.camera)}};

@@ -20,7 +20,9 @@
 //   S_i = E_1 + ... + E_i: every N_i is within 1 of E_i, and the total is within 1 of the exact
 //   total density * area however finely the surface is tessellated (rounding each triangle on its
 //   own would lose or gain up to half a stipple per triangle, which dominates on dense meshes).
-//   Zero-area triangles expect 0 and get 0.
+//   Zero-area triangles expect 0 and get 0. An animated model's triangles expect E_i * h_i, h_i
+//   their stretch headroom (src/anim/headroom.hpp), so that a stretched triangle finds candidates
+//   for its larger area; the per-frame density asks for E_i * (current area / rest area) of them.
 // * Positions. Uniform in the triangle by square-root barycentrics, from a counter-based random
 //   stream keyed by (seed, triangle, index): deterministic, and independent of the thread count
 //   and of the order in which triangles are processed.
@@ -53,7 +55,7 @@ constexpr size_t kPointChunk = 16384;
 // The name errors start with: the file the mesh came from, or its generator's name.
 std::string source_name(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh") : mesh.source; }
 
-void check_params(const Mesh& mesh, const GenerationParams& params) {
+void check_params(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom = {}) {
     const std::string name = source_name(mesh);
     if (!std::isfinite(params.dmax) || params.dmax < 0.0f)
         fail_file(name, "stipple density D_max must be a finite number >= 0, got " + std::to_string(params.dmax));
@@ -61,6 +63,8 @@ void check_params(const Mesh& mesh, const GenerationParams& params) {
         fail_file(name, "relaxation iterations must be in [0, 1000], got " + std::to_string(params.relax_iterations));
     if (mesh.indices.size() % 3 != 0)
         fail_file(name, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
+    STIPPLE_CHECK(headroom.empty() || headroom.size() == mesh.triangle_count(), "one headroom factor per triangle");
+    for (float h : headroom) STIPPLE_CHECK(std::isfinite(h) && h >= 1.0f, "headroom factors are finite and >= 1");
 }
 
 // Area of every triangle, in double. Throws on an index out of range or a non-finite area.
@@ -104,9 +108,9 @@ double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params
     return density_for_area(mesh, params, sum_in_order(triangle_areas(mesh)));
 }
 
-StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params) {
+StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     const auto start = std::chrono::steady_clock::now();
-    check_params(mesh, params);
+    check_params(mesh, params, headroom);
     ProgressBar bar("Generating stipples", params.progress);
 
     const std::vector<double> area = triangle_areas(mesh);
@@ -121,7 +125,7 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params) {
     set.first[0] = 0;
     double running = 0.0;  // S_t; never decreases (E_t >= 0), so neither does its rounding
     for (size_t t = 0; t < triangles; ++t) {
-        running += set.density_per_area * area[t];
+        running += set.density_per_area * area[t] * (headroom.empty() ? 1.0 : double(headroom[t]));
         const double rounded = std::floor(running + 0.5);
         if (rounded > double(UINT32_MAX - 1))
             fail_file(source_name(mesh), "more than 2^32 stipples requested; lower D_max or the stipple budget");

@@ -1,10 +1,29 @@
 #include "stipple/object_data.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "anim/animated_model.hpp"
+#include "anim/gltf_probe.hpp"
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "stipple/stipple_cache.hpp"
 
 namespace stipple {
+
+namespace {
+
+bool is_gltf(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".gltf" || ext == ".glb";
+}
+
+// The smallest sphere around a box: an animated model's bounds hold every pose, not one.
+Sphere box_sphere(const Bounds& box) { return Sphere{box.center(), 0.5f * glm::length(box.max - box.min)}; }
+
+}  // namespace
 
 std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds) {
     const auto start = Clock::now();
@@ -13,23 +32,52 @@ std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* s
     return mesh;
 }
 
+ObjectData load_model_data(const std::string& path) {
+    ObjectData object;
+    const auto start = Clock::now();
+    if (is_gltf(path) && anim::gltf_declares_animations(path)) {
+        // One read serves both: the animated loader's rest mesh is exactly load_mesh_for_drawing's.
+        auto model = std::make_shared<anim::AnimatedModel>(anim::load_animated_model(path));
+        if (model->is_animated()) {
+            object.motion.headroom = std::make_shared<const anim::StretchHeadroom>(anim::measure_headroom(*model));
+            object.motion.model = model;
+            object.mesh = std::shared_ptr<const Mesh>(object.motion.model, &object.motion.model->rest);
+            object.bounds = box_sphere(object.motion.headroom->bounds);
+        } else {
+            object.mesh = std::make_shared<const Mesh>(std::move(model->rest));
+        }
+    } else {
+        object.mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
+    }
+    if (!object.motion) object.bounds = compute_bounding_sphere(*object.mesh);
+    object.load_seconds = seconds_since(start);
+    return object;
+}
+
 std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const GenerationParams& generation,
-                                                StippleSource source) {
+                                                StippleSource source, std::span<const float> headroom) {
     GenerationParams params = generation;
     params.progress = mesh.triangle_count() > kProgressBarTriangles;  // big models take seconds: show it
-    if (source == StippleSource::Cache) return std::make_shared<const StippleSet>(generate_stipples_cached(mesh, params));
+    if (source == StippleSource::Cache)
+        return std::make_shared<const StippleSet>(
+            generate_stipples_cached(mesh, params, headroom));
     const auto start = Clock::now();
-    StippleSet set = generate_stipples(mesh, params);
+    StippleSet set = generate_stipples(mesh, params, headroom);
     finish_generated_stipples(mesh, params.seed, set);  // the selection values of §2.3, as the cache keeps them
     set.generation_seconds = seconds_since(start);               // the ranking counts as preprocessing
     return std::make_shared<const StippleSet>(std::move(set));
 }
 
+std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const GenerationParams& generation,
+                                                StippleSource source) {
+    std::span<const float> headroom;
+    if (model.motion) headroom = model.motion.headroom->per_triangle;
+    return make_stipples(*model.mesh, generation, source, headroom);
+}
+
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
-    ObjectData object;
-    object.mesh = load_drawing_mesh(path, &object.load_seconds);
-    object.bounds = compute_bounding_sphere(*object.mesh);
-    object.stipples = make_stipples(*object.mesh, generation, source);
+    ObjectData object = load_model_data(path);
+    object.stipples = make_stipples(object, generation, source);
     return object;
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "anim/headroom.hpp"
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
 #include "stipple/stipple_set.hpp"
@@ -21,17 +22,27 @@ enum class StippleSource { Cache, Generate };
 // One object's CPU data. Meshes and stipple sets may be shared between objects that use the same
 // model (and, for stipples, the same generation parameters): a scene may show one model many times.
 struct ObjectData {
-    std::shared_ptr<const Mesh> mesh;
-    Sphere bounds;  // object space
+    std::shared_ptr<const Mesh> mesh;  // an animated model's rest mesh (load_mesh_for_drawing's)
+    Sphere bounds;  // object space; an animated model's holds every pose of every animation
     std::shared_ptr<const StippleSet> stipples;
-    double load_seconds = 0.0;  // reading and preparing the mesh
+    anim::Motion motion;  // a glTF file with an animation: what moves it and its stretch headroom
+    double load_seconds = 0.0;  // reading and preparing the mesh (and measuring an animation's stretch)
 };
 
 // load_mesh_for_drawing, shared and timed.
 std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds = nullptr);
 
-// The stipples of `mesh` for `generation` (the progress flag is set here from the mesh's size).
+// The model without stipples: its mesh, bounds and, for a glTF file with animations, its motion
+// (load_animated_model, whose rest mesh is load_mesh_for_drawing's, and measure_headroom).
+ObjectData load_model_data(const std::string& path);
+
+// The stipples of `mesh` for `generation` (the progress flag is set here from the mesh's size);
+// `headroom`: an animated model's (generate_stipples).
 std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const GenerationParams& generation,
+                                                StippleSource source = StippleSource::Cache,
+                                                std::span<const float> headroom = {});
+// The stipples of a loaded model, with its headroom when it moves.
+std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const GenerationParams& generation,
                                                 StippleSource source = StippleSource::Cache);
 
 // Both: loads the model at `path` and makes its stipples.

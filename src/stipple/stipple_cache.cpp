@@ -98,14 +98,16 @@ uint64_t parse_byte_size(const std::string& option, const std::string& text) {
     return uint64_t(bytes);
 }
 
-uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params) {
+uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     uint64_t h = mix64(cache_format::kMagic ^ cache_format::kVersion);
     h = hash_bytes(h, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     h = hash_bytes(h, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
     // The parameters that shape generation, as the parameter table marks them, and the reference view.
     std::vector<double> values = generation_values(params);
     values.push_back(kReferenceHeight);
-    return hash_bytes(h, values.data(), values.size() * sizeof(double));
+    h = hash_bytes(h, values.data(), values.size() * sizeof(double));
+    // Only animated models hash their headroom, so a static model's key is what it always was.
+    return headroom.empty() ? h : hash_bytes(mix64(h ^ 0x48454144524F4F4Dull), headroom.data(), headroom.size_bytes());
 }
 
 void finish_generated_stipples(const Mesh& mesh, uint64_t seed, StippleSet& stipples) {
@@ -118,8 +120,8 @@ void finish_generated_stipples(const Mesh& mesh, uint64_t seed, StippleSet& stip
 }
 
 std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh,
-                                               const GenerationParams& params) {
-    const uint64_t key = stipple_cache_key(mesh, params);
+                                               const GenerationParams& params, std::span<const float> headroom) {
+    const uint64_t key = stipple_cache_key(mesh, params, headroom);
     const std::filesystem::path path = entry_path(dir, key);
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
@@ -174,7 +176,7 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
 }
 
 void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, const GenerationParams& params,
-                           const StippleSet& stipples, uint64_t max_bytes) {
+                           const StippleSet& stipples, uint64_t max_bytes, std::span<const float> headroom) {
     const size_t triangles = mesh.triangle_count();
     if (stipples.selection.size() != triangles || stipples.first.size() != triangles + 1) return;
     std::error_code ec;
@@ -207,7 +209,7 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
     header.magic = cache_format::kMagic;
     header.version = cache_format::kVersion;
     header.header_bytes = sizeof(Header);
-    header.key = stipple_cache_key(mesh, params);
+    header.key = stipple_cache_key(mesh, params, headroom);
     header.triangles = triangles;
     header.stipples = stipples.size();
     header.density_per_area = stipples.density_per_area;
@@ -244,27 +246,27 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
     enforce_cache_limit(dir, max_bytes, final_path);
 }
 
-StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params) {
+StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     const StippleCacheSettings& settings = stipple_cache_settings();
     if (!settings.enabled) {
-        StippleSet set = generate_stipples(mesh, params);
+        StippleSet set = generate_stipples(mesh, params, headroom);
         finish_generated_stipples(mesh, params.seed, set);  // as a cache hit would return it
         return set;
     }
-    return generate_stipples_cached(mesh, params, settings.dir);
+    return generate_stipples_cached(mesh, params, settings.dir, headroom);
 }
 
 StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params,
-                                    const std::filesystem::path& dir) {
+                                    const std::filesystem::path& dir, std::span<const float> headroom) {
     const auto start = Clock::now();
-    if (std::optional<StippleSet> cached = load_cached_stipples(dir, mesh, params)) {
+    if (std::optional<StippleSet> cached = load_cached_stipples(dir, mesh, params, headroom)) {
         cached->generation_seconds = seconds_since(start);
         cached->from_cache = true;
         return std::move(*cached);
     }
-    StippleSet set = generate_stipples(mesh, params);
+    StippleSet set = generate_stipples(mesh, params, headroom);
     finish_generated_stipples(mesh, params.seed, set);
-    store_cached_stipples(dir, mesh, params, set, stipple_cache_settings().max_bytes);
+    store_cached_stipples(dir, mesh, params, set, stipple_cache_settings().max_bytes, headroom);
     return set;
 }
 

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,18 +43,20 @@ StippleCacheSettings& stipple_cache_settings();
 uint64_t parse_byte_size(const std::string& option, const std::string& text);
 
 // A key of everything the stipples depend on: the mesh's triangles and positions, the parameters
-// that shape generation (the parameter table's Regenerate entries) and the format version.
-uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params);
+// that shape generation (the parameter table's Regenerate entries), an animated model's stretch
+// headroom (generate_stipples) and the format version.
+uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom = {});
 
 // The cached set, or nothing when absent or from another version or mesh. A damaged entry (bad header
 // hash, truncation, checksum, inconsistent counts) is also nothing, after a warning on stderr.
 std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh,
-                                               const GenerationParams& params);
+                                               const GenerationParams& params, std::span<const float> headroom = {});
 
 // Writes atomically (a temporary file, then a rename), then evicts least recently used entries until
 // the folder holds at most `max_bytes` (never the one just written). Failures to write are skipped.
 void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, const GenerationParams& params,
-                           const StippleSet& stipples, uint64_t max_bytes = kDefaultStippleCacheBytes);
+                           const StippleSet& stipples, uint64_t max_bytes = kDefaultStippleCacheBytes,
+                           std::span<const float> headroom = {});
 
 // What every generated set goes through before use: positions onto the 16-bit barycentric grid, and the
 // polygons' selection values (§2.3) ranked and put on their 16-bit steps, as the GPU and the cache hold
@@ -65,10 +68,12 @@ inline uint16_t selection_step(float value) { return uint16_t(std::min(uint32_t(
 inline float selection_from_step(uint16_t step) { return (float(step) + 0.5f) / 65536.0f; }
 
 // generate_stipples through the cache of stipple_cache_settings() (or `dir`, when given): read back
-// when present, else generated, with its selection values, and stored.
-StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params);
+// when present, else generated, with its selection values, and stored. `headroom`: an animated model's
+// per-polygon stretch headroom (generate_stipples), part of the key.
 StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params,
-                                    const std::filesystem::path& dir);
+                                    std::span<const float> headroom = {});
+StippleSet generate_stipples_cached(const Mesh& mesh, const GenerationParams& params,
+                                    const std::filesystem::path& dir, std::span<const float> headroom = {});
 
 // The folder's entries (stipple/cache_folder.cpp).
 struct CacheEntryInfo {

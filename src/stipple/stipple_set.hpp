@@ -1,6 +1,7 @@
 #pragma once
 // Per-polygon stipple generation (paper §2.1): the candidate stipples of one object.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,8 +38,10 @@ struct StippleSet {
 
 // Deterministic for a given mesh, parameters and seed (also across thread counts).
 // Zero-area triangles get no stipples. The total is within 1 of density * total area, whatever
-// the tessellation.
-StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params);
+// the tessellation. `headroom` (empty, or one factor >= 1 per triangle) generates triangle t's
+// candidates for headroom[t] times its area: an animation that stretches it to that area finds enough
+// (src/anim/headroom.hpp); the density per area, the reference view and the spacing stay the rest's.
+StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom = {});
 
 // Stipples per object-space unit area for this mesh and parameters (the paper's N_max per area).
 double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params);

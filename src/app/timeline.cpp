@@ -1,0 +1,101 @@
+#include "app/timeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "anim/pose.hpp"
+#include "scene/scene_content.hpp"
+
+namespace stipple::app {
+
+namespace {
+
+bool all_loop(const Scene& scene, const std::vector<ObjectData>& objects) {
+    for (size_t i = 0; i < objects.size(); ++i)
+        if (objects[i].motion && !scene.objects[i].animation.loop) return false;
+    return true;
+}
+
+// "1 'Walk'": how the chooser lists an animation.
+std::string animation_label(const anim::AnimatedModel& model, size_t index) {
+    const std::string& name = model.animations[index].name;
+    return std::to_string(index) + (name.empty() ? std::string() : " '" + name + "'");
+}
+
+}  // namespace
+
+double timeline_length(const Scene& scene, const std::vector<ObjectData>& objects) {
+    double length = 0.0;
+    for (size_t i = 0; i < objects.size() && i < scene.objects.size(); ++i) {
+        if (!objects[i].motion) continue;
+        const AnimationChoice& choice = scene.objects[i].animation;
+        const int index = resolve_animation(objects[i], choice);
+        if (index < 0 || std::abs(choice.speed) < 1e-6) continue;
+        length = std::max(length, double(objects[i].motion.model->animations[size_t(index)].duration) / std::abs(choice.speed));
+    }
+    return length;
+}
+
+void Timeline::advance(double wall_seconds, const Scene& scene, const std::vector<ObjectData>& objects) {
+    if (!playing_) return;
+    time_ += double(speed_) * wall_seconds;
+    const double length = timeline_length(scene, objects);
+    if (!all_loop(scene, objects) && time_ >= length) {  // the end holds: nothing more would move
+        time_ = length;
+        playing_ = false;
+    }
+}
+
+glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, const std::vector<std::string>& names,
+                         float window_height) {
+    if (std::none_of(objects.begin(), objects.end(), [](const ObjectData& o) { return bool(o.motion); }))
+        return glm::vec4(0.0f);
+    ImGui::SetNextWindowPos(ImVec2(490, std::max(10.0f, window_height - 170.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
+    const bool open = ImGui::Begin("timeline");
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    if (open) {
+        ImGui::PushItemWidth(-120.0f);
+        if (ImGui::Button(playing_ ? "pause (space)" : "play (space)")) toggle_play();
+        ImGui::SameLine();
+        ImGui::Text("scene time %.3f s", time_);
+        const double length = timeline_length(scene, objects);
+        const bool loop = all_loop(scene, objects);
+        // Looping, the bar shows where in the longest animation the clock is; dragging it moves the clock there.
+        float shown = float(length > 0.0 ? (loop ? std::fmod(std::max(time_, 0.0), length) : std::min(time_, length)) : 0.0);
+        if (ImGui::SliderFloat("time", &shown, 0.0f, float(length), "%.3f s", ImGuiSliderFlags_AlwaysClamp))
+            time_ = shown;
+        ImGui::SliderFloat("speed", &speed_, 0.05f, 4.0f, "%.2fx",
+                           ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+        bool loop_edit = loop;
+        if (ImGui::Checkbox("loop", &loop_edit))
+            for (size_t i = 0; i < objects.size(); ++i)
+                if (objects[i].motion) scene.objects[i].animation.loop = loop_edit;
+        for (size_t i = 0; i < objects.size(); ++i) {
+            if (!objects[i].motion) continue;
+            const anim::AnimatedModel& model = *objects[i].motion.model;
+            AnimationChoice& choice = scene.objects[i].animation;
+            const size_t current = size_t(std::max(resolve_animation(objects[i], choice), 0));
+            const std::string label = std::to_string(i) + ": " + names.at(i);
+            if (ImGui::BeginCombo(label.c_str(), animation_label(model, current).c_str())) {
+                for (size_t a = 0; a < model.animations.size(); ++a) {
+                    const bool selected = a == current;
+                    if (ImGui::Selectable(animation_label(model, a).c_str(), selected)) {
+                        // By name when it has one (a saved scene reads better), else by index.
+                        const std::string& name = model.animations[a].name;
+                        choice.name = name.empty() || anim::find_animation(model, name) != int(a) ? std::to_string(a) : name;
+                    }
+                    if (selected) ImGui::SetItemDefaultFocus();
+                }
+                ImGui::EndCombo();
+            }
+        }
+        ImGui::PopItemWidth();
+    }
+    ImGui::End();
+    return glm::vec4(pos.x, pos.y, size.x, size.y);
+}
+
+}  // namespace stipple::app

@@ -1,0 +1,206 @@
+// Animated models where the user meets them (issue 16): `render --animation --time`, `--frames N --fps F`
+// sequences, scene files naming an animation, `info` listing what moves a model, and every bad request
+// answered in one line with a non-zero exit and no file written. A generated rig (a skinned cylinder
+// that bends) always; the shared fox when present.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "anim/procedural_rigs.hpp"
+#include "io/png_io.hpp"
+#include "scene/scene_json.hpp"
+#include "support/anim_files.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
+
+namespace stipple {
+namespace {
+
+using test::run_stipple;
+namespace fs = std::filesystem;
+
+// Pixels whose colour differs between two images of the same size.
+size_t differing_pixels(const Image& a, const Image& b) {
+    size_t n = 0;
+    for (size_t i = 0; i + 3 < a.pixels.size(); i += 4) n += a.pixels[i] != b.pixels[i];
+    return n;
+}
+
+std::string cylinder(const std::string& folder) {
+    return test::write_rig(anim::rigs::bending_cylinder(), folder, "cylinder");
+}
+
+// Small images need few candidates: generating the default density would dominate the test's time.
+std::vector<std::string> sparse(std::vector<std::string> args) {
+    args.insert(args.end(), {"--dmax", "0.05"});
+    return args;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+TEST(CliAnimation, TimeAndAnimationChooseThePose) {
+    const std::string model = cylinder("cli_anim_time");
+    const fs::path dir = test::temp_dir("cli_anim_time_out");
+    const std::string straight = (dir / "straight.png").string(), bent = (dir / "bent.png").string(),
+                      by_index = (dir / "index.png").string();
+    auto a = run_stipple(sparse({"render", model, "-o", straight, "--mask", (dir / "straight_mask.png").string(),
+                                 "--width", "200", "--height", "200", "--time", "0"}));
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    auto b = run_stipple(sparse({"render", model, "-o", bent, "--mask", (dir / "bent_mask.png").string(), "--width",
+                                 "200", "--height", "200", "--animation", "Bend", "--time", "1", "--stats"}));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.out.find("animation:          object 0: 'Bend' (2.000 s) at 1.000 s"), std::string::npos) << b.out;
+    auto c = run_stipple(sparse({"render", model, "-o", by_index, "--width", "200", "--height", "200", "--animation", "0",
+                          "--time", "1"}));
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    const Image t = read_png(bent), u = read_png(by_index);
+    EXPECT_GT(differing_pixels(read_png((dir / "straight_mask.png").string()), read_png((dir / "bent_mask.png").string())),
+              300u) << "bent at 1 s, straight at 0 s";
+    EXPECT_EQ(differing_pixels(t, u), 0u) << "the animation by name and by index is the same";
+}
+
+TEST(CliAnimation, FramesAndFpsRenderTheAnimation) {
+    const std::string model = cylinder("cli_anim_frames");
+    const fs::path dir = test::temp_dir("cli_anim_frames_out");
+    // 4 frames at 2 fps: 0, 0.5, 1.0, 1.5 s of the 2 s bend.
+    auto r = run_stipple(sparse({"render", model, "-o", (dir / "%03d.png").string(), "--frames", "4", "--fps", "2",
+                          "--width", "160", "--height", "160"}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote 4 frames"), std::string::npos) << r.out;
+    std::vector<Image> frames;
+    for (const char* name : {"000.png", "001.png", "002.png", "003.png"}) {
+        ASSERT_TRUE(fs::exists(dir / name)) << name;
+        frames.push_back(read_png((dir / name).string()));
+    }
+    for (size_t i = 1; i < frames.size(); ++i) EXPECT_GT(differing_pixels(frames[i - 1], frames[i]), 200u) << i;
+    // The frame at 0.5 s is the single frame rendered at --time 0.5.
+    const std::string single = (dir / "single.png").string();
+    auto one = run_stipple(sparse({"render", model, "-o", single, "--time", "0.5", "--width", "160", "--height", "160"}));
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_EQ(differing_pixels(read_png(single), frames[1]), 0u);
+}
+
+TEST(CliAnimation, FoxWalkSequence) {
+    const std::string fox = test::shared_model("fox.glb");
+    if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";
+    const fs::path dir = test::temp_dir("cli_anim_fox");
+    auto r = run_stipple({"render", fox, "--animation", "Walk", "--frames", "3", "--fps", "10", "-o",
+                          (dir / "%d.png").string(), "--mask", (dir / "m%d.png").string(), "--width", "240", "--height",
+                          "200", "--yaw", "70"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image m0 = read_png((dir / "m0.png").string()), m2 = read_png((dir / "m2.png").string());
+    EXPECT_GT(differing_pixels(m0, m2), 100u) << "the legs moved between 0 and 0.2 s";
+}
+
+TEST(CliAnimation, SceneFilesNameAnimationStartAndSpeed) {
+    const std::string model = cylinder("cli_anim_scene");
+    const fs::path dir = test::temp_dir("cli_anim_scene_out");
+    // Starting 0.5 s in at twice the speed, scene time 0.25 s is 1 s into the bend.
+    write_text(dir / "scene.json", R"({"objects": [{"model": ")" + model +
+                                       R"(", "params": {"dmax": 0.05},
+                                       "animation": {"name": "Bend", "start": 0.5, "speed": 2, "loop": true}}]})");
+    auto scene = run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "scene.png").string(), "--time",
+                              "0.25", "--width", "160", "--height", "160"});
+    ASSERT_EQ(scene.exit_code, 0) << scene.err;
+    auto direct = run_stipple(sparse({"render", model, "-o", (dir / "direct.png").string(), "--time", "1", "--width", "160",
+                               "--height", "160"}));
+    ASSERT_EQ(direct.exit_code, 0) << direct.err;
+    EXPECT_EQ(differing_pixels(read_png((dir / "scene.png").string()), read_png((dir / "direct.png").string())), 0u);
+
+    // Saved and read back, the choice is kept.
+    const Scene parsed = load_scene((dir / "scene.json").string());
+    ASSERT_EQ(parsed.objects.size(), 1u);
+    EXPECT_EQ(parsed.objects[0].animation.name, "Bend");
+    EXPECT_EQ(parsed.objects[0].animation.start, 0.5);
+    EXPECT_EQ(parsed.objects[0].animation.speed, 2.0);
+    const Scene again = parse_scene(scene_to_json(parsed, dir), "again.json", dir);
+    EXPECT_EQ(again.objects[0].animation.name, "Bend");
+    EXPECT_EQ(again.objects[0].animation.time_at(0.25), 1.0);
+    // A default choice is not written at all (static scenes keep their files as they were).
+    Scene plain = parsed;
+    plain.objects[0].animation = {};
+    EXPECT_EQ(scene_to_json(plain, dir).find("animation"), std::string::npos);
+}
+
+TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
+    const std::string model = cylinder("cli_anim_bad");
+    const fs::path dir = test::temp_dir("cli_anim_bad_out");
+    const std::string out = (dir / "x.png").string();
+    const fs::path scenes = test::temp_dir("cli_anim_bad_scenes");
+    write_text(scenes / "unknown.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": "Jump"}}]})");
+    write_text(scenes / "speed.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"speed": "fast"}}]})");
+    write_text(scenes / "field.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"clip": "Bend"}}]})");
+
+    // Bad animation data, at the command line: decreasing key times in the file.
+    anim::GltfBuilder broken = anim::rigs::bending_cylinder();
+    broken.doc["animations"][0]["samplers"][0]["input"] = broken.add_floats({0, 2, 1}, "SCALAR");
+    const std::string broken_path = test::write_rig(broken, "cli_anim_broken", "broken");
+
+    struct Case {
+        std::vector<std::string> args;
+        std::string expect;
+    };
+    const Case cases[] = {
+        {{"render", model, "-o", out, "--animation", "Jump"}, "no animation 'Jump' (it has 0 'Bend', 1 'Lift')"},
+        {{"render", model, "-o", out, "--animation", "7"}, "no animation '7'"},
+        {{"render", model, "-o", out, "--time", "nan"}, "--time"},
+        {{"render", model, "-o", out, "--time", "1e9"}, "--time"},
+        {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "0"}, "--fps"},
+        {{"render", model, "-o", out, "--fps", "30"}, "--fps needs --frames"},
+        {{"render", model, "-o", out, "--density-path", "cpu"}, "cannot draw an animated model"},
+        {{"render", model, "-o", out, "--density-path", "cpu-splat"}, "cannot draw an animated model"},
+        {{"render", "-o", out, "--time", "1"}, "--time needs an animated model"},
+        {{"render", "-o", out, "--animation", "Walk"}, "has no animation to play"},
+        {{"render", (scenes / "unknown.json").string(), "-o", out}, "objects[0].animation.name: "},
+        {{"render", (scenes / "speed.json").string(), "-o", out}, "objects[0].animation.speed: expected a number"},
+        {{"render", (scenes / "field.json").string(), "-o", out}, "objects[0].animation.clip: unknown field"},
+        {{"render", (scenes / "unknown.json").string(), "-o", out, "--animation", "Bend"}, "scene file"},
+        {{"render", broken_path, "-o", out}, "animations[0].samplers[0].input: key 2 (time 1) comes before key 1"},
+        {{"info", broken_path}, "animations[0].samplers[0].input"},
+    };
+    for (const Case& c : cases) {
+        auto r = run_stipple(c.args);
+        EXPECT_NE(r.exit_code, 0) << c.expect;
+        EXPECT_EQ(lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in: " << r.err;
+    }
+    EXPECT_TRUE(fs::is_empty(dir)) << "nothing should be written";
+}
+
+TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
+    const std::string model = cylinder("cli_anim_info");
+    auto r = run_stipple({"info", model});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("animation 0 'Bend': 2.000 s, 1 channel (LINEAR)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("animation 1 'Lift': 1.000 s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("skin 0 'arm': 2 joints"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("stretch headroom:    polygons reach up to"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("candidates generated for up to 3x"), std::string::npos) << r.out;
+
+    const std::string fox = test::shared_model("fox.glb");
+    if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";
+    auto j = run_stipple({"info", fox, "--json"});
+    ASSERT_EQ(j.exit_code, 0) << j.err;
+    const nlohmann::json info = nlohmann::json::parse(j.out);
+    ASSERT_EQ(info["animations"].size(), 3u);
+    EXPECT_EQ(info["animations"][2]["name"], "Run");
+    EXPECT_EQ(info["skins"][0]["joints"], 24);
+    EXPECT_GT(info["stretch"]["max_area_ratio"].get<double>(), 3.0) << "the Run stretches joints beyond the cap";
+    EXPECT_GT(info["stretch"]["capped_polygons"].get<int>(), 0);
+    const std::string cube = test::shared_model("AnimatedMorphCube.gltf");
+    if (cube.empty()) return;
+    auto m = run_stipple({"info", cube, "--dmax", "0.05"});
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    EXPECT_NE(m.out.find("morph targets of mesh"), std::string::npos) << m.out;
+    EXPECT_NE(m.out.find("'thin', 'angle'"), std::string::npos) << m.out;
+}
+
+}  // namespace
+}  // namespace stipple
