@@ -288,7 +288,17 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
 
 void StippleRenderer::record_stipples(VkCommandBuffer cb) {
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, stipple_pipeline_);
-    for (const auto& object : objects_) {
+    // The indirect path's objects are drawn last: lavapipe (Mesa 22.3) keeps a vkCmdDrawIndirectCount's
+    // count buffer for a later plain vkCmdDrawIndirect in the same command buffer, so a cpu-path object
+    // drawn after an indirect one drew only as many ranges as the indirect object's count (tested:
+    // SceneObjects, an indirect object before a cpu one). Objects' stipples do not overlap in a way
+    // that this order changes.
+    std::vector<const ObjectGpu*> order;
+    for (const auto& object : objects_)
+        if (object->params.density_path != DensityPath::Indirect) order.push_back(object.get());
+    for (const auto& object : objects_)
+        if (object->params.density_path == DensityPath::Indirect) order.push_back(object.get());
+    for (const ObjectGpu* object : order) {
         if (object->geometry.stipple_count == 0 || uses_splat(*object)) continue;
         VkDeviceSize offset = 0;
         VkBuffer vb = object->geometry.stipples.handle();
