@@ -3,7 +3,8 @@
 // compute pass can draw them without the rasteriser. One invocation per polygon of the work list
 // (the polygons that draw this frame, listed by the density pass or the CPU) takes the polygon's
 // density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
-// ceil(density), the last at the fractional intensity, §2.1), projects each, tests it against the
+// ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
+// candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
 //
@@ -65,7 +66,7 @@ bool hidden_or_uncovered(float z, uint word) {
     return surface >= 1.0 || z > surface;
 }
 
-void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polygon) {
+void splat(uint index, float intensity, float side, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -77,7 +78,6 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
     // Window coordinates with the renderer's negative-height viewport (y up in NDC, top row first).
     vec2 size = frame.viewport.xy;
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
-    float side = object.shading.y;
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
     bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
@@ -109,8 +109,10 @@ void main() {
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = frame.view_proj * object.model;
-    uint count = uint(ceil(density));
+    uint candidates = (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - first;
+    uint count = drawn_stipple_count(density, candidates);
+    float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     for (uint k = 0u; k < count; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), model_view_proj, polygon);
+        splat(first + k, stipple_intensity(density, float(k)), side, model_view_proj, polygon);
 }

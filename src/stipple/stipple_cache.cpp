@@ -15,7 +15,7 @@ namespace stipple {
 namespace {
 
 constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
-constexpr uint32_t kVersion = 2;  // 2: the polygons' selection values follow first[]
+constexpr uint32_t kVersion = 4;  // 2: the polygons' selection values follow first[]; 4: values uniform per area class
 
 struct Header {
     uint64_t magic;
