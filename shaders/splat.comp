@@ -66,6 +66,22 @@ bool hidden_or_uncovered(float z, uint word) {
     return surface >= 1.0 || z > surface;
 }
 
+// Whether no surface covers the pixel (beyond the object's outline).
+bool uncovered(uint word) {
+    if (kDepthUnorm24) return (word & 0xFFFFFFu) == 0xFFFFFFu;
+    return uintBitsToFloat(word) >= 1.0;
+}
+
+// Inks one pixel with a stipple of the given intensity (see the top of this file).
+void ink_pixel(uint at, float intensity, uint ink_word) {
+    if (intensity >= 1.0f) {
+        color[at] = ink_word;  // the least word there is: no other stipple replaces it
+    } else {
+        vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
+        atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
+    }
+}
+
 void splat(uint index, float intensity, float side, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
@@ -81,8 +97,8 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
     bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
-    bool full = intensity >= 1.0f;
     uint ink_word = pack_color(frame.ink_color.rgb, 0.0);
+    uint lost = 0u;  // pixels of the dot beyond the outline
     for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {
             if (round_points) {
@@ -90,14 +106,45 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
                 if (dot(d, d) > 0.25) continue;
             }
             uint at = uint(y) * uint(size.x) + uint(x);
-            if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
-            if (full) {
-                color[at] = ink_word;  // the least word there is: no other stipple replaces it
-            } else {
-                vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
-                atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
+            uint word = scene_depth[at];
+            if (hidden_or_uncovered(ndc.z, word)) {
+                if (uncovered(word)) ++lost;
+                continue;
             }
+            ink_pixel(at, intensity, ink_word);
         }
+    if (lost == 0u) return;
+    // Astride the outline: the pixels beyond it have no surface to ink, and no stipple lies beyond the
+    // outline to ink the pixels just inside it, so the outline band would read lighter, and its share of
+    // the footprint grows as the object shrinks. The lost pixels are inked on the visible pixels nearest
+    // the dot instead (in order of distance, then index: the same in any run). Pixels hidden behind a
+    // nearer part are not moved: that ink belongs to no visible surface.
+    ivec2 isize = ivec2(size);
+    ivec2 ring_lo = max(lo - 1, ivec2(0)), ring_hi = min(hi + 1, isize - 1);
+    float last_distance = -1.0;
+    uint last_at = 0u;
+    for (uint k = 0u; k < lost; ++k) {
+        float best_distance = 3.0e38;
+        uint best_at = 0xFFFFFFFFu;
+        for (int y = ring_lo.y; y <= ring_hi.y; ++y)
+            for (int x = ring_lo.x; x <= ring_hi.x; ++x) {
+                vec2 offset = vec2(x, y) + 0.5 - window;
+                vec2 d = offset / side;
+                bool own = x >= lo.x && x <= hi.x && y >= lo.y && y <= hi.y && (!round_points || dot(d, d) <= 0.25);
+                if (own) continue;
+                float distance = dot(offset, offset);
+                uint at = uint(y) * uint(isize.x) + uint(x);
+                if (distance < last_distance || (distance == last_distance && at <= last_at)) continue;
+                if (distance > best_distance || (distance == best_distance && at >= best_at)) continue;
+                if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
+                best_distance = distance;
+                best_at = at;
+            }
+        if (best_at == 0xFFFFFFFFu) return;
+        ink_pixel(best_at, intensity, ink_word);
+        last_distance = best_distance;
+        last_at = best_at;
+    }
 }
 
 void main() {
