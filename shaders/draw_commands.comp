@@ -4,6 +4,7 @@
 // all their candidates are merged into one draw (draws_merge_with_previous), exactly as the CPU path does.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
+#include "stipple_formulas.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 
@@ -14,13 +15,17 @@ layout(set = 0, binding = kBindingDrawCommands, std430) buffer DrawCommands {
     DrawCommand commands[];
 };
 
-uint drawn(uint t) { return uint(ceil(draws[t].density)); }
+uint candidates(uint t) {
+    return (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - draws[t].first_stipple;
+}
+
+uint drawn(uint t) { return drawn_stipple_count(draws[t].density, candidates(t)); }
 
 // Polygon t joins the draw of polygon t - 1 (same rule as build_draw_commands in density_cpu.cpp).
 bool merges_with_previous(uint t) {
     if (t == 0u || t % kMaxMergedPolygons == 0u || drawn(t) == 0u) return false;
     uint previous = drawn(t - 1u);
-    return previous > 0u && previous == draws[t].first_stipple - draws[t - 1u].first_stipple;  // all candidates
+    return previous > 0u && previous == candidates(t - 1u);  // all candidates
 }
 
 void main() {

@@ -3,7 +3,8 @@
 // compute pass can draw them without the rasteriser. One invocation per polygon of the work list
 // (the polygons that draw this frame, listed by the density pass or the CPU) takes the polygon's
 // density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
-// ceil(density), the last at the fractional intensity, §2.1), projects each, tests it against the
+// ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
+// candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
 //
@@ -70,7 +71,23 @@ bool hidden_or_uncovered(float z, uint word) {
     return surface >= 1.0 || z > surface;
 }
 
-void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polygon) {
+// Whether no surface covers the pixel (beyond the object's outline).
+bool uncovered(uint word) {
+    if (kDepthUnorm24) return (word & 0xFFFFFFu) == 0xFFFFFFu;
+    return uintBitsToFloat(word) >= 1.0;
+}
+
+// Inks one pixel with a stipple of the given intensity (see the top of this file).
+void ink_pixel(uint at, float intensity, uint ink_word) {
+    if (intensity >= 1.0f) {
+        color[at] = ink_word;  // the least word there is: no other stipple replaces it
+    } else {
+        vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
+        atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
+    }
+}
+
+void splat(uint index, float intensity, float side, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -82,7 +99,6 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
     // Window coordinates with the renderer's negative-height viewport (y up in NDC, top row first).
     vec2 size = frame.viewport.xy;
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
-    float side = object.shading.y;
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
     bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
@@ -95,8 +111,8 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
         if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
     }
-    bool full = intensity >= 1.0f;
     uint ink_word = pack_color(frame.ink_color.rgb, 0.0);
+    uint lost = 0u;  // pixels of the dot beyond the outline
     bool inked = false;
     for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {
@@ -105,18 +121,50 @@ void splat(uint index, float intensity, mat4 model_view_proj, PolygonFrame polyg
                 if (dot(d, d) > 0.25) continue;
             }
             uint at = uint(y) * uint(size.x) + uint(x);
-            if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z, scene_depth[at])) continue;
-            inked = true;
-            if (full) {
-                color[at] = ink_word;  // the least word there is: no other stipple replaces it
-            } else {
-                vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
-                atomicMin(color[at], pack_color(mix(paper, frame.ink_color.rgb, intensity), 1.0 - intensity));
+            uint word = scene_depth[at];
+            if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z, word)) {
+                if (uncovered(word)) ++lost;
+                continue;
             }
+            inked = true;
+            ink_pixel(at, intensity, ink_word);
         }
     if (kRecordVisible && inked) {
         uint slot = atomicAdd(visible.count, 1u);
         visible_stipples[slot] = VisibleStipple(window.x, window.y, intensity, index);
+    }
+    // At print detail the dot is enlarged as a whole and its outline band is the screen's, enlarged.
+    if (lost == 0u || whole_dot) return;
+    // Astride the outline: the pixels beyond it have no surface to ink, and no stipple lies beyond the
+    // outline to ink the pixels just inside it, so the outline band would read lighter, and its share of
+    // the footprint grows as the object shrinks. The lost pixels are inked on the visible pixels nearest
+    // the dot instead (in order of distance, then index: the same in any run). Pixels hidden behind a
+    // nearer part are not moved: that ink belongs to no visible surface.
+    ivec2 isize = ivec2(size);
+    ivec2 ring_lo = max(lo - 1, ivec2(0)), ring_hi = min(hi + 1, isize - 1);
+    float last_distance = -1.0;
+    uint last_at = 0u;
+    for (uint k = 0u; k < lost; ++k) {
+        float best_distance = 3.0e38;
+        uint best_at = 0xFFFFFFFFu;
+        for (int y = ring_lo.y; y <= ring_hi.y; ++y)
+            for (int x = ring_lo.x; x <= ring_hi.x; ++x) {
+                vec2 offset = vec2(x, y) + 0.5 - window;
+                vec2 d = offset / side;
+                bool own = x >= lo.x && x <= hi.x && y >= lo.y && y <= hi.y && (!round_points || dot(d, d) <= 0.25);
+                if (own) continue;
+                float distance = dot(offset, offset);
+                uint at = uint(y) * uint(isize.x) + uint(x);
+                if (distance < last_distance || (distance == last_distance && at <= last_at)) continue;
+                if (distance > best_distance || (distance == best_distance && at >= best_at)) continue;
+                if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
+                best_distance = distance;
+                best_at = at;
+            }
+        if (best_at == 0xFFFFFFFFu) return;
+        ink_pixel(best_at, intensity, ink_word);
+        last_distance = best_distance;
+        last_at = best_at;
     }
 }
 
@@ -129,8 +177,10 @@ void main() {
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = frame.view_proj * object.model;
-    uint count = uint(ceil(density));
+    uint candidates = (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - first;
+    uint count = drawn_stipple_count(density, candidates);
+    float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     for (uint k = 0u; k < count; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), model_view_proj, polygon);
+        splat(first + k, stipple_intensity(density, float(k)), side, model_view_proj, polygon);
 }

@@ -27,12 +27,15 @@ void main() {
     TriangleDraw draw = draws[in_triangle];
     float index = float(uint(gl_VertexIndex) - draw.first_stipple);
     float intensity = stipple_intensity(draw.density, index);
-    gl_PointSize = object.shading.y;
     out_intensity = intensity;
     if (intensity <= 0.0f) {
+        gl_PointSize = object.shading.y;
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // z > w: beyond the far plane, clipped
         return;
     }
+    // Larger dots where the polygon's candidates cannot carry its density (stipple_scale).
+    uint end = in_triangle + 1u < object.flags.y ? draws[in_triangle + 1u].first_stipple : object.flags.w;
+    gl_PointSize = object.shading.y * stipple_scale(draw.density, float(end - draw.first_stipple));
     if (kCountDrawn) {
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[uint(gl_VertexIndex) >> 5u], 1u << (uint(gl_VertexIndex) & 31u));

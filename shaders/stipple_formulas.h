@@ -120,6 +120,21 @@ STIPPLE_FN float stipple_intensity(float density, float index) {
     return clamp(density - index, 0.0f, 1.0f);
 }
 
+// A polygon owed more stipples than it has candidates (close up, on a large image, or near and dark
+// with the intrinsic enhancement) draws all of them, each dot enlarged so that the ink is the owed
+// ink: its side grows by sqrt(density / candidates), at most kMaxStippleScale (beyond that the
+// surface would be drawn with blots, and the tone is let go). The density a polygon carries may
+// therefore exceed its candidates; these two functions are how every drawing path reads it.
+STIPPLE_CONST float kMaxStippleScale = 4.0f;
+
+STIPPLE_FN uint drawn_stipple_count(float density, uint candidates) {
+    return min(uint(ceil(max(density, 0.0f))), candidates);
+}
+
+STIPPLE_FN float stipple_scale(float density, float candidates) {
+    return clamp(sqrt(density / max(candidates, 1.0f)), 1.0f, kMaxStippleScale);
+}
+
 // Everything one polygon's density depends on, in view space.
 struct PolygonView {
     float candidates;     // N_max of the polygon (its stipple count): no more can be drawn
@@ -173,9 +188,24 @@ STIPPLE_FN vec3 octahedral_to_unit(vec2 e) {
     return normalize(v);
 }
 
-// The polygon's fixed selection value (§2.3), the centre of its 16-bit step: in (0, 1).
+// A 32-bit integer hash (lowbias32): the same bits in C++ and GLSL.
+STIPPLE_FN uint hash_uint(uint x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+// The polygon's fixed selection value (§2.3) in (0, 1): its 16-bit step, and a place inside the step
+// from a hash of its other constants (8 more bits). Far away on a fine mesh a polygon's probability is
+// a few steps or less; compared with the step alone, every polygon of a region would round alike (to
+// nothing, below half a step). With the hash the values are uniform within the step, so the share
+// selected stays the probability down to 2^-24.
 STIPPLE_FN float polygon_selection(TriangleInfo info) {
-    return (float(info.center_z_selection >> 16u) + 0.5f) * (1.0f / 65536.0f);
+    uint within = hash_uint(info.center_xy ^ hash_uint(info.normal ^ (info.center_z_selection << 16u))) >> 24u;
+    return (float(((info.center_z_selection >> 16u) << 8u) | within) + 0.5f) * (1.0f / 16777216.0f);
 }
 
 // The density inputs of one polygon, from its constant data, its candidate count and the object's uniforms.
@@ -214,13 +244,18 @@ STIPPLE_FN DensityParams density_params(FrameUniforms f, ObjectUniforms o) {
 struct PolygonDensity {
     float density;
     float probability;
+    float owed;         // every term applied, before the candidates cap: the stipples the tone asks for
+    float screen_area;  // approximate projected area in px^2 (0 without the extrinsic enhancement)
 };
 
-// §2.1-2.3: shading, intrinsic and extrinsic enhancement, in both regimes; density in [0, candidates].
+// §2.1-2.3: shading, intrinsic and extrinsic enhancement, in both regimes; density in stipples (above the
+// candidates when they cannot carry it: stipple_scale).
 STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) {
     PolygonDensity result;
     result.density = 0.0f;
     result.probability = 1.0f;
+    result.owed = 0.0f;
+    result.screen_area = 0.0f;
     float distance = -p.center.z;
     if (distance <= 0.0f || p.candidates <= 0.0f || p.due <= 0.0f) return result;
     float facing = dot(p.normal, -p.center) / length(p.center);
@@ -237,25 +272,32 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     if ((q.flags & kFlagIntrinsic) != 0u) density *= intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
     if ((q.flags & kFlagToonFade) != 0u) density *= toon_stipple_fade(facing, q.toon_sharpness);
     if ((q.flags & kFlagExtrinsic) == 0u) {
-        result.density = min(density, p.candidates);
+        result.owed = density;
+        result.density = min(density, p.candidates * kMaxStippleScale * kMaxStippleScale);
         return result;
     }
     float orientation = orientation_factor(facing);
     float screen_scale = q.pixels_per_unit / (distance * q.reference_ppu);
-    density = min(density * extrinsic_factor(screen_scale, q.pr) * orientation, p.candidates);
+    result.owed = density * extrinsic_factor(screen_scale, q.pr) * orientation;
+    // Not capped at the candidates: a polygon owed more draws all of them, larger (stipple_scale).
+    density = min(result.owed, p.candidates * kMaxStippleScale * kMaxStippleScale);
     result.density = density;
 
-    // §2.3 Polygons smaller on screen than the minimum stipple area: probabilistic selection. The
-    // approximate screen area (area * orientation * depth term) sets the probability that the polygon
-    // draws; a selected polygon carries the tone of the ones skipped (density / probability), so the
-    // expected ink always equals the density: tone is conserved in both regimes. Two refinements of
-    // ours: a polygon owed less than one stipple is selected with probability = its density, so the one
-    // it draws is a whole stipple (many faint dots overlap more and read lighter than fewer full ones);
-    // and the probability never falls below density / candidates, which the candidates can carry.
+    // §2.3 Polygons smaller on screen than the minimum stipple area: probabilistic selection. The paper
+    // draws such a polygon with probability p = area / min_area, carrying the ink of the ones skipped
+    // (density / p). Our reading keeps the expected ink (p x density / p = the density) and chooses p
+    // for the ink on screen: a selected polygon draws exactly one whole stipple, p = density. Carrying
+    // more (the paper's p when density > area / min_area) stacks several dots inside a polygon smaller
+    // than a dot, where they overlap and read lighter than the same dots spread out; a fraction of one
+    // (a faint dot) is what polygons at least min_area large draw instead. A polygon owed a stipple or
+    // more is drawn as in regime (a). min_area thus decides where a fractional stipple gives way to a
+    // whole one drawn with that probability. The selection values are uniform for polygons of every
+    // size (src/stipple/selection_order.cpp), so the expected ink is the owed ink on any mesh.
     float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation;
-    if (screen_area >= q.min_area || density <= 0.0f) return result;
-    result.probability = min(max(min(screen_area / q.min_area, density), density / p.candidates), 1.0f);
-    result.density = min(density / result.probability, p.candidates);
+    result.screen_area = screen_area;
+    if (screen_area >= q.min_area || density <= 0.0f || density >= 1.0f) return result;
+    result.probability = density;
+    result.density = 1.0f;
     return result;
 }
 

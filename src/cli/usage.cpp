@@ -28,6 +28,8 @@ Usage:
                                   load a model, generate its stipples, print figures
   stipple bench [--quick] [options]
                                   the paper's Table 1 on this machine: results.md, .json, chart.svg
+  stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
+                                  inside its footprint per distance, extrinsic enhancement on and off
   stipple params [--markdown]     list the per-object parameters: ranges, defaults, scene keys
   stipple cache --list | --clear  what the stipple cache holds, or empty it
   stipple --help                  this text
@@ -146,6 +148,18 @@ when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else ~/.cache/stipple/stipples)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (default 1G); the least recently used
                           entries are removed beyond it
+
+Tone options (and the stipple options; without MODEL the default scene's model):
+  --distances 1,2,4,8,16  camera distances, multiples of the framing distance
+  --views 30:10,...       YAW:PITCH pairs in degrees (default 30:10), one table row each
+  --frames N              average each view over N frames at yaws spread over --arc DEG (default 1;
+                          the arc defaults to 40 with frames; 360 goes all around the object)
+  --fov DEG               vertical field of view (default 30); a narrow one keeps the same surface in
+                          view at every distance (perspective shows a framed object's sides less)
+  --width N --height N    image size (default 1280 x 1024)  --light X,Y,Z  --device N
+  --regimes               also print, per distance, the stipples each regime of the extrinsic
+                          enhancement owes and draws, and the ink they leave on the screen
+  --images DIR            write each view and distance (cropped to the object, enlarged) as PNG
 
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
   --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames, only

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 #include <unordered_map>
 
 #include "core/error.hpp"
@@ -122,6 +124,59 @@ Mesh make_icosphere(int subdivisions, float radius, glm::vec3 center) {
     for (const glm::dvec3& d : dirs) push_sphere_vertex(mesh, d, radius, center);
     mesh.indices.reserve(tris.size());
     for (size_t t = 0; t < tris.size(); t += 3) push_outward_triangle(mesh, tris[t], tris[t + 1], tris[t + 2], center);
+    return mesh;
+}
+
+namespace {
+
+// Joins two latitude rings of `a_count` and `b_count` vertices (starting at longitude 0, evenly spaced)
+// by walking both in order of longitude: one triangle per step of either ring.
+void zip_rings(Mesh& mesh, uint32_t a_first, uint32_t a_count, uint32_t b_first, uint32_t b_count, glm::vec3 center) {
+    uint32_t i = 0, j = 0;
+    while (i < a_count || j < b_count) {
+        const bool step_a = j >= b_count || (i < a_count && double(i + 1) / a_count <= double(j + 1) / b_count);
+        if (step_a) {
+            push_outward_triangle(mesh, a_first + i, a_first + (i + 1) % a_count, b_first + j % b_count, center);
+            ++i;
+        } else {
+            push_outward_triangle(mesh, a_first + i % a_count, b_first + (j + 1) % b_count, b_first + j, center);
+            ++j;
+        }
+    }
+}
+
+}  // namespace
+
+Mesh make_mixed_sphere(int coarse_stacks, int fine_stacks, float radius, glm::vec3 center) {
+    check_sphere_args("make_mixed_sphere", radius, center);
+    if (coarse_stacks < 1 || coarse_stacks > 2000 || fine_stacks < 1 || fine_stacks > 2000)
+        fail("make_mixed_sphere: stacks must be in [1, 2000], got " + std::to_string(coarse_stacks) + " and " +
+             std::to_string(fine_stacks));
+    // Rings from the north pole to the south pole: (polar angle, vertex count); the equator is coarse.
+    std::vector<std::pair<double, uint32_t>> rings;
+    for (int k = 1; k <= coarse_stacks; ++k) rings.push_back({0.5 * kPi * k / coarse_stacks, 4u * uint32_t(coarse_stacks)});
+    for (int k = 1; k < fine_stacks; ++k) rings.push_back({0.5 * kPi * (1.0 + double(k) / fine_stacks), 4u * uint32_t(fine_stacks)});
+
+    Mesh mesh;
+    mesh.source = "mixed_sphere";
+    push_sphere_vertex(mesh, {0.0, 1.0, 0.0}, radius, center);
+    std::vector<uint32_t> first;
+    for (const auto& [theta, count] : rings) {
+        first.push_back(uint32_t(mesh.positions.size()));
+        for (uint32_t j = 0; j < count; ++j) {
+            const double phi = 2.0 * kPi * j / count;
+            push_sphere_vertex(mesh, {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)},
+                               radius, center);
+        }
+    }
+    push_sphere_vertex(mesh, {0.0, -1.0, 0.0}, radius, center);
+    const uint32_t south = uint32_t(mesh.positions.size() - 1);
+    const uint32_t top = rings.front().second, bottom = rings.back().second;
+    for (uint32_t j = 0; j < top; ++j) push_outward_triangle(mesh, 0, first[0] + j, first[0] + (j + 1) % top, center);
+    for (size_t r = 0; r + 1 < rings.size(); ++r)
+        zip_rings(mesh, first[r], rings[r].second, first[r + 1], rings[r + 1].second, center);
+    for (uint32_t j = 0; j < bottom; ++j)
+        push_outward_triangle(mesh, south, first.back() + (j + 1) % bottom, first.back() + j, center);
     return mesh;
 }
 

@@ -25,13 +25,13 @@ uint32_t build_draw_commands(std::span<const float> densities, std::span<const u
                              std::span<gpu::DrawCommand> commands) {
     uint32_t count = 0;
     for (size_t t = 0; t < densities.size(); ++t) {
-        uint32_t drawn = uint32_t(std::ceil(densities[t]));
+        uint32_t drawn = formulas::drawn_stipple_count(densities[t], first_stipple[t + 1] - first_stipple[t]);
         if (drawn == 0) continue;
         // The rule of shaders/draw_commands.comp: join the previous draw while the polygon before drew
         // all of its candidates (its range then ends where this one starts), at most kMaxMergedPolygons.
         bool merges = t > 0 && t % gpu::kMaxMergedPolygons != 0 && count > 0;
         if (merges) {
-            uint32_t previous = uint32_t(std::ceil(densities[t - 1]));
+            uint32_t previous = formulas::drawn_stipple_count(densities[t - 1], first_stipple[t] - first_stipple[t - 1]);
             merges = previous > 0 && previous == first_stipple[t] - first_stipple[t - 1];
         }
         if (merges)

@@ -13,7 +13,7 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
                            const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
                            std::span<float> densities);
 
-// Draw commands for the surviving stipples: polygon t draws [first[t], first[t] + ceil(density)).
+// Draw commands for the surviving stipples: polygon t draws [first[t], first[t] + drawn_stipple_count).
 // Consecutive polygons merge into one command while each one before draws all of its candidates
 // (first[t + 1] - first[t]), so a dense region costs one draw, not one per polygon. Returns the number
 // of commands written.

@@ -11,6 +11,7 @@
 namespace stipple::formulas {
 using namespace stipple::gpu;
 using glm::abs;
+using glm::ceil;
 using glm::clamp;
 using glm::cos;
 using glm::cross;
@@ -25,6 +26,7 @@ using glm::min;
 using glm::normalize;
 using glm::sign;
 using glm::sin;
+using glm::sqrt;
 using glm::unpackSnorm2x16;
 using glm::unpackUnorm2x16;
 using std::pow;

@@ -14,7 +14,7 @@
 namespace stipple::cache_format {
 
 inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
-inline constexpr uint32_t kVersion = 3;  // 3: compressed barycentric entries with checksums
+inline constexpr uint32_t kVersion = 4;  // 3: compressed barycentric entries with checksums; 4: selection values uniform per area class
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

@@ -6,6 +6,8 @@
 #include <random>
 #include <unordered_map>
 
+#include "core/hash.hpp"
+
 namespace stipple {
 
 namespace {
@@ -40,6 +42,39 @@ private:
     float radius2_;
     std::unordered_map<uint64_t, std::vector<glm::vec3>> cells_;
 };
+
+// Triangles in classes of about the same area (within kClassRatio of the class's smallest); in each
+// class of n the k-th in the order of `scaled` (the blue-noise rank) gets a value in [k / n, (k + 1) / n),
+// at a place in that step drawn per triangle. So every class holds exactly uniform values whatever
+// the spread of triangle sizes (a lone large triangle among tiny ones included), P(value < p) = p for a
+// triangle of any size, and the probabilistic selection's expected ink is the owed ink; within a class
+// the blue-noise order is kept, so the selected triangles stay evenly spread.
+void calibrate_by_area(const std::vector<double>& areas, const std::vector<double>& scaled, uint64_t seed,
+                       std::vector<float>& values) {
+    constexpr double kClassRatio = 1.19;  // 2^(1/4): p varies by under 10% across a class
+    const size_t count = areas.size();
+    std::vector<uint32_t> by_area(count);
+    std::iota(by_area.begin(), by_area.end(), 0u);
+    std::sort(by_area.begin(), by_area.end(),
+              [&](uint32_t a, uint32_t b) { return areas[a] < areas[b] || (areas[a] == areas[b] && a < b); });
+    const uint64_t key = mix64(seed ^ 0x53454C4543540001ull);
+    size_t begin = 0;
+    while (begin < count) {
+        size_t end = begin;
+        const double limit = areas[by_area[begin]] * kClassRatio;
+        while (end < count && areas[by_area[end]] <= limit) ++end;
+        std::sort(by_area.begin() + std::ptrdiff_t(begin), by_area.begin() + std::ptrdiff_t(end),
+                  [&](uint32_t a, uint32_t b) { return scaled[a] < scaled[b] || (scaled[a] == scaled[b] && a < b); });
+        const double n = double(end - begin);
+        for (size_t k = begin; k < end; ++k) {
+            const uint32_t t = by_area[k];
+            const double within = double(mix64(key ^ t) >> 11) * 0x1p-53;
+            const double value = std::min((double(k - begin) + within) / n, 1.0 - 1.0 / 16777216.0);
+            values[t] = float(std::floor(value * 16777216.0)) * (1.0f / 16777216.0f);  // a multiple of 2^-24
+        }
+        begin = end;
+    }
+}
 
 }  // namespace
 
@@ -85,16 +120,21 @@ std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed) {
     }
     ranked.insert(ranked.end(), remaining.begin(), remaining.end());
 
-    // The ranking is uniform over the surface's area, so a triangle a times the mean area reaches a
-    // given rank a times as often as the mean one: dividing that out makes P(value < p) = p for every
-    // triangle, large or small, on meshes of uneven tessellation too.
+    // The ranking is about uniform over the surface's area, so a triangle a times the mean area reaches a
+    // given rank about a times as often as the mean one: rank / count x relative area is close to uniform
+    // for every triangle. Only close: a triangle far smaller than the mean has a value below its relative
+    // area whatever its rank (it would be selected for certain once p passes that), and one far larger is
+    // ranked before its regular share once its region runs out of centroids. So the value is made exactly
+    // uniform where it matters, among triangles of about the same area (calibrate_by_area).
     const double mean_area = area / double(count);
+    std::vector<double> areas(count);
+    std::vector<double> scaled(count);
     for (size_t rank = 0; rank < count; ++rank) {
         uint32_t t = ranked[rank];
-        double relative_area = triangle_area(mesh, t) / mean_area;
-        double value = std::min(double(rank) / double(count) * relative_area, 1.0 - 1.0 / 16777216.0);
-        values[t] = float(std::floor(value * 16777216.0)) * (1.0f / 16777216.0f);  // a multiple of 2^-24
+        areas[t] = triangle_area(mesh, t);
+        scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
     }
+    calibrate_by_area(areas, scaled, seed, values);
     return values;
 }
 

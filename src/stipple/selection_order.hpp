@@ -7,15 +7,16 @@
 
 namespace stipple {
 
-// One value in [0, 1) per triangle: its rank in a progressive blue-noise order of the triangles'
-// centroids, divided by the triangle count (and scaled by its relative area, see the .cpp). A polygon
-// is drawn when its value is below its selection probability p, so the selected polygons are an
-// early part of that order: spread evenly over the surface, like the paper's "every Nth polygon" of a
-// strip, in any mesh. (An independent
-// random value per polygon, the paper's fallback, clumps: clumped stipples overlap and read lighter.)
-// The order comes from dart throwing at halving areas: at each level the centroids farther than the
-// level's Poisson-disc radius from every centroid already ranked get the next ranks.
-// Values are multiples of 2^-24, so C++ and GLSL compare them exactly. Deterministic for a seed.
+// One value in [0, 1) per triangle, from its rank in a progressive blue-noise order of the triangles'
+// centroids. A polygon is drawn when its value is below its selection probability p, so the selected
+// polygons are an early part of that order: spread evenly over the surface, like the paper's "every
+// Nth polygon" of a strip, in any mesh. (An independent random value per polygon, the paper's
+// fallback, clumps: clumped stipples overlap and read lighter.) The order comes from dart throwing at
+// halving areas: at each level the centroids farther than the level's Poisson-disc radius from every
+// centroid already ranked get the next ranks. The values are then made exactly uniform among triangles
+// of about the same area, keeping that order, so that P(value < p) = p for a triangle of any size on
+// a mesh of any mix of sizes (see the .cpp). Values are multiples of 2^-24, so C++ and GLSL compare
+// them exactly. Deterministic for a seed.
 std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed = 1);
 
 }  // namespace stipple

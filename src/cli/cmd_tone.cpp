@@ -1,0 +1,183 @@
+// stipple tone: does a model keep its tone as it moves away (§2.3, Figures 3-6)? Prints the mean ink
+// inside the object's footprint at each distance, with the extrinsic enhancement on and off, and with
+// --regimes where the stipples the tone asks for go (src/render/tone_survey.hpp).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/object_options.hpp"
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "render/tone_survey.hpp"
+#include "stipple/object_data.hpp"
+
+namespace stipple::cli {
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, separator)) parts.push_back(part);
+    return parts;
+}
+
+double parse_number(const std::string& text, const std::string& option) {
+    size_t used = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(value))
+        fail(option + ": '" + text + "' is not a number");
+    return value;
+}
+
+std::vector<float> parse_distances(const std::string& text) {
+    std::vector<float> distances;
+    for (const std::string& part : split(text, ',')) {
+        double d = parse_number(part, "--distances");
+        if (d <= 0.0 || d > 1e4) fail("--distances: " + part + " must be in (0, 10000]");
+        distances.push_back(float(d));
+    }
+    if (distances.empty() || distances.size() > 64) fail("--distances needs 1 to 64 comma-separated values");
+    return distances;
+}
+
+// YAW:PITCH pairs, comma-separated: "30:10,120:-20".
+std::vector<std::array<float, 2>> parse_views(const std::string& text) {
+    std::vector<std::array<float, 2>> views;
+    for (const std::string& part : split(text, ',')) {
+        std::vector<std::string> angles = split(part, ':');
+        if (angles.size() != 2) fail("--views: '" + part + "' is not YAW:PITCH (degrees)");
+        double yaw = parse_number(angles[0], "--views"), pitch = parse_number(angles[1], "--views");
+        if (std::abs(yaw) > 360.0 || std::abs(pitch) > 89.0)
+            fail("--views: '" + part + "' needs a yaw in [-360, 360] and a pitch in [-89, 89]");
+        views.push_back({float(yaw), float(pitch)});
+    }
+    if (views.empty() || views.size() > 16) fail("--views needs 1 to 16 YAW:PITCH pairs");
+    return views;
+}
+
+void print_table(const ToneSurvey& survey, const ToneSurveyOptions& options, const char* extrinsic) {
+    for (size_t v = 0; v < options.views.size(); ++v) {
+        std::printf("| %-3s | %6.1f:%-5.1f |", extrinsic, options.views[v][0], options.views[v][1]);
+        for (const ToneSample& s : survey.samples) std::printf(" %.4f |", s.mean_ink[v]);
+        std::printf(" %.3f |\n", survey.max_over_min(v));
+    }
+}
+
+void print_regimes(const ToneSurvey& survey, const ToneSurveyOptions& options, float point_size) {
+    std::printf("\nWhere the tone goes (extrinsic on; stipples summed over the frames; owed: area x density x "
+                "every term, allowed: the same from the integer candidates, expected: probability x drawn density):\n");
+    for (size_t v = 0; v < options.views.size(); ++v) {
+        std::printf("\nview %.1f:%.1f\n", options.views[v][0], options.views[v][1]);
+        std::printf("| distance | regime | polygons | owed | allowed | expected | drawn | drawn/owed |\n");
+        std::printf("|---:|---|---:|---:|---:|---:|---:|---:|\n");
+        for (const ToneSample& s : survey.samples) {
+            const ToneTally& tally = s.tallies[v];
+            for (size_t r = 0; r < kToneRegimeCount; ++r) {
+                const RegimeTally& t = tally.regimes[r];
+                if (t.polygons == 0) continue;
+                std::printf("| %g | %s | %zu | %.1f | %.1f | %.1f | %.1f | %.3f |\n", s.distance,
+                            tone_regime_name(ToneRegime(r)), t.polygons, t.owed, t.allowed, t.expected, t.drawn,
+                            t.owed > 0.0 ? t.drawn / t.owed : 0.0);
+            }
+            const RegimeTally total = tally.total();
+            std::printf("| %g | all | %zu | %.1f | %.1f | %.1f | %.1f | %.3f |\n", s.distance, total.polygons, total.owed,
+                        total.allowed, total.expected, total.drawn, total.owed > 0.0 ? total.drawn / total.owed : 0.0);
+        }
+        // On the screen: ink per drawn stipple against an isolated dot's (point_size^2 pixels).
+        std::printf("\n| distance | covered px | ink px | drawn stipples | unshared ink / (drawn x point_size^2) | "
+                    "ink / unshared ink | owed x point_size^2 / covered | mean ink |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        const double dot = double(point_size) * double(point_size);
+        for (const ToneSample& s : survey.samples) {
+            const InkFigures& ink = s.ink[v];
+            const RegimeTally total = s.tallies[v].total();
+            std::printf("| %g | %zu | %.0f | %.0f | %.3f | %.3f | %.4f | %.4f |\n", s.distance, ink.covered, ink.ink,
+                        total.drawn, total.drawn > 0.0 ? ink.unshared_ink / (total.drawn * dot) : 0.0,
+                        ink.unshared_ink > 0.0 ? ink.ink / ink.unshared_ink : 0.0,
+                        ink.covered ? total.owed * dot / double(ink.covered) : 0.0, ink.mean());
+        }
+    }
+}
+
+}  // namespace
+
+int run_tone(const std::vector<std::string>& argv) {
+    std::set<std::string> flags = object_flags();
+    flags.insert("--regimes");
+    std::set<std::string> options_set = object_options();
+    options_set.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov", "--images"});
+    Args args(argv, flags, options_set);
+    if (args.positionals().size() > 1) fail("tone takes at most one MODEL (see stipple --help)");
+    const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
+    if (args.flag("--extrinsic") || args.flag("--no-extrinsic"))
+        fail("tone draws every table with the extrinsic enhancement on and off; drop --extrinsic/--no-extrinsic");
+
+    ToneSurveyOptions options;
+    long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
+    if (width < 16 || width > 16384 || height < 16 || height > 16384)
+        fail("--width/--height must be between 16 and 16384 (got " + std::to_string(width) + "x" +
+             std::to_string(height) + ")");
+    options.extent = {uint32_t(width), uint32_t(height)};
+    if (args.has("--distances")) options.distances = parse_distances(args.get("--distances", ""));
+    if (args.has("--views")) options.views = parse_views(args.get("--views", ""));
+    long long frames = args.integer("--frames", 1);
+    if (frames < 1 || frames > 64) fail("--frames = " + std::to_string(frames) + " must be in 1..64");
+    options.frames = int(frames);
+    double arc = args.number("--arc", frames > 1 ? 40.0 : 0.0);
+    if (!(arc >= 0.0 && arc <= 360.0)) fail("--arc = " + std::to_string(arc) + " must be in [0, 360] degrees");
+    options.arc_deg = float(arc);
+    double fov = args.number("--fov", options.fov_y_deg);
+    if (!(fov >= 0.5 && fov <= 120.0)) fail("--fov = " + std::to_string(fov) + " must be in [0.5, 120] degrees");
+    options.fov_y_deg = float(fov);
+    options.regimes = args.flag("--regimes");
+    options.image_dir = args.get("--images", "");
+    if (!options.image_dir.empty() && !std::filesystem::is_directory(options.image_dir))
+        fail("--images " + options.image_dir + " is not a folder");
+    glm::vec3 light = FrameView{}.light_view;
+    if (args.has("--light")) {
+        light = args.vec3("--light", light);
+        if (glm::length(light) < 1e-6f) fail("--light must not be the zero vector");
+    }
+    ObjectParams params = read_object_params(args);
+    const ObjectData object = load_object_data(path, params.generation);
+
+    gpu::ContextOptions context_options;
+    context_options.device_index = int(args.integer("--device", -1));
+    gpu::Context context(context_options);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+    renderer.add_object(*object.mesh, *object.stipples, glm::mat4(1.0f), params);
+
+    std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, field of view %g deg, D_max %g, point size %g, "
+                "%d frame(s) per view over %g deg of yaw\n\n",
+                path.c_str(), object.mesh->triangle_count(), object.stipples->size(), options.extent.width,
+                options.extent.height, options.fov_y_deg, params.generation.dmax, params.point_size, options.frames,
+                options.arc_deg);
+    renderer.params(0).extrinsic = true;
+    const ToneSurvey on = survey_tone(context, renderer, 0, object.bounds, options, light,
+                                      args.flag("--regimes") ? &object.stipples->positions : nullptr);
+    renderer.params(0).extrinsic = false;
+    ToneSurveyOptions off_options = options;
+    off_options.regimes = false;
+    const ToneSurvey off = survey_tone(context, renderer, 0, object.bounds, off_options, light);
+    std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance):\n\n");
+    std::printf("| extrinsic | yaw:pitch |");
+    for (float d : options.distances) std::printf(" d=%g |", d);
+    std::printf(" max/min |\n|---|---|");
+    for (size_t i = 0; i < options.distances.size(); ++i) std::printf("---:|");
+    std::printf("---:|\n");
+    print_table(on, options, "on");
+    print_table(off, options, "off");
+    if (args.flag("--regimes")) print_regimes(on, options, params.point_size);
+    return 0;
+}
+
+}  // namespace stipple::cli

@@ -1,0 +1,224 @@
+#include "render/tone_survey.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/density_formulas.hpp"
+
+namespace stipple {
+
+const char* tone_regime_name(ToneRegime regime) {
+    switch (regime) {
+    case ToneRegime::Large: return "large";
+    case ToneRegime::Probabilistic: return "probabilistic";
+    case ToneRegime::Enlarged: return "enlarged";
+    case ToneRegime::Culled: return "culled";
+    }
+    return "?";
+}
+
+RegimeTally ToneTally::total() const {
+    RegimeTally sum;
+    for (const RegimeTally& r : regimes) {
+        sum.polygons += r.polygons;
+        sum.owed += r.owed;
+        sum.allowed += r.allowed;
+        sum.expected += r.expected;
+        sum.drawn += r.drawn;
+    }
+    return sum;
+}
+
+ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
+    const formulas::DensityParams params = formulas::density_params(frame, object.frame.uniforms);
+    const std::vector<gpu::TriangleInfo>& polygons = object.polygons.cpu;
+    // The stipples per unit area generation used (its total is within one stipple of it), so that a
+    // polygon's owed ink follows its area, not its rounded candidate count.
+    double area = 0.0;
+    for (const gpu::TriangleInfo& info : polygons) area += info.area;
+    const double per_area = area > 0.0 ? double(object.geometry.stipple_count) / area : 0.0;
+
+    ToneTally tally;
+    for (size_t t = 0; t < polygons.size(); ++t) {
+        const float candidates = object.geometry.candidates(t);
+        formulas::PolygonView view = formulas::polygon_view(polygons[t], candidates, object.frame.uniforms);
+        const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
+        const float drawn = formulas::polygon_density(view, params);
+        view.candidates = float(polygons[t].area * per_area);
+        const formulas::PolygonDensity ideal = formulas::polygon_density_terms(view, params);
+
+        const bool faces_away = formulas::polygon_faces_away(view.center, view.normal);
+        ToneRegime regime = ToneRegime::Large;
+        if (faces_away)
+            regime = ToneRegime::Culled;
+        else if (ideal.owed > view.candidates)  // the model's regime, from the area (not the rounded count)
+            regime = ToneRegime::Enlarged;
+        else if (ideal.probability < 1.0f)
+            regime = ToneRegime::Probabilistic;
+        RegimeTally& r = tally.regimes[size_t(regime)];
+        ++r.polygons;
+        r.owed += ideal.owed;
+        r.allowed += terms.owed;
+        r.expected += double(terms.density) * terms.probability;
+        r.drawn += drawn;
+    }
+    return tally;
+}
+
+InkFigures measure_ink(const RenderedFrame& frame) {
+    InkFigures f;
+    for (size_t i = 0; i < frame.depth.size(); ++i) {
+        if (frame.depth[i] >= 1.0f) continue;
+        ++f.covered;
+        f.ink += 1.0 - frame.color.pixels[4 * i] / 255.0;
+    }
+    return f;
+}
+
+double unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
+                        const RenderedFrame& rendered) {
+    const formulas::DensityParams params = formulas::density_params(frame, object.frame.uniforms);
+    const glm::mat4 model_view_proj = frame.view_proj * object.model;
+    const int width = int(frame.viewport.x), height = int(frame.viewport.y);
+    const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+    double ink = 0.0;
+    for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
+        const float density = formulas::polygon_density(
+            formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), params);
+        const uint32_t candidates = object.geometry.first_stipple[t + 1] - object.geometry.first_stipple[t];
+        const float side = object.params.point_size * formulas::stipple_scale(density, float(candidates));
+        for (uint32_t k = 0; k < formulas::drawn_stipple_count(density, candidates); ++k) {
+            const float intensity = formulas::stipple_intensity(density, float(k));
+            const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
+            if (clip.w <= 0.0f) continue;
+            const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+            const glm::vec2 window(0.5f * (ndc.x + 1.0f) * float(width), 0.5f * (1.0f - ndc.y) * float(height));
+            // The splat's pixels: centres inside the square (or the disc) of side point_size.
+            const glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(window - 0.5f * side - 0.5f)), glm::ivec2(0));
+            const glm::ivec2 hi = glm::min(glm::ivec2(glm::floor(window + 0.5f * side - 0.5f)), glm::ivec2(width - 1, height - 1));
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) {
+                    const glm::vec2 d = (glm::vec2(x, y) + 0.5f - window) / side;
+                    if (round && glm::dot(d, d) > 0.25f) continue;
+                    const float surface = rendered.depth[size_t(y) * size_t(width) + size_t(x)];
+                    if (surface >= 1.0f || ndc.z > surface + 1e-6f) continue;
+                    ink += intensity;
+                }
+        }
+    }
+    return ink;
+}
+
+namespace {
+
+// The frame with each pixel repeated `zoom` times, so that a small object can be looked at.
+Image enlarged(const Image& image, int zoom) {
+    Image out;
+    out.width = image.width * zoom;
+    out.height = image.height * zoom;
+    out.channels = image.channels;
+    out.pixels.resize(size_t(out.width) * size_t(out.height) * size_t(out.channels));
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x)
+            for (int c = 0; c < out.channels; ++c)
+                out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * size_t(out.channels) + size_t(c)] =
+                    image.pixels[(size_t(y / zoom) * size_t(image.width) + size_t(x / zoom)) * size_t(image.channels) + size_t(c)];
+    return out;
+}
+
+// The part of the full image (options.extent) that holds the object at `distance`: a square about its
+// projected bounding sphere, even-sized so that it shares the full image's pixel grid.
+VkExtent2D cropped_extent(VkExtent2D full, float distance) {
+    const uint32_t side = 2u * uint32_t(std::ceil(0.5f * float(full.height) / std::max(distance, 1e-3f) + 4.0f));
+    return {std::min(full.width, side), std::min(full.height, side)};
+}
+
+void add(RegimeTally& to, const RegimeTally& from) {
+    to.polygons += from.polygons;
+    to.owed += from.owed;
+    to.allowed += from.allowed;
+    to.expected += from.expected;
+    to.drawn += from.drawn;
+}
+
+// The full image's camera at `distance`, seen through the `crop` window at its centre: the field of view
+// narrowed by crop / full height, so pixels per unit (and with them every per-frame term) are the full
+// image's.
+FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, float fov_y_deg, float distance, float yaw,
+                      float pitch, glm::vec3 light) {
+    const float full_aspect = float(full.width) / float(full.height);
+    OrbitCamera camera = frame_sphere(bounds, full_aspect, distance, yaw, pitch);
+    camera.fov_y_deg = fov_y_deg;
+    camera.distance = framing_distance(bounds, full_aspect, fov_y_deg) * distance;
+    const float half = std::atan(std::tan(0.5f * glm::radians(fov_y_deg)) * float(crop.height) / float(full.height));
+    camera.fov_y_deg = glm::degrees(2.0f * half);
+    FrameView view;
+    view.extent = crop;
+    view.camera = camera_matrices(camera, float(crop.width) / float(crop.height), bounds);
+    view.light_view = light;
+    return view;
+}
+
+}  // namespace
+
+double ToneSurvey::max_over_min(size_t view) const {
+    double lo = 0.0, hi = 0.0;
+    for (const ToneSample& s : samples) {
+        const double ink = s.mean_ink.at(view);
+        lo = lo == 0.0 ? ink : std::min(lo, ink);
+        hi = std::max(hi, ink);
+    }
+    return lo > 0.0 ? hi / lo : 0.0;
+}
+
+double ToneSurvey::worst_max_over_min() const {
+    double worst = 0.0;
+    if (!samples.empty())
+        for (size_t v = 0; v < samples[0].mean_ink.size(); ++v) worst = std::max(worst, max_over_min(v));
+    return worst;
+}
+
+ToneSurvey survey_tone(const gpu::Context& context, StippleRenderer& renderer, size_t object, const Sphere& bounds,
+                       const ToneSurveyOptions& options, glm::vec3 light, const std::vector<glm::vec3>* positions) {
+    ToneSurvey survey;
+    for (float distance : options.distances) {
+        ToneSample sample;
+        sample.distance = distance;
+        const VkExtent2D crop = cropped_extent(options.extent, distance);
+        OffscreenTarget target(context, crop);
+        const int frames = std::max(options.frames, 1);
+        for (const auto& [yaw, pitch] : options.views) {
+            ToneTally tally;
+            InkFigures ink;
+            for (int j = 0; j < frames; ++j) {
+                const float offset = options.arc_deg * ((float(j) + 0.5f) / float(frames) - 0.5f);
+                RenderedFrame frame = target.render(
+                    renderer, survey_view(bounds, options.extent, crop, options.fov_y_deg, distance, yaw + offset, pitch, light));
+                if (options.regimes) {
+                    const ToneTally one = tally_tone(renderer.object(object), renderer.frame_uniforms());
+                    for (size_t r = 0; r < kToneRegimeCount; ++r) add(tally.regimes[r], one.regimes[r]);
+                }
+                if (j == 0 && !options.image_dir.empty()) {
+                    char name[160];
+                    std::snprintf(name, sizeof name, "/tone-%g_%g-d%g-%s.png", yaw, pitch, distance,
+                                  renderer.params(object).extrinsic ? "on" : "off");
+                    write_png(options.image_dir + name, enlarged(frame.color, std::clamp(int(256 / crop.height), 1, 8)));
+                }
+                const InkFigures f = measure_ink(frame);
+                ink.covered += f.covered;
+                ink.ink += f.ink;
+                if (positions)
+                    ink.unshared_ink +=
+                        unshared_dot_ink(renderer.object(object), renderer.frame_uniforms(), *positions, frame);
+            }
+            sample.mean_ink.push_back(ink.mean());
+            sample.tallies.push_back(tally);
+            sample.ink.push_back(ink);
+        }
+        survey.samples.push_back(std::move(sample));
+    }
+    return survey;
+}
+
+}  // namespace stipple

@@ -1,0 +1,93 @@
+// The fixed selection values of §2.3's probabilistic polygon selection: a polygon is drawn when its value
+// is below its probability p, so the expected ink is the owed ink only if P(value < p) = p for polygons of
+// every size. Checked on meshes that mix tiny and large polygons, where ranking alone gets it wrong.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mesh/primitives.hpp"
+#include "stipple/selection_order.hpp"
+
+namespace stipple {
+namespace {
+
+// Share of the polygons of a size class (relative area within [lo, hi) of the mean) whose value is below p.
+struct ClassShare {
+    size_t polygons = 0;
+    size_t below = 0;
+    double share() const { return polygons ? double(below) / double(polygons) : 0.0; }
+};
+
+ClassShare share_below(const Mesh& mesh, const std::vector<float>& values, double lo, double hi, double p) {
+    const double mean = total_area(mesh) / double(mesh.triangle_count());
+    ClassShare s;
+    for (size_t t = 0; t < values.size(); ++t) {
+        const double relative = triangle_area(mesh, t) / mean;
+        if (relative < lo || relative >= hi) continue;
+        ++s.polygons;
+        s.below += values[t] < p;
+    }
+    return s;
+}
+
+TEST(SelectionValues, UniformForTinyAndLargePolygonsAlike) {
+    // The northern hemisphere in a few large triangles, the southern one in many small ones: the largest
+    // are ~700 times the smallest, and the mean is far from both.
+    const Mesh mesh = make_mixed_sphere(3, 100);
+    const std::vector<float> values = polygon_selection_values(mesh, 1);
+    const double mean = total_area(mesh) / double(mesh.triangle_count());
+    double smallest = 1e30, largest = 0.0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        smallest = std::min(smallest, triangle_area(mesh, t) / mean);
+        largest = std::max(largest, triangle_area(mesh, t) / mean);
+    }
+    std::printf("mixed sphere: %zu triangles, relative areas %.3g .. %.3g\n", mesh.triangle_count(), smallest, largest);
+    ASSERT_GT(largest / smallest, 100.0);
+    for (double p : {0.01, 0.05, 0.2, 0.5, 0.9}) {
+        const ClassShare fine = share_below(mesh, values, 0.0, 1.0, p);
+        const ClassShare coarse = share_below(mesh, values, 10.0, 1e30, p);
+        std::printf("p %.2f: fine polygons %.4f below (%zu), coarse %.4f below (%zu)\n", p, fine.share(), fine.polygons,
+                    coarse.share(), coarse.polygons);
+        ASSERT_GT(fine.polygons, 10000u);
+        ASSERT_GT(coarse.polygons, 20u);
+        // Uniform per class of about equal area (each value placed at random within its rank's step): the
+        // share below p is p up to binomial noise, 3 standard deviations. Ranking alone put no coarse
+        // polygon below 0.2 and 3% below 0.5.
+        EXPECT_NEAR(fine.share(), p, 3.0 * std::sqrt(p * (1.0 - p) / double(fine.polygons)));
+        EXPECT_NEAR(coarse.share(), p, 3.0 * std::sqrt(p * (1.0 - p) / double(coarse.polygons)));
+    }
+}
+
+TEST(SelectionValues, EarlyValuesAreEvenlySpread) {
+    // On an even grid the polygons below a small p are spread like blue noise: the nearest selected
+    // neighbour is rarely much closer than the mean spacing (random values put 1 in 5 within 0.3 of it).
+    const Mesh grid = make_grid(200);  // 80,000 triangles on [-1, 1]^2
+    const std::vector<float> values = polygon_selection_values(grid, 1);
+    const double p = 0.01;
+    std::vector<glm::vec2> selected;
+    for (size_t t = 0; t < grid.triangle_count(); ++t)
+        if (values[t] < p) {
+            const glm::vec3 c = (grid.positions[grid.indices[3 * t]] + grid.positions[grid.indices[3 * t + 1]] +
+                                 grid.positions[grid.indices[3 * t + 2]]) / 3.0f;
+            selected.emplace_back(c.x, c.y);
+        }
+    const double spacing = std::sqrt(4.0 / double(selected.size()));
+    size_t close = 0;
+    for (size_t i = 0; i < selected.size(); ++i) {
+        double nearest = 1e30;
+        for (size_t j = 0; j < selected.size(); ++j)
+            if (i != j) nearest = std::min(nearest, double(glm::length(selected[i] - selected[j])));
+        close += nearest < 0.3 * spacing;
+    }
+    const double share = double(close) / double(selected.size());
+    std::printf("%zu of 80000 grid polygons below p = %.2f; %.2f%% have a selected neighbour within 0.3 spacings\n",
+                selected.size(), p, 100.0 * share);
+    EXPECT_NEAR(double(selected.size()), p * 80000.0, 2.0);
+    EXPECT_LT(share, 0.02);
+}
+
+}  // namespace
+}  // namespace stipple
