@@ -28,6 +28,8 @@ public:
     uint64_t id(size_t object) const { return ids_.at(object); }
     std::optional<size_t> index_of(uint64_t id) const;
     const std::shared_ptr<const Mesh>& mesh(size_t object) const { return data_.at(object).mesh; }
+    // One per scene object, in the scene's order (the export draws them as the window does).
+    const std::vector<ObjectData>& objects() const { return data_; }
 
     // Copies the panel's edits into the renderer (cheap: a few bytes per object). Before prepare().
     void sync();
