@@ -21,6 +21,8 @@
 
 #include <tinyxml2.h>
 
+#include "app/viewer_script.hpp"
+#include "core/error.hpp"
 #include "io/png_io.hpp"
 #include "mesh/ply_writer.hpp"
 #include "mesh/primitives.hpp"
@@ -398,6 +400,24 @@ TEST(CliView, ExportsTheViewAsSvg) {
     EXPECT_EQ(width_view, "210mm");  // A4 portrait, the CLI's default page
     EXPECT_GT(view_dots, 500u);
     EXPECT_EQ(view_dots, render_dots) << "the viewer exported another frame than render draws";
+}
+
+// A script's export line names a vector file; anything else is refused before the window opens, in
+// one line naming the script and the line.
+TEST(CliView, ScriptExportNeedsAVectorPath) {
+    auto dir = test::temp_dir("cli-view-export-script");
+    const std::string script = (dir / "script.txt").string();
+    std::ofstream(script) << "# export the view\nexport view.png\n";
+    try {
+        app::read_viewer_script(script);
+        ADD_FAILURE() << "export view.png was accepted";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(script + ":2: export needs a .svg, .pdf or .csv path"), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    std::ofstream(script) << "export view.svg\nexport view.PDF\nexport dots.csv\n";
+    EXPECT_EQ(app::read_viewer_script(script).size(), 3u);
 }
 
 }  // namespace
