@@ -8,7 +8,7 @@ namespace stipple::app {
 
 std::optional<ExportRequest> draw_export_section(ExportPanelState& state, const std::string& screenshot_dir) {
     std::optional<ExportRequest> request;
-    ImGui::TextDisabled("export (what the window shows, hidden stipples and lines removed)");
+    ImGui::TextDisabled("export the view (the stipples and lines drawn)");
     ImGui::RadioButton("SVG", &state.format, 0);
     ImGui::SameLine();
     ImGui::RadioButton("PDF", &state.format, 1);
