@@ -54,11 +54,27 @@ void append_piece(vec2 a, vec2 b, uint edge, uint kind) {
     piece[slot] = LinePiece(a.x, a.y, b.x, b.y, edge, kind);
 }
 
+// Near a vertex the depth pass cannot tell: the pixel holding the vertex (and its neighbours) shows
+// whichever of the polygons around the vertex covers the pixel's centre, and at the vertex they all
+// have the line's depth. A hidden edge leaving a vertex of the outline then passes its first samples
+// (a stub poking inside the outline), and a visible contour edge fails its last ones where a steeper
+// polygon of the fan is nearer at the pixel centre (a gap of a pixel at every vertex of the contour, so
+// the export could not join it into one loop). Samples this close to an end take the visibility of the
+// first sample beyond, so an edge is cut only where its own middle is hidden or shown.
+const float kVertexZonePx = 2.5;
+const float kBridgePx = 3.5;
+
 // Walks the edge between object-space points p0 and p1 in pixel steps and appends its visible runs.
 // A run ends halfway between its last visible sample and the first hidden one; a run reaching an end
 // of the edge ends exactly at the projected vertex, so the pieces of neighbouring edges meet exactly.
-// A run of one sample is below what the test resolves and is dropped: where a hidden edge leaves a
-// vertex of the outline, the surface in front shares that vertex, and the first sample passes.
+// A run of one sample is below what the test resolves and is dropped. An edge too short for both
+// vertex zones is visible or hidden as a whole, as its middle.
+//
+// Hidden stretches up to kBridgePx long inside a visible run are bridged. Along a contour the polygon
+// beside the edge is seen edge-on and projects to a sliver; the pixel centres next to the line then
+// lie in the next polygon in, whose plane passes in front of the line (the surface is convex there)
+// by more than any slope offset covers, and single samples fail all along the outline. An occluder
+// that narrow is below what the line, at least a pixel wide, could show anyway.
 void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
     mat4 model_view_proj = frame.view_proj * object.model;
     vec4 c0 = model_view_proj * vec4(p0, 1.0);
@@ -76,16 +92,35 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
     if (!(length_px < 1e6)) return;  // not finite: degenerate projection
     uint steps = clamp(uint(ceil(length_px)), 1u, kMaxSteps);
     float step = 1.0 / float(steps);
-    uint run = 0u;  // visible samples in a row
-    float start = 0.0;
+    uint run = 0u;        // visible samples in the current run
+    bool gap = false;     // the run is followed by hidden samples, from `end` on
+    bool ran = false;     // a visible sample has been seen
+    float start = 0.0, end = 0.0;
+    float bridge = kBridgePx / max(length_px, 1e-6);  // in edge parameter
+    // The part of the edge whose samples are trusted (see kVertexZonePx).
+    float zone = kVertexZonePx / max(length_px, 1e-6);
+    float trusted_from = zone < 0.5 ? zone : 0.5, trusted_to = zone < 0.5 ? 1.0 - zone : 0.5;
     for (uint i = 0u; i <= steps; ++i) {
         float u = float(i) * step;
-        bool visible = sample_visible(mix(s0, s1, u), mix(n0.z, n1.z, u));
-        if (visible && run == 0u) start = i == 0u ? 0.0 : u - 0.5 * step;
-        if (!visible && run > 1u) append_piece(mix(s0, s1, start), mix(s0, s1, u - 0.5 * step), edge, kind);
-        run = visible ? run + 1u : 0u;
+        float tested = clamp(u, trusted_from, trusted_to);
+        bool visible = sample_visible(mix(s0, s1, tested), mix(n0.z, n1.z, tested));
+        if (!visible) {
+            if (run > 0u && !gap) end = u - 0.5 * step, gap = true;
+            continue;
+        }
+        if (gap && u - 0.5 * step - end > bridge) {  // a real occlusion: the run ends where it began
+            if (run > 1u) append_piece(mix(s0, s1, start), mix(s0, s1, end), edge, kind);
+            run = 0u;
+        }
+        // The first run starts at the vertex when only a bridgeable stretch hides the edge before it.
+        if (run == 0u) start = i == 0u || (!ran && u - 0.5 * step <= bridge) ? 0.0 : u - 0.5 * step;
+        ran = true;
+        gap = false;
+        ++run;
     }
-    if (run > 1u) append_piece(mix(s0, s1, start), s1, edge, kind);
+    // Hidden samples within kBridgePx of the end are bridged too: the run reaches the vertex (and at the
+    // start, above, leaves it), so that the pieces of neighbouring edges meet.
+    if (run > 1u) append_piece(mix(s0, s1, start), gap && 1.0 - end > bridge ? mix(s0, s1, end) : s1, edge, kind);
 }
 
 void main() {

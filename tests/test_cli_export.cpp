@@ -10,6 +10,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -176,6 +177,42 @@ TEST(CliExport, AHiddenObjectContributesNoDot) {
     std::printf("dots: %zu of the outer object, %zu of the hidden one\n", outer, inner);
     EXPECT_GT(outer, 1000u);
     EXPECT_EQ(inner, 0u);
+}
+
+// --show-travel (the README's plot-order picture): the SVG gains the pen's path with the pen up, one
+// move to each dot, in a plain group after the layers; without it the file has none; PDF refuses it.
+TEST(CliExport, ShowTravelAddsThePenUpMovesToTheSvg) {
+    const auto dir = test::temp_dir("cli-export-travel");
+    const std::string plain = (dir / "plain.svg").string(), travel = (dir / "travel.svg").string();
+    const std::vector<std::string> view = {"render", "--width", "200", "--height", "160"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> all = view;
+        all.insert(all.end(), extra.begin(), extra.end());
+        return all;
+    };
+    run_ok(with({"-o", plain}));
+    run_ok(with({"-o", travel, "--show-travel"}));
+    auto text_of = [](const std::string& path) {
+        std::ifstream in(path);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    };
+    const std::string a = text_of(plain), b = text_of(travel);
+    EXPECT_EQ(a.find("pen-up-travel"), std::string::npos);
+    const size_t group = b.find("<g id=\"pen-up-travel\"");
+    ASSERT_NE(group, std::string::npos) << "no travel group";
+    const size_t moves = size_t(std::count(b.begin() + group, b.end(), 'M'));
+    const size_t dots = read_svg(travel).dots.size();
+    std::printf("%zu dots, %zu pen-up moves\n", dots, moves);
+    EXPECT_GT(dots, 100u);
+    EXPECT_EQ(moves, dots);  // the default scene has no lines: one move to each dot
+    EXPECT_EQ(read_svg(plain).dots.size(), dots);  // the same drawing otherwise
+
+    const test::CommandResult pdf = test::run_stipple(with({"-o", (dir / "x.pdf").string(), "--show-travel"}));
+    EXPECT_NE(pdf.exit_code, 0);
+    EXPECT_NE(pdf.err.find("--show-travel"), std::string::npos) << pdf.err;
+    EXPECT_EQ(std::count(pdf.err.begin(), pdf.err.end(), '\n'), 1) << pdf.err;
 }
 
 }  // namespace

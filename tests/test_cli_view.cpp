@@ -20,6 +20,10 @@
 #include <thread>
 
 #include "anim/procedural_rigs.hpp"
+#include <tinyxml2.h>
+
+#include "app/viewer_script.hpp"
+#include "core/error.hpp"
 #include "io/png_io.hpp"
 #include "mesh/ply_writer.hpp"
 #include "mesh/primitives.hpp"
@@ -401,6 +405,65 @@ TEST(CliView, AnimationPlaysAndPauses) {
     const std::string err = session.err();
     EXPECT_EQ(err.find("validation"), std::string::npos) << err;
     EXPECT_EQ(err.find("error"), std::string::npos) << err;
+}
+
+// Issue 15: the viewer's export writes the view it shows. A script exports the window's view as SVG;
+// the file parses, has an A4 page in mm, and carries as many dots as `stipple render -o x.svg` of the
+// same view at the window's size, exactly: the viewer and the offline render draw the same frame.
+size_t svg_dots(const std::string& path, std::string* width) {
+    tinyxml2::XMLDocument doc;
+    EXPECT_EQ(doc.LoadFile(path.c_str()), tinyxml2::XML_SUCCESS) << path << " is not XML";
+    const tinyxml2::XMLElement* root = doc.RootElement();
+    if (!root) return 0;
+    *width = root->Attribute("width") ? root->Attribute("width") : "";
+    size_t dots = 0;
+    for (const tinyxml2::XMLElement* g = root->FirstChildElement("g"); g; g = g->NextSiblingElement("g"))
+        for (const tinyxml2::XMLElement* c = g->FirstChildElement("circle"); c; c = c->NextSiblingElement("circle")) ++dots;
+    return dots;
+}
+
+TEST(CliView, ExportsTheViewAsSvg) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-export");
+    const std::string exported = (dir / "view.svg").string(), rendered = (dir / "render.svg").string();
+    const std::string cache = (dir / "cache").string();
+    std::ofstream(dir / "script.txt") << "wait-idle\nwait 0.3\nexport " + exported + "\nquit\n";
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({"--width", "320", "--height", "256", "--no-panel", "--script", (dir / "script.txt").string(),
+                          "--cache-dir", cache});
+    ASSERT_EQ(session.viewer().wait_exit(300s), 0) << session.out() << session.err();
+    EXPECT_NE(session.out().find("exported: " + exported), std::string::npos) << session.out();
+    ASSERT_TRUE(std::filesystem::exists(exported)) << session.out() << session.err();
+
+    const test::CommandResult offline = test::run_stipple({"render", "--width", "320", "--height", "256", "-o", rendered,
+                                                           "--cache-dir", cache});
+    ASSERT_EQ(offline.exit_code, 0) << offline.err;
+    std::string width_view, width_render;
+    const size_t view_dots = svg_dots(exported, &width_view), render_dots = svg_dots(rendered, &width_render);
+    std::printf("viewer export: %zu dots; render -o x.svg: %zu dots\n", view_dots, render_dots);
+    EXPECT_EQ(width_view, "210mm");  // A4 portrait, the CLI's default page
+    EXPECT_GT(view_dots, 500u);
+    EXPECT_EQ(view_dots, render_dots) << "the viewer exported another frame than render draws";
+}
+
+// A script's export line names a vector file; anything else is refused before the window opens, in
+// one line naming the script and the line.
+TEST(CliView, ScriptExportNeedsAVectorPath) {
+    auto dir = test::temp_dir("cli-view-export-script");
+    const std::string script = (dir / "script.txt").string();
+    std::ofstream(script) << "# export the view\nexport view.png\n";
+    try {
+        app::read_viewer_script(script);
+        ADD_FAILURE() << "export view.png was accepted";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(script + ":2: export needs a .svg, .pdf or .csv path"), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    std::ofstream(script) << "export view.svg\nexport view.PDF\nexport dots.csv\n";
+    EXPECT_EQ(app::read_viewer_script(script).size(), 3u);
 }
 
 }  // namespace

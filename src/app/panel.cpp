@@ -98,7 +98,8 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
 
 }  // namespace
 
-PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures) {
+PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures,
+                         ExportPanelState& export_state) {
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_FirstUseEver);
@@ -111,6 +112,8 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
         figures_section(figures, requests);
         ImGui::Separator();
         scene_section(scene, figures, requests);
+        ImGui::Separator();
+        requests.export_view = draw_export_section(export_state, figures.screenshot_dir);
         ImGui::Separator();
         ImGui::TextDisabled("drag: left orbit, right/middle pan, wheel zoom; drop model files to add them");
         for (size_t i = 0; i < scene.objects.size(); ++i)

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include "app/export_panel.hpp"
 #include "render/stipple_renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -40,10 +41,12 @@ struct PanelRequests {
     bool hide = false;
     std::vector<size_t> regenerate;  // objects whose generation parameters were committed
     std::optional<size_t> remove;
+    std::optional<ExportRequest> export_view;  // "export SVG/PDF" pressed
     glm::vec4 rect{0.0f};  // the panel's x, y, width, height in window pixels this frame
 };
 
-// `names`: one label per scene object (its model file).
-PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures);
+// `names`: one label per scene object (its model file). `export_state`: the export section's fields.
+PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, const PanelFigures& figures,
+                         ExportPanelState& export_state);
 
 }  // namespace stipple::app

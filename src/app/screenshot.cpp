@@ -10,11 +10,11 @@
 
 namespace stipple::app {
 
-std::filesystem::path next_screenshot_path(const std::filesystem::path& dir) {
+std::filesystem::path next_screenshot_path(const std::filesystem::path& dir, const std::string& extension) {
     for (int i = 1; i < 1000000; ++i) {
         char name[32];
-        std::snprintf(name, sizeof(name), "stipple-%04d.png", i);
-        std::filesystem::path path = dir / name;
+        std::snprintf(name, sizeof(name), "stipple-%04d", i);
+        std::filesystem::path path = dir / (name + extension);
         if (!std::filesystem::exists(path)) return path;
     }
     fail_file(dir.string(), "no free screenshot name left");

@@ -14,8 +14,9 @@ class Context;
 
 namespace stipple::app {
 
-// The first "stipple-NNNN.png" in `dir` that does not exist yet (NNNN from 0001).
-std::filesystem::path next_screenshot_path(const std::filesystem::path& dir);
+// The first "stipple-NNNN<extension>" in `dir` that does not exist yet (NNNN from 0001); the viewer's
+// exports (".svg", ".pdf") are numbered like its screenshots.
+std::filesystem::path next_screenshot_path(const std::filesystem::path& dir, const std::string& extension = ".png");
 
 class ScreenshotCapture {
 public:

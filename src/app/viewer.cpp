@@ -10,6 +10,7 @@
 
 #include "app/background_work.hpp"
 #include "app/camera_control.hpp"
+#include "app/frame_export.hpp"
 #include "app/live_scene.hpp"
 #include "app/overlay.hpp"
 #include "app/panel.hpp"
@@ -140,6 +141,7 @@ private:
     void print_swapchain() const;
     void apply_finished_work();
     void run_script();
+    bool export_view(const std::string& path, const plot::ExportOptions& options);
 
     ViewerOptions options_;
     Window window_;
@@ -175,6 +177,8 @@ private:
     FILE* frame_log_ = nullptr;
     Clock::time_point started_ = Clock::now();
     std::optional<size_t> pending_removal_;
+    ExportPanelState export_state_;
+    std::optional<ExportRequest> pending_export_;  // from the panel; done between frames
     long long frames_drawn_ = 0;
     std::map<std::string, double> bench_gpu_ms_;  // summed over the benchmark's frames
     int bench_samples_ = 0;
@@ -296,6 +300,9 @@ void Viewer::run_script() {
                 break;
             }
             case ScriptAction::Kind::Screenshot: screenshot_.request(action.path); break;
+            case ScriptAction::Kind::Export:
+                if (!export_view(action.path, plot::ExportOptions{})) script_failed_ = true;  // exit code 1 at the end
+                break;
             case ScriptAction::Kind::Quit: window_.request_close(); break;
         }
         ++script_at_;
@@ -387,6 +394,25 @@ void Viewer::handle_requests(const PanelRequests& r, float aspect) {
     // Done at the start of the next frame, once the GPU has finished with the objects.
     pending_regeneration_.insert(pending_regeneration_.end(), r.regenerate.begin(), r.regenerate.end());
     if (r.remove) pending_removal_ = r.remove;
+    if (r.export_view) pending_export_ = r.export_view;
+}
+
+// The view as the window shows it, drawn again offscreen by the export (app::export_frame) at the
+// window's size. Called between frames, when no frame is in flight; the window waits meanwhile.
+bool Viewer::export_view(const std::string& path, const plot::ExportOptions& options) {
+    try {
+        const VkExtent2D extent = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
+        if (extent.width == 0 || extent.height == 0) fail_file(path, "the window has no size to export");
+        const FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), extent);
+        const plot::PlotStats stats = export_frame(context_, live_.scene(), live_.objects(), view, options, path,
+                                                         timeline_.time());
+        message("exported: " + path + " (" + std::to_string(stats.dots) + " dots, " + std::to_string(stats.polylines) +
+                " polylines)");
+        return true;
+    } catch (const Error& e) {
+        message(e.what(), true);
+        return false;
+    }
 }
 
 void Viewer::frame() {
@@ -402,6 +428,15 @@ void Viewer::frame() {
     pending_regeneration_.clear();
     apply_finished_work();
     run_script();
+    if (pending_export_) {
+        try {
+            export_view(next_screenshot_path(options_.screenshot_dir, pending_export_->extension).string(),
+                        pending_export_->options);
+        } catch (const Error& e) {
+            message(e.what(), true);  // no free name left
+        }
+        pending_export_.reset();
+    }
     if (pending_removal_) live_.remove(*pending_removal_);
     pending_removal_.reset();
     handle_input(window_.take_input(), aspect);
@@ -435,7 +470,7 @@ void Viewer::frame() {
         figures_.work_label = status ? status->label : "";
         figures_.work_fraction = status ? status->fraction : 0.0;
         figures_.work_queued = status ? status->queued : 0;
-        handle_requests(draw_panel(live_.scene(), live_.names(), figures_), aspect);
+        handle_requests(draw_panel(live_.scene(), live_.names(), figures_, export_state_), aspect);
         timeline_rect_ = timeline_.draw(live_.scene(), live_.objects(), live_.names(), float(figures_.extent.height));
     }
     record(image);

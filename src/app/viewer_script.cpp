@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "export/plot_file.hpp"
 #include "params/param_table.hpp"
 
 namespace stipple::app {
@@ -64,10 +65,14 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
         } else if (verb == "screenshot" && rest.size() == 1) {
             action.kind = ScriptAction::Kind::Screenshot;
             action.path = rest[0];
+        } else if (verb == "export" && rest.size() == 1) {
+            action.kind = ScriptAction::Kind::Export;
+            action.path = rest[0];
+            if (!plot::is_plot_path(action.path)) bad("export needs a .svg, .pdf or .csv path, got '" + action.path + "'");
         } else if (verb == "quit" && rest.empty()) {
             action.kind = ScriptAction::Kind::Quit;
         } else {
-            bad("unknown or incomplete line '" + line + "' (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, quit)");
+            bad("unknown or incomplete line '" + line + "' (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, export PATH, quit)");
         }
         actions.push_back(action);
     }

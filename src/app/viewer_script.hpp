@@ -5,6 +5,7 @@
 //   set OBJECT KEY VALUE       a per-object parameter by its scene key (the parameter table's), as the
 //                              panel would set it; generation parameters then make new stipples
 //   screenshot PATH            a PNG of the next frame (window resolution, without the panel)
+//   export PATH                the current view as .svg, .pdf or .csv (A4, 10 mm margin: render's defaults)
 //   quit                       close the viewer (exit code 0)
 // Blank lines and lines starting with # are ignored. Errors name the file and the line.
 #include <optional>
@@ -14,13 +15,13 @@
 namespace stipple::app {
 
 struct ScriptAction {
-    enum class Kind { Wait, WaitIdle, Set, Screenshot, Quit };
+    enum class Kind { Wait, WaitIdle, Set, Screenshot, Export, Quit };
     Kind kind;
     double seconds = 0.0;  // Wait
     size_t object = 0;     // Set
     std::string key;       // Set: the parameter's scene key
     double value = 0.0;    // Set: the value as the table keeps it
-    std::string path;      // Screenshot
+    std::string path;      // Screenshot, Export
     int line = 0;
 };
 

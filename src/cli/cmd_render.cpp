@@ -117,6 +117,8 @@ int run_render(const std::vector<std::string>& argv) {
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
     const std::optional<app::PrintOptions> print = read_print_options(args);
     if (print && vector) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
+    if (args.flag("--show-travel") && !plot::is_svg_path(output))
+        fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && !print)
         for (const char* name : {"--page", "--margin", "--pen-width", "--dot-style"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");

@@ -76,6 +76,7 @@ Vector and print output (render):
                           dots 0.3)
   --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)
   --fill-paper            paint the page in the scene's paper colour
+  --show-travel           SVG: draw the pen-up moves in light red, to look at the plot order
   --dpi N                 with -o x.png and --page: a print-resolution page (50..2400 dpi) that looks
                           like the screen image enlarged: the same stipples, each a disc of the same
                           share of ink, as at --height pixels (default 1024) for the drawing's height

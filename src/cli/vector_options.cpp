@@ -5,7 +5,7 @@
 namespace stipple::cli {
 
 std::set<std::string> vector_options() { return {"--page", "--margin", "--pen-width", "--dot-style", "--dpi", "--tile"}; }
-std::set<std::string> vector_flags() { return {"--fill-paper"}; }
+std::set<std::string> vector_flags() { return {"--fill-paper", "--show-travel"}; }
 
 plot::ExportOptions read_vector_options(const Args& args) {
     plot::ExportOptions options;
@@ -22,6 +22,7 @@ plot::ExportOptions read_vector_options(const Args& args) {
     }
     if (args.has("--dot-style")) options.dot_style = plot::parse_dot_style(args.get("--dot-style", ""));
     options.fill_paper = args.flag("--fill-paper");
+    options.show_travel = args.flag("--show-travel");
     return options;
 }
 

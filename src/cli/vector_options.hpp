@@ -13,7 +13,7 @@
 namespace stipple::cli {
 
 std::set<std::string> vector_options();  // --page, --margin, --pen-width, --dot-style, --dpi, --tile
-std::set<std::string> vector_flags();    // --fill-paper
+std::set<std::string> vector_flags();    // --fill-paper, --show-travel
 // The export's options from the command line; throws stipple::Error naming the option.
 plot::ExportOptions read_vector_options(const Args& args);
 // -o x.png with --dpi: a print-resolution page (--page, --margin; --height is the screen image it enlarges).

@@ -26,6 +26,8 @@ bool is_plot_path(const std::string& path) {
     return ext == ".svg" || ext == ".pdf" || ext == ".csv";
 }
 
+bool is_svg_path(const std::string& path) { return extension_of(path) == ".svg"; }
+
 void write_plot_file(const PlotPlan& plan, const std::string& path) {
     const std::string ext = extension_of(path);
     if (ext == ".svg") write_svg(plan, path);

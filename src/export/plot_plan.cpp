@@ -107,6 +107,7 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
     plan.ink = drawing.ink;
     plan.paper = drawing.paper;
     plan.fill_paper = options.fill_paper;
+    plan.show_travel = options.show_travel;
 
     const uint32_t objects = static_cast<uint32_t>(drawing.objects.size());
     std::vector<std::vector<uint32_t>> dots_of(objects), segments_of(objects);

@@ -45,6 +45,7 @@ struct ExportOptions {
     std::optional<double> pen_width_mm;
     DotStyle dot_style = DotStyle::Filled;
     bool fill_paper = false;  // paint the page in the paper colour (print); a plotter's paper is the paper
+    bool show_travel = false;  // SVG: add the pen-up moves in light red (to look at the order; not for a plotter)
     bool plotter_order = true;  // false: dots in the order given and strokes as chained (to compare)
     double simplify_mm = 0.05;  // Douglas-Peucker tolerance of the strokes
     MergeOptions merge;         // welding and overlap tolerances, in pixels
@@ -73,6 +74,7 @@ struct PlotPlan {
     DotStyle dot_style = DotStyle::Filled;
     glm::vec3 ink{0.0f}, paper{1.0f};
     bool fill_paper = false;
+    bool show_travel = false;
     glm::dvec2 home{0.0};  // where the pen starts
     std::vector<PlotLayer> layers;
 };

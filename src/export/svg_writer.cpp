@@ -129,6 +129,6 @@ std::string svg_document(const PlotPlan& plan, bool with_travel) {
     return out;
 }
 
-void write_svg(const PlotPlan& plan, const std::string& path) { write_text_file(path, svg_document(plan)); }
+void write_svg(const PlotPlan& plan, const std::string& path) { write_text_file(path, svg_document(plan, plan.show_travel)); }
 
 }  // namespace stipple::plot

@@ -15,6 +15,7 @@ namespace stipple::plot {
 // with_travel adds the pen-up moves as thin light-red lines in a plain group (not a layer), to
 // look at the plot order; leave it off for a file that goes to a plotter.
 std::string svg_document(const PlotPlan& plan, bool with_travel = false);
+// Writes svg_document(plan, plan.show_travel).
 void write_svg(const PlotPlan& plan, const std::string& path);
 
 }  // namespace stipple::plot
