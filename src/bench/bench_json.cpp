@@ -71,6 +71,22 @@ json model_json(const ModelResult& m) {
     };
 }
 
+json plot_figures_json(const std::optional<PlotOrderFigures>& f) {
+    if (!f) return nullptr;
+    return {{"dots", f->dots},
+            {"order_seconds", f->order_seconds},
+            {"travel_ratio", f->travel_ratio},
+            {"random_ratio", f->random_ratio},
+            {"capture_seconds", f->capture_seconds}};
+}
+
+json plot_order_json(const std::optional<PlotOrderRow>& row) {
+    if (!row) return nullptr;
+    json j = {{"blue noise", plot_figures_json(row->blue_noise)}, {"bunny view", plot_figures_json(row->bunny_view)}};
+    if (!row->bunny_note.empty()) j["bunny_note"] = row->bunny_note;
+    return j;
+}
+
 }  // namespace
 
 std::string json_report(const BenchResults& r) {
@@ -110,6 +126,7 @@ std::string json_report(const BenchResults& r) {
         {"total_seconds", r.total_seconds},
         {"validation_messages", r.validation_messages},
         {"notes", r.notes},
+        {"plot_order", plot_order_json(r.plot_order)},
     };
     return j.dump(2) + "\n";
 }

@@ -181,6 +181,7 @@ std::string markdown_report(const BenchResults& results) {
     comparison_table(md, results);
     cell_table(md, results);
     model_table(md, results);
+    if (results.plot_order) md << plot_order_markdown(*results.plot_order);
     for (const std::string& note : results.notes) md << "**Note:** " << note << "\n\n";
     if (results.validation_messages > 0)
         md << "**" << results.validation_messages << " Vulkan validation message(s) during the run: the figures are "

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "bench/model_set.hpp"
+#include "bench/plot_order_row.hpp"
 #include "bench/table1.hpp"
 #include "params/object_params.hpp"
 
@@ -94,6 +95,7 @@ struct BenchResults {
     double total_seconds = 0.0;
     uint32_t validation_messages = 0;
     std::vector<std::string> notes;  // checks that did not hold (printed and written with the tables)
+    std::optional<PlotOrderRow> plot_order;  // filled by the caller after the run, when it measures it
 };
 
 // The check of the default look: the bunny's standard frame holds 50k-150k drawn stipples and

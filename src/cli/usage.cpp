@@ -141,6 +141,10 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
   --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
+  --compare OLD.json      after the run, list the cells (fps, generation, plot order) more than 10%
+                          slower than in an earlier results.json, and those only one of the two has
+  --plot-dots N           the plot-order row's blue-noise dots (default 150000, --quick 15000 without
+                          the bunny's view; 0: no row; with --models only when given)
 
 Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any
