@@ -237,6 +237,14 @@ TEST(BenchReport, MarkdownPutsThePapersFiguresAndRatiosBesideOurs) {
     EXPECT_NE(md.find("| dragon | 871,414 | 871,414 | 2.99 / 2.99 = 1.00×"), std::string::npos);
     EXPECT_NE(md.find("| vertex + lines |"), std::string::npos);  // the column header
     EXPECT_NE(md.find("20.0 (16.0)"), std::string::npos);         // bytes per candidate, all (without mesh)
+    EXPECT_EQ(md.find("machine's limit"), std::string::npos);     // no probe, no section
+    bench::BenchResults with_probe = synthetic_results();
+    with_probe.models[0].limit = bench::ModelResult::LimitProbe{900, 100, 2.0, 0.5};
+    const std::string probe_md = bench::markdown_report(with_probe);
+    EXPECT_NE(probe_md.find("| horse | 900 | 100 | 2.00 | 0.50 | 4.00× | 2000, 500 |"), std::string::npos) << probe_md;
+    nlohmann::json j = nlohmann::json::parse(bench::json_report(with_probe));
+    EXPECT_DOUBLE_EQ(j["models"][0]["limit_probe"]["x_of_limit"].get<double>(), 4.0);
+    EXPECT_TRUE(j["models"][1]["limit_probe"].is_null());
 }
 
 TEST(BenchReport, JsonHoldsEveryCell) {
@@ -429,6 +437,23 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
     EXPECT_NE(md.find("| low-res dragon"), std::string::npos);
     EXPECT_NE(r.out.find("## Frames per second"), std::string::npos);  // the table is printed too
     EXPECT_NE(read_bytes(out / "chart.svg").find("</svg>"), std::string::npos);
+    // The limit probe: as many culled and drawn points as the vertex column (no lines) had.
+    for (const auto& model : j["models"]) {
+        const auto& limit = model["limit_probe"];
+        ASSERT_TRUE(limit.is_object()) << model["name"];
+        const nlohmann::json* vertex = nullptr;
+        for (const auto& cell : model["cells"])
+            if (cell["column"] == "vertex") vertex = &cell;
+        ASSERT_NE(vertex, nullptr);
+        EXPECT_EQ(limit["drawn_points"].get<int64_t>(), (*vertex)["drawn_stipples"].get<int64_t>());
+        EXPECT_EQ(limit["culled_points"].get<int64_t>() + limit["drawn_points"].get<int64_t>(),
+                  (*vertex)["candidate_stipples"].get<int64_t>());
+        EXPECT_GT(limit["probe_ms"].get<double>(), 0.0);
+        EXPECT_GT(limit["vertex_stipples_ms"].get<double>(), 0.0);
+        EXPECT_DOUBLE_EQ(limit["x_of_limit"].get<double>(),
+                         limit["vertex_stipples_ms"].get<double>() / limit["probe_ms"].get<double>());
+    }
+    EXPECT_NE(md.find("## The vertex path against the machine's limit"), std::string::npos);
     // The plot-order row, shrunk: 15k blue-noise dots, no bunny view.
     const auto& plot = j["plot_order"];
     ASSERT_TRUE(plot.is_object()) << plot.dump();

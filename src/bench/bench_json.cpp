@@ -36,6 +36,16 @@ json cell_json(const CellResult& cell) {
     return j;
 }
 
+json limit_json(const ModelResult& m) {
+    if (!m.limit) return nullptr;
+    const ModelResult::LimitProbe& l = *m.limit;
+    return {{"culled_points", l.culled},
+            {"drawn_points", l.drawn},
+            {"vertex_stipples_ms", l.vertex_ms},
+            {"probe_ms", l.probe_ms},
+            {"x_of_limit", l.ratio()}};
+}
+
 json model_json(const ModelResult& m) {
     json buffers = json::object();
     for (const auto& [name, bytes] : m.buffers) buffers[name] = bytes;
@@ -68,6 +78,7 @@ json model_json(const ModelResult& m) {
         {"gpu_bytes_by_path", by_path},
         {"image", m.image},
         {"cells", cells},
+        {"limit_probe", limit_json(m)},
     };
 }
 

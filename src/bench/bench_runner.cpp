@@ -1,5 +1,7 @@
 #include "bench/bench_runner.hpp"
 
+#include "bench/limit_probe.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -131,6 +133,26 @@ void time_cell(OffscreenTarget& target, StippleRenderer& renderer, const FrameVi
     cell.cpu_density_ms = median(cpu_ms);
 }
 
+double pass_ms(const CellResult& cell, const std::string& pass) {
+    for (const auto& [name, ms] : cell.gpu_ms)
+        if (name == pass) return ms;
+    return 0.0;
+}
+
+// The probe for the vertex column without lines (the paper's "stipple only"), with its counts.
+void measure_limit(LimitProbe& probe, const BenchOptions& options, ModelResult& model) {
+    const Column vertex{DensityPath::Vertex, false, ObjectLines::None};
+    for (const CellResult& cell : model.cells) {
+        if (!(cell.column == vertex) || cell.drawn < 0) continue;
+        ModelResult::LimitProbe limit;
+        limit.drawn = uint64_t(cell.drawn);
+        limit.culled = cell.candidates - std::min<uint64_t>(cell.candidates, limit.drawn);
+        limit.vertex_ms = pass_ms(cell, "stipples");
+        limit.probe_ms = probe.measure(limit.culled, limit.drawn, model.covered_pixels, options.warmup, options.frames);
+        model.limit = limit;
+    }
+}
+
 std::string passes_text(const CellResult& cell) {
     std::string text;
     for (const auto& [pass, ms] : cell.gpu_ms) text += format(" %s %.2f", pass.c_str(), ms);
@@ -204,6 +226,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
     OffscreenTarget& target = *target_holder;
+    auto probe_holder = std::make_unique<LimitProbe>(context, extent);
     log(format("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));
@@ -258,6 +281,12 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                        cell.column.name().c_str(), cell.median_fps, paper.c_str(), cell.min_fps, cell.max_fps,
                        passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
         }
+        measure_limit(*probe_holder, options, model);
+        if (model.limit)
+            log(format("  limit probe: %llu culled + %llu drawn points in %.2f ms; the vertex path's stipple pass %.2f ms "
+                       "= %.2fx the limit",
+                       (unsigned long long)model.limit->culled, (unsigned long long)model.limit->drawn,
+                       model.limit->probe_ms, model.limit->vertex_ms, model.limit->ratio()));
         std::string by_path;
         for (const auto& [path, bytes] : model.gpu_bytes_by_path)
             by_path += format(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);
@@ -266,6 +295,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                    model.bytes_per_candidate(), model.stipple_bytes_per_candidate(), by_path.c_str()));
         results.models.push_back(std::move(model));
     }
+    probe_holder.reset();
     target_holder.reset();  // everything but the context is gone: destruction messages are counted too
     results.validation_messages = context.validation_message_count();
     results.total_seconds = seconds_since(run_start);
