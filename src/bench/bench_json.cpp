@@ -43,6 +43,7 @@ json limit_json(const ModelResult& m) {
             {"drawn_points", l.drawn},
             {"vertex_stipples_ms", l.vertex_ms},
             {"probe_ms", l.probe_ms},
+            {"probe_frame_ms", l.probe_frame_ms},
             {"x_of_limit", l.ratio()}};
 }
 
@@ -84,11 +85,11 @@ json model_json(const ModelResult& m) {
 
 json plot_figures_json(const std::optional<PlotOrderFigures>& f) {
     if (!f) return nullptr;
-    return {{"dots", f->dots},
-            {"order_seconds", f->order_seconds},
-            {"travel_ratio", f->travel_ratio},
-            {"random_ratio", f->random_ratio},
-            {"capture_seconds", f->capture_seconds}};
+    json j = {{"dots", f->dots}, {"order_seconds", f->order_seconds}, {"travel_ratio", f->travel_ratio}};
+    // Each figure only where it was measured: a random order on the blue noise, a capture for the bunny.
+    j["random_ratio"] = f->random_ratio > 0.0 ? json(f->random_ratio) : json(nullptr);
+    j["capture_seconds"] = f->capture_seconds > 0.0 ? json(f->capture_seconds) : json(nullptr);
+    return j;
 }
 
 json plot_order_json(const std::optional<PlotOrderRow>& row) {

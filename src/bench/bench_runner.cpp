@@ -148,7 +148,8 @@ void measure_limit(LimitProbe& probe, const BenchOptions& options, ModelResult& 
         limit.drawn = uint64_t(cell.drawn);
         limit.culled = cell.candidates - std::min<uint64_t>(cell.candidates, limit.drawn);
         limit.vertex_ms = pass_ms(cell, "stipples");
-        limit.probe_ms = probe.measure(limit.culled, limit.drawn, model.covered_pixels, options.warmup, options.frames);
+        limit.probe_frame_ms = probe.measure(limit.culled, limit.drawn, model.covered_pixels, options.warmup, options.frames);
+        limit.probe_ms = median(limit.probe_frame_ms);
         model.limit = limit;
     }
 }

@@ -79,6 +79,7 @@ struct ModelResult {
         uint64_t culled = 0, drawn = 0;
         double vertex_ms = 0.0;  // the vertex column's "stipples" pass, median GPU ms
         double probe_ms = 0.0;   // the probe's pass, median GPU ms
+        std::vector<double> probe_frame_ms;  // each frame's
         double ratio() const { return probe_ms > 0.0 ? vertex_ms / probe_ms : 0.0; }  // "x of the limit"
     };
     std::optional<LimitProbe> limit;

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "bench/bench_runner.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_timer.hpp"
@@ -86,7 +85,7 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side) {
     return passes.size() == 2 ? passes[1].second : wall_ms;
 }
 
-double LimitProbe::measure(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, int warmup, int frames) {
+std::vector<double> LimitProbe::measure(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, int warmup, int frames) {
     const uint64_t total = culled + drawn;
     if (total == 0 || total > UINT32_MAX) fail("limit probe: " + std::to_string(total) + " points is out of range");
     const float side = std::min(std::sqrt(float(std::max<uint64_t>(footprint_pixels, 1))),
@@ -94,7 +93,7 @@ double LimitProbe::measure(uint64_t culled, uint64_t drawn, uint64_t footprint_p
     for (int i = 0; i < warmup; ++i) frame_ms(uint32_t(total), uint32_t(drawn), side);
     std::vector<double> ms;
     for (int i = 0; i < frames; ++i) ms.push_back(frame_ms(uint32_t(total), uint32_t(drawn), side));
-    return median(ms);
+    return ms;
 }
 
 }  // namespace stipple::bench
