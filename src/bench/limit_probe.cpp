@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <string>
-#include <vector>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -85,15 +84,12 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side) {
     return passes.size() == 2 ? passes[1].second : wall_ms;
 }
 
-std::vector<double> LimitProbe::measure(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, int warmup, int frames) {
+double LimitProbe::frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels) {
     const uint64_t total = culled + drawn;
     if (total == 0 || total > UINT32_MAX) fail("limit probe: " + std::to_string(total) + " points is out of range");
     const float side = std::min(std::sqrt(float(std::max<uint64_t>(footprint_pixels, 1))),
                                 float(std::min(extent_.width, extent_.height)));
-    for (int i = 0; i < warmup; ++i) frame_ms(uint32_t(total), uint32_t(drawn), side);
-    std::vector<double> ms;
-    for (int i = 0; i < frames; ++i) ms.push_back(frame_ms(uint32_t(total), uint32_t(drawn), side));
-    return ms;
+    return frame_ms(uint32_t(total), uint32_t(drawn), side);
 }
 
 }  // namespace stipple::bench

@@ -5,7 +5,6 @@
 // timestamp queries. The vertex path's stipple pass time over the probe's says how far the path is
 // from what the rasteriser can do with that many points ("x of the limit").
 #include <cstdint>
-#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -24,10 +23,10 @@ public:
     LimitProbe(const LimitProbe&) = delete;
     LimitProbe& operator=(const LimitProbe&) = delete;
 
-    // GPU milliseconds of the probe pass in each of `frames` frames (after `warmup` untimed ones):
-    // `culled + drawn` points, the drawn ones in a centred square of `footprint_pixels` pixels.
-    // Without timestamps (a device that has none) the wall time of each submission instead.
-    std::vector<double> measure(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, int warmup, int frames);
+    // One frame of the probe: `culled + drawn` points, the drawn ones in a centred square of
+    // `footprint_pixels` pixels. Returns the GPU milliseconds of its pass (without timestamps, on a
+    // device that has none, the wall time of the submission instead).
+    double frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels);
 
 private:
     double frame_ms(uint32_t total, uint32_t drawn, float side);
