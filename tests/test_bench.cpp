@@ -11,12 +11,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/bench_compare.hpp"
 #include "bench/bench_output.hpp"
 #include "bench/bench_runner.hpp"
 #include "mesh/mesh_ops.hpp"
 #include "mesh/ply_writer.hpp"
 #include "bench/model_set.hpp"
 #include "bench/table1.hpp"
+#include "cli/cmd_bench_plot.hpp"
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
@@ -235,6 +237,14 @@ TEST(BenchReport, MarkdownPutsThePapersFiguresAndRatiosBesideOurs) {
     EXPECT_NE(md.find("| dragon | 871,414 | 871,414 | 2.99 / 2.99 = 1.00×"), std::string::npos);
     EXPECT_NE(md.find("| vertex + lines |"), std::string::npos);  // the column header
     EXPECT_NE(md.find("20.0 (16.0)"), std::string::npos);         // bytes per candidate, all (without mesh)
+    EXPECT_EQ(md.find("machine's limit"), std::string::npos);     // no probe, no section
+    bench::BenchResults with_probe = synthetic_results();
+    with_probe.models[0].limit = bench::ModelResult::LimitProbe{900, 100, 2.0, 0.5};
+    const std::string probe_md = bench::markdown_report(with_probe);
+    EXPECT_NE(probe_md.find("| horse | 900 | 100 | 2.00 | 0.50 | 4.00× | 2000, 500 |"), std::string::npos) << probe_md;
+    nlohmann::json j = nlohmann::json::parse(bench::json_report(with_probe));
+    EXPECT_DOUBLE_EQ(j["models"][0]["limit_probe"]["x_of_limit"].get<double>(), 4.0);
+    EXPECT_TRUE(j["models"][1]["limit_probe"].is_null());
 }
 
 TEST(BenchReport, JsonHoldsEveryCell) {
@@ -264,6 +274,126 @@ TEST(BenchReport, ChartHasAxesLegendAndOneSeriesPerColumn) {
     for (const char* label : {"ours: vertex", "ours: cpu + lines", "ours: indirect", "paper: vertex program",
                               "paper: no vertex program + lines", "frames per second", "polygons", ">10k<", ">1M<"})
         EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+// --- the regression guard (--compare) ----------------------------------------------------------
+
+// Two results.json files: the new one has horse/vertex 15% slower, horse/cpu 5% slower (within the
+// noise allowance), dragon/cpu + lines 30% faster, the dragon's generation at half its speed, and no
+// dragon/indirect + lines cell; a model only the new run has.
+TEST(BenchCompare, ListsCellsSlowerByMoreThanTenPercentAndMissingOnes) {
+    bench::BenchResults old_run = synthetic_results();
+    old_run.models[1].generation_seconds = 2.0;  // 1000 candidates: 500 a second
+    bench::BenchResults new_run = old_run;
+    auto cell = [&](size_t model, const std::string& column) -> bench::CellResult& {
+        for (bench::CellResult& c : new_run.models[model].cells)
+            if (c.column.name() == column) return c;
+        throw std::runtime_error("no cell " + column);
+    };
+    cell(0, "vertex").median_fps *= 0.85;
+    cell(0, "cpu").median_fps *= 0.95;
+    cell(1, "cpu + lines").median_fps *= 1.3;
+    new_run.models[1].generation_seconds = 4.0;
+    auto& dragon_cells = new_run.models[1].cells;
+    dragon_cells.erase(std::remove_if(dragon_cells.begin(), dragon_cells.end(),
+                                      [](const bench::CellResult& c) { return c.column.name() == "indirect + lines"; }),
+                       dragon_cells.end());
+    new_run.models.push_back(new_run.models[0]);
+    new_run.models.back().entry.name = "bunny";
+
+    const auto old_speeds = bench::read_speeds(bench::json_report(old_run), "old.json");
+    const auto new_speeds = bench::read_speeds(bench::json_report(new_run), "new.json");
+    EXPECT_EQ(old_speeds.size(), 2u * 6u + 1u);  // 6 cells a model, the dragon's generation
+    EXPECT_DOUBLE_EQ(old_speeds.at("dragon / generation"), 500.0);
+    const bench::Comparison c = bench::compare_speeds(old_speeds, new_speeds);
+    EXPECT_EQ(c.compared, 12u);  // 13 old keys but the dropped cell
+    ASSERT_EQ(c.slower.size(), 2u);
+    EXPECT_EQ(c.slower[0].key, "dragon / generation");  // worst first: half the speed
+    EXPECT_NEAR(c.slower[0].loss(), 0.5, 1e-12);
+    EXPECT_EQ(c.slower[1].key, "horse / vertex");
+    EXPECT_NEAR(c.slower[1].loss(), 0.15, 1e-12);
+    EXPECT_EQ(c.worst.key, "dragon / generation");
+    EXPECT_EQ(c.only_in_old, std::vector<std::string>{"dragon / indirect + lines"});
+    EXPECT_EQ(c.only_in_new.size(), 6u);  // the bunny's cells
+    EXPECT_EQ(c.only_in_new.front().rfind("bunny / ", 0), 0u);
+
+    const std::string text = bench::comparison_text(c, "old.json");
+    std::printf("%s", text.c_str());
+    EXPECT_NE(text.find("slower: horse / vertex -15.0% (60.39 -> 51.33)"), std::string::npos) << text;
+    EXPECT_EQ(text.find("slower: horse / cpu "), std::string::npos) << "5% is within the allowance";
+    EXPECT_NE(text.find("missing in this run: dragon / indirect + lines"), std::string::npos);
+    EXPECT_NE(text.find("missing in old.json: bunny / vertex"), std::string::npos);
+    EXPECT_NE(text.find("compared with old.json: 12 cells compared, 2 slower by more than 10%, the worst: dragon / "
+                        "generation -50.0%"),
+              std::string::npos)
+        << text;
+    // The same run against itself: nothing slower, nothing missing.
+    const bench::Comparison same = bench::compare_speeds(old_speeds, old_speeds);
+    EXPECT_EQ(same.compared, old_speeds.size());
+    EXPECT_TRUE(same.slower.empty() && same.only_in_old.empty() && same.only_in_new.empty());
+    EXPECT_DOUBLE_EQ(same.worst.loss(), 0.0);
+}
+
+TEST(BenchCompare, MalformedOrMissingFilesFailWithOneLineNamingThem) {
+    auto message = [](const std::string& text) {
+        try {
+            bench::read_speeds(text, "old/results.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    for (const std::string& text :
+         {std::string("{ not json"), std::string("{}"), std::string("[1, 2]"), std::string(R"({"models": 3})"),
+          std::string(R"({"models": [{"name": "horse", "cells": [{"column": "vertex", "median_fps": "fast"}]}]})"),
+          std::string(R"({"models": [{"name": "horse", "cells": [{"median_fps": 3}]}]})")}) {
+        const std::string m = message(text);
+        EXPECT_EQ(m.rfind("old/results.json: ", 0), 0u) << text << " -> " << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+    EXPECT_NE(message(R"({"models": [{"name": "horse", "cells": [{"column": "vertex", "median_fps": "fast"}]}]})")
+                  .find("median_fps"),
+              std::string::npos);
+    try {
+        bench::read_speeds_file("/nonexistent/old/results.json");
+        ADD_FAILURE() << "a missing file was read";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/old/results.json: ", 0), 0u) << e.what();
+    }
+}
+
+// --- the plot-order row ------------------------------------------------------------------------
+
+TEST(BenchPlotOrder, BunnyViewIsOrderedWithinIssueFifteensRatio) {
+    SKIP_WITHOUT_SCANS();
+    const auto log = [](const std::string& line) { std::printf("%s\n", line.c_str()); };
+    const bench::PlotOrderRow row =
+        cli::measure_plot_order_row(2'000, true, bench::ModelSetOptions::default_models_dir(), 640, 512, -1, log);
+    ASSERT_TRUE(row.blue_noise);
+    EXPECT_NEAR(double(row.blue_noise->dots), 2'000, 200);
+    EXPECT_GT(row.blue_noise->random_ratio, 5.0);
+    ASSERT_TRUE(row.bunny_view) << row.bunny_note;
+    EXPECT_GT(row.bunny_view->dots, 5'000u);  // the visible stipples of a 640x512 bunny
+    EXPECT_GT(row.bunny_view->travel_ratio, 1.0);
+    EXPECT_LT(row.bunny_view->travel_ratio, 1.6);  // issue 15: pen-up travel <= 1.6x its lower bound
+    EXPECT_EQ(row.validation_messages, 0u);
+    const std::string md = bench::plot_order_markdown(row);
+    EXPECT_NE(md.find("| bunny, default view (captured in "), std::string::npos) << md;
+}
+
+TEST(BenchPlotOrder, WithoutTheScanTheBunnyIsLeftOutWithANote) {
+    const bench::PlotOrderRow row =
+        cli::measure_plot_order_row(1'000, true, "/nonexistent/stipple/models", 320, 256, -1, [](const std::string&) {});
+    EXPECT_TRUE(row.blue_noise);
+    EXPECT_FALSE(row.bunny_view);
+    EXPECT_NE(row.bunny_note.find("/nonexistent/stipple/models/stanford-bunny.obj"), std::string::npos) << row.bunny_note;
+    bench::BenchResults results = synthetic_results();
+    results.plot_order = row;
+    nlohmann::json j = nlohmann::json::parse(bench::json_report(results));
+    EXPECT_TRUE(j["plot_order"]["bunny view"].is_null());
+    EXPECT_EQ(j["plot_order"]["blue noise"]["dots"].get<size_t>(), row.blue_noise->dots);
+    // The row's speed is a key of the regression guard.
+    EXPECT_EQ(bench::read_speeds(bench::json_report(results), "r.json").count("plot order / blue noise"), 1u);
 }
 
 // --- stipple bench ----------------------------------------------------------------------------
@@ -317,6 +447,33 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
     EXPECT_GT(a["animated_drawn"].get<int64_t>(), 0);
     EXPECT_GT(a["animated_candidates"].get<uint64_t>(), a["static_candidates"].get<uint64_t>()) << "stretch headroom";
     EXPECT_NE(md.find("## Animated row"), std::string::npos);
+    // The limit probe: as many culled and drawn points as the vertex column (no lines) had.
+    for (const auto& model : j["models"]) {
+        const auto& limit = model["limit_probe"];
+        ASSERT_TRUE(limit.is_object()) << model["name"];
+        const nlohmann::json* vertex = nullptr;
+        for (const auto& cell : model["cells"])
+            if (cell["column"] == "vertex") vertex = &cell;
+        ASSERT_NE(vertex, nullptr);
+        EXPECT_EQ(limit["drawn_points"].get<int64_t>(), (*vertex)["drawn_stipples"].get<int64_t>());
+        EXPECT_EQ(limit["culled_points"].get<int64_t>() + limit["drawn_points"].get<int64_t>(),
+                  (*vertex)["candidate_stipples"].get<int64_t>());
+        EXPECT_GT(limit["probe_ms"].get<double>(), 0.0);
+        EXPECT_GT(limit["vertex_stipples_ms"].get<double>(), 0.0);
+        EXPECT_DOUBLE_EQ(limit["x_of_limit"].get<double>(),
+                         limit["vertex_stipples_ms"].get<double>() / limit["probe_ms"].get<double>());
+    }
+    EXPECT_NE(md.find("## The vertex path against the machine's limit"), std::string::npos);
+    // The plot-order row, shrunk: 15k blue-noise dots, no bunny view.
+    const auto& plot = j["plot_order"];
+    ASSERT_TRUE(plot.is_object()) << plot.dump();
+    const auto& blue = plot["blue noise"];
+    EXPECT_NEAR(blue["dots"].get<double>(), 15'000, 1'500);
+    EXPECT_GT(blue["travel_ratio"].get<double>(), 1.0);   // nothing beats the bound
+    EXPECT_LT(blue["travel_ratio"].get<double>(), 1.6);   // issue 15's figure for a good order
+    EXPECT_GT(blue["random_ratio"].get<double>(), 10.0);  // the bound is not trivially loose
+    EXPECT_TRUE(plot["bunny view"].is_null());
+    EXPECT_NE(md.find("## Plot order"), std::string::npos);
 }
 
 TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
@@ -345,11 +502,31 @@ TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     EXPECT_FALSE(j.contains("animated")) << "rows named with --models: no animated row unless asked";
 }
 
+TEST(BenchCommand, CompareListsTheCellsThatGotSlower) {
+    // An earlier run where the sphere standing in for the horse drew at a million fps on the indirect
+    // path and generated a billion stipples a second; it also had a cell this run has not.
+    fs::path out = test::temp_dir("bench_compare");
+    const std::string old_path = (out / "old.json").string();
+    std::ofstream(old_path) << R"({"models": [{"name": "horse", "preprocessing_seconds": 1e-9, "candidate_stipples": 1,
+        "cells": [{"column": "indirect", "median_fps": 1e6}, {"column": "cpu", "median_fps": 1.0}]}]})";
+    test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1", "--warmup",
+                                         "0", "--width", "320", "--height", "256", "--models-dir",
+                                         "/nonexistent/stipple/models", "--out", out.string(), "--compare", old_path});
+    std::printf("%s", r.out.c_str());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("slower: horse / indirect -"), std::string::npos);
+    EXPECT_NE(r.out.find("slower: horse / generation -"), std::string::npos);
+    EXPECT_NE(r.out.find("missing in this run: horse / cpu"), std::string::npos);
+    EXPECT_NE(r.out.find("missing in " + old_path + ": horse / indirect + lines"), std::string::npos);
+    EXPECT_NE(r.out.find("compared with " + old_path + ": 2 cells compared, 2 slower by more than 10%, the worst: "),
+              std::string::npos);
+}
+
 TEST(BenchCommand, BadArgumentsFailWithOneLine) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"bench", "--models", "teapot"}, {"bench", "--paths", "vertex,raytrace"},
           {"bench", "--frames", "0"}, {"bench", "--width", "0"}, {"bench", "--paths", "vertex,,cpu"},
-          {"bench", "model.obj"}, {"bench", "--no-such-option"}}) {
+          {"bench", "model.obj"}, {"bench", "--no-such-option"}, {"bench", "--compare", "/nonexistent/old/results.json"}}) {
         test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 1) << args.back();
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

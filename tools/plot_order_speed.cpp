@@ -36,6 +36,7 @@
 #include "export/text_format.hpp"
 #include "export/dot_order.hpp"
 #include "export/neighbours.hpp"
+#include "export/order_speed.hpp"
 #include "export/tour_improve.hpp"
 
 namespace {
@@ -76,46 +77,20 @@ std::vector<uint32_t> nanoflann_tour(std::span<const glm::dvec2> points, glm::dv
 }
 
 void measure(size_t count, bool compare) {
-    // An A4-sized field (mm), as a page of stipples would be.
-    const double width = 190.0, height = 277.0;
-    auto start = Clock::now();
-    const std::vector<glm::dvec2> points = poisson_disc_points(width, height, poisson_disc_spacing(width, height, count), 1);
-    const double generate_s = seconds_since(start);
+    const OrderSpeed s = measure_order_speed(count);
+    const std::span<const glm::dvec2> points = s.points;
     const glm::dvec2 pen(0.0);
-
-    start = Clock::now();
-    const NeighbourLists lists = nearest_neighbours(points, 8);
-    const double lists_s = seconds_since(start);
-    start = Clock::now();
-    std::vector<uint32_t> order = nearest_neighbour_tour(points, lists, pen);
-    const double tour_s = seconds_since(start);
-    const double tour_travel = travel_length(points, order, pen);
-    start = Clock::now();
-    const ImproveCounts moves = improve_path(points, lists, order);
-    const double improve_s = seconds_since(start);
-    const double improved_travel = travel_length(points, order, pen);
-
-    start = Clock::now();
-    const std::vector<uint32_t> full = plot_order(points, pen);
-    const double plot_order_s = seconds_since(start);
-    const double bound = nearest_neighbour_bound(points);
-
-    std::vector<uint32_t> shuffled(points.size());
-    std::iota(shuffled.begin(), shuffled.end(), 0u);
-    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
-    const double random_travel = travel_length(points, shuffled, pen);
-
-    std::printf("%zu dots (blue noise, %.3f mm apart, generated in %.2f s)\n", points.size(),
-                poisson_disc_spacing(width, height, count), generate_s);
-    std::printf("  neighbour lists (k-d tree, k=8): %.3f s\n", lists_s);
-    std::printf("  nearest-neighbour tour (grid):   %.3f s, travel %.0f mm = %.3f x bound\n", tour_s, tour_travel, tour_travel / bound);
-    std::printf("  2-opt + Or-opt:                  %.3f s (%zu + %zu moves), travel %.0f mm = %.3f x bound\n", improve_s,
-                moves.two_opt_moves, moves.or_opt_moves, improved_travel, improved_travel / bound);
-    std::printf("  plot_order, all steps:           %.3f s, travel %.0f mm = %.3f x bound\n", plot_order_s,
-                travel_length(points, full, pen), travel_length(points, full, pen) / bound);
-    std::printf("  lower bound %.0f mm; random order %.0f mm = %.1f x bound\n", bound, random_travel, random_travel / bound);
+    const double bound = s.bound_mm;
+    std::printf("%zu dots (blue noise, %.3f mm apart, generated in %.2f s)\n", points.size(), s.spacing_mm, s.generate_s);
+    std::printf("  neighbour lists (k-d tree, k=8): %.3f s\n", s.lists_s);
+    std::printf("  nearest-neighbour tour (grid):   %.3f s, travel %.0f mm = %.3f x bound\n", s.tour_s, s.tour_mm, s.tour_mm / bound);
+    std::printf("  2-opt + Or-opt:                  %.3f s (%zu + %zu moves), travel %.0f mm = %.3f x bound\n", s.improve_s,
+                s.moves.two_opt_moves, s.moves.or_opt_moves, s.improved_mm, s.improved_mm / bound);
+    std::printf("  plot_order, all steps:           %.3f s, travel %.0f mm = %.3f x bound\n", s.plot_order_s, s.plot_order_mm,
+                s.ratio());
+    std::printf("  lower bound %.0f mm; random order %.0f mm = %.1f x bound\n", bound, s.random_mm, s.random_mm / bound);
     if (compare) {
-        start = Clock::now();
+        const auto start = Clock::now();
         const std::vector<uint32_t> kd_order = nanoflann_tour(points, pen);
         const double kd_s = seconds_since(start);
         std::printf("  nearest-neighbour tour (nanoflann dynamic index): %.3f s, travel %.0f mm = %.3f x bound\n", kd_s,

@@ -36,6 +36,17 @@ json cell_json(const CellResult& cell) {
     return j;
 }
 
+json limit_json(const ModelResult& m) {
+    if (!m.limit) return nullptr;
+    const ModelResult::LimitProbe& l = *m.limit;
+    return {{"culled_points", l.culled},
+            {"drawn_points", l.drawn},
+            {"vertex_stipples_ms", l.vertex_ms},
+            {"probe_ms", l.probe_ms},
+            {"probe_frame_ms", l.probe_frame_ms},
+            {"x_of_limit", l.ratio()}};
+}
+
 json model_json(const ModelResult& m) {
     json buffers = json::object();
     for (const auto& [name, bytes] : m.buffers) buffers[name] = bytes;
@@ -68,7 +79,24 @@ json model_json(const ModelResult& m) {
         {"gpu_bytes_by_path", by_path},
         {"image", m.image},
         {"cells", cells},
+        {"limit_probe", limit_json(m)},
     };
+}
+
+json plot_figures_json(const std::optional<PlotOrderFigures>& f) {
+    if (!f) return nullptr;
+    json j = {{"dots", f->dots}, {"order_seconds", f->order_seconds}, {"travel_ratio", f->travel_ratio}};
+    // Each figure only where it was measured: a random order on the blue noise, a capture for the bunny.
+    j["random_ratio"] = f->random_ratio > 0.0 ? json(f->random_ratio) : json(nullptr);
+    j["capture_seconds"] = f->capture_seconds > 0.0 ? json(f->capture_seconds) : json(nullptr);
+    return j;
+}
+
+json plot_order_json(const std::optional<PlotOrderRow>& row) {
+    if (!row) return nullptr;
+    json j = {{"blue noise", plot_figures_json(row->blue_noise)}, {"bunny view", plot_figures_json(row->bunny_view)}};
+    if (!row->bunny_note.empty()) j["bunny_note"] = row->bunny_note;
+    return j;
 }
 
 }  // namespace
@@ -110,6 +138,7 @@ std::string json_report(const BenchResults& r) {
         {"total_seconds", r.total_seconds},
         {"validation_messages", r.validation_messages},
         {"notes", r.notes},
+        {"plot_order", plot_order_json(r.plot_order)},
     };
     if (r.animated) {
         const AnimatedRow& a = *r.animated;

@@ -1,4 +1,5 @@
 // The Markdown report: the paper's Table 1 beside ours, then every cell's figures, then per model.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -156,6 +157,28 @@ void model_table(std::ostringstream& md, const BenchResults& r) {
     md << "\n";
 }
 
+// Issue 17's target 2: the vertex path within 1.3x of what the rasteriser does with as many points.
+void limit_table(std::ostringstream& md, const BenchResults& r) {
+    bool any = false;
+    for (const ModelResult& m : r.models) any = any || m.limit.has_value();
+    if (!any) return;
+    md << "## The vertex path against the machine's limit\n\n";
+    md << "The limit probe draws as many points as the vertex path's stipple pass (vertex, no lines) with a trivial "
+          "shader: the culled ones beyond the far plane, the drawn ones as one-pixel points over the model's "
+          "footprint; GPU ms are medians of timestamps. x of the limit = the stipple pass / the probe.\n\n";
+    md << "| model | culled | drawn | vertex stipple pass ms | probe ms | x of the limit | ns per candidate (vertex, probe) |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModelResult& m : r.models) {
+        if (!m.limit) continue;
+        const ModelResult::LimitProbe& l = *m.limit;
+        const double n = double(std::max<uint64_t>(l.culled + l.drawn, 1));
+        md << "| " << m.entry.name << " | " << with_commas(l.culled) << " | " << with_commas(l.drawn) << " | "
+           << format("%.2f", l.vertex_ms) << " | " << format("%.2f", l.probe_ms) << " | " << format("%.2f×", l.ratio())
+           << " | " << format("%.0f, %.0f", 1e6 * l.vertex_ms / n, 1e6 * l.probe_ms / n) << " |\n";
+    }
+    md << "\n";
+}
+
 }  // namespace
 
 std::string with_commas(uint64_t n) {
@@ -205,6 +228,8 @@ std::string markdown_report(const BenchResults& results) {
     cell_table(md, results);
     model_table(md, results);
     animated_table(md, results);
+    limit_table(md, results);
+    if (results.plot_order) md << plot_order_markdown(*results.plot_order);
     for (const std::string& note : results.notes) md << "**Note:** " << note << "\n\n";
     if (results.validation_messages > 0)
         md << "**" << results.validation_messages << " Vulkan validation message(s) during the run: the figures are "

@@ -1,6 +1,7 @@
 #include "bench/bench_runner.hpp"
 
 #include "bench/animated_row.hpp"
+#include "bench/limit_probe.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -102,15 +103,21 @@ void count_frames(const gpu::Context& context, OffscreenTarget& target, const Me
     }
 }
 
+// `after_frame(timed)` runs after each warm-up (false) and timed (true) frame: the limit probe's frames
+// alternate with the cell's, so that both see the same load on a shared machine.
 void time_cell(OffscreenTarget& target, StippleRenderer& renderer, const FrameView& view, const BenchOptions& options,
-               CellResult& cell) {
+               CellResult& cell, const std::function<void(bool)>& after_frame = {}) {
     set_column(renderer, cell.column);
-    for (int i = 0; i < options.warmup; ++i) target.draw(renderer, view);
+    for (int i = 0; i < options.warmup; ++i) {
+        target.draw(renderer, view);
+        if (after_frame) after_frame(false);
+    }
     std::map<std::string, std::vector<double>> pass_ms;
     std::vector<std::string> pass_order;
     std::vector<double> cpu_ms;
     for (int i = 0; i < options.frames; ++i) {
         cell.frame_ms.push_back(target.draw(renderer, view));
+        if (after_frame) after_frame(true);
         const FrameStats& stats = renderer.stats();
         for (const auto& [pass, ms] : stats.gpu_ms) {
             if (!pass_ms.count(pass)) pass_order.push_back(pass);
@@ -132,6 +139,15 @@ void time_cell(OffscreenTarget& target, StippleRenderer& renderer, const FrameVi
     }
     cell.cpu_density_ms = median(cpu_ms);
 }
+
+double pass_ms(const CellResult& cell, const std::string& pass) {
+    for (const auto& [name, ms] : cell.gpu_ms)
+        if (name == pass) return ms;
+    return 0.0;
+}
+
+// The probe goes with the vertex column without lines (the paper's "stipple only"), with its counts.
+bool probed(const CellResult& cell) { return cell.column == Column{DensityPath::Vertex, false, ObjectLines::None} && cell.drawn >= 0; }
 
 std::string passes_text(const CellResult& cell) {
     std::string text;
@@ -206,6 +222,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
     OffscreenTarget& target = *target_holder;
+    auto probe_holder = std::make_unique<LimitProbe>(context, extent);
     log(format("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));
@@ -251,7 +268,23 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
         }
         const PaperRow* row = find_paper_row(entry.name);
         for (CellResult& cell : model.cells) {
-            time_cell(target, renderer, view, options, cell);
+            std::optional<ModelResult::LimitProbe> limit;
+            std::function<void(bool)> probe_frame;
+            if (probed(cell)) {
+                limit.emplace();
+                limit->drawn = uint64_t(cell.drawn);
+                limit->culled = model.candidates - std::min<uint64_t>(model.candidates, limit->drawn);
+                probe_frame = [&](bool timed) {
+                    const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels);
+                    if (timed) limit->probe_frame_ms.push_back(ms);
+                };
+            }
+            time_cell(target, renderer, view, options, cell, probe_frame);
+            if (limit) {
+                limit->vertex_ms = pass_ms(cell, "stipples");
+                limit->probe_ms = median(limit->probe_frame_ms);
+                model.limit = std::move(limit);
+            }
             if (row) cell.paper_fps = paper_fps(*row, cell.column);
             std::string paper = cell.paper_fps ? format(" (paper %.2f, x%.2f)", *cell.paper_fps,
                                                         cell.median_fps / *cell.paper_fps)
@@ -260,6 +293,11 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                        cell.column.name().c_str(), cell.median_fps, paper.c_str(), cell.min_fps, cell.max_fps,
                        passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
         }
+        if (model.limit)
+            log(format("  limit probe: %llu culled + %llu drawn points in %.2f ms; the vertex path's stipple pass %.2f ms "
+                       "= %.2fx the limit",
+                       (unsigned long long)model.limit->culled, (unsigned long long)model.limit->drawn,
+                       model.limit->probe_ms, model.limit->vertex_ms, model.limit->ratio()));
         std::string by_path;
         for (const auto& [path, bytes] : model.gpu_bytes_by_path)
             by_path += format(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);
@@ -269,6 +307,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
         results.models.push_back(std::move(model));
     }
     if (options.animated_triangles > 0) results.animated = run_animated_row(context, target, options, log);
+    probe_holder.reset();
     target_holder.reset();  // everything but the context is gone: destruction messages are counted too
     results.validation_messages = context.validation_message_count();
     results.total_seconds = seconds_since(run_start);

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "bench/model_set.hpp"
+#include "bench/plot_order_row.hpp"
 #include "bench/table1.hpp"
 #include "params/object_params.hpp"
 
@@ -76,6 +77,16 @@ struct ModelResult {
     uint64_t mesh_bytes = 0;          // positions, normals, indices (the depth pass's)
     std::string image;                // the standard frame's PNG, when written
     std::vector<CellResult> cells;
+    // The limit probe (issue 17): the vertex path's stipple pass against a bare pass drawing as many
+    // culled and drawn points (bench/limit_probe.hpp); measured when the vertex column is in the run.
+    struct LimitProbe {
+        uint64_t culled = 0, drawn = 0;
+        double vertex_ms = 0.0;  // the vertex column's "stipples" pass, median GPU ms
+        double probe_ms = 0.0;   // the probe's pass, median GPU ms
+        std::vector<double> probe_frame_ms;  // each frame's
+        double ratio() const { return probe_ms > 0.0 ? vertex_ms / probe_ms : 0.0; }  // "x of the limit"
+    };
+    std::optional<LimitProbe> limit;
 
     double bytes_per_candidate() const { return candidates ? double(gpu_bytes) / double(candidates) : 0.0; }
     double stipple_bytes_per_candidate() const {
@@ -113,6 +124,7 @@ struct BenchResults {
     double total_seconds = 0.0;
     uint32_t validation_messages = 0;
     std::vector<std::string> notes;  // checks that did not hold (printed and written with the tables)
+    std::optional<PlotOrderRow> plot_order;  // filled by the caller after the run, when it measures it
 };
 
 // The issue's check of the default look: the bunny's standard frame holds 50k-150k drawn stipples and

@@ -1,10 +1,13 @@
 // stipple bench: the paper's Table 1 on this machine (see src/bench/).
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
+#include "bench/bench_compare.hpp"
 #include "bench/bench_output.hpp"
 #include "bench/bench_runner.hpp"
 #include "bench/table1.hpp"
+#include "cli/cmd_bench_plot.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
@@ -40,7 +43,7 @@ long long bounded(const Args& args, const std::string& name, long long fallback,
 int run_bench(const std::vector<std::string>& argv) {
     Args args(argv, {"--quick", "--list-devices", "--animated-only"},
               {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
-               "--models-dir", "--cache-dir", "--animated-triangles"});
+               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots"});
     if (args.flag("--list-devices")) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
         return 0;
@@ -89,14 +92,30 @@ int run_bench(const std::vector<std::string>& argv) {
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
     const std::filesystem::path out = args.get("--out", "bench-results");
+    // Read before the run: a bad file fails at once, and --out may be the folder it is in.
+    const std::string compare_path = args.get("--compare", "");
+    if (args.has("--compare") && compare_path.empty()) fail("--compare needs the path of an earlier results.json");
+    std::map<std::string, double> old_speeds;
+    if (!compare_path.empty()) old_speeds = bench::read_speeds_file(compare_path);
     options.image_dir = out / "images";
+    // The plot-order row: in a full run 150k dots and the bunny's view; --quick (in the test suite)
+    // shrinks it to 15k dots without the bunny; a run of chosen --models leaves it out unless asked.
+    const bool plot_asked = args.has("--plot-dots");
+    const size_t plot_dots = size_t(bounded(args, "--plot-dots", options.quick ? 15'000 : 150'000, 0, 10'000'000));
+    const bool plot_row = plot_dots > 0 && (plot_asked || options.quick || options.models.empty());
     options.command = "stipple bench";
     for (const std::string& a : argv) options.command += " " + a;
 
-    bench::BenchResults results = bench::run_bench(options, [](const std::string& line) {
+    const auto log = [](const std::string& line) {
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);
-    });
+    };
+    bench::BenchResults results = bench::run_bench(options, log);
+    if (plot_row) {
+        results.plot_order = measure_plot_order_row(plot_dots, !options.quick, options.models_dir, options.width,
+                                                    options.height, options.device, log);
+        results.validation_messages += results.plot_order->validation_messages;
+    }
 
     const std::string markdown = bench::markdown_report(results);
     bench::write_text_file((out / "results.md").string(), markdown);
@@ -106,6 +125,11 @@ int run_bench(const std::vector<std::string>& argv) {
     std::printf("wrote %s, %s, %s and the standard frames in %s (%.0f s)\n", (out / "results.md").c_str(),
                 (out / "results.json").c_str(), (out / "chart.svg").c_str(), (out / "images").c_str(),
                 results.total_seconds);
+    if (!compare_path.empty()) {
+        const bench::Comparison comparison =
+            bench::compare_speeds(old_speeds, bench::read_speeds(bench::json_report(results), "this run"));
+        std::printf("\n%s", bench::comparison_text(comparison, compare_path).c_str());
+    }
     if (results.validation_messages > 0) {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s) during the benchmark: its figures are not trustworthy\n",
                      results.validation_messages);

@@ -1,0 +1,130 @@
+// The regression guard: this run's speeds against an earlier results.json.
+#include "bench/bench_compare.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+
+namespace stipple::bench {
+
+namespace {
+
+using nlohmann::json;
+
+std::string format(const char* fmt, auto... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+}
+
+// A member that must be there with the given kind; anything else means the file is not a results.json.
+const json& member(const json& object, const char* key, json::value_t kind, const std::string& name,
+                   const std::string& where) {
+    if (!object.is_object() || !object.contains(key))
+        fail_file(name, "not a stipple bench results.json (" + where + " has no \"" + key + "\")");
+    const json& value = object.at(key);
+    const bool number = kind == json::value_t::number_float;
+    if (number ? !value.is_number() : value.type() != kind)
+        fail_file(name, "not a stipple bench results.json (\"" + std::string(key) + "\" of " + where + " has the wrong type)");
+    return value;
+}
+
+double number(const json& object, const char* key, const std::string& name, const std::string& where) {
+    return member(object, key, json::value_t::number_float, name, where).get<double>();
+}
+
+void add_speed(std::map<std::string, double>& speeds, const std::string& key, double speed, const std::string& name) {
+    if (!speeds.emplace(key, speed).second) fail_file(name, "\"" + key + "\" appears twice");
+}
+
+// The plot-order row's entries: dots per second of ordering, where both figures are there.
+void plot_order_speeds(const json& root, std::map<std::string, double>& speeds, const std::string& name) {
+    if (!root.contains("plot_order") || root["plot_order"].is_null()) return;
+    const json& row = member(root, "plot_order", json::value_t::object, name, "the file");
+    for (const auto& [what, entry] : row.items()) {
+        if (!entry.is_object()) continue;  // skipped in that run (null), or its note
+        const std::string where = "plot_order." + what;
+        const double dots = number(entry, "dots", name, where), seconds = number(entry, "order_seconds", name, where);
+        if (seconds > 0.0) add_speed(speeds, "plot order / " + what, dots / seconds, name);
+    }
+}
+
+}  // namespace
+
+std::map<std::string, double> read_speeds(const std::string& json_text, const std::string& name) {
+    json root;
+    try {
+        root = json::parse(json_text);
+    } catch (const json::exception& e) {
+        std::string what = e.what();
+        std::replace(what.begin(), what.end(), '\n', ' ');
+        fail_file(name, "not JSON: " + what);
+    }
+    std::map<std::string, double> speeds;
+    for (const json& model : member(root, "models", json::value_t::array, name, "the file")) {
+        const std::string model_name = member(model, "name", json::value_t::string, name, "a model").get<std::string>();
+        const std::string where = "model '" + model_name + "'";
+        for (const json& cell : member(model, "cells", json::value_t::array, name, where)) {
+            const std::string column = member(cell, "column", json::value_t::string, name, where).get<std::string>();
+            add_speed(speeds, model_name + " / " + column, number(cell, "median_fps", name, where + " " + column), name);
+        }
+        const double seconds = number(model, "preprocessing_seconds", name, where);
+        const double candidates = number(model, "candidate_stipples", name, where);
+        if (seconds > 0.0) add_speed(speeds, model_name + " / generation", candidates / seconds, name);
+    }
+    plot_order_speeds(root, speeds, name);
+    return speeds;
+}
+
+std::map<std::string, double> read_speeds_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail_file(path, "cannot read the results to compare with (no such file?)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) fail_file(path, "read failed");
+    return read_speeds(text.str(), path);
+}
+
+Comparison compare_speeds(const std::map<std::string, double>& old_speeds, const std::map<std::string, double>& new_speeds,
+                          double threshold) {
+    Comparison c;
+    for (const auto& [key, old_speed] : old_speeds) {
+        auto found = new_speeds.find(key);
+        if (found == new_speeds.end()) {
+            c.only_in_old.push_back(key);
+            continue;
+        }
+        const SpeedChange change{key, old_speed, found->second};
+        if (c.compared == 0 || change.loss() > c.worst.loss()) c.worst = change;
+        ++c.compared;
+        if (change.loss() > threshold) c.slower.push_back(change);
+    }
+    for (const auto& entry : new_speeds)
+        if (!old_speeds.count(entry.first)) c.only_in_new.push_back(entry.first);
+    std::stable_sort(c.slower.begin(), c.slower.end(),
+                     [](const SpeedChange& a, const SpeedChange& b) { return a.loss() > b.loss(); });
+    return c;
+}
+
+std::string comparison_text(const Comparison& c, const std::string& old_name, double threshold) {
+    std::string text;
+    auto change_text = [](const SpeedChange& s) {
+        return format("%s %+.1f%% (%.4g -> %.4g)", s.key.c_str(), -100.0 * s.loss(), s.old_speed, s.new_speed);
+    };
+    for (const SpeedChange& s : c.slower) text += "  slower: " + change_text(s) + "\n";
+    for (const std::string& key : c.only_in_old) text += "  missing in this run: " + key + "\n";
+    for (const std::string& key : c.only_in_new) text += "  missing in " + old_name + ": " + key + "\n";
+    text += format("compared with %s: %zu cells compared, %zu slower by more than %.0f%%", old_name.c_str(), c.compared,
+                   c.slower.size(), 100.0 * threshold);
+    if (c.compared > 0) text += ", the worst: " + change_text(c.worst);
+    if (!c.only_in_old.empty() || !c.only_in_new.empty())
+        text += format("; %zu only in %s, %zu only in this run", c.only_in_old.size(), old_name.c_str(), c.only_in_new.size());
+    return text + "\n";
+}
+
+}  // namespace stipple::bench
