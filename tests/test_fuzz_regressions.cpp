@@ -34,6 +34,8 @@ const Regression kRegressions[] = {
      "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},
 };
 
+void PrintTo(const Regression& r, std::ostream* os) { *os << r.file; }
+
 class FuzzRegression : public ::testing::TestWithParam<Regression> {};
 
 std::string read_text(const fs::path& path) {

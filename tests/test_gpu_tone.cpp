@@ -26,6 +26,8 @@ struct ToneCase {
     double limit = 1.05;
 };
 
+void PrintTo(const ToneCase& c, std::ostream* os) { *os << c.model << " " << c.width << "x" << c.height; }
+
 // Every GPU test of this file shares one fixture name, so a failure names its suite.
 class ToneAcrossScale : public test::GpuTest, public ::testing::WithParamInterface<ToneCase> {};
 
