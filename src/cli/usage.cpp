@@ -171,7 +171,7 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
                           not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
-  --compare OLD.json      after the run, list the cells (fps, generation, plot order) more than 10%
+  --compare OLD.json      after the run, list the cells (fps, generation, plot order) more than 10%%
                           slower than in an earlier results.json, and those only one of the two has
   --plot-dots N           the plot-order row's blue-noise dots (default 150000, --quick 15000 without
                           the bunny's view; 0: no row; with --models only when given)
