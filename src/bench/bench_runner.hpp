@@ -62,6 +62,16 @@ struct CellResult {
     std::optional<double> paper_fps;
 };
 
+// Declared outside ModelResult: clang 15 cannot use a nested struct's default member initialisers in
+// std::optional before the enclosing class is complete.
+struct LimitProbeResult {
+    uint64_t culled = 0, drawn = 0;
+    double vertex_ms = 0.0;  // the vertex column's "stipples" pass, median GPU ms
+    double probe_ms = 0.0;   // the probe's pass, median GPU ms
+    std::vector<double> probe_frame_ms;  // each frame's
+    double ratio() const { return probe_ms > 0.0 ? vertex_ms / probe_ms : 0.0; }  // "x of the limit"
+};
+
 struct ModelResult {
     ModelEntry entry;
     double load_seconds = 0.0;
@@ -79,13 +89,7 @@ struct ModelResult {
     std::vector<CellResult> cells;
     // The limit probe (issue 17): the vertex path's stipple pass against a bare pass drawing as many
     // culled and drawn points (bench/limit_probe.hpp); measured when the vertex column is in the run.
-    struct LimitProbe {
-        uint64_t culled = 0, drawn = 0;
-        double vertex_ms = 0.0;  // the vertex column's "stipples" pass, median GPU ms
-        double probe_ms = 0.0;   // the probe's pass, median GPU ms
-        std::vector<double> probe_frame_ms;  // each frame's
-        double ratio() const { return probe_ms > 0.0 ? vertex_ms / probe_ms : 0.0; }  // "x of the limit"
-    };
+    using LimitProbe = LimitProbeResult;
     std::optional<LimitProbe> limit;
 
     double bytes_per_candidate() const { return candidates ? double(gpu_bytes) / double(candidates) : 0.0; }
