@@ -42,10 +42,12 @@ double darkness(const Image& image, int x, int y) {
 // Mean ink of `image` (any multiple of the mask's size) over the pixels the mask marks covered.
 double mean_ink_inside(const Image& image, const Image& mask) {
     const int k = image.width / mask.width;
+    // A rasteriser may round the page up by a row or a column: only pixels over the mask count.
+    const int height = std::min(image.height, mask.height * k), width = std::min(image.width, mask.width * k);
     double sum = 0.0;
     size_t n = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
             if (darkness(mask, x / k, y / k) > 0.5) continue;  // the mask is white where a surface covers
             sum += darkness(image, x, y);
             ++n;

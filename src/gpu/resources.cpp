@@ -159,7 +159,7 @@ StagedBuffer stage_buffer(const Context& context, std::span<const std::byte> dat
     staged.usage = usage;
     if (data.empty()) return staged;
     staged.staging = Buffer(context, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-    std::memcpy(staged.staging.mapped(), data.data(), data.size());
+    if (!data.empty()) std::memcpy(staged.staging.mapped(), data.data(), data.size());
     staged.staging.flush();
     return staged;
 }
@@ -190,7 +190,7 @@ std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer)
                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     context.submit_and_wait(cb);
     staging.invalidate();
-    std::memcpy(bytes.data(), staging.mapped(), bytes.size());
+    if (!bytes.empty()) std::memcpy(bytes.data(), staging.mapped(), bytes.size());
     return bytes;
 }
 

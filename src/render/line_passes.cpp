@@ -127,7 +127,8 @@ StippleRenderer::LinePieces StippleRenderer::read_line_pieces(size_t object) con
     result.appended = header.vertex_count / 6;
     const size_t stored = std::min<size_t>(result.appended, o.frame.line_piece_capacity);
     result.pieces.resize(stored);
-    std::memcpy(result.pieces.data(), bytes.data() + sizeof header, stored * sizeof(gpu::LinePiece));
+    if (stored > 0)  // memcpy to no storage is undefined even for 0 bytes
+        std::memcpy(result.pieces.data(), bytes.data() + sizeof header, stored * sizeof(gpu::LinePiece));
     return result;
 }
 

@@ -591,7 +591,8 @@ std::vector<gpu::VisibleStipple> StippleRenderer::read_visible_stipples(size_t i
     std::memcpy(&header, bytes.data(), sizeof header);
     STIPPLE_CHECK(header.count <= object.geometry.stipple_count, "more visible stipples than candidates");
     std::vector<gpu::VisibleStipple> visible(header.count);
-    std::memcpy(visible.data(), bytes.data() + sizeof header, sizeof(gpu::VisibleStipple) * visible.size());
+    if (!visible.empty())  // memcpy from or to no storage is undefined even for 0 bytes
+        std::memcpy(visible.data(), bytes.data() + sizeof header, sizeof(gpu::VisibleStipple) * visible.size());
     return visible;
 }
 
