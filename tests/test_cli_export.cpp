@@ -36,6 +36,7 @@ void shell_ok(const std::string& command) { ASSERT_EQ(std::system(command.c_str(
 
 double darkness(const Image& image, int x, int y) {
     const uint8_t* p = &image.pixels[(size_t(y) * image.width + x) * image.channels];
+    if (image.channels < 3) return 1.0 - p[0] / 255.0;  // grey (and alpha): a rasteriser's PNG may be
     return 1.0 - (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
 }
 

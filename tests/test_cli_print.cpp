@@ -21,6 +21,7 @@ void run_ok(const std::vector<std::string>& args) {
 
 double darkness(const Image& image, size_t x, size_t y) {
     const uint8_t* p = &image.pixels[(y * size_t(image.width) + x) * size_t(image.channels)];
+    if (image.channels < 3) return 1.0 - p[0] / 255.0;  // grey (the coverage mask), maybe with alpha
     return 1.0 - (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
 }
 
