@@ -1,3 +1,4 @@
+#include "core/printf_string.hpp"
 #include "bench/animated_row.hpp"
 
 #include <algorithm>
@@ -16,12 +17,6 @@
 namespace stipple::bench {
 
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 constexpr double kAnimationFps = 30.0;  // animation seconds advance 1/30 per timed frame
 
@@ -52,7 +47,7 @@ Timing time_frames(OffscreenTarget& target, StippleRenderer& renderer, const Fra
         deform_ms.push_back(deform);
     }
     std::string passes;
-    for (const std::string& pass : order) passes += format(" %s %.2f", pass.c_str(), median(per_pass[pass]));
+    for (const std::string& pass : order) passes += printf_string(" %s %.2f", pass.c_str(), median(per_pass[pass]));
     return {median(frame_ms), median(gpu_ms), median(deform_ms), passes};
 }
 
@@ -82,7 +77,7 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
     cylinder.rings = size.rings;
     cylinder.segments = size.segments;
     const std::filesystem::path path =
-        options.cache_dir / format("animated-cylinder-%ux%u.glb", size.rings, size.segments);
+        options.cache_dir / printf_string("animated-cylinder-%ux%u.glb", size.rings, size.segments);
     std::error_code ec;
     std::filesystem::create_directories(options.cache_dir, ec);
     anim::rigs::bending_cylinder(cylinder).write(path.string());
@@ -94,7 +89,7 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
     const auto static_stipples = make_stipples(*model.mesh, params.generation);  // the same surface, no headroom
 
     AnimatedRow row;
-    row.model = format("bending cylinder, 2 joints (%u rings x %u segments)", size.rings, size.segments);
+    row.model = printf_string("bending cylinder, 2 joints (%u rings x %u segments)", size.rings, size.segments);
     row.triangles = model.mesh->triangle_count();
     row.vertices = model.mesh->vertex_count();
     row.static_candidates = static_stipples->size();
@@ -126,14 +121,14 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
         row.deform_gpu_ms = t.deform_ms;
         log("  animated passes (GPU ms):" + t.passes);
     }
-    log(format("animated row: %s, %llu triangles, %llu vertices; candidates %llu static, %llu with headroom "
+    log(printf_string("animated row: %s, %llu triangles, %llu vertices; candidates %llu static, %llu with headroom "
                "(largest stretch %.2fx); drawn %lld static, %lld animated",
                row.model.c_str(), (unsigned long long)row.triangles, (unsigned long long)row.vertices,
                (unsigned long long)row.static_candidates, (unsigned long long)row.animated_candidates,
                double(row.max_area_ratio), (long long)row.static_drawn, (long long)row.animated_drawn));
-    log(format("  static   %8.2f ms/frame (%.1f fps), GPU %.2f ms", row.static_frame_ms, 1000.0 / row.static_frame_ms,
+    log(printf_string("  static   %8.2f ms/frame (%.1f fps), GPU %.2f ms", row.static_frame_ms, 1000.0 / row.static_frame_ms,
                row.static_gpu_ms));
-    log(format("  animated %8.2f ms/frame (%.1f fps), GPU %.2f ms of which deformation %.2f ms (%.1f%% of the GPU frame)",
+    log(printf_string("  animated %8.2f ms/frame (%.1f fps), GPU %.2f ms of which deformation %.2f ms (%.1f%% of the GPU frame)",
                row.animated_frame_ms, 1000.0 / row.animated_frame_ms, row.animated_gpu_ms, row.deform_gpu_ms,
                100.0 * row.deform_share()));
     return row;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/printf_string.hpp"
 #include "bench/bench_output.hpp"
 
 namespace stipple::bench {
@@ -15,12 +16,6 @@ namespace {
 
 constexpr double kWidth = 960, kHeight = 600;
 constexpr double kLeft = 80, kRight = 280, kTop = 50, kBottom = 70;  // margins; the legend sits on the right
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 std::string escape(const std::string& text) {
     std::string out;
@@ -87,9 +82,9 @@ struct LogAxis {
 };
 
 std::string tick_label(double v, bool polygons) {
-    if (polygons && v >= 1e6) return format("%gM", v / 1e6);
-    if (polygons && v >= 1e3) return format("%gk", v / 1e3);
-    return format("%g", v);
+    if (polygons && v >= 1e6) return printf_string("%gM", v / 1e6);
+    if (polygons && v >= 1e3) return printf_string("%gk", v / 1e3);
+    return printf_string("%g", v);
 }
 
 std::vector<Series> collect_series(const BenchResults& r) {
@@ -121,17 +116,17 @@ std::vector<Series> collect_series(const BenchResults& r) {
 
 void marker(std::ostringstream& svg, const Series& s, double x, double y) {
     if (s.square)
-        svg << format("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"%s\"/>\n", x - 3.5, y - 3.5,
+        svg << printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"%s\"/>\n", x - 3.5, y - 3.5,
                       s.dashed ? "white" : s.colour.c_str());
     else
-        svg << format("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", x, y,
+        svg << printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", x, y,
                       s.dashed ? "white" : s.colour.c_str());
     if (s.dashed) {  // hollow markers for the paper
         if (s.square)
-            svg << format("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"%s\"/>\n",
+            svg << printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"%s\"/>\n",
                           x - 3.5, y - 3.5, s.colour.c_str());
         else
-            svg << format("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"none\" stroke=\"%s\"/>\n", x, y,
+            svg << printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"none\" stroke=\"%s\"/>\n", x, y,
                           s.colour.c_str());
     }
 }
@@ -151,51 +146,51 @@ std::string svg_chart(const BenchResults& r) {
     LogAxis xa(x_lo, x_hi, kLeft, plot_right), ya(y_lo, y_hi, plot_bottom, kTop);
 
     std::ostringstream svg;
-    svg << format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
+    svg << printf_string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
                   "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n",
                   kWidth, kHeight, kWidth, kHeight);
-    svg << format("<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", kWidth, kHeight);
-    svg << format("<text x=\"%.0f\" y=\"24\" font-size=\"15\" font-weight=\"bold\">%s</text>\n", kLeft,
-                  escape(format("Frames per second against polygon count, %ux%u", r.width, r.height)).c_str());
-    svg << format("<text x=\"%.0f\" y=\"40\" fill=\"#555\">%s</text>\n", kLeft,
+    svg << printf_string("<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", kWidth, kHeight);
+    svg << printf_string("<text x=\"%.0f\" y=\"24\" font-size=\"15\" font-weight=\"bold\">%s</text>\n", kLeft,
+                  escape(printf_string("Frames per second against polygon count, %ux%u", r.width, r.height)).c_str());
+    svg << printf_string("<text x=\"%.0f\" y=\"40\" fill=\"#555\">%s</text>\n", kLeft,
                   escape("ours: " + r.device + " (solid); paper: GeForce3 Ti 500, 2002 (dashed)").c_str());
 
     // Grid, ticks and tick labels: 1-2-5 steps labelled, the rest as minor ticks; decades darker.
     for (auto [v, labelled] : xa.ticks()) {
         double x = xa.map(v);
         bool decade = std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9;
-        svg << format("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"%s\"/>\n", x, kTop, x, plot_bottom,
+        svg << printf_string("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"%s\"/>\n", x, kTop, x, plot_bottom,
                       decade ? "#bbb" : "#eee");
-        svg << format("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"black\"/>\n", x, plot_bottom, x,
+        svg << printf_string("<line x1=\"%.1f\" y1=\"%.0f\" x2=\"%.1f\" y2=\"%.0f\" stroke=\"black\"/>\n", x, plot_bottom, x,
                       plot_bottom + (labelled ? 6 : 3));
         if (labelled)
-            svg << format("<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%s</text>\n", x, plot_bottom + 20,
+            svg << printf_string("<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%s</text>\n", x, plot_bottom + 20,
                           tick_label(v, true).c_str());
     }
     for (auto [v, labelled] : ya.ticks()) {
         double y = ya.map(v);
         bool decade = std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-9;
-        svg << format("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"%s\"/>\n", kLeft, y, plot_right, y,
+        svg << printf_string("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"%s\"/>\n", kLeft, y, plot_right, y,
                       decade ? "#bbb" : "#eee");
-        svg << format("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"black\"/>\n",
+        svg << printf_string("<line x1=\"%.0f\" y1=\"%.1f\" x2=\"%.0f\" y2=\"%.1f\" stroke=\"black\"/>\n",
                       kLeft - (labelled ? 6 : 3), y, kLeft, y);
         if (labelled)
-            svg << format("<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", kLeft - 9, y + 4,
+            svg << printf_string("<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", kLeft - 9, y + 4,
                           tick_label(v, false).c_str());
     }
-    svg << format("<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" fill=\"none\" stroke=\"black\"/>\n",
+    svg << printf_string("<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" fill=\"none\" stroke=\"black\"/>\n",
                   kLeft, kTop, plot_right - kLeft, plot_bottom - kTop);
-    svg << format("<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">polygons (triangles), log scale</text>\n",
+    svg << printf_string("<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">polygons (triangles), log scale</text>\n",
                   (kLeft + plot_right) / 2, kHeight - 25);
-    svg << format("<text transform=\"translate(24 %.0f) rotate(-90)\" text-anchor=\"middle\">frames per second, "
+    svg << printf_string("<text transform=\"translate(24 %.0f) rotate(-90)\" text-anchor=\"middle\">frames per second, "
                   "log scale</text>\n",
                   (kTop + plot_bottom) / 2);
 
     // The series.
     for (const Series& s : series) {
         std::string points;
-        for (auto [x, y] : s.points) points += format("%.1f,%.1f ", xa.map(x), ya.map(y));
-        svg << format("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%s\"%s/>\n", points.c_str(),
+        for (auto [x, y] : s.points) points += printf_string("%.1f,%.1f ", xa.map(x), ya.map(y));
+        svg << printf_string("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%s\"%s/>\n", points.c_str(),
                       s.colour.c_str(), s.square ? "1.5" : "2", s.dashed ? " stroke-dasharray=\"6 4\"" : "");
         for (auto [x, y] : s.points) marker(svg, s, xa.map(x), ya.map(y));
     }
@@ -203,10 +198,10 @@ std::string svg_chart(const BenchResults& r) {
     // The legend.
     double lx = plot_right + 20, ly = kTop + 8;
     for (const Series& s : series) {
-        svg << format("<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"%s\" stroke-width=\"2\"%s/>\n",
+        svg << printf_string("<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"%s\" stroke-width=\"2\"%s/>\n",
                       lx, ly, lx + 28, ly, s.colour.c_str(), s.dashed ? " stroke-dasharray=\"6 4\"" : "");
         marker(svg, s, lx + 14, ly);
-        svg << format("<text x=\"%.0f\" y=\"%.0f\" font-size=\"11\">%s</text>\n", lx + 36, ly + 4,
+        svg << printf_string("<text x=\"%.0f\" y=\"%.0f\" font-size=\"11\">%s</text>\n", lx + 36, ly + 4,
                       escape(s.label).c_str());
         ly += 20;
     }

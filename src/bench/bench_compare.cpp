@@ -1,4 +1,5 @@
 // The regression guard: this run's speeds against an earlier results.json.
+#include "core/printf_string.hpp"
 #include "bench/bench_compare.hpp"
 
 #include <algorithm>
@@ -15,12 +16,6 @@ namespace stipple::bench {
 namespace {
 
 using nlohmann::json;
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 // A member that must be there with the given kind; anything else means the file is not a results.json.
 const json& member(const json& object, const char* key, json::value_t kind, const std::string& name,
@@ -114,16 +109,16 @@ Comparison compare_speeds(const std::map<std::string, double>& old_speeds, const
 std::string comparison_text(const Comparison& c, const std::string& old_name, double threshold) {
     std::string text;
     auto change_text = [](const SpeedChange& s) {
-        return format("%s %+.1f%% (%.4g -> %.4g)", s.key.c_str(), -100.0 * s.loss(), s.old_speed, s.new_speed);
+        return printf_string("%s %+.1f%% (%.4g -> %.4g)", s.key.c_str(), -100.0 * s.loss(), s.old_speed, s.new_speed);
     };
     for (const SpeedChange& s : c.slower) text += "  slower: " + change_text(s) + "\n";
     for (const std::string& key : c.only_in_old) text += "  missing in this run: " + key + "\n";
     for (const std::string& key : c.only_in_new) text += "  missing in " + old_name + ": " + key + "\n";
-    text += format("compared with %s: %zu cells compared, %zu slower by more than %.0f%%", old_name.c_str(), c.compared,
+    text += printf_string("compared with %s: %zu cells compared, %zu slower by more than %.0f%%", old_name.c_str(), c.compared,
                    c.slower.size(), 100.0 * threshold);
     if (c.compared > 0) text += ", the worst: " + change_text(c.worst);
     if (!c.only_in_old.empty() || !c.only_in_new.empty())
-        text += format("; %zu only in %s, %zu only in this run", c.only_in_old.size(), old_name.c_str(), c.only_in_new.size());
+        text += printf_string("; %zu only in %s, %zu only in this run", c.only_in_old.size(), old_name.c_str(), c.only_in_new.size());
     return text + "\n";
 }
 

@@ -6,18 +6,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/printf_string.hpp"
 #include "bench/bench_output.hpp"
 #include "core/error.hpp"
 
 namespace stipple::bench {
 
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 const CellResult* find_cell(const ModelResult& model, const Column& column) {
     for (const CellResult& cell : model.cells)
@@ -40,7 +35,7 @@ void header_lines(std::ostringstream& md, const BenchResults& r) {
                          : "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " +
                                r.models_dir + ")")
        << "\n";
-    md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set)" : "") << "; total " << format("%.0f", r.total_seconds)
+    md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set)" : "") << "; total " << printf_string("%.0f", r.total_seconds)
        << " s\n";
     if (!r.command.empty()) md << "- command: `" << r.command << "`\n";
     md << "\n";
@@ -48,8 +43,8 @@ void header_lines(std::ostringstream& md, const BenchResults& r) {
 
 std::string ratio_cell(double fps, double paper) {
     const double ratio = fps / paper;
-    const std::string ratio_text = format("%.2f×", ratio);
-    return fps_text(fps) + " / " + format("%.2f", paper) + " = " + (ratio < 1.0 ? "**" + ratio_text + "**" : ratio_text);
+    const std::string ratio_text = printf_string("%.2f×", ratio);
+    return fps_text(fps) + " / " + printf_string("%.2f", paper) + " = " + (ratio < 1.0 ? "**" + ratio_text + "**" : ratio_text);
 }
 
 // Table 1's own four columns: where the density is computed (GPU: "vertex program"; CPU: "no vertex
@@ -120,16 +115,16 @@ void cell_table(std::ostringstream& md, const BenchResults& r) {
     for (const ModelResult& m : r.models)
         for (const CellResult& cell : m.cells) {
             std::string passes;
-            for (const auto& [pass, ms] : cell.gpu_ms) passes += format("%s%s %.2f", passes.empty() ? "" : ", ", pass.c_str(), ms);
+            for (const auto& [pass, ms] : cell.gpu_ms) passes += printf_string("%s%s %.2f", passes.empty() ? "" : ", ", pass.c_str(), ms);
             // cpu-splat submits no draws: the splat takes the CPU's list of polygons that draw.
             std::string cpu = !density_on_cpu(cell.column.path) ? "–"
                               : draws_by_splat(cell.column.path)
-                                  ? format("%.2f, –", cell.cpu_density_ms)
-                                  : format("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws);
+                                  ? printf_string("%.2f, –", cell.cpu_density_ms)
+                                  : printf_string("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws);
             md << "| " << m.entry.name << " | " << cell.column.name() << " | " << fps_text(cell.median_fps) << " | "
                << fps_text(cell.min_fps) << "–" << fps_text(cell.max_fps) << " | "
-               << format("%.2f", cell.median_frame_ms) << " | " << (passes.empty() ? "–" : passes) << " | "
-               << format("%.2f", cell.gpu_total_ms) << " | " << with_commas(cell.candidates) << " | "
+               << printf_string("%.2f", cell.median_frame_ms) << " | " << (passes.empty() ? "–" : passes) << " | "
+               << printf_string("%.2f", cell.gpu_total_ms) << " | " << with_commas(cell.candidates) << " | "
                << drawn_text(cell.drawn) << " | " << cpu << " |\n";
         }
     md << "\n";
@@ -149,11 +144,11 @@ void model_table(std::ostringstream& md, const BenchResults& r) {
     md << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModelResult& m : r.models)
         md << "| " << m.entry.name << " | " << m.entry.source << " | " << with_commas(m.entry.triangles) << " | "
-           << format("%.2f", m.load_seconds) << " | " << format("%.2f", m.generation_seconds) << " | "
+           << printf_string("%.2f", m.load_seconds) << " | " << printf_string("%.2f", m.generation_seconds) << " | "
            << with_commas(m.candidates) << " | " << drawn_text(m.drawn) << " | "
-           << format("%.1f%%", 100.0 * m.ink_fraction) << " | "
-           << format("%.1f", double(m.gpu_bytes) / (1024.0 * 1024.0)) << " | "
-           << format("%.1f (%.1f)", m.bytes_per_candidate(), m.stipple_bytes_per_candidate()) << " |\n";
+           << printf_string("%.1f%%", 100.0 * m.ink_fraction) << " | "
+           << printf_string("%.1f", double(m.gpu_bytes) / (1024.0 * 1024.0)) << " | "
+           << printf_string("%.1f (%.1f)", m.bytes_per_candidate(), m.stipple_bytes_per_candidate()) << " |\n";
     md << "\n";
 }
 
@@ -173,8 +168,8 @@ void limit_table(std::ostringstream& md, const BenchResults& r) {
         const ModelResult::LimitProbe& l = *m.limit;
         const double n = double(std::max<uint64_t>(l.culled + l.drawn, 1));
         md << "| " << m.entry.name << " | " << with_commas(l.culled) << " | " << with_commas(l.drawn) << " | "
-           << format("%.2f", l.vertex_ms) << " | " << format("%.2f", l.probe_ms) << " | " << format("%.2f×", l.ratio())
-           << " | " << format("%.0f, %.0f", 1e6 * l.vertex_ms / n, 1e6 * l.probe_ms / n) << " |\n";
+           << printf_string("%.2f", l.vertex_ms) << " | " << printf_string("%.2f", l.probe_ms) << " | " << printf_string("%.2f×", l.ratio())
+           << " | " << printf_string("%.0f, %.0f", 1e6 * l.vertex_ms / n, 1e6 * l.probe_ms / n) << " |\n";
     }
     md << "\n";
 }
@@ -192,9 +187,9 @@ std::string with_commas(uint64_t n) {
 
 std::string fps_text(double fps) {
     if (!std::isfinite(fps)) return "–";
-    if (fps >= 100.0) return format("%.0f", fps);
-    if (fps >= 10.0) return format("%.1f", fps);
-    return format("%.2f", fps);
+    if (fps >= 100.0) return printf_string("%.0f", fps);
+    if (fps >= 10.0) return printf_string("%.1f", fps);
+    return printf_string("%.2f", fps);
 }
 
 namespace {
@@ -208,12 +203,12 @@ void animated_table(std::ostringstream& md, const BenchResults& r) {
        << " vertices, splat path, standard view; animated: its \"Bend\" animation advancing 1/30 s per frame, "
           "the mesh skinned and its polygons recomputed on the GPU each frame (candidates with stretch headroom: "
        << with_commas(a.animated_candidates) << " against " << with_commas(a.static_candidates)
-       << " static; largest stretch " << format("%.2f", double(a.max_area_ratio)) << "x).\n\n";
+       << " static; largest stretch " << printf_string("%.2f", double(a.max_area_ratio)) << "x).\n\n";
     md << "| | ms/frame | fps | GPU ms | deformation GPU ms | share of the GPU frame | drawn |\n";
     md << "|---|---:|---:|---:|---:|---:|---:|\n";
-    md << format("| static | %.2f | %s | %.2f | – | – | %s |\n", a.static_frame_ms, fps_text(1000.0 / a.static_frame_ms).c_str(),
+    md << printf_string("| static | %.2f | %s | %.2f | – | – | %s |\n", a.static_frame_ms, fps_text(1000.0 / a.static_frame_ms).c_str(),
                  a.static_gpu_ms, drawn_text(a.static_drawn).c_str());
-    md << format("| animated | %.2f | %s | %.2f | %.2f | %.1f%% | %s |\n\n", a.animated_frame_ms,
+    md << printf_string("| animated | %.2f | %s | %.2f | %.2f | %.1f%% | %s |\n\n", a.animated_frame_ms,
                  fps_text(1000.0 / a.animated_frame_ms).c_str(), a.animated_gpu_ms, a.deform_gpu_ms,
                  100.0 * a.deform_share(), drawn_text(a.animated_drawn).c_str());
 }

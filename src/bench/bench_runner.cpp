@@ -1,3 +1,4 @@
+#include "core/printf_string.hpp"
 #include "bench/bench_runner.hpp"
 
 #include "bench/animated_row.hpp"
@@ -24,12 +25,6 @@
 namespace stipple::bench {
 
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[1024];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 std::string utc_now() {
     std::time_t now = std::time(nullptr);
@@ -151,7 +146,7 @@ bool probed(const CellResult& cell) { return cell.column == Column{DensityPath::
 
 std::string passes_text(const CellResult& cell) {
     std::string text;
-    for (const auto& [pass, ms] : cell.gpu_ms) text += format(" %s %.2f", pass.c_str(), ms);
+    for (const auto& [pass, ms] : cell.gpu_ms) text += printf_string(" %s %.2f", pass.c_str(), ms);
     return text.empty() ? " (no timestamps)" : text;
 }
 
@@ -183,7 +178,7 @@ std::string look_note(const ModelResult& model) {
     bool drawn_ok = model.drawn >= 50'000 && model.drawn <= 150'000;
     bool ink_ok = model.ink_fraction >= 0.15 && model.ink_fraction <= 0.35;
     if (drawn_ok && ink_ok) return "";
-    return format("the bunny's standard frame holds %lld drawn stipples and %.1f%% ink inside its footprint; "
+    return printf_string("the bunny's standard frame holds %lld drawn stipples and %.1f%% ink inside its footprint; "
                   "the default look should give 50k-150k and 15-35%%",
                   (long long)model.drawn, 100.0 * model.ink_fraction);
 }
@@ -223,7 +218,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
     OffscreenTarget& target = *target_holder;
     auto probe_holder = std::make_unique<LimitProbe>(context, extent);
-    log(format("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
+    log(printf_string("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));
 
@@ -241,7 +236,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
         const FrameView view = standard_view(compute_bounding_sphere(mesh), extent);
 
         count_frames(context, target, mesh, stipples, view, options, results.columns, model);
-        log(format("%s: %zu triangles (%s); load %.2f s, stipple generation %.2f s; %llu candidates, "
+        log(printf_string("%s: %zu triangles (%s); load %.2f s, stipple generation %.2f s; %llu candidates, "
                    "%lld drawn, ink %.1f%% of %llu covered pixels",
                    entry.name.c_str(), mesh.triangle_count(), entry.source.c_str(), model.load_seconds,
                    model.generation_seconds, (unsigned long long)model.candidates, (long long)model.drawn,
@@ -286,22 +281,22 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                 model.limit = std::move(limit);
             }
             if (row) cell.paper_fps = paper_fps(*row, cell.column);
-            std::string paper = cell.paper_fps ? format(" (paper %.2f, x%.2f)", *cell.paper_fps,
+            std::string paper = cell.paper_fps ? printf_string(" (paper %.2f, x%.2f)", *cell.paper_fps,
                                                         cell.median_fps / *cell.paper_fps)
                                                : std::string();
-            log(format("  %-18s %8.2f fps%s, min-max %.2f-%.2f; gpu ms:%s; drawn %lld of %llu",
+            log(printf_string("  %-18s %8.2f fps%s, min-max %.2f-%.2f; gpu ms:%s; drawn %lld of %llu",
                        cell.column.name().c_str(), cell.median_fps, paper.c_str(), cell.min_fps, cell.max_fps,
                        passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
         }
         if (model.limit)
-            log(format("  limit probe: %llu culled + %llu drawn points in %.2f ms; the vertex path's stipple pass %.2f ms "
+            log(printf_string("  limit probe: %llu culled + %llu drawn points in %.2f ms; the vertex path's stipple pass %.2f ms "
                        "= %.2fx the limit",
                        (unsigned long long)model.limit->culled, (unsigned long long)model.limit->drawn,
                        model.limit->probe_ms, model.limit->vertex_ms, model.limit->ratio()));
         std::string by_path;
         for (const auto& [path, bytes] : model.gpu_bytes_by_path)
-            by_path += format(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);
-        log(format("  GPU memory (%s path): %.1f MiB, %.1f bytes per candidate (%.1f without the mesh); by path:%s",
+            by_path += printf_string(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);
+        log(printf_string("  GPU memory (%s path): %.1f MiB, %.1f bytes per candidate (%.1f without the mesh); by path:%s",
                    density_path_name(kMemoryPath), double(model.gpu_bytes) / (1024.0 * 1024.0),
                    model.bytes_per_candidate(), model.stipple_bytes_per_candidate(), by_path.c_str()));
         results.models.push_back(std::move(model));

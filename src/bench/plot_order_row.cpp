@@ -1,4 +1,5 @@
 // The plot-order row as Markdown (the JSON is written with the rest in bench_json.cpp).
+#include "core/printf_string.hpp"
 #include "bench/plot_order_row.hpp"
 
 #include <cstdio>
@@ -6,16 +7,6 @@
 #include "bench/bench_output.hpp"
 
 namespace stipple::bench {
-
-namespace {
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
-
-}  // namespace
 
 std::string plot_order_markdown(const PlotOrderRow& row) {
     std::string md = "## Plot order (pen plotters)\n\n";
@@ -28,12 +19,12 @@ std::string plot_order_markdown(const PlotOrderRow& row) {
     md += "|---|---:|---:|---:|---:|\n";
     if (row.blue_noise) {
         const PlotOrderFigures& f = *row.blue_noise;
-        md += format("| blue noise, A4 | %s | %.3f | %.3f | %.1f |\n", with_commas(f.dots).c_str(), f.order_seconds,
+        md += printf_string("| blue noise, A4 | %s | %.3f | %.3f | %.1f |\n", with_commas(f.dots).c_str(), f.order_seconds,
                      f.travel_ratio, f.random_ratio);
     }
     if (row.bunny_view) {
         const PlotOrderFigures& f = *row.bunny_view;
-        md += format("| bunny, default view (captured in %.2f s) | %s | %.3f | %.3f | – |\n", f.capture_seconds,
+        md += printf_string("| bunny, default view (captured in %.2f s) | %s | %.3f | %.3f | – |\n", f.capture_seconds,
                      with_commas(f.dots).c_str(), f.order_seconds, f.travel_ratio);
     } else {
         md += "| bunny, default view | – | – | – | – |\n";

@@ -1,3 +1,4 @@
+#include "core/printf_string.hpp"
 #include "cli/cmd_bench_plot.hpp"
 
 #include <cstdio>
@@ -15,12 +16,6 @@
 namespace stipple::cli {
 
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, fmt, args...);
-    return buffer;
-}
 
 // What `stipple render bunny.obj -o x.svg` plans: the frame's visible stipples on an A4 page.
 bench::PlotOrderFigures bunny_plot(const std::filesystem::path& model, uint32_t width, uint32_t height, int device,
@@ -61,7 +56,7 @@ bench::PlotOrderRow measure_plot_order_row(size_t dots, bool bunny_view, const s
     const plot::OrderSpeed speed = plot::measure_order_speed(dots);
     row.blue_noise = bench::PlotOrderFigures{speed.points.size(), speed.plot_order_s, speed.ratio(),
                                              speed.bound_mm > 0.0 ? speed.random_mm / speed.bound_mm : 0.0, 0.0};
-    log(format("plot order: %zu blue-noise dots ordered in %.3f s, pen-up travel %.3f x its lower bound (random order %.1f x)",
+    log(printf_string("plot order: %zu blue-noise dots ordered in %.3f s, pen-up travel %.3f x its lower bound (random order %.1f x)",
                row.blue_noise->dots, row.blue_noise->order_seconds, row.blue_noise->travel_ratio,
                row.blue_noise->random_ratio));
     if (!bunny_view) {
@@ -76,7 +71,7 @@ bench::PlotOrderRow measure_plot_order_row(size_t dots, bool bunny_view, const s
     }
     row.bunny_view = bunny_plot(bunny, width, height, device, &row.validation_messages);
     const bench::PlotOrderFigures& f = *row.bunny_view;
-    log(format("plot order: the bunny's default view, %zu visible stipples (captured in %.2f s), planned in %.3f s, "
+    log(printf_string("plot order: the bunny's default view, %zu visible stipples (captured in %.2f s), planned in %.3f s, "
                "pen-up travel %.3f x its lower bound",
                f.dots, f.capture_seconds, f.order_seconds, f.travel_ratio));
     return row;
