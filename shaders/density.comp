@@ -1,6 +1,6 @@
 #version 460
 // The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon. The kListDrawn
-// variant also appends each polygon that draws a stipple to the splat's work list. For objects that
+// variant also appends the work items of each polygon that draws a stipple to the splat's work list. For objects that
 // draw lines (kFlagFacingBits) it also records which polygons face away, one bit each, so that the
 // line pass reads two bits per edge instead of evaluating both polygons again; the kFacingOnly variant
 // does only that (for objects whose densities come from the CPU).
@@ -57,19 +57,29 @@ void main() {
     float density = polygon_density(p, density_params(frame, object));
     draws[t].density = density;
     if (!kListDrawn) return;
-    // One atomic add per subgroup hands out its slots; the slot ranges tile 0, 1, 2, ..., so each
-    // range adds the workgroups of the splat's dispatch that start in it.
-    bool listed = density > 0.0f;
-    uvec4 ballot = subgroupBallot(listed);
+    // The polygon's work items: runs of kSplatChunk drawn stipples (see DrawnPolygons). Most polygons
+    // have one; one atomic add per subgroup hands out their slots. The few with more take theirs with
+    // an atomic add each. Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of the
+    // splat's dispatch that start in it.
+    uint items = (drawn_stipple_count(density, uint(candidates)) + kSplatChunk - 1u) / kSplatChunk;
+    uint first = draws[t].first_stipple;
+    const uint group = kDensityWorkgroupSize;
+    if (items > 1u) {
+        uint own = atomicAdd(drawn.count, items);
+        uint own_starts = (own + items + group - 1u) / group - (own + group - 1u) / group;
+        if (own_starts > 0u) atomicAdd(drawn.groups_x, own_starts);
+        for (uint i = 0u; i < items; ++i) drawn_polygons[own + i] = first + i * kSplatChunk;
+    }
+    bool single = items == 1u;
+    uvec4 ballot = subgroupBallot(single);
     uint listed_here = subgroupBallotBitCount(ballot);
     if (listed_here == 0u) return;
     uint base = 0u;
     if (subgroupElect()) {
         base = atomicAdd(drawn.count, listed_here);
-        const uint group = kDensityWorkgroupSize;
         uint starts = (base + listed_here + group - 1u) / group - (base + group - 1u) / group;
         if (starts > 0u) atomicAdd(drawn.groups_x, starts);
     }
     base = subgroupBroadcastFirst(base);
-    if (listed) drawn_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = t;
+    if (single) drawn_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = first;
 }

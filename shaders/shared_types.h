@@ -21,6 +21,14 @@ using uint = uint32_t;
 
 STIPPLE_CONST uint kDensityWorkgroupSize = 64;
 
+// The splat's work items: a polygon's drawn stipples in runs of at most this many, one invocation each.
+// lavapipe (gallivm) stops every loop of an invocation once it has run LP_MAX_TGSI_LOOP_ITERATIONS
+// (65535) iterations in all, silently: one invocation walking a large polygon's 10,000 stipples with
+// their pixel loops inked only the first ~3,500 (a framed 12-triangle cube read 0.08 instead of 0.27
+// ink). A run of 64 stipples costs ~6 iterations each (one-pixel to two-pixel dots), ~60 for 4x dots:
+// far under the limit. It also evens out the work of the invocations sharing a SIMD vector.
+STIPPLE_CONST uint kSplatChunk = 64;
+
 // Draw-command merging (CPU and indirect paths): consecutive polygons share one draw while each one
 // before draws all of its candidates, up to this many polygons per draw (bounds the GPU's scan).
 STIPPLE_CONST uint kMaxMergedPolygons = 256;
@@ -105,8 +113,11 @@ struct TriangleInfo {
 // The splat's work list: the polygons that draw at least one stipple this frame, appended by the
 // density pass (or written by the CPU), then the splat dispatched over them alone. Most polygons of a
 // dense mesh draw nothing (shading, probabilistic selection), so the splat skips them without a visit.
-// The header is a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the polygon count;
-// the polygon indices follow it in the same buffer.
+// Each item is a run of at most kSplatChunk drawn stipples of one polygon, named by the index of its
+// first stipple (its StippleVertex names the polygon): a polygon drawing k stipples has ceil(k /
+// kSplatChunk) items, so a list holds at most polygons + candidates / kSplatChunk of them.
+// The header is a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the item count;
+// the items follow it in the same buffer.
 struct DrawnPolygons {
     uint groups_x;
     uint groups_y;

@@ -1,8 +1,8 @@
 #version 460
 // Compute splat (beyond the paper): stipples are opaque dots that never occlude each other, so a
-// compute pass can draw them without the rasteriser. One invocation per polygon of the work list
-// (the polygons that draw this frame, listed by the density pass or the CPU) takes the polygon's
-// density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
+// compute pass can draw them without the rasteriser. One invocation per item of the work list
+// (runs of at most kSplatChunk stipples of the polygons that draw this frame, listed by the density
+// pass or the CPU) takes the polygon's density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
 // ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
 // candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
@@ -171,16 +171,18 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
 void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= drawn.count) return;
-    uint t = drawn_polygons[slot];
+    uint item = drawn_polygons[slot];  // the run's first stipple
+    uint t = stipples[item].triangle;
     TriangleDraw draw = draws[t];
     float density = draw.density;
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = frame.view_proj * object.model;
     uint candidates = (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - first;
-    uint count = drawn_stipple_count(density, candidates);
+    uint begin = item - first;
+    uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
-    for (uint k = 0u; k < count; ++k)
+    for (uint k = begin; k < end; ++k)
         splat(first + k, stipple_intensity(density, float(k)), side, model_view_proj, polygon);
 }

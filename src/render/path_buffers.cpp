@@ -34,7 +34,9 @@ const Buffer& path_buffer(const ObjectFrame& frame, PathBuffer kind) {
 
 VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBuffer kind) {
     const VkDeviceSize n = object.geometry.triangle_count;
-    const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;
+    // At most one splat work item per polygon plus one per kSplatChunk candidates (gpu::DrawnPolygons).
+    const VkDeviceSize items = n + object.geometry.stipple_count / gpu::kSplatChunk;
+    const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * items;
     switch (kind) {
         case PathBuffer::DrawnPolygons: return draws_by_splat(path) ? list : 0;
         case PathBuffer::DrawStaging:
