@@ -163,11 +163,13 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     EXPECT_EQ(sizes(), std::vector<VkDeviceSize>(std::size(kPathBuffers), placeholder)) << "the vertex path needs none";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * VkDeviceSize(object.geometry.triangle_count), placeholder,
-                                                   placeholder, placeholder}));
+    // The work list: a header, then at most one item per polygon and one per kSplatChunk candidates.
+    const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatChunk;
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder, placeholder}));
 
-    // With the splat path, what the object costs on the GPU per candidate: 8 bytes per candidate and
-    // 28 per polygon besides the mesh, so at most 16 where candidates outnumber polygons ~4 to 1.
+    // With the splat path, what the object costs on the GPU per candidate: 8.06 bytes per candidate
+    // (the stipple and its share of the work list) and 28 per polygon besides the mesh, so at most 16
+    // where candidates outnumber polygons ~4 to 1.
     VkDeviceSize bytes = object.geometry.positions.size() + object.geometry.normals.size() + object.geometry.indices.size() +
                          object.geometry.stipples.size() + object.polygons.gpu.size() + object.frame.triangle_draw.size() +
                          object.frame.debug.size() + object.frame.object_uniforms.size();
