@@ -107,20 +107,20 @@ INSTANTIATE_TEST_SUITE_P(
     Models, ToneAcrossScale,
     ::testing::Values(ToneCase{"stanford-bunny.obj", 1280, 1024}, ToneCase{"igea.ply", 1280, 1024}, ToneCase{"spot.obj", 1280, 1024},
                       ToneCase{"blobby.glb", 1280, 1024}, ToneCase{"mixed_sphere", 1280, 1024},
-                      ToneCase{"stanford-bunny.obj", 2560, 2048},
-                      // Known gaps (issue 18): thin parts (legs, tail, ears) whose outline band is a large
-                      // share of the footprint at 1/16 of the frame, the far figure 5-7% light: horse
-                      // 1.059, fox 1.077 measured. The bunny at 640x512 is 32 pixels tall at 1/16 and draws
-                      // about 40 stipples a frame: 1.064 measured, from count noise at one elevation.
-                      // The ogre measured 1.044 on the tone branch and 1.059 once merged with the lines
-                      // work (its far figure 6% dark at 30:10; not yet explained).
-                      ToneCase{"horse.ply", 1280, 1024, 1.07}, ToneCase{"fox.glb", 1280, 1024, 1.09},
-                      ToneCase{"ogre.obj", 1280, 1024, 1.07},
-                      ToneCase{"stanford-bunny.obj", 640, 512, 1.075},
-                      // Printed only: the cube's 12 triangles hold ~68k candidates each and the first
-                      // of them overlap heavily (ink / unshared ink 0.28 framed, `stipple tone --regimes`):
-                      // framed it reads 0.09-0.11 against 0.24-0.31 from 2x on, a generation matter.
-                      ToneCase{"AnimatedMorphCube.gltf", 1280, 1024, 0.0}),
+                      ToneCase{"stanford-bunny.obj", 2560, 2048}, ToneCase{"stanford-bunny.obj", 640, 512},
+                      ToneCase{"horse.ply", 1280, 1024}, ToneCase{"fox.glb", 1280, 1024},
+                      // 12 triangles of ~68k candidates each: thousands of stipples per polygon when framed
+                      // (the splat's work items, kSplatChunk).
+                      ToneCase{"AnimatedMorphCube.gltf", 1280, 1024},
+                      // Known gap (issue 18): the ogre's far figure is 4-6% darker (1.059 measured). Per
+                      // regime it draws what it owes (`stipple tone --regimes`: drawn/owed 0.99-1.00);
+                      // the extra ink follows the depth pass's slope-scaled polygon offset, which lets
+                      // more drawn stipples through at 1/16 (ink per drawn stipple 0.80 against 0.77
+                      // framed; with half the slope bias it is flat, 0.72-0.73, and the figure 1.035,
+                      // but 6% of the ink is then lost at every size to the dots' own surface): most
+                      // likely surfaces just behind its many occluding parts, a band of constant pixel
+                      // width whose share grows as the object shrinks.
+                      ToneCase{"ogre.obj", 1280, 1024, 1.07}),
     [](const ::testing::TestParamInfo<ToneCase>& info) {
         std::string name = info.param.model;
         name = name.substr(0, name.find('.'));
