@@ -1,7 +1,7 @@
 #version 460
 // The per-frame density of every polygon (§2.1-2.3, §3.2), one invocation per polygon. The kListDrawn
-// variant also appends the work items of each polygon that draws a stipple to the splat's work list. For objects that
-// draw lines (kFlagFacingBits) it also records which polygons face away, one bit each, so that the
+// variant also appends the work items of each polygon that draws a stipple to the splat's work
+// list. For objects that draw lines (kFlagFacingBits) it also records which polygons face away, one bit each, so that the
 // line pass reads two bits per edge instead of evaluating both polygons again; the kFacingOnly variant
 // does only that (for objects whose densities come from the CPU).
 #extension GL_GOOGLE_include_directive : require
@@ -39,6 +39,15 @@ void write_facing_bits(bool in_range, PolygonView p) {
     if (local < kWordsPerGroup && word < (object.flags.y + 31u) / 32u) facing_away[word] = group_facing[local];
 }
 
+// n consecutive slots of the work list; the splat's dispatch gains the workgroups that start in them.
+uint claim_slots(uint n) {
+    const uint group = kDensityWorkgroupSize;
+    uint base = atomicAdd(drawn.count, n);
+    uint starts = (base + n + group - 1u) / group - (base + group - 1u) / group;
+    if (starts > 0u) atomicAdd(drawn.groups_x, starts);
+    return base;
+}
+
 void main() {
     uint t = gl_GlobalInvocationID.x;
     bool in_range = t < object.flags.y;
@@ -63,11 +72,8 @@ void main() {
     // splat's dispatch that start in it.
     uint items = (drawn_stipple_count(density, uint(candidates)) + kSplatChunk - 1u) / kSplatChunk;
     uint first = draws[t].first_stipple;
-    const uint group = kDensityWorkgroupSize;
     if (items > 1u) {
-        uint own = atomicAdd(drawn.count, items);
-        uint own_starts = (own + items + group - 1u) / group - (own + group - 1u) / group;
-        if (own_starts > 0u) atomicAdd(drawn.groups_x, own_starts);
+        uint own = claim_slots(items);
         for (uint i = 0u; i < items; ++i) drawn_polygons[own + i] = first + i * kSplatChunk;
     }
     bool single = items == 1u;
@@ -75,11 +81,7 @@ void main() {
     uint listed_here = subgroupBallotBitCount(ballot);
     if (listed_here == 0u) return;
     uint base = 0u;
-    if (subgroupElect()) {
-        base = atomicAdd(drawn.count, listed_here);
-        uint starts = (base + listed_here + group - 1u) / group - (base + group - 1u) / group;
-        if (starts > 0u) atomicAdd(drawn.groups_x, starts);
-    }
+    if (subgroupElect()) base = claim_slots(listed_here);
     base = subgroupBroadcastFirst(base);
     if (single) drawn_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = first;
 }

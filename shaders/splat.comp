@@ -2,8 +2,8 @@
 // Compute splat (beyond the paper): stipples are opaque dots that never occlude each other, so a
 // compute pass can draw them without the rasteriser. One invocation per item of the work list
 // (runs of at most kSplatChunk stipples of the polygons that draw this frame, listed by the density
-// pass or the CPU) takes the polygon's density (the density pass's, §2.1-2.3, or the CPU's), walks only its drawn stipples (index <
-// ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
+// pass or the CPU) takes the polygon's density (the density pass's, §2.1-2.3, or the CPU's), walks
+// its run of the drawn stipples (index < ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
 // candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.

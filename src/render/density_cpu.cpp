@@ -60,13 +60,13 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     if (draws_by_splat(object.params.density_path)) {
         auto* list = reinterpret_cast<uint32_t*>(static_cast<std::byte*>(state.draw_staging.mapped()) +
                                                  staged_list_offset(object));
-        uint32_t* polygons = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
+        uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
         uint32_t count = 0;  // work items: runs of kSplatChunk drawn stipples (gpu::DrawnPolygons)
         for (uint32_t t = 0; t < geometry.triangle_count; ++t) {
             if (!(densities[t] > 0.0f)) continue;
             const uint32_t first = geometry.first_stipple[t];
             const uint32_t drawn = formulas::drawn_stipple_count(densities[t], geometry.first_stipple[t + 1] - first);
-            for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) polygons[count++] = first + k;
+            for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) items[count++] = first + k;
         }
         const uint32_t group = gpu::kDensityWorkgroupSize;
         const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};
