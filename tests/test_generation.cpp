@@ -140,6 +140,16 @@ TEST(Generation, Deterministic) {
     set_worker_count(0);
     EXPECT_TRUE(same_positions(a, serial));
     EXPECT_TRUE(same_positions(a, three));
+    // Also where large triangles are ordered in pieces (two triangles of ~20k stipples each).
+    GenerationParams quad_params;
+    quad_params.dmax = 0.05f;
+    const Mesh quad = make_grid(1);
+    const StippleSet quad_default = generate_stipples(quad, quad_params);
+    set_worker_count(1);
+    const StippleSet quad_serial = generate_stipples(quad, quad_params);
+    set_worker_count(0);
+    EXPECT_GT(quad_default.count(0), 10000u);
+    EXPECT_TRUE(same_positions(quad_default, quad_serial));
     params.seed = 2;
     const StippleSet c = generate_stipples(mesh, params);
     EXPECT_EQ(a.first, c.first);  // counts depend on areas only

@@ -14,7 +14,10 @@
 namespace stipple::cache_format {
 
 inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
-inline constexpr uint32_t kVersion = 4;  // 3: compressed barycentric entries with checksums; 4: selection values uniform per area class
+// 3: compressed barycentric entries with checksums; 4: selection values uniform per area class;
+// 5: generation with two buckets per point in the grids and large triangles ordered in pieces
+// (same kind of stipples, other positions for the same parameters)
+inline constexpr uint32_t kVersion = 5;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {
