@@ -114,12 +114,15 @@ public:
         const float far = std::numeric_limits<float>::max();
         xs_.assign(n + kPad, far), ys_.assign(n + kPad, far), zs_.assign(n + kPad, far);
         index_.resize(n);
-        fill_.assign(start_.begin(), start_.end() - 1);
+        // Scatter with start_[b] as bucket b's cursor, which leaves it at bucket b's end (the next
+        // bucket's start); one shift puts the starts back. No cursor array of bucket-table size.
         for (size_t i = 0; i < n; ++i) {
-            const uint32_t slot = fill_[bucket_of_point_[i]]++;
+            const uint32_t slot = start_[bucket_of_point_[i]]++;
             xs_[slot] = points[i].x, ys_[slot] = points[i].y, zs_[slot] = points[i].z;
             index_[slot] = static_cast<uint32_t>(i);
         }
+        for (size_t b = start_.size() - 1; b > 0; --b) start_[b] = start_[b - 1];
+        start_[0] = 0;
     }
 
     glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
@@ -177,7 +180,7 @@ private:
     std::vector<uint32_t> start_;  // bucket b's points are slots [start_[b], start_[b+1])
     std::vector<float> xs_, ys_, zs_;
     std::vector<uint32_t> index_;
-    std::vector<uint32_t> bucket_of_point_, fill_;  // scratch of build()
+    std::vector<uint32_t> bucket_of_point_;  // scratch of build()
 };
 
 }  // namespace stipple

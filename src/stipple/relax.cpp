@@ -226,39 +226,34 @@ void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std
     }
 
     static const RepulsionKernel kernel = pick_kernel();
-    std::vector<glm::vec3> force(n);
     for (int it = 0; it < iterations; ++it) {
         // Jacobi: every force comes from the positions of the previous iteration (the grid holds
-        // a copy), so the order in which chunks run cannot matter.
+        // a copy), so each stipple can move as soon as its force is known, and the order in which
+        // chunks run cannot matter.
         grid.build(pos, h);
 
-        // Phase 1: forces, bucket by bucket (spatial order). Consecutive points of the same cell
-        // share one gathered set of candidates.
+        // Bucket by bucket (spatial order). Consecutive points of the same cell share one gathered
+        // set of candidates. Each stipple moves within its triangle's plane and stays inside it.
         parallel_for_chunks(grid.bucket_count(), 2048, [&](size_t, size_t begin, size_t end) {
             PointGrid::Run runs[27];
             Candidates candidates;
             glm::ivec3 gathered(INT32_MIN);
+            uint32_t current = UINT32_MAX;
+            TriangleFrame f{};
             for (size_t b = begin; b < end; ++b) {
                 for (uint32_t slot = grid.bucket_begin(uint32_t(b)); slot < grid.bucket_end(uint32_t(b)); ++slot) {
                     const glm::vec3 p = grid.sorted_position(slot);
                     const glm::ivec3 cell = grid.cell_of(p);
                     if (cell != gathered) gathered = cell, candidates.gather(grid, runs, grid.neighbor_runs(cell, runs));
-                    force[grid.sorted_index(slot)] = kernel(p, candidates, h);
+                    const glm::vec3 force = kernel(p, candidates, h);
+                    const uint32_t i = grid.sorted_index(slot);
+                    if (tri[i] != current) current = tri[i], f = frame_of(mesh, current);
+                    glm::vec3 step = force - f.n * glm::dot(f.n, force);
+                    step *= kStep * s;
+                    const float len = glm::length(step);
+                    if (len > kMaxStep * s) step *= kMaxStep * s / len;
+                    pos[i] = clamp_into_triangle(p + step, f.a, f.b, f.c);
                 }
-            }
-        });
-
-        // Phase 2: move each stipple within its triangle's plane and keep it inside the triangle.
-        parallel_for_chunks(n, 8192, [&](size_t, size_t begin, size_t end) {
-            uint32_t current = UINT32_MAX;
-            TriangleFrame f{};
-            for (size_t i = begin; i < end; ++i) {
-                if (tri[i] != current) current = tri[i], f = frame_of(mesh, current);
-                glm::vec3 step = force[i] - f.n * glm::dot(f.n, force[i]);
-                step *= kStep * s;
-                const float len = glm::length(step);
-                if (len > kMaxStep * s) step *= kMaxStep * s / len;
-                pos[i] = clamp_into_triangle(pos[i] + step, f.a, f.b, f.c);
             }
         });
         if (progress) progress(double(it + 1) / iterations);
