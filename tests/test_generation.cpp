@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "mesh/primitives.hpp"
+#include "stipple/progressive_order.hpp"
 #include "stipple/quality.hpp"
 #include "stipple/relax.hpp"
 #include "stipple/stipple_set.hpp"
@@ -157,6 +158,67 @@ TEST(Generation, Deterministic) {
     for (size_t i = 0; i < a.size(); ++i) differ += a.positions[i] != c.positions[i];
     std::printf("seed 1 vs 2: %zu of %zu stipples differ\n", differ, a.size());
     EXPECT_GT(differ, a.size() * 9 / 10);
+}
+
+// The progressive order is the greedy of progressive_order.hpp, exactly: on a mesh small enough for
+// one slab and with at most 16 stipples per triangle (every remaining stipple a candidate), a
+// brute-force reading of the definition gives the same order, bit for bit. The implementation gets
+// there differently (placed stipples push their distance to their neighbours within the search
+// radius of their own time), so this is what shows the shortcut exact.
+TEST(Generation, ProgressiveOrderIsTheGreedyOfItsDefinition) {
+    const Mesh mesh = make_icosphere(1);  // 80 triangles
+    const size_t triangles = mesh.triangle_count();
+    std::vector<uint32_t> first(triangles + 1, 0);
+    std::vector<glm::vec3> positions;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t count = 1 + uint32_t(t * 7 % 16);  // 1..16 stipples, several counts sharing taus
+        const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+                        c = mesh.positions[mesh.indices[3 * t + 2]];
+        for (uint32_t k = 0; k < count; ++k) {
+            const float r = std::sqrt(u(rng)), v = u(rng);
+            positions.push_back((1 - r) * a + r * (1 - v) * b + r * v * c);
+        }
+        first[t + 1] = first[t] + count;
+    }
+    const double spacing = 0.15;  // 12 spacings exceed the sphere: one slab
+    std::vector<glm::vec3> ordered = positions;
+    progressive_order(ordered, first, spacing, 1);
+
+    // Reference: slots by (tau, triangle); each takes the first remaining stipple (in a list kept by
+    // swapping the chosen one to the front) with the largest min(s(tau)^2, squared distance to every
+    // stipple placed so far).
+    struct Slot {
+        double tau;
+        uint32_t triangle, k;
+    };
+    std::vector<Slot> slots;
+    for (uint32_t t = 0; t < triangles; ++t)
+        for (uint32_t k = 0; k < first[t + 1] - first[t]; ++k) slots.push_back({(k + 0.5) / (first[t + 1] - first[t]), t, k});
+    std::stable_sort(slots.begin(), slots.end(), [](const Slot& x, const Slot& y) {
+        return x.tau < y.tau || (x.tau == y.tau && x.triangle < y.triangle);
+    });
+    std::vector<glm::vec3> reference = positions, placed;
+    for (const Slot& slot : slots) {
+        const uint32_t base = first[slot.triangle] + slot.k, end = first[slot.triangle + 1];
+        const float s = static_cast<float>(std::min(1.5 / std::sqrt(slot.tau), 12.0) * spacing);
+        uint32_t chosen = base;
+        float best = -1.0f;
+        for (uint32_t i = base; i < end; ++i) {
+            float d2 = s * s;
+            for (const glm::vec3& q : placed) {
+                const float dx = reference[i].x - q.x, dy = reference[i].y - q.y, dz = reference[i].z - q.z;
+                d2 = std::min(d2, (dx * dx + dy * dy) + dz * dz);
+            }
+            if (d2 > best) best = d2, chosen = i;
+        }
+        std::swap(reference[base], reference[chosen]);
+        placed.push_back(reference[base]);
+    }
+    size_t differ = 0;
+    for (size_t i = 0; i < positions.size(); ++i) differ += std::memcmp(&ordered[i], &reference[i], sizeof(glm::vec3)) != 0;
+    EXPECT_EQ(differ, 0u) << "of " << positions.size() << " stipples";
 }
 
 TEST(Generation, ZeroAreaTrianglesGetNoStipples) {
