@@ -98,8 +98,8 @@ TEST(Generation, DistributionQualityFullAndPrefix) {
                 mesh.triangle_count(), set.size(), double(set.size()) / mesh.triangle_count(),
                 set.generation_seconds, set.size() / set.generation_seconds);
     std::printf("delta-bar full %.3f, prefix f=0.25 (%zu stipples) %.3f\n", full, quarter.size(), prefix);
-    EXPECT_GE(full, 0.75);
-    EXPECT_GE(prefix, 0.65);
+    EXPECT_GE(full, 0.83);  // 0.838 measured (issue 18 asks 0.85)
+    EXPECT_GE(prefix, 0.68);  // 0.699: one stipple of each triangle's ~4 (issue 18 asks 0.80)
     // The prefix keeps, in every triangle, the stipples with k + 0.5 < f N_t: ceil(f N_t - 0.5) of them.
     size_t expected = 0;
     for (size_t t = 0; t < mesh.triangle_count(); ++t)
@@ -113,16 +113,17 @@ TEST(Generation, RelaxationImprovesSpread) {
     GenerationParams params;
     params.dmax = dmax_for(60000);
     params.relax_iterations = 0;
-    const StippleSet random = generate_stipples(mesh, params);
+    const StippleSet initial = generate_stipples(mesh, params);
     params.relax_iterations = 6;
     const StippleSet relaxed = generate_stipples(mesh, params);
     const double area = total_area(mesh);
-    const double before = normalized_nn_distance(random.positions, area);
+    const double before = normalized_nn_distance(initial.positions, area);
     const double after = normalized_nn_distance(relaxed.positions, area);
-    std::printf("delta-bar random %.3f, relaxed (6 iterations) %.3f\n", before, after);
+    // Stratified within each triangle, but triangles of ~4 stipples clump along shared edges.
+    std::printf("delta-bar stratified (no relaxation) %.3f, relaxed (6 iterations) %.3f\n", before, after);
     EXPECT_LT(before, 0.6);
-    EXPECT_GE(after, 0.75);
-    EXPECT_EQ(random.size(), relaxed.size());
+    EXPECT_GE(after, 0.80);
+    EXPECT_EQ(initial.size(), relaxed.size());
 }
 
 TEST(Generation, Deterministic) {
@@ -254,8 +255,8 @@ TEST(Generation, StipplesInsideTheirTriangles) {
     // Even across a shared edge the big triangles' stipples stay apart: the quality holds.
     std::printf("quad: delta-bar full %.3f, prefix f=0.1 %.3f\n", normalized_nn_distance(big.positions, 4.0),
                 normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0));
-    EXPECT_GE(normalized_nn_distance(big.positions, 4.0), 0.75);
-    EXPECT_GE(normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0), 0.65);
+    EXPECT_GE(normalized_nn_distance(big.positions, 4.0), 0.85);                  // 0.866 measured
+    EXPECT_GE(normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0), 0.73);  // 0.758 measured
 }
 
 TEST(Generation, BudgetLimitsTheCount) {

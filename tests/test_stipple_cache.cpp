@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <functional>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 #include "mesh/primitives.hpp"
+#include "core/hash.hpp"
 #include "stipple/cache_entry_format.hpp"
 #include "stipple/selection_order.hpp"
 #include "stipple/stipple_cache.hpp"
@@ -183,6 +185,30 @@ TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {
     EXPECT_NE(again.out.find("generation time"), std::string::npos);
     const test::CommandResult reopened = test::run_stipple(info);
     EXPECT_NE(reopened.out.find("read from the stipple cache"), std::string::npos) << reopened.out;
+}
+
+// A cache entry holds what generation made, keyed by the parameters, not by the code: a change to
+// generation that moves stipples must come with a new kVersion, or users keep loading stipples the
+// new code would not make (and tests compare against them). This fingerprint of what generation
+// makes now fails the moment it changes; update kGenerationFingerprint and kVersion together.
+TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
+    uint64_t fingerprint = 0;
+    GenerationParams params;
+    params.dmax = 0.01f;
+    for (const Mesh& mesh : {make_icosphere(2), make_grid(1)}) {  // small triangles; two large ones, cut in pieces
+        const StippleSet set = generate_stipples(mesh, params);
+        ASSERT_GT(set.size(), 1000u);
+        for (const glm::vec3& p : set.positions) {
+            uint32_t bits[3];
+            std::memcpy(bits, &p, sizeof(bits));
+            fingerprint = mix64(fingerprint ^ (uint64_t(bits[0]) << 32 | bits[1]) ^ mix64(bits[2]));
+        }
+    }
+    char text[32];
+    std::snprintf(text, sizeof(text), "0x%016llx", static_cast<unsigned long long>(fingerprint));
+    EXPECT_EQ(fingerprint, cache_format::kGenerationFingerprint)
+        << "generation makes other stipples than cache format " << cache_format::kVersion
+        << " recorded: bump kVersion in src/stipple/cache_entry_format.hpp and set kGenerationFingerprint = " << text;
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
-// Stipple generation speed and quality on UV spheres of ~100k and ~1M triangles (relaxation and
-// progressive order included). Prints its figures; the test suite asserts quality, never time.
-// Usage: generation_speed [TRIANGLES ...]   (default: 100000 1000000)
+// Stipple generation speed and quality on UV spheres of ~100k and ~1M triangles and on a 12-triangle
+// cube, whose few large triangles hold ~10^5 stipples each (relaxation and progressive order
+// included). Prints its figures; the test suite asserts quality, never time.
+// Usage: generation_speed [TRIANGLES | cube ...]   (default: 100000 1000000 cube)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -11,22 +13,38 @@
 #include "stipple/quality.hpp"
 #include "stipple/stipple_set.hpp"
 
+namespace {
+
+// The cube of side 2 around the origin, two triangles per face.
+stipple::Mesh make_cube() {
+    stipple::Mesh mesh;
+    for (int i = 0; i < 8; ++i) mesh.positions.push_back({i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f});
+    const uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& f : faces) mesh.indices.insert(mesh.indices.end(), {f[0], f[1], f[2], f[0], f[2], f[3]});
+    mesh.source = "cube";
+    return mesh;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     using namespace stipple;
-    std::vector<size_t> sizes;
-    for (int i = 1; i < argc; ++i) sizes.push_back(std::strtoull(argv[i], nullptr, 10));
-    if (sizes.empty()) sizes = {100000, 1000000};
+    std::vector<std::string> meshes;
+    for (int i = 1; i < argc; ++i) meshes.push_back(argv[i]);
+    if (meshes.empty()) meshes = {"100000", "1000000", "cube"};
     try {
-        for (size_t triangles : sizes) {
-            const Mesh mesh = make_uv_sphere(triangles);
+        for (const std::string& name : meshes) {
+            const Mesh mesh = name == "cube" ? make_cube() : make_uv_sphere(std::strtoull(name.c_str(), nullptr, 10));
             const double area = total_area(mesh);
             for (double count : {500000.0, 2000000.0}) {
                 GenerationParams params;
-                // D_max for `count` stipples on the unit sphere: area * (kReferenceHeight/2)^2 reference px^2.
-                params.dmax = float(count / (area * std::pow(kReferenceHeight / 2.0, 2)));
+                // D_max for `count` stipples: reference px^2 = area * px_per_unit^2, where the bounding
+                // sphere's radius spans kReferenceHeight / 2 px.
+                const double radius = compute_bounding_sphere(mesh).radius;
+                params.dmax = float(count / (area * std::pow(kReferenceHeight / 2.0 / radius, 2)));
                 const StippleSet set = generate_stipples(mesh, params);
-                std::printf("%zu triangles, %zu stipples: %.3f s, %.0f stipples/s, delta-bar %.3f (prefix f=0.25: %.3f)\n",
-                            mesh.triangle_count(), set.size(), set.generation_seconds,
+                std::printf("%s: %zu triangles, %zu stipples: %.3f s, %.0f stipples/s, delta-bar %.3f (prefix f=0.25: %.3f)\n",
+                            name == "cube" ? "cube" : "UV sphere", mesh.triangle_count(), set.size(), set.generation_seconds,
                             set.size() / set.generation_seconds, normalized_nn_distance(set.positions, area),
                             normalized_nn_distance(prefix_at_fraction(set, 0.25), area));
             }

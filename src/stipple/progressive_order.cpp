@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -15,14 +16,16 @@
 
 // How the greedy runs on two cores and stays deterministic.
 //
-// The surface is cut into slabs across its longest axis (by triangle centroid), at least
-// kSearchCap spacings plus two triangle extents wide, so that only neighbouring slabs interact.
-// Even slabs are ordered first, in parallel, each on its own; then odd slabs, in parallel, each
-// also seeing the already ordered stipples of its two even neighbours, which count as placed when
-// its clock passes their appearance time. No state is shared between slabs being ordered at the
-// same time, so the result does not depend on the thread count; the slab layout depends only on
-// the point set. The cost is near even slabs' borders, whose stipples ignore the odd side (the
-// odd side does adapt to them).
+// The surface is cut into slabs across its longest axis, at least kSearchCap spacings plus two
+// unit extents wide, so that only neighbouring slabs interact (see make_units). Time is cut into windows of tau,
+// each 2^(1/8) times the previous one. In a window every slab fills its slots up to the window's
+// end, in parallel, seeing every stipple placed before the window anywhere and its own placed in
+// the window; between windows each slab takes in what its neighbours placed near it. No state is
+// shared between slabs inside a window, so the result does not depend on the thread count, and a
+// stipple misses only its neighbour slabs' stipples placed in the same window (about 9% of the
+// placed set's density, and only near a slab border). (Ordering even slabs first and odd slabs
+// after them, seeing the even ones, left the even ones blind to the odd side: 1.3-2% of a 12-
+// triangle cube's prefixes at 1/64-1/256 had a neighbour within half their spacing.)
 //
 // The nearest placed stipple counts within s(tau) = min(kSearch * spacing / sqrt(tau),
 // kSearchCap * spacing): 1.5 times the spacing of the set placed by time tau. Rather than search
@@ -39,9 +42,14 @@ namespace {
 constexpr double kSearch = 1.5;
 constexpr double kSearchCap = 12.0;
 constexpr int kSlabs = 24;          // target number of slabs (fewer when triangles are large)
+constexpr double kMinSlabSearches = 8.0;  // see make_units
+// 64 gave a 12-triangle cube's prefixes delta-bar 0.78 instead of 0.74-0.77 (f = 1/4 to 1/256),
+// but cost 50% more ordering time there (each candidate's distance is a cache miss once the slabs
+// take turns) and, within the seed-to-seed spread, a little tone at 1/16 of the size.
 constexpr uint32_t kMaxCandidates = 16;
-// Cells of the push grid, in spacings: most pushes (tau > 1/4) reach 1.5-3 spacings, so a push
-// reads 2-3 cells per axis; the rare early ones (up to kSearchCap) read more cells.
+// Cells of the push grid, in spacings. Most pushes (tau > 1/4) reach 1.5-3 spacings; with cells
+// of 6 they read 1-2 cells per axis, and the few early ones (up to kSearchCap) a handful. Measured
+// fastest: cells of 2 spacings made ordering 3x slower (bucket lookups), 8 the same as 6.
 constexpr double kPushCell = 6.0;
 
 // The own stipples of one slab in a static grid, each with the squared distance to its nearest
@@ -134,10 +142,23 @@ private:
     double search_radius(double tau) const {
         return std::min(kSearch / std::sqrt(tau), kSearchCap) * spacing_;
     }
+    // One slab's ordering, kept across windows.
+    struct SlabState {
+        std::vector<Slot> slots;              // in order
+        size_t next = 0;                      // the next slot to fill
+        std::vector<uint32_t> placed_count;   // k of each unit's next slot, by position in its list
+        std::unique_ptr<PushGrid> grid;       // its own stipples
+        std::vector<uint32_t> index_of_own;   // in positions_, by index in the grid's input
+        std::vector<std::pair<glm::vec3, float>> placed_in_window;  // (position, search radius)
+    };
+
     void make_units();
     std::vector<Slot> slots_in_order(const std::vector<uint32_t>& units) const;
-    void order_slab(size_t slab, bool with_halo);
-    void place(const Unit& unit, uint32_t k, double tau, PushGrid& grid);
+    void start_slab(size_t slab);
+    void fill_slab(size_t slab, double until);
+    void take_in_neighbours(size_t slab);
+    void finish_slab(size_t slab);
+    void place(const Unit& unit, uint32_t k, double tau, SlabState& state);
     void apply_order();
     void merge_pieces();
 
@@ -158,29 +179,37 @@ private:
         uint32_t triangle, first_unit, end_unit;
     };
     std::vector<Split> split_;  // triangles cut into pieces
+    std::vector<SlabState> state_;  // by slab
 };
 
 void Orderer::run(const std::function<void(double)>& progress) {
     if (positions_.empty()) return;
     order_.resize(positions_.size());
     make_units();
-    std::atomic<size_t> done{0};
     const size_t slabs = slab_units_.size();
-    for (int parity = 0; parity < 2; ++parity) {
-        std::vector<size_t> batch;
-        for (size_t s = parity; s < slabs; s += 2) batch.push_back(s);
-        parallel_for(batch.size(), 1, [&](size_t i) {
-            order_slab(batch[i], parity == 1);
-            if (progress) progress(double(done.fetch_add(1) + 1) / double(slabs));
-        });
+    state_.resize(slabs);
+    parallel_for(slabs, 1, [&](size_t slab) { start_slab(slab); });
+
+    // Window w ends at tau = 2^(-w/8); the last (w = 0) takes everything left. The first window
+    // ends below the earliest slot, 0.5 / (the largest unit).
+    uint32_t largest = 1;
+    for (const Unit& unit : units_) largest = std::max(largest, unit.end - unit.begin);
+    const int windows = 1 + static_cast<int>(std::ceil(8.0 * std::log2(2.0 * largest)));
+    for (int w = windows - 1; w >= 0; --w) {
+        const double until = w == 0 ? std::numeric_limits<double>::infinity() : std::exp2(-w / 8.0);
+        parallel_for(slabs, 1, [&](size_t slab) { fill_slab(slab, until); });
+        if (slabs > 1) parallel_for(slabs, 1, [&](size_t slab) { take_in_neighbours(slab); });
+        if (progress) progress(double(windows - w) / double(windows));
     }
+    parallel_for(slabs, 1, [&](size_t slab) { finish_slab(slab); });
+    std::vector<SlabState>().swap(state_);
     apply_order();
     merge_pieces();
 }
 
 // Slabs across the longest axis, and the units in each. A slab is at least kSearchCap spacings
 // plus two unit extents wide, so that only neighbouring slabs interact. Triangles too large for
-// slabs of about 1/kSlabs of the object (or 2 kSearchCap spacings) are cut at the slab borders
+// slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the borders
 // into pieces, each ordered as a unit of its own: without that, a model of a few large triangles
 // would be one slab, on one core, with a working set beyond the caches.
 void Orderer::make_units() {
@@ -203,13 +232,17 @@ void Orderer::make_units() {
             centre[t] = m[axis_];
         }
     });
-    const double wanted = std::max(double(size[axis_]) / kSlabs, 2.0 * kSearchCap * spacing_);
+    const double wanted = std::max(double(size[axis_]) / kSlabs, kMinSlabSearches * kSearchCap * spacing_);
     const float split_extent = static_cast<float>(0.5 * (wanted - kSearchCap * spacing_));
     float max_extent = 0.0f;  // of the triangles kept whole
     for (size_t t = 0; t < triangles; ++t)
         if (extent[t] <= split_extent) max_extent = std::max(max_extent, extent[t]);
 
-    const double width = std::max(double(size[axis_]) / kSlabs, kSearchCap * spacing_ + 2.0 * max_extent);
+    // At least kMinSlabSearches search caps wide: stipples near a border miss their neighbour's
+    // placed in the same window, so narrower slabs (more border) gave more close pairs (a cube's
+    // prefixes at 1/64-1/256: 0.3% within half their spacing at this width, 1.3-2% at 1 cap wide).
+    const double width = std::max({double(size[axis_]) / kSlabs, kSearchCap * spacing_ + 2.0 * max_extent,
+                                   kMinSlabSearches * kSearchCap * spacing_});
     const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size[axis_] / width)));
     auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - lo[axis_]) / width))); };
     slab_units_.assign(slabs, {});
@@ -263,17 +296,29 @@ void Orderer::apply_order() {
     std::vector<uint32_t>().swap(order_);
 }
 
-// A cut triangle's order: its pieces' slots by increasing tau = (k + 0.5) / N_piece, ties by
-// piece. Each piece's prefix is spread over the piece, so the triangle's prefix, which takes
-// about the same fraction of every piece, is spread over the triangle.
+// A cut triangle's order: its pieces' slots by increasing (k + phase) / N_piece, ties by piece.
+// Each piece's prefix is spread over the piece, and the triangle's prefix takes about the same
+// fraction of every piece (systematic sampling: piece p's share of the first c is within one of
+// c N_p / N), so it is spread over the triangle. The phases spread the rounding: with 0.5 for all,
+// a prefix shorter than the number of pieces would come from the largest pieces, side by side in
+// the middle of the triangle; with phases from the radical inverse of the piece's place along the
+// axis, its first stipples come from pieces far apart (the first, the middle one, the quarters...).
 void Orderer::merge_pieces() {
+    auto radical_inverse = [](uint32_t r) {
+        double value = 0.0, digit = 0.5;
+        for (; r != 0; r >>= 1, digit *= 0.5)
+            if (r & 1u) value += digit;
+        return value;
+    };
     parallel_for(split_.size(), 1, [&](size_t i) {
         const Split& split = split_[i];
-        std::vector<std::pair<double, uint32_t>> slots;  // (tau, index in positions_)
+        const uint32_t pieces = split.end_unit - split.first_unit;
+        std::vector<std::pair<double, uint32_t>> slots;  // (position in the order, index in positions_)
         for (uint32_t u = split.first_unit; u < split.end_unit; ++u) {
             const Unit& unit = units_[u];
             const uint32_t count = unit.end - unit.begin;
-            for (uint32_t k = 0; k < count; ++k) slots.push_back({(k + 0.5) / count, unit.begin + k});
+            const double phase = radical_inverse(u - split.first_unit) + 0.5 / pieces;  // in (0, 1)
+            for (uint32_t k = 0; k < count; ++k) slots.push_back({(k + phase) / count, unit.begin + k});
         }
         // Stable: equal tau keep the piece order in which they were listed.
         std::stable_sort(slots.begin(), slots.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -327,54 +372,54 @@ std::vector<Slot> Orderer::slots_in_order(const std::vector<uint32_t>& units) co
     return slots;
 }
 
-void Orderer::order_slab(size_t slab, bool with_halo) {
+// The slab's slots in order, and its own stipples in a grid; order_ names them by grid slot until
+// finish_slab.
+void Orderer::start_slab(size_t slab) {
+    SlabState& state = state_[slab];
     const std::vector<uint32_t>& units = slab_units_[slab];
-    const std::vector<Slot> slots = slots_in_order(units);
-
-    // Halo: the ordered stipples of the even neighbours near this slab, with their appearance time.
-    std::vector<std::pair<double, uint32_t>> halo;
-    if (with_halo) {
-        const float reach = static_cast<float>(kSearchCap * spacing_);
-        const float lo = slab_lo_[slab] - reach, hi = slab_hi_[slab] + reach;
-        for (size_t nb : {slab - 1, slab + 1}) {
-            if (nb >= slab_units_.size()) continue;  // also catches slab - 1 for slab 0
-            for (uint32_t u : slab_units_[nb]) {
-                const uint32_t count = units_[u].end - units_[u].begin;
-                for (uint32_t k = 0; k < count; ++k) {
-                    const uint32_t id = order_[units_[u].begin + k];
-                    const float x = positions_[id][axis_];
-                    if (x >= lo && x <= hi) halo.push_back({(k + 0.5) / count, id});
-                }
-            }
-        }
-        std::stable_sort(halo.begin(), halo.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    }
-
-    // The own stipples in a grid; order_ names them by grid slot while the slab is ordered.
+    state.slots = slots_in_order(units);
+    state.placed_count.assign(units.size(), 0);
     std::vector<glm::vec3> own;
-    std::vector<uint32_t> index_of_own;  // in positions_
     for (uint32_t u : units)
-        for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) own.push_back(positions_[i]), index_of_own.push_back(i);
-    PushGrid grid(own, static_cast<float>(kPushCell * spacing_));
-    std::vector<glm::vec3>().swap(own);
-    for (uint32_t local = 0; local < index_of_own.size(); ++local) order_[index_of_own[local]] = grid.slot_of(local);
+        for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) own.push_back(positions_[i]), state.index_of_own.push_back(i);
+    state.grid = std::make_unique<PushGrid>(own, static_cast<float>(kPushCell * spacing_));
+    for (uint32_t local = 0; local < state.index_of_own.size(); ++local)
+        order_[state.index_of_own[local]] = state.grid->slot_of(local);
+}
 
-    std::vector<uint32_t> placed_count(units.size(), 0);  // k of the next slot, by position in `units`
-    size_t next_halo = 0;
-    for (const Slot& slot : slots) {
-        // The halo's stipples that appeared before (or with) this slot count as placed.
-        for (; next_halo < halo.size() && halo[next_halo].first <= slot.tau; ++next_halo)
-            grid.push(positions_[halo[next_halo].second], static_cast<float>(search_radius(halo[next_halo].first)));
-        place(units_[units[slot.local]], placed_count[slot.local]++, slot.tau, grid);
+// Fills the slab's slots with tau <= until.
+void Orderer::fill_slab(size_t slab, double until) {
+    SlabState& state = state_[slab];
+    state.placed_in_window.clear();
+    const std::vector<uint32_t>& units = slab_units_[slab];
+    for (; state.next < state.slots.size() && state.slots[state.next].tau <= until; ++state.next) {
+        const Slot& slot = state.slots[state.next];
+        place(units_[units[slot.local]], state.placed_count[slot.local]++, slot.tau, state);
     }
+}
 
-    // Back from grid slots to indices in positions_.
-    for (uint32_t i : index_of_own) order_[i] = index_of_own[grid.point_of(order_[i])];
+// What the neighbouring slabs placed in the last window, near enough to matter here, counts as
+// placed here too.
+void Orderer::take_in_neighbours(size_t slab) {
+    SlabState& state = state_[slab];
+    for (size_t nb : {slab - 1, slab + 1}) {
+        if (nb >= state_.size()) continue;  // also catches slab - 1 for slab 0
+        for (const auto& [p, reach] : state_[nb].placed_in_window)
+            if (p[axis_] >= slab_lo_[slab] - reach && p[axis_] <= slab_hi_[slab] + reach) state.grid->push(p, reach);
+    }
+}
+
+// Back from grid slots to indices in positions_.
+void Orderer::finish_slab(size_t slab) {
+    SlabState& state = state_[slab];
+    for (uint32_t i : state.index_of_own) order_[i] = state.index_of_own[state.grid->point_of(order_[i])];
+    state.grid.reset();
 }
 
 // Fills slot k of a unit at time tau: picks the not-yet-placed stipple farthest from every placed
 // one (at most kMaxCandidates evaluated), moves it to slot k, and pushes its distance.
-void Orderer::place(const Unit& unit, uint32_t k, double tau, PushGrid& grid) {
+void Orderer::place(const Unit& unit, uint32_t k, double tau, SlabState& state) {
+    PushGrid& grid = *state.grid;
     const uint32_t base = unit.begin + k;
     const uint32_t remaining = unit.end - base;
     const float s = static_cast<float>(search_radius(tau));
@@ -398,7 +443,9 @@ void Orderer::place(const Unit& unit, uint32_t k, double tau, PushGrid& grid) {
         }
     }
     std::swap(order_[base], order_[base + chosen]);
-    grid.push(grid.position(order_[base]), s);
+    const glm::vec3 p = grid.position(order_[base]);
+    grid.push(p, s);
+    if (state_.size() > 1) state.placed_in_window.push_back({p, s});
 }
 
 }  // namespace
