@@ -93,7 +93,9 @@ public:
 
     // Rebuilds the grid for `points` with cubic cells of side `cell_size` (> 0). Deterministic:
     // within a bucket, points keep their input order.
-    void build(std::span<const glm::vec3> points, float cell_size) {
+    // `buckets_per_point`: 2 suits cells of a few points (see below); grids of large cells need
+    // fewer.
+    void build(std::span<const glm::vec3> points, float cell_size, double buckets_per_point = 2.0) {
         const size_t n = points.size();
         glm::vec3 lo(0.0f);
         if (n > 0) {
@@ -104,7 +106,7 @@ public:
         // collision costs more than an empty bucket: a query reads the other cell's points too, and
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
-        hash_.init(lo, cell_size, 2 * n);
+        hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
         bucket_of_point_.resize(n);
         parallel_for(n, 65536, [&](size_t i) { bucket_of_point_[i] = hash_.bucket(hash_.cell_of(points[i])); });
         start_.assign(hash_.bucket_count() + 1, 0);
@@ -124,6 +126,9 @@ public:
         for (size_t b = start_.size() - 1; b > 0; --b) start_[b] = start_[b - 1];
         start_[0] = 0;
     }
+
+    // Frees build()'s scratch memory (a grid built once and kept).
+    void release_scratch() { std::vector<uint32_t>().swap(bucket_of_point_); }
 
     glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
     uint32_t bucket(const glm::ivec3& c) const { return hash_.bucket(c); }

@@ -42,7 +42,7 @@ namespace {
 constexpr double kSearch = 1.5;
 constexpr double kSearchCap = 12.0;
 constexpr int kSlabs = 24;          // target number of slabs (fewer when triangles are large)
-constexpr double kMinSlabSearches = 8.0;  // see make_units
+constexpr double kMinSlabSearches = 4.0;  // see make_units
 // 64 gave a 12-triangle cube's prefixes delta-bar 0.78 instead of 0.74-0.77 (f = 1/4 to 1/256),
 // but cost 50% more ordering time there (each candidate's distance is a cache miss once the slabs
 // take turns) and, within the seed-to-seed spread, a little tone at 1/16 of the size.
@@ -57,15 +57,19 @@ constexpr double kPushCell = 6.0;
 // writes runs of neighbouring slots rather than scattered memory.
 class PushGrid {
 public:
+    // Cells of kPushCell spacings hold ~40 stipples: a bucket for every 8 stipples is plenty.
     PushGrid(std::span<const glm::vec3> points, float cell) {
-        grid_.build(points, cell);
+        grid_.build(points, cell, 1.0 / 8.0);
+        grid_.release_scratch();
         nearest_.assign(points.size(), std::numeric_limits<float>::max());
-        slot_of_.resize(points.size());
-        for (uint32_t slot = 0; slot < points.size(); ++slot) slot_of_[grid_.sorted_index(slot)] = slot;
     }
 
-    // The slot of points[i].
-    uint32_t slot_of(uint32_t i) const { return slot_of_[i]; }
+    // The slot of every point of `points`, by index there.
+    std::vector<uint32_t> slots_of_points() const {
+        std::vector<uint32_t> slot_of(nearest_.size());
+        for (uint32_t slot = 0; slot < slot_of.size(); ++slot) slot_of[grid_.sorted_index(slot)] = slot;
+        return slot_of;
+    }
     // The index in `points` of a slot's stipple.
     uint32_t point_of(uint32_t slot) const { return grid_.sorted_index(slot); }
     float nearest(uint32_t slot) const { return nearest_[slot]; }
@@ -114,8 +118,7 @@ public:
 
 private:
     PointGrid grid_;
-    std::vector<float> nearest_;   // by slot
-    std::vector<uint32_t> slot_of_;  // by index in the points given
+    std::vector<float> nearest_;  // by slot
 };
 
 struct Slot {
@@ -239,8 +242,9 @@ void Orderer::make_units() {
         if (extent[t] <= split_extent) max_extent = std::max(max_extent, extent[t]);
 
     // At least kMinSlabSearches search caps wide: stipples near a border miss their neighbour's
-    // placed in the same window, so narrower slabs (more border) gave more close pairs (a cube's
-    // prefixes at 1/64-1/256: 0.3% within half their spacing at this width, 1.3-2% at 1 cap wide).
+    // placed in the same window, so narrower slabs (more border) leave more close pairs (a cube's
+    // prefixes at 1/64-1/256 within half their spacing: 1.4-1.8% of them at 1 cap, 0.8% at 4,
+    // 0.3-0.6% at 8), and wider ones leave fewer slabs to share between the cores.
     const double width = std::max({double(size[axis_]) / kSlabs, kSearchCap * spacing_ + 2.0 * max_extent,
                                    kMinSlabSearches * kSearchCap * spacing_});
     const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size[axis_] / width)));
@@ -383,8 +387,9 @@ void Orderer::start_slab(size_t slab) {
     for (uint32_t u : units)
         for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) own.push_back(positions_[i]), state.index_of_own.push_back(i);
     state.grid = std::make_unique<PushGrid>(own, static_cast<float>(kPushCell * spacing_));
-    for (uint32_t local = 0; local < state.index_of_own.size(); ++local)
-        order_[state.index_of_own[local]] = state.grid->slot_of(local);
+    std::vector<glm::vec3>().swap(own);
+    const std::vector<uint32_t> slot_of = state.grid->slots_of_points();
+    for (uint32_t local = 0; local < state.index_of_own.size(); ++local) order_[state.index_of_own[local]] = slot_of[local];
 }
 
 // Fills the slab's slots with tau <= until.
