@@ -121,11 +121,6 @@ private:
     std::vector<float> nearest_;  // by slot
 };
 
-struct Slot {
-    double tau;      // (k + 0.5) / N_u: equal fractions give equal doubles (correctly rounded division)
-    uint32_t local;  // position of the unit in its slab's list (ascending unit index)
-};
-
 // What the greedy orders: a triangle's stipples, or the piece of a large triangle's stipples that
 // lies in one slab. Slot k of a unit of N stipples appears at tau = (k + 0.5) / N.
 struct Unit {
@@ -147,17 +142,20 @@ private:
     }
     // One slab's ordering, kept across windows.
     struct SlabState {
-        std::vector<Slot> slots;              // in order
+        // The unit (by position in the slab's list) of each slot, in order. A slot's time is
+        // (k + 0.5) / N_u, k counted in placed_count: equal fractions give equal doubles (correctly
+        // rounded division), so it need not be stored (it would double the list's size).
+        std::vector<uint32_t> slots;
         size_t next = 0;                      // the next slot to fill
         std::vector<uint32_t> placed_count;   // k of each unit's next slot, by position in its list
         std::unique_ptr<PushGrid> grid;       // its own stipples
-        std::vector<uint32_t> index_of_own;   // in positions_, by index in the grid's input
         std::vector<std::pair<glm::vec3, float>> placed_in_window;  // (position, search radius)
     };
 
     void make_units();
-    std::vector<Slot> slots_in_order(const std::vector<uint32_t>& units) const;
+    std::vector<uint32_t> slots_in_order(const std::vector<uint32_t>& units) const;
     void start_slab(size_t slab);
+    std::vector<uint32_t> own_stipples(size_t slab) const;
     void fill_slab(size_t slab, double until);
     void take_in_neighbours(size_t slab);
     void finish_slab(size_t slab);
@@ -341,7 +339,7 @@ void Orderer::merge_pieces() {
 // The slots of the slab's units by increasing tau = (k + 0.5) / N_u, ties by unit. Without a sort
 // over all slots: the units with N stipples share their N tau values, so the slots come from the
 // (N, k) classes in tau order, each class listing its units in unit order.
-std::vector<Slot> Orderer::slots_in_order(const std::vector<uint32_t>& units) const {
+std::vector<uint32_t> Orderer::slots_in_order(const std::vector<uint32_t>& units) const {
     std::vector<std::pair<uint32_t, uint32_t>> by_count;  // (N, local), grouped by N
     by_count.reserve(units.size());
     size_t total = 0;
@@ -366,17 +364,17 @@ std::vector<Slot> Orderer::slots_in_order(const std::vector<uint32_t>& units) co
     std::sort(classes.begin(), classes.end(), [](const Class& a, const Class& b) {
         return a.tau < b.tau || (a.tau == b.tau && a.begin < b.begin);
     });
-    std::vector<Slot> slots;
+    std::vector<uint32_t> slots;
     slots.reserve(total);
     for (size_t c = 0; c < classes.size();) {
         size_t d = c + 1;
         while (d < classes.size() && classes[d].tau == classes[c].tau) ++d;
         const size_t from = slots.size();
         for (size_t i = c; i < d; ++i)
-            for (uint32_t j = classes[i].begin; j < classes[i].end; ++j) slots.push_back({classes[i].tau, by_count[j].second});
+            for (uint32_t j = classes[i].begin; j < classes[i].end; ++j) slots.push_back(by_count[j].second);
         // Equal tau from different N (1/2 = 3/6): interleave by unit.
         if (d - c > 1)
-            std::sort(slots.begin() + from, slots.end(), [](const Slot& a, const Slot& b) { return a.local < b.local; });
+            std::sort(slots.begin() + from, slots.end());
         c = d;
     }
     return slots;
@@ -389,13 +387,23 @@ void Orderer::start_slab(size_t slab) {
     const std::vector<uint32_t>& units = slab_units_[slab];
     state.slots = slots_in_order(units);
     state.placed_count.assign(units.size(), 0);
-    std::vector<glm::vec3> own;
-    for (uint32_t u : units)
-        for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) own.push_back(positions_[i]), state.index_of_own.push_back(i);
-    state.grid = std::make_unique<PushGrid>(own, static_cast<float>(kPushCell * spacing_));
-    std::vector<glm::vec3>().swap(own);
+    const std::vector<uint32_t> own = own_stipples(slab);
+    {
+        std::vector<glm::vec3> points(own.size());
+        for (size_t local = 0; local < own.size(); ++local) points[local] = positions_[own[local]];
+        state.grid = std::make_unique<PushGrid>(points, static_cast<float>(kPushCell * spacing_));
+    }
     const std::vector<uint32_t> slot_of = state.grid->slots_of_points();
-    for (uint32_t local = 0; local < state.index_of_own.size(); ++local) order_[state.index_of_own[local]] = slot_of[local];
+    for (uint32_t local = 0; local < own.size(); ++local) order_[own[local]] = slot_of[local];
+}
+
+// The slab's stipples, unit after unit: the grid's input order. (Rebuilt when needed rather than
+// kept: 4 bytes a stipple for every slab at once.)
+std::vector<uint32_t> Orderer::own_stipples(size_t slab) const {
+    std::vector<uint32_t> own;
+    for (uint32_t u : slab_units_[slab])
+        for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) own.push_back(i);
+    return own;
 }
 
 // Fills the slab's slots with tau <= until.
@@ -403,9 +411,14 @@ void Orderer::fill_slab(size_t slab, double until) {
     SlabState& state = state_[slab];
     state.placed_in_window.clear();
     const std::vector<uint32_t>& units = slab_units_[slab];
-    for (; state.next < state.slots.size() && state.slots[state.next].tau <= until; ++state.next) {
-        const Slot& slot = state.slots[state.next];
-        place(units_[units[slot.local]], state.placed_count[slot.local]++, slot.tau, state);
+    for (; state.next < state.slots.size(); ++state.next) {
+        const uint32_t local = state.slots[state.next];
+        const Unit& unit = units_[units[local]];
+        const uint32_t k = state.placed_count[local];
+        const double tau = (k + 0.5) / (unit.end - unit.begin);
+        if (!(tau <= until)) break;
+        place(unit, k, tau, state);
+        ++state.placed_count[local];
     }
 }
 
@@ -423,7 +436,8 @@ void Orderer::take_in_neighbours(size_t slab) {
 // Back from grid slots to indices in positions_.
 void Orderer::finish_slab(size_t slab) {
     SlabState& state = state_[slab];
-    for (uint32_t i : state.index_of_own) order_[i] = state.index_of_own[state.grid->point_of(order_[i])];
+    const std::vector<uint32_t> own = own_stipples(slab);
+    for (uint32_t i : own) order_[i] = own[state.grid->point_of(order_[i])];
     state.grid.reset();
 }
 
