@@ -165,41 +165,6 @@ TriangleFrame frame_of(const Mesh& mesh, uint32_t t) {
     return f;
 }
 
-// values[i] = old values[from[i]], from a permutation, following its cycles (one bit a value).
-void gather_in_place(std::vector<glm::vec3>& values, const std::vector<uint32_t>& from) {
-    std::vector<bool> done(values.size(), false);
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (done[i]) continue;
-        const glm::vec3 first = values[i];
-        done[i] = true;
-        for (size_t j = i;;) {
-            const size_t k = from[j];
-            if (k == i) {
-                values[j] = first;
-                break;
-            }
-            values[j] = values[k];
-            done[k] = true;
-            j = k;
-        }
-    }
-}
-
-// values[to[i]] = old values[i]: undoes gather_in_place(values, to).
-void scatter_in_place(std::vector<glm::vec3>& values, const std::vector<uint32_t>& to) {
-    std::vector<bool> done(values.size(), false);
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (done[i]) continue;
-        glm::vec3 carry = values[i];
-        done[i] = true;
-        for (size_t j = to[i]; j != i; j = to[j]) {
-            std::swap(carry, values[j]);
-            done[j] = true;
-        }
-        values[i] = carry;
-    }
-}
-
 }  // namespace
 
 glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
@@ -245,20 +210,20 @@ void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std
     const float s = static_cast<float>(spacing);
     const float h = kKernelRadius * s;
 
-    // Work in the grid's spatial order (positions permuted in place up front, back at the end, so
-    // no copy): points move little per iteration, so later grids come out nearly in input order
-    // and every pass below walks memory sequentially instead of jumping between the triangle order
-    // and the cell order.
+    // Work on a copy in the grid's spatial order (one sort up front, undone at the end): points
+    // move little per iteration, so later grids come out nearly in input order and every pass
+    // below walks memory sequentially instead of jumping between the triangle order and the cell
+    // order.
     PointGrid grid;
     grid.build(positions, h);
     std::vector<uint32_t> original(n);
+    std::vector<glm::vec3> pos(n);
     std::vector<uint32_t> tri(n);
     for (uint32_t slot = 0; slot < n; ++slot) {
         original[slot] = grid.sorted_index(slot);
+        pos[slot] = positions[original[slot]];
         tri[slot] = triangle_of[original[slot]];
     }
-    gather_in_place(positions, original);
-    std::vector<glm::vec3>& pos = positions;
 
     static const RepulsionKernel kernel = pick_kernel();
     for (int it = 0; it < iterations; ++it) {
@@ -293,7 +258,7 @@ void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std
         });
         if (progress) progress(double(it + 1) / iterations);
     }
-    scatter_in_place(positions, original);
+    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];
 }
 
 }  // namespace stipple
