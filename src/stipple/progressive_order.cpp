@@ -1,7 +1,6 @@
 #include "stipple/progressive_order.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>

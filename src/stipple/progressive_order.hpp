@@ -18,7 +18,9 @@ namespace stipple {
 // (ties by triangle index); each takes, among the triangle's stipples not placed yet, the one
 // farthest from every stipple already placed anywhere (greedy farthest point, searched within
 // about 1.5 spacings of the placed set at that time). See progressive_order.cpp for how the
-// surface is split into slabs so that two threads can do this deterministically.
+// surface is split into slabs, and time into windows, so that two threads can do this
+// deterministically, and for the triangles too large for a slab, which are ordered in pieces (each
+// piece a unit with its own (k + 0.5) / N times) and merged.
 // `spacing` is the hexagonal spacing of the full set. Deterministic for any thread count.
 void progressive_order(std::vector<glm::vec3>& positions, std::span<const uint32_t> first, double spacing,
                        uint64_t seed, const std::function<void(double)>& progress = {});
