@@ -205,7 +205,8 @@ void Orderer::run(const std::function<void(double)>& progress) {
         const double until = w == 0 ? std::numeric_limits<double>::infinity() : std::exp2(-w / 8.0);
         parallel_for(slabs, 1, [&](size_t i) { fill_slab(by_size[i], until); });
         if (slabs > 1) parallel_for(slabs, 1, [&](size_t i) { take_in_neighbours(by_size[i]); });
-        if (progress) progress(double(windows - w) / double(windows));
+        // A unit's slots are spread evenly in tau, so by time `until` about that share is placed.
+        if (progress) progress(w == 0 ? 1.0 : until);
     }
     parallel_for(slabs, 1, [&](size_t slab) { finish_slab(slab); });
     std::vector<SlabState>().swap(state_);
