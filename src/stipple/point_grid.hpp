@@ -102,8 +102,8 @@ public:
             lo = points[0];
             for (const glm::vec3& p : points) lo = glm::min(lo, p);
         }
-        // Two buckets per point. Cells hold several points, so most buckets are empty, but a
-        // collision costs more than an empty bucket: a query reads the other cell's points too, and
+        // Two buckets per point by default. Cells hold several points, so most buckets are empty,
+        // but a collision costs more than an empty bucket: a query reads the other cell's points too, and
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));

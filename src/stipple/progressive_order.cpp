@@ -16,8 +16,8 @@
 // How the greedy runs on two cores and stays deterministic.
 //
 // The surface is cut into slabs across its longest axis, at least kSearchCap spacings plus two
-// unit extents wide, so that only neighbouring slabs interact (see make_units). Time is cut into windows of tau,
-// each 2^(1/8) times the previous one. In a window every slab fills its slots up to the window's
+// unit extents wide, so that only neighbouring slabs interact (see make_units). Time is cut into
+// windows of tau, each 2^(1/8) times the previous one. In a window every slab fills its slots up to the window's
 // end, in parallel, seeing every stipple placed before the window anywhere and its own placed in
 // the window; between windows each slab takes in what its neighbours placed near it. No state is
 // shared between slabs inside a window, so the result does not depend on the thread count, and a
@@ -40,7 +40,7 @@ namespace {
 
 constexpr double kSearch = 1.5;
 constexpr double kSearchCap = 12.0;
-constexpr int kSlabs = 24;          // target number of slabs (fewer when triangles are large)
+constexpr int kSlabs = 24;          // target number of slabs (fewer when they must be wider)
 constexpr double kMinSlabSearches = 4.0;  // see make_units
 // 64 gave a 12-triangle cube's prefixes delta-bar 0.78 instead of 0.74-0.77 (f = 1/4 to 1/256),
 // but cost 50% more ordering time there (each candidate's distance is a cache miss once the slabs
@@ -73,7 +73,6 @@ public:
     uint32_t point_of(uint32_t slot) const { return grid_.sorted_index(slot); }
     float nearest(uint32_t slot) const { return nearest_[slot]; }
     glm::vec3 position(uint32_t slot) const { return grid_.sorted_position(slot); }
-    size_t size() const { return nearest_.size(); }
 
     // nearest = min(nearest, |q - p|^2) for the stipples q of the cells within `reach` of p (a
     // superset of those closer than reach; the extra ones are harmless, see the top of the file).
@@ -239,18 +238,19 @@ void Orderer::make_units() {
             centre[t] = m[axis_];
         }
     });
+    // Slabs of about 1/kSlabs of the object, but at least kMinSlabSearches search caps wide:
+    // stipples near a border miss their neighbour's placed in the same window, so narrower slabs
+    // (more border) leave more close pairs (a cube's prefixes at 1/64-1/256 within half their
+    // spacing: 1.4-1.8% of them at 1 cap, 0.8% at 4, 0.3-0.6% at 8), and wider ones leave fewer
+    // slabs to share between the cores. Triangles wider than such a slab allows (a search cap plus
+    // twice their extent) are cut, so the triangles kept whole fit it.
     const double wanted = std::max(double(size[axis_]) / kSlabs, kMinSlabSearches * kSearchCap * spacing_);
     const float split_extent = static_cast<float>(0.5 * (wanted - kSearchCap * spacing_));
     float max_extent = 0.0f;  // of the triangles kept whole
     for (size_t t = 0; t < triangles; ++t)
         if (extent[t] <= split_extent) max_extent = std::max(max_extent, extent[t]);
-
-    // At least kMinSlabSearches search caps wide: stipples near a border miss their neighbour's
-    // placed in the same window, so narrower slabs (more border) leave more close pairs (a cube's
-    // prefixes at 1/64-1/256 within half their spacing: 1.4-1.8% of them at 1 cap, 0.8% at 4,
-    // 0.3-0.6% at 8), and wider ones leave fewer slabs to share between the cores.
-    const double width = std::max({double(size[axis_]) / kSlabs, kSearchCap * spacing_ + 2.0 * max_extent,
-                                   kMinSlabSearches * kSearchCap * spacing_});
+    // `wanted`, but for float rounding of split_extent.
+    const double width = std::max(wanted, kSearchCap * spacing_ + 2.0 * max_extent);
     const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size[axis_] / width)));
     auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - lo[axis_]) / width))); };
     slab_units_.assign(slabs, {});
