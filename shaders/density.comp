@@ -8,6 +8,7 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
+#include "uniform_branch.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
@@ -50,6 +51,7 @@ uint claim_slots(uint n) {
 
 void main() {
     uint t = gl_GlobalInvocationID.x;
+    uint flags = object.flags[unfoldable_zero()];  // object.flags.x, see uniform_branch.h
     bool in_range = t < object.flags.y;
     // The candidates run from this polygon's first stipple to the next one's (first_stipple is constant,
     // written once at creation).
@@ -60,10 +62,12 @@ void main() {
     }
     TriangleInfo info = infos[in_range ? t : 0u];
     PolygonView p = polygon_view(info, candidates, object);
-    if ((object.flags.x & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
+    if ((flags & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
     if (kFacingOnly || !in_range) return;
-    if ((object.flags.x & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);
-    float density = polygon_density(p, density_params(frame, object));
+    if ((flags & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);
+    DensityParams q = density_params(frame, object);
+    q.flags = flags;
+    float density = polygon_density(p, q);
     draws[t].density = density;
     if (!kListDrawn) return;
     // The polygon's work items: runs of kSplatChunk drawn stipples (see DrawnPolygons). Most polygons

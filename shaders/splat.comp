@@ -19,6 +19,7 @@
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
+#include "uniform_branch.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
@@ -101,12 +102,13 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
-    bool round_points = (object.flags.x & kFlagRoundPoints) != 0u;
+    const uint zero = unfoldable_zero();  // object.flags.x and frame.projection.w, see uniform_branch.h
+    bool round_points = (object.flags[zero] & kFlagRoundPoints) != 0u;
     // Print detail (frame.projection.w > 1): a stipple is a disc many pixels wide while the depth pass's
     // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
     // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
     // its pixels only need a surface under them (it stops at the outline, as the screen's points do).
-    bool whole_dot = frame.projection.w > 1.0;
+    bool whole_dot = frame.projection[3u + zero] > 1.0;
     if (whole_dot) {
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
         if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
