@@ -29,12 +29,9 @@ STIPPLE_CONST uint kDensityWorkgroupSize = 64;
 // far under the limit. It also evens out the work of the invocations sharing a SIMD vector.
 STIPPLE_CONST uint kSplatChunk = 64;
 
-// Draw-command merging (CPU and indirect paths): consecutive polygons share one draw while each one
-// before draws all of its candidates, up to this many polygons per draw (bounds the GPU's scan).
-STIPPLE_CONST uint kMaxMergedPolygons = 256;
-
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
+STIPPLE_CONST uint kSpecDrawnList = 1;       // stipple.vert: draw the survivors' list (DrawnStipples), not every candidate
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
 STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
@@ -45,7 +42,7 @@ STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
 STIPPLE_CONST uint kBindingObject = 1;         // ObjectUniforms (uniform)
 STIPPLE_CONST uint kBindingTriangleDraw = 2;   // TriangleDraw[] (storage), per frame
 STIPPLE_CONST uint kBindingTriangleInfo = 3;   // TriangleInfo[] (storage), constant
-STIPPLE_CONST uint kBindingDrawCommands = 4;   // DrawCommands (storage): count + VkDrawIndirectCommand[]
+STIPPLE_CONST uint kBindingDrawnStipples = 4;  // DrawCommand + uint[] (storage): the survivors' list (indirect, cpu)
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
 STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
@@ -184,13 +181,6 @@ struct LinePiece {
     uint kind;             // kLineKind*
 };
 
-// The indirect path's draw list (kBindingDrawCommands): this header, then DrawCommand per polygon at
-// most. The count is vkCmdDrawIndirectCount's count; the draws start sizeof(DrawCommandsHeader) in.
-struct DrawCommandsHeader {
-    uint count;
-    uint pad0, pad1, pad2;
-};
-
 // What the counting variants record (kBindingDebug, kSpecCountDrawn): this header, then one bit per
 // candidate stipple (set when it was drawn), 32 to a uint.
 struct DebugCounters {
@@ -213,6 +203,11 @@ struct VisibleStipple {
 };
 
 // One indirect draw, laid out as VkDrawIndirectCommand.
+//
+// The survivors' list of the indirect and cpu paths (kBindingDrawnStipples) starts with one: a draw of
+// vertex_count points, one per stipple drawn this frame (index below its polygon's density, §3.2),
+// whose candidate indices follow the command, one uint each (at most one per candidate). Culled
+// candidates never reach the vertex stage, and one draw replaces a draw per polygon.
 struct DrawCommand {
     uint vertex_count;
     uint instance_count;

@@ -2,13 +2,16 @@
 // Draws candidate stipples; the per-polygon density decides which survive (§3.2): a stipple whose
 // index within its polygon is beyond the density is pushed beyond the far plane and clipped.
 // The last one gets the fractional part of the density as its intensity (§2.1).
-// The kCountDrawn variant also records every surviving stipple (tests and statistics).
+// The kDrawnList variant draws the survivors' list instead (indirect and cpu paths, DrawCommand in
+// shared_types.h): vertex i is the candidate the list names, read from the stipple buffer; nothing
+// is culled. The kCountDrawn variant also records every surviving stipple (tests and statistics).
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
 
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
+layout(constant_id = kSpecDrawnList) const bool kDrawnList = false;
 
 layout(location = 0) in vec2 in_barycentric;  // (u, v) in the polygon, R16G16_UNORM
 layout(location = 1) in uint in_triangle;
@@ -16,6 +19,11 @@ layout(location = 1) in uint in_triangle;
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
+layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
+layout(set = 0, binding = kBindingDrawnStipples, std430) readonly buffer DrawnStipples {
+    DrawCommand draw;
+    uint drawn_stipples[];
+};
 layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
     DebugCounters counters;
     uint drawn_mask[];
@@ -24,8 +32,17 @@ layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
 layout(location = 0) out float out_intensity;
 
 void main() {
-    TriangleDraw draw = draws[in_triangle];
-    float index = float(uint(gl_VertexIndex) - draw.first_stipple);
+    // The vertex inputs are the candidate gl_VertexIndex names; the list variant draws another one.
+    uint stipple = uint(gl_VertexIndex);
+    uint triangle = in_triangle;
+    vec2 barycentric = in_barycentric;
+    if (kDrawnList) {
+        stipple = drawn_stipples[gl_VertexIndex];
+        triangle = stipples[stipple].triangle;
+        barycentric = unpackUnorm2x16(stipples[stipple].barycentric);
+    }
+    TriangleDraw draw = draws[triangle];
+    float index = float(stipple - draw.first_stipple);
     float intensity = stipple_intensity(draw.density, index);
     out_intensity = intensity;
     if (intensity <= 0.0f) {
@@ -34,12 +51,12 @@ void main() {
         return;
     }
     // Larger dots where the polygon's candidates cannot carry its density (stipple_scale).
-    uint end = in_triangle + 1u < object.flags.y ? draws[in_triangle + 1u].first_stipple : object.flags.w;
+    uint end = triangle + 1u < object.flags.y ? draws[triangle + 1u].first_stipple : object.flags.w;
     gl_PointSize = object.shading.y * stipple_scale(draw.density, float(end - draw.first_stipple));
     if (kCountDrawn) {
         atomicAdd(counters.drawn, 1u);
-        atomicOr(drawn_mask[uint(gl_VertexIndex) >> 5u], 1u << (uint(gl_VertexIndex) & 31u));
+        atomicOr(drawn_mask[stipple >> 5u], 1u << (stipple & 31u));
     }
-    vec3 position = stipple_position(polygon_frame(in_triangle), in_barycentric);  // survivors only
+    vec3 position = stipple_position(polygon_frame(triangle), barycentric);  // survivors only
     gl_Position = frame.view_proj * (object.model * vec4(position, 1.0));
 }

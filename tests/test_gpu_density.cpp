@@ -165,7 +165,7 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     target.draw(renderer, view);
     // The work list: a header, then at most one item per polygon and one per kSplatChunk candidates.
     const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatChunk;
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder, placeholder}));
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder}));
 
     // With the splat path, what the object costs on the GPU per candidate: 8.06 bytes per candidate
     // (the stipple and its share of the work list) and 28 per polygon besides the mesh, so at most 16
@@ -180,6 +180,12 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     EXPECT_EQ(object.geometry.stipples.size(), 8u * object.geometry.stipple_count);
     EXPECT_EQ(object.polygons.gpu.size(), 16u * object.geometry.triangle_count);
     EXPECT_LE(per_candidate, 16.0);
+
+    // The indirect path's list of survivors: a draw command, then room for every candidate.
+    renderer.params(0).density_path = DensityPath::Indirect;
+    target.draw(renderer, view);
+    const VkDeviceSize survivors = 16 + 4 * VkDeviceSize(object.geometry.stipple_count);
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, survivors}));
 }
 
 // A 12-triangle box: a few thousand drawn stipples per polygon when framed, far more than one splat
@@ -216,7 +222,7 @@ void expect_splat_work_list(const gpu::Context& context, StippleRenderer& render
 struct PathFrames {
     std::vector<RenderedFrame> frames;
     std::vector<std::vector<uint32_t>> masks;
-    uint32_t cpu_draws = 0, gpu_draws = 0;
+    uint32_t cpu_listed = 0, gpu_listed = 0;  // the survivors' lists of the cpu and indirect paths
 };
 
 // Every density path draws the subject; the masks and images must agree (checked by the caller).
@@ -233,9 +239,18 @@ PathFrames draw_with_every_path(const gpu::Context& context, const test::Prepare
         renderer.params(0).density_path = path;
         out.frames.push_back(target.render(renderer, view));
         out.masks.push_back(renderer.drawn_mask(0));
-        if (path == DensityPath::Cpu) out.cpu_draws = renderer.object(0).frame.cpu_command_count;
-        if (path == DensityPath::Indirect)
-            std::memcpy(&out.gpu_draws, gpu::read_buffer(context, renderer.object(0).frame.gpu_commands).data(), 4);
+        if (path == DensityPath::Cpu || path == DensityPath::Indirect) {
+            // The list's draw command: vertex_count survivors, then their indices, each drawn once.
+            const std::vector<std::byte> bytes = gpu::read_buffer(context, renderer.object(0).frame.drawn_stipples);
+            gpu::DrawCommand draw;
+            std::memcpy(&draw, bytes.data(), sizeof draw);
+            std::vector<uint32_t> listed(draw.vertex_count);
+            std::memcpy(listed.data(), bytes.data() + sizeof draw, sizeof(uint32_t) * listed.size());
+            std::sort(listed.begin(), listed.end());
+            EXPECT_EQ(std::adjacent_find(listed.begin(), listed.end()), listed.end()) << "a stipple listed twice";
+            EXPECT_EQ(draw.instance_count, 1u);
+            (path == DensityPath::Cpu ? out.cpu_listed : out.gpu_listed) = draw.vertex_count;
+        }
         if (draws_by_splat(path)) expect_splat_work_list(context, renderer, subject.stipples, path);
         std::printf("%-8s path: %lld stipples drawn\n", density_path_name(path),
                     (long long)renderer.stats().drawn_stipples);
@@ -262,9 +277,9 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     ObjectParams params;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     PathFrames out = draw_with_every_path(*context, blob, params, 1.5f);
-    std::printf("merged draws: %u on the CPU path, %u on the indirect path\n", out.cpu_draws, out.gpu_draws);
-    EXPECT_EQ(out.cpu_draws, out.gpu_draws) << "both paths merge ranges by the same rule";
-    EXPECT_LT(out.cpu_draws, test::popcount(out.masks[0]) * 3 / 4) << "merging should leave clearly fewer draws than stipples";
+    std::printf("survivors listed: %u by the CPU path, %u by the indirect path\n", out.cpu_listed, out.gpu_listed);
+    EXPECT_EQ(out.cpu_listed, test::popcount(out.masks[0])) << "the cpu path lists exactly the stipples it draws";
+    EXPECT_EQ(out.gpu_listed, test::popcount(out.masks[0])) << "the indirect path lists exactly the stipples it draws";
     EXPECT_GT(test::popcount(out.masks[0]), 10000u);
     EXPECT_LT(test::popcount(out.masks[0]), blob.stipples.size());
     expect_same_stipples_and_images(out);

@@ -29,7 +29,6 @@ json cell_json(const CellResult& cell) {
         {"candidate_stipples", cell.candidates},
         {"drawn_stipples", cell.drawn},
         {"cpu_density_ms", cell.cpu_density_ms},
-        {"cpu_draw_commands", cell.cpu_draws},
     };
     j["paper_fps"] = cell.paper_fps ? json(*cell.paper_fps) : json(nullptr);
     j["ratio_to_paper"] = cell.paper_fps ? json(cell.median_fps / *cell.paper_fps) : json(nullptr);

@@ -110,17 +110,13 @@ void comparison_table(std::ostringstream& md, const BenchResults& r) {
 void cell_table(std::ostringstream& md, const BenchResults& r) {
     md << "## Every cell\n\n";
     md << "| model | column | median fps | min–max fps | frame ms | GPU ms per pass (median) | GPU ms total | "
-          "candidates | drawn | CPU density ms, draws |\n";
+          "candidates | drawn | CPU density ms |\n";
     md << "|---|---|---:|---:|---:|---|---:|---:|---:|---:|\n";
     for (const ModelResult& m : r.models)
         for (const CellResult& cell : m.cells) {
             std::string passes;
             for (const auto& [pass, ms] : cell.gpu_ms) passes += printf_string("%s%s %.2f", passes.empty() ? "" : ", ", pass.c_str(), ms);
-            // cpu-splat submits no draws: the splat takes the CPU's list of polygons that draw.
-            std::string cpu = !density_on_cpu(cell.column.path) ? "–"
-                              : draws_by_splat(cell.column.path)
-                                  ? printf_string("%.2f, –", cell.cpu_density_ms)
-                                  : printf_string("%.2f, %llu", cell.cpu_density_ms, (unsigned long long)cell.cpu_draws);
+            std::string cpu = density_on_cpu(cell.column.path) ? printf_string("%.2f", cell.cpu_density_ms) : "–";
             md << "| " << m.entry.name << " | " << cell.column.name() << " | " << fps_text(cell.median_fps) << " | "
                << fps_text(cell.min_fps) << "–" << fps_text(cell.max_fps) << " | "
                << printf_string("%.2f", cell.median_frame_ms) << " | " << (passes.empty() ? "–" : passes) << " | "

@@ -120,7 +120,6 @@ void time_cell(OffscreenTarget& target, StippleRenderer& renderer, const FrameVi
         }
         cpu_ms.push_back(stats.cpu_density_ms);
         cell.candidates = stats.candidate_stipples;
-        cell.cpu_draws = stats.cpu_draw_commands;
     }
     cell.median_frame_ms = median(cell.frame_ms);
     auto [fastest, slowest] = std::minmax_element(cell.frame_ms.begin(), cell.frame_ms.end());

@@ -56,7 +56,6 @@ struct CellResult {
     std::vector<std::pair<std::string, double>> gpu_ms;  // median GPU time per pass, in pass order
     double gpu_total_ms = 0.0;                           // sum of those medians
     double cpu_density_ms = 0.0;                         // median CPU density time (cpu path)
-    uint64_t cpu_draws = 0;                              // indirect draws the cpu path submitted
     uint64_t candidates = 0;
     int64_t drawn = -1;  // from the counting frame of this column; -1 when the path does not count
     std::optional<double> paper_fps;

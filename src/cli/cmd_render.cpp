@@ -243,9 +243,8 @@ int run_render(const std::vector<std::string>& argv) {
                         sequence ? " (last frame)" : "");
         }
         for (const auto& [pass, ms] : stats.gpu_ms) std::printf("gpu %-16s%.3f ms\n", (pass + ":").c_str(), ms);
-        if (stats.cpu_draw_commands > 0 || paths.find("cpu") != std::string::npos)
-            std::printf("cpu density:        %.3f ms, %llu draws\n", stats.cpu_density_ms,
-                        (unsigned long long)stats.cpu_draw_commands);
+        if (paths.find("cpu") != std::string::npos)
+            std::printf("cpu density:        %.3f ms\n", stats.cpu_density_ms);
         std::printf("covered pixels:     %zu\n", covered);
         std::printf("ink inside object:  %.1f%%\n", 100.0 * ink);
         std::printf("load + generation:  %.3f s (generation %.3f s)\n", prepare_seconds, content.generation_seconds);

@@ -207,14 +207,16 @@ void Context::create_device(const ContextOptions& options) {
     vkGetPhysicalDeviceFeatures2(physical_device, &supported2);
     if (!supported13.dynamicRendering || !supported13.synchronization2)
         fail("device '" + device_name + "' lacks dynamic rendering or synchronization2");
-    // Compute passes that append to a list do one atomic per subgroup (ballot), not one per item.
+    // Compute passes that append to a list do one atomic per subgroup (ballot, and the prefix sums of
+    // the survivors' list), not one per item.
     VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
     VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     properties2.pNext = &subgroup;
     vkGetPhysicalDeviceProperties2(physical_device, &properties2);
     if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
-        !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT))
-        fail("device '" + device_name + "' lacks subgroup ballot operations in compute shaders");
+        !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT) ||
+        !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT))
+        fail("device '" + device_name + "' lacks subgroup ballot or arithmetic operations in compute shaders");
 
     VkPhysicalDeviceFeatures enabled{};
     enabled.largePoints = supported.largePoints;

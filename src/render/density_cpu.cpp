@@ -21,27 +21,6 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
     }
 }
 
-uint32_t build_draw_commands(std::span<const float> densities, std::span<const uint32_t> first_stipple,
-                             std::span<gpu::DrawCommand> commands) {
-    uint32_t count = 0;
-    for (size_t t = 0; t < densities.size(); ++t) {
-        uint32_t drawn = formulas::drawn_stipple_count(densities[t], first_stipple[t + 1] - first_stipple[t]);
-        if (drawn == 0) continue;
-        // The rule of shaders/draw_commands.comp: join the previous draw while the polygon before drew
-        // all of its candidates (its range then ends where this one starts), at most kMaxMergedPolygons.
-        bool merges = t > 0 && t % gpu::kMaxMergedPolygons != 0 && count > 0;
-        if (merges) {
-            uint32_t previous = formulas::drawn_stipple_count(densities[t - 1], first_stipple[t] - first_stipple[t - 1]);
-            merges = previous > 0 && previous == first_stipple[t] - first_stipple[t - 1];
-        }
-        if (merges)
-            commands[count - 1].vertex_count += drawn;
-        else
-            commands[count++] = {drawn, 1u, first_stipple[t], 0u};
-    }
-    return count;
-}
-
 double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     const ObjectGeometry& geometry = object.geometry;
     ObjectFrame& state = object.frame;
@@ -57,28 +36,34 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     });
     double sum = 0.0;
     for (float d : densities) sum += d;
-    if (draws_by_splat(object.params.density_path)) {
-        auto* list = reinterpret_cast<uint32_t*>(static_cast<std::byte*>(state.draw_staging.mapped()) +
-                                                 staged_list_offset(object));
-        uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
-        uint32_t count = 0;  // work items: runs of kSplatChunk drawn stipples (gpu::DrawnPolygons)
+    auto* list = reinterpret_cast<uint32_t*>(static_cast<std::byte*>(state.draw_staging.mapped()) +
+                                             staged_list_offset(object));
+    uint32_t count = 0;
+    // Each polygon that draws this frame: its first candidate and its drawn stipples.
+    auto for_each_drawing_polygon = [&](auto&& visit) {
         for (uint32_t t = 0; t < geometry.triangle_count; ++t) {
             if (!(densities[t] > 0.0f)) continue;
             const uint32_t first = geometry.first_stipple[t];
-            const uint32_t drawn = formulas::drawn_stipple_count(densities[t], geometry.first_stipple[t + 1] - first);
-            for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) items[count++] = first + k;
+            visit(first, formulas::drawn_stipple_count(densities[t], geometry.first_stipple[t + 1] - first));
         }
+    };
+    if (draws_by_splat(object.params.density_path)) {  // runs of kSplatChunk drawn stipples
+        uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
+        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn) {
+            for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) items[count++] = first + k;
+        });
         const uint32_t group = gpu::kDensityWorkgroupSize;
         const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};
         std::memcpy(list, &header, sizeof header);
-        state.cpu_drawn_polygons = count;
-        state.cpu_command_count = 0;
     } else {
-        auto* commands = static_cast<gpu::DrawCommand*>(state.cpu_commands.mapped());
-        state.cpu_command_count =
-            build_draw_commands(densities, geometry.first_stipple, std::span(commands, geometry.triangle_count));
-        state.cpu_commands.flush();
+        uint32_t* stipples = list + sizeof(gpu::DrawCommand) / sizeof(uint32_t);  // the survivors, drawn as one
+        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn) {
+            for (uint32_t k = 0; k < drawn; ++k) stipples[count++] = first + k;
+        });
+        const gpu::DrawCommand header{count, 1u, 0u, 0u};
+        std::memcpy(list, &header, sizeof header);
     }
+    state.cpu_listed = count;
     state.draw_staging.flush();
     return sum;
 }

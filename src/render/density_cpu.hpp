@@ -13,22 +13,16 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
                            const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
                            std::span<float> densities);
 
-// Draw commands for the surviving stipples: polygon t draws [first[t], first[t] + drawn_stipple_count).
-// Consecutive polygons merge into one command while each one before draws all of its candidates
-// (first[t + 1] - first[t]), so a dense region costs one draw, not one per polygon. Returns the number
-// of commands written.
-uint32_t build_draw_commands(std::span<const float> densities, std::span<const uint32_t> first_stipple,
-                             std::span<gpu::DrawCommand> commands);
-
 }  // namespace stipple
 
 namespace stipple {
 
 struct ObjectGpu;
 
-// The CPU density path for one object, this frame: densities into draw_staging and either the
-// surviving ranges (runs of fully drawn polygons merged) into cpu_commands, or, for cpu-splat, the
-// list of polygons that draw after the densities in draw_staging. Reads the object's documented CPU
+// The CPU density path for one object, this frame: densities into draw_staging and after them the
+// list the GPU draws from: for cpu, the stipples that draw (DrawCommand, then their indices, in
+// polygon order: the list shaders/drawn_stipples.comp writes on the GPU); for cpu-splat, the splat's
+// work items (DrawnPolygons). Reads the object's documented CPU
 // inputs only: PolygonConstants::cpu, ObjectGeometry::first_stipple and this frame's uniforms.
 // Returns the sum of the densities.
 double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame);

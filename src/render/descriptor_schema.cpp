@@ -20,7 +20,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingObject, kUniform}, [](const O& o) { return o.frame.object_uniforms.handle(); }},
     {{gpu::kBindingTriangleDraw, kStorage}, [](const O& o) { return o.frame.triangle_draw.handle(); }},
     {{gpu::kBindingTriangleInfo, kStorage}, [](const O& o) { return o.polygons.gpu.handle(); }},
-    {{gpu::kBindingDrawCommands, kStorage}, [](const O& o) { return o.frame.gpu_commands.handle(); }},
+    {{gpu::kBindingDrawnStipples, kStorage}, [](const O& o) { return o.frame.drawn_stipples.handle(); }},
     {{gpu::kBindingDebug, kStorage}, [](const O& o) { return o.frame.debug.handle(); }},
     {{gpu::kBindingStipples, kStorage}, [](const O& o) { return o.geometry.stipples.handle(); }},
     {{gpu::kBindingDrawnPolygons, kStorage}, [](const O& o) { return o.frame.drawn_polygons.handle(); }},

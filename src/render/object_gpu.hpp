@@ -60,9 +60,8 @@ struct ObjectFrame {
     gpu::Buffer triangle_draw;     // TriangleDraw per polygon: density per frame, first stipple constant
     // Buffers of one density path or two (PathBuffer), full size once the object draws with that path.
     gpu::Buffer drawn_polygons;    // splat paths: DrawnPolygons header + the work items drawing this frame
-    gpu::Buffer draw_staging;      // CPU paths: densities (and cpu-splat's list) on their way to the GPU
-    gpu::Buffer gpu_commands;      // indirect path: DrawCommandsHeader + DrawCommand per polygon
-    gpu::Buffer cpu_commands;      // cpu path: DrawCommand per surviving range
+    gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU
+    gpu::Buffer drawn_stipples;    // indirect and cpu paths: DrawCommand + the stipples drawing this frame
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
     gpu::Buffer facing;            // one bit per polygon: it faces away this frame (objects with lines)
     gpu::Buffer line_candidates;   // LineCandidates + this frame's edges with an object-space line
@@ -70,8 +69,7 @@ struct ObjectFrame {
     uint32_t line_piece_capacity = 0;
     gpu::Buffer debug;             // DebugCounters + drawn bit mask, when counting
     gpu::Buffer visible_stipples;  // VisibleStipplesHeader + VisibleStipple per candidate, when recording
-    uint32_t cpu_command_count = 0;   // cpu path: draws written this frame
-    uint32_t cpu_drawn_polygons = 0;  // cpu-splat path: work items in this frame's list
+    uint32_t cpu_listed = 0;          // CPU paths: entries of this frame's list (work items or stipples)
     float line_width = 1.0f;          // line width this frame (thinned, §3.1), every kind of line
     bool splatted = false;            // drawn by the compute splat this frame
 };

@@ -12,20 +12,18 @@ const char* path_buffer_name(PathBuffer kind) {
     switch (kind) {
         case PathBuffer::DrawnPolygons: return "drawn_polygons";
         case PathBuffer::DrawStaging: return "draw_staging";
-        case PathBuffer::GpuCommands: return "gpu_commands";
-        case PathBuffer::CpuCommands: break;
+        case PathBuffer::DrawnStipples: break;
     }
-    return "cpu_commands";
+    return "drawn_stipples";
 }
 
 Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind) {
     switch (kind) {
         case PathBuffer::DrawnPolygons: return frame.drawn_polygons;
         case PathBuffer::DrawStaging: return frame.draw_staging;
-        case PathBuffer::GpuCommands: return frame.gpu_commands;
-        case PathBuffer::CpuCommands: break;
+        case PathBuffer::DrawnStipples: break;
     }
-    return frame.cpu_commands;
+    return frame.drawn_stipples;
 }
 
 const Buffer& path_buffer(const ObjectFrame& frame, PathBuffer kind) {
@@ -37,14 +35,15 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
     // At most one splat work item per polygon plus one per kSplatChunk candidates (gpu::DrawnPolygons).
     const VkDeviceSize items = n + object.geometry.stipple_count / gpu::kSplatChunk;
     const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * items;
+    // Every candidate may draw (a close-up), each listed once.
+    const VkDeviceSize survivors = sizeof(gpu::DrawCommand) + sizeof(uint32_t) * VkDeviceSize(object.geometry.stipple_count);
+    const bool lists_survivors = path == DensityPath::Cpu || path == DensityPath::Indirect;
     switch (kind) {
         case PathBuffer::DrawnPolygons: return draws_by_splat(path) ? list : 0;
         case PathBuffer::DrawStaging:
-            if (path == DensityPath::Cpu) return staged_list_offset(object);
+            if (path == DensityPath::Cpu) return staged_list_offset(object) + survivors;
             return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
-        case PathBuffer::GpuCommands:
-            return path == DensityPath::Indirect ? sizeof(gpu::DrawCommandsHeader) + sizeof(gpu::DrawCommand) * n : 0;
-        case PathBuffer::CpuCommands: return path == DensityPath::Cpu ? sizeof(gpu::DrawCommand) * n : 0;
+        case PathBuffer::DrawnStipples: return lists_survivors ? survivors : 0;
     }
     return 0;
 }
@@ -54,13 +53,12 @@ Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSi
     const auto indirect = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
     const auto destination = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     switch (kind) {
-        case PathBuffer::DrawnPolygons:
-        case PathBuffer::GpuCommands:  // written by a compute pass, read as indirect arguments
-            return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
         case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
-        case PathBuffer::CpuCommands: break;
+        case PathBuffer::DrawnPolygons:
+        case PathBuffer::DrawnStipples: break;
     }
-    return Buffer(context, bytes, indirect, MemoryUse::Upload);
+    // Written by a compute pass or copied from the staging buffer, read as indirect arguments.
+    return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);
 }
 
 void ensure_path_buffers(ObjectGpu& object, DensityPath path) {

@@ -14,9 +14,9 @@ struct ObjectFrame;
 
 inline constexpr VkDeviceSize kPathBufferPlaceholderBytes = 32;
 
-enum class PathBuffer { DrawnPolygons, DrawStaging, GpuCommands, CpuCommands };
+enum class PathBuffer { DrawnPolygons, DrawStaging, DrawnStipples };
 inline constexpr PathBuffer kPathBuffers[] = {PathBuffer::DrawnPolygons, PathBuffer::DrawStaging,
-                                              PathBuffer::GpuCommands, PathBuffer::CpuCommands};
+                                              PathBuffer::DrawnStipples};
 
 const char* path_buffer_name(PathBuffer kind);
 gpu::Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind);
@@ -32,7 +32,8 @@ gpu::Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDev
 // using the object (StippleRenderer::prepare's contract).
 void ensure_path_buffers(ObjectGpu& object, DensityPath path);
 
-// Where draw_staging holds the cpu-splat path's list (DrawnPolygons header, then the polygons).
+// Where draw_staging holds the list the CPU writes after the densities: the cpu-splat path's work list
+// (DrawnPolygons header, then the items) or the cpu path's survivors (DrawCommand, then the stipples).
 VkDeviceSize staged_list_offset(const ObjectGpu& object);
 
 }  // namespace stipple

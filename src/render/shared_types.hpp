@@ -36,8 +36,6 @@ static_assert(offsetof(LinePiecesHeader, capacity) == 16);
 static_assert(sizeof(LinePiece) == 24);
 static_assert(offsetof(LinePiece, edge) == 16);
 
-static_assert(sizeof(DrawCommandsHeader) == 16);
-static_assert(offsetof(DrawCommandsHeader, count) == 0);
 static_assert(sizeof(DebugCounters) == 16);
 static_assert(offsetof(DebugCounters, drawn) == 0);
 

@@ -36,8 +36,8 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     deform_pass_.reset();
-    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, density_pipeline_,
-                         density_list_pipeline_, facing_pipeline_, draw_commands_pipeline_, toon_pipeline_,
+    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, stipple_list_pipeline_,
+                         density_pipeline_, density_list_pipeline_, facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
                          line_pieces_pipeline_,
                          splat_pipeline_})
@@ -82,6 +82,8 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.color_format = color_format;
     stipple.depth_format = depth_format;
     stipple_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layouts_.pipeline);
+    stipple.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
+    stipple_list_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc toon = depth;
     toon.vertex_shader = "toon.vert";
@@ -108,7 +110,7 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
         {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}, {gpu::kSpecRecordVisible, record}}});
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
-    draw_commands_pipeline_ = gpu::create_compute_pipeline(context_, "draw_commands.comp", layouts_.pipeline);
+    drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
 }
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
@@ -180,10 +182,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         object->frame.uniforms = make_object_uniforms(*object, view, object->frame.line_width);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
-        if (density_on_cpu(object->params.density_path)) {
-            run_cpu_density(*object, frame_);
-            stats_.cpu_draw_commands += object->frame.cpu_command_count;
-        }
+        if (density_on_cpu(object->params.density_path)) run_cpu_density(*object, frame_);
         stats_.triangles += object->geometry.triangle_count;
         stats_.candidate_stipples += object->geometry.stipple_count;
     }
@@ -217,18 +216,23 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdFillBuffer(cb, object->frame.visible_stipples.handle(), 0, sizeof(gpu::VisibleStipplesHeader), 0);
         object->frame.splatted = uses_splat(*object);
         const bool splat = uses_splat(*object);
-        if (density_on_cpu(object->params.density_path)) {
+        if (density_on_cpu(object->params.density_path)) {  // the densities, then the list the CPU wrote
+            const bool points = object->params.density_path == DensityPath::Cpu;
+            const VkDeviceSize header = points ? sizeof(gpu::DrawCommand) : sizeof(gpu::DrawnPolygons);
             VkBufferCopy regions[2] = {{0, 0, staged_list_offset(*object)},
-                                       {staged_list_offset(*object), 0,
-                                        sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * object->frame.cpu_drawn_polygons}};
+                                       {staged_list_offset(*object), 0, header + sizeof(uint32_t) * object->frame.cpu_listed}};
             vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.triangle_draw.handle(), 1, &regions[0]);
-            if (splat) vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
+            if (points)
+                vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_stipples.handle(), 1, &regions[1]);
+            else if (splat)
+                vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
             if (draws_edge_lines(*object)) dispatch(*object, facing_pipeline_);  // the lines' facing bits
             continue;
         }
         any_pass = true;
-        if (object->params.density_path == DensityPath::Indirect) {
-            vkCmdFillBuffer(cb, object->frame.gpu_commands.handle(), 0, sizeof(gpu::DrawCommandsHeader), 0);
+        if (object->params.density_path == DensityPath::Indirect) {  // an empty list: no points yet
+            const gpu::DrawCommand empty{0u, 1u, 0u, 0u};
+            vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
             any_indirect = true;
         }
         if (splat) {  // an empty list: no groups yet (y and z are 1)
@@ -244,7 +248,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             if (object->geometry.triangle_count > 0 && !density_on_cpu(object->params.density_path))
                 dispatch(*object, uses_splat(*object) ? density_list_pipeline_ : density_pipeline_);
     }
-    // Indirect path: merged draws of the surviving ranges, from the densities just written.
+    // Indirect path: the list of the stipples that draw, from the densities just written.
     if (any_indirect) {
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -252,7 +256,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         for (auto& object : objects_)
             if (object->geometry.triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
-                dispatch(*object, draw_commands_pipeline_);
+                dispatch(*object, drawn_stipples_pipeline_);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -287,41 +291,25 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
 }
 
 void StippleRenderer::record_stipples(VkCommandBuffer cb) {
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, stipple_pipeline_);
-    // The indirect path's objects are drawn last: lavapipe (Mesa 22.3) keeps a vkCmdDrawIndirectCount's
-    // count buffer for a later plain vkCmdDrawIndirect in the same command buffer, so a cpu-path object
-    // drawn after an indirect one drew only as many ranges as the indirect object's count (tested:
-    // SceneObjects, an indirect object before a cpu one). Objects' stipples do not overlap in a way
-    // that this order changes.
-    std::vector<const ObjectGpu*> order;
-    for (const auto& object : objects_)
-        if (object->params.density_path != DensityPath::Indirect) order.push_back(object.get());
-    for (const auto& object : objects_)
-        if (object->params.density_path == DensityPath::Indirect) order.push_back(object.get());
-    for (const ObjectGpu* object : order) {
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& object : objects_) {
         if (object->geometry.stipple_count == 0 || uses_splat(*object)) continue;
+        // The indirect and cpu paths draw their list of survivors, in one draw of as many points as
+        // the list holds; the others every candidate, culled by the vertex shader.
+        const bool listed = object->params.density_path == DensityPath::Indirect ||
+                            object->params.density_path == DensityPath::Cpu;
+        const VkPipeline pipeline = listed ? stipple_list_pipeline_ : stipple_pipeline_;
+        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        bound = pipeline;
         VkDeviceSize offset = 0;
         VkBuffer vb = object->geometry.stipples.handle();
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        switch (object->params.density_path) {
-            case DensityPath::Vertex:    // every candidate; the vertex shader culls (§3.2)
-            case DensityPath::Splat:     // targets without the splat's transfers: drawn as the vertex path
-            case DensityPath::CpuSplat:  // the same, culled by the CPU's densities
-                vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
-                break;
-            case DensityPath::Cpu:
-                if (object->frame.cpu_command_count > 0)
-                    vkCmdDrawIndirect(cb, object->frame.cpu_commands.handle(), 0, object->frame.cpu_command_count,
-                                      sizeof(gpu::DrawCommand));
-                break;
-            case DensityPath::Indirect:
-                vkCmdDrawIndirectCount(cb, object->frame.gpu_commands.handle(), sizeof(gpu::DrawCommandsHeader),
-                                       object->frame.gpu_commands.handle(), 0,
-                                       object->geometry.triangle_count, sizeof(gpu::DrawCommand));
-                break;
-        }
+        if (listed)
+            vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
+        else  // vertex; splat and cpu-splat on targets without the splat's transfers
+            vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
     }
 }
 

@@ -71,7 +71,6 @@ struct FrameStats {
     uint64_t candidate_stipples = 0;
     int64_t drawn_stipples = -1;  // counted on the GPU; -1 unless RendererOptions::count_drawn
     double cpu_density_ms = 0.0;  // CPU time of the CPU density path this frame
-    uint64_t cpu_draw_commands = 0;  // indirect draws the CPU path submitted (merged ranges)
     std::vector<std::pair<std::string, double>> gpu_ms;  // per pass, after collect()
 };
 
@@ -150,10 +149,11 @@ private:
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
     std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
-    VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;       // every candidate; the vertex shader culls (§3.2)
+    VkPipeline stipple_list_pipeline_ = VK_NULL_HANDLE;  // the survivors' list (indirect and cpu paths)
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_list_pipeline_ = VK_NULL_HANDLE;  // also lists the polygons that draw, for the splat
-    VkPipeline draw_commands_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
