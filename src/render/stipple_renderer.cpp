@@ -194,6 +194,10 @@ bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
     return draws_by_splat(object.params.density_path) && splat_targets_;
 }
 
+bool StippleRenderer::paper_under_splat() const {
+    return std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) { return o->params.toon || draws_points(*o); });
+}
+
 bool StippleRenderer::draws_points(const ObjectGpu& object) const {
     return object.geometry.stipple_count > 0 && !uses_splat(object);
 }
@@ -349,7 +353,10 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
 
     // One rendering scope per pass: a software rasteriser bins a whole scope and rasterises it at its
     // end, so timestamps between passes inside one scope would not measure the passes.
-    begin_rendering(cb, targets, true);
+    // When the splat writes every pixel afterwards (its image holds the paper wherever no ink falls),
+    // the colour need not be cleared first: 0.35 ms of a software GPU's frame at 1280x1024.
+    const bool splat_covers_image = any_splat && paper_under_splat();
+    begin_rendering(cb, targets, true, !splat_covers_image);
     record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
     vkCmdEndRendering(cb);
     timer_.mark(cb, "depth");
@@ -379,7 +386,8 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     }
 }
 
-void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const {
+void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear,
+                                      bool clear_color) const {
     if (!clear) {  // the previous pass's writes before this one's reads and writes
         gpu::memory_barrier(cb,
                             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
@@ -393,7 +401,8 @@ void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& t
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = targets.color_view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.loadOp = !clear ? VK_ATTACHMENT_LOAD_OP_LOAD
+                          : (clear_color ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE);
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     color.clearValue.color = {{view_.paper_color.r, view_.paper_color.g, view_.paper_color.b, 1.0f}};
     const bool stencil = gpu::format_has_stencil(depth_format_);
@@ -468,9 +477,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
 
     // The colour so far: the background the splat mixes ink into, and the buffer it draws in. With
     // only paper under the splat (no toon surfaces, no stipples drawn as points) both are a fill.
-    const bool paper_only = std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) {
-        return o->params.toon || draws_points(*o);
-    });
+    const bool paper_only = paper_under_splat();
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
     gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

@@ -134,12 +134,14 @@ private:
     void record_stipples(VkCommandBuffer cb);
     void record_line_edges(VkCommandBuffer cb);  // line_passes.cpp
     void record_lines(VkCommandBuffer cb);       // line_passes.cpp
-    void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear) const;
+    // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
+    void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
     void ensure_frame_buffers(VkExtent2D extent);
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
+    bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
     void ensure_visible_list(ObjectGpu& object);       // record_visible: room for every candidate
 
     const gpu::Context& context_;
