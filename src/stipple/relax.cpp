@@ -43,9 +43,12 @@ struct Candidates {
         count = (n + kLanes - 1) / kLanes * kLanes;
         if (x.size() < count) x.resize(2 * count), y.resize(2 * count), z.resize(2 * count);
         size_t i = 0;
-        for (int r = 0; r < run_count; ++r) {
-            for (uint32_t j = runs[r].begin; j < runs[r].end; ++j, ++i)
-                x[i] = grid.xs()[j], y[i] = grid.ys()[j], z[i] = grid.zs()[j];
+        for (int r = 0; r < run_count; ++r) {  // whole runs: three block copies, not a loop of scalars
+            const uint32_t begin = runs[r].begin, length = runs[r].end - runs[r].begin;
+            std::copy_n(grid.xs() + begin, length, x.data() + i);
+            std::copy_n(grid.ys() + begin, length, y.data() + i);
+            std::copy_n(grid.zs() + begin, length, z.data() + i);
+            i += length;
         }
         for (; i < count; ++i) x[i] = y[i] = z[i] = std::numeric_limits<float>::max();
     }
