@@ -206,7 +206,7 @@ glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm:
     return bary.x * a + bary.y * b + bary.z * c;
 }
 
-void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std::vector<glm::vec3>& positions,
+void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::vector<glm::vec3>& positions,
                     double spacing, int iterations, const std::function<void(double)>& progress) {
     const size_t n = positions.size();
     if (n < 2 || iterations <= 0 || !(spacing > 0.0)) return;
@@ -217,16 +217,19 @@ void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std
     // move little per iteration, so later grids come out nearly in input order and every pass
     // below walks memory sequentially instead of jumping between the triangle order and the cell
     // order.
+    // One array at a time, so that a stipple never costs more than an iteration's 48 bytes (the
+    // caller's position and triangle, 16, are freed once copied and rebuilt at the end).
     PointGrid grid;
     grid.build(positions, h);
     std::vector<uint32_t> original(n);
+    for (uint32_t slot = 0; slot < n; ++slot) original[slot] = grid.sorted_index(slot);
+    grid = PointGrid();
     std::vector<glm::vec3> pos(n);
+    for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
+    std::vector<glm::vec3>().swap(positions);
     std::vector<uint32_t> tri(n);
-    for (uint32_t slot = 0; slot < n; ++slot) {
-        original[slot] = grid.sorted_index(slot);
-        pos[slot] = positions[original[slot]];
-        tri[slot] = triangle_of[original[slot]];
-    }
+    for (uint32_t slot = 0; slot < n; ++slot) tri[slot] = triangle_of[original[slot]];
+    std::vector<uint32_t>().swap(triangle_of);
 
     static const RepulsionKernel kernel = pick_kernel();
     for (int it = 0; it < iterations; ++it) {
@@ -261,7 +264,10 @@ void relax_stipples(const Mesh& mesh, std::span<const uint32_t> triangle_of, std
         });
         if (progress) progress(double(it + 1) / iterations);
     }
-    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];
+    grid = PointGrid();  // its memory before the arrays come back
+    positions.resize(n);
+    triangle_of.resize(n);
+    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i], triangle_of[original[i]] = tri[i];
 }
 
 }  // namespace stipple
