@@ -219,11 +219,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::v
     // order.
     // One array at a time, so that a stipple never costs more than an iteration's 48 bytes (the
     // caller's position and triangle, 16, are freed once copied and rebuilt at the end).
-    PointGrid grid;
-    grid.build(positions, h);
-    std::vector<uint32_t> original(n);
-    for (uint32_t slot = 0; slot < n; ++slot) original[slot] = grid.sorted_index(slot);
-    grid = PointGrid();
+    const std::vector<uint32_t> original = PointGrid::spatial_order(positions, h);
     std::vector<glm::vec3> pos(n);
     for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
     std::vector<glm::vec3>().swap(positions);
@@ -232,6 +228,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::v
     std::vector<uint32_t>().swap(triangle_of);
 
     static const RepulsionKernel kernel = pick_kernel();
+    PointGrid grid;
     for (int it = 0; it < iterations; ++it) {
         // Jacobi: every force comes from the positions of the previous iteration (the grid holds
         // a copy), so each stipple can move as soon as its force is known, and the order in which
