@@ -75,8 +75,11 @@ TEST(ParamTable, EveryParameterRoundTripsThroughCommandLineAndSceneFile) {
         const ObjectParams from_cli = read_cli(cli_words(spec, value));
         EXPECT_EQ(spec.get(from_cli), value) << "the command line did not set it";
         // Only this parameter changed.
-        for (const ParamSpec& other : param_table())
-            if (&other != &spec && !other.alias) EXPECT_EQ(other.get(from_cli), other.get(ObjectParams{})) << other.key;
+        for (const ParamSpec& other : param_table()) {
+            if (&other != &spec && !other.alias) {
+                EXPECT_EQ(other.get(from_cli), other.get(ObjectParams{})) << other.key;
+            }
+        }
 
         const std::string saved = scene_to_json(scene_with(from_cli), dir);
         const Scene loaded = parse_scene(saved, "saved.json", dir);

@@ -11,8 +11,8 @@ namespace stipple {
 // How the per-frame density reaches the stipples (Table 1's columns, and ones beyond the paper).
 enum class DensityPath {
     Vertex,    // compute pass writes densities; every candidate drawn, vertex shader culls (§3.2)
-    Cpu,       // CPU computes densities; only surviving ranges are submitted (the "no vertex program" path)
-    Indirect,  // compute pass also writes compacted draws; vkCmdDrawIndirectCount
+    Cpu,       // CPU computes densities and lists the survivors, drawn in one draw (the "no vertex program" path)
+    Indirect,  // compute pass also lists the survivors (drawn_stipples.comp); one vkCmdDrawIndirect
     Splat,     // compute pass densities, then a compute pass draws the stipples itself (no rasteriser)
     CpuSplat,  // CPU computes densities (as Cpu), the compute splat draws them (as Splat)
 };

@@ -86,7 +86,7 @@ const ParamSpec kTable[] = {
     {"density_path", "density-path", "density path", kDrawing,
      "where the density is computed and what draws the stipples: vertex (compute pass, the vertex shader "
      "culls: the paper's vertex program), cpu (CPU densities, only survivors submitted), indirect (compute "
-     "pass writes compacted draws), splat (a compute pass draws the stipples, the fastest on lavapipe), "
+     "pass lists the survivors, one draw), splat (a compute pass draws the stipples, the fastest on lavapipe), "
      "cpu-splat (CPU densities drawn by the splat)",
      ParamType::Choice, 0, 0, false, kDensityPathNames, ParamEffect::Frame, ParamWidget::Combo, false,
      [](const P& p) { return double(int(p.density_path)); },
