@@ -227,7 +227,6 @@ void Context::create_device(const ContextOptions& options) {
     enabled.multiDrawIndirect = supported.multiDrawIndirect;
     enabled.depthBiasClamp = supported.depthBiasClamp;
     VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    enabled12.drawIndirectCount = supported12.drawIndirectCount;
     enabled12.hostQueryReset = supported12.hostQueryReset;
     enabled12.shaderFloat16 = VK_FALSE;
     VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
@@ -238,7 +237,6 @@ void Context::create_device(const ContextOptions& options) {
     features.large_points = supported.largePoints;
     features.wide_lines = supported.wideLines;
     features.pipeline_statistics = supported.pipelineStatisticsQuery;
-    features.draw_indirect_count = supported12.drawIndirectCount;
     features.max_point_size = supported.largePoints ? properties.limits.pointSizeRange[1] : 1.0f;
     features.max_line_width = supported.wideLines ? properties.limits.lineWidthRange[1] : 1.0f;
     features.timestamp_period_ns = properties.limits.timestampPeriod;

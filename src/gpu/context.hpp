@@ -27,7 +27,6 @@ struct DeviceFeatures {
     bool large_points = false;
     bool wide_lines = false;
     bool pipeline_statistics = false;
-    bool draw_indirect_count = false;
     bool timestamps = false;
     float max_point_size = 1.0f;
     float max_line_width = 1.0f;
