@@ -167,9 +167,10 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
     });
     bar.update(0.05);
 
-    relax_stipples(mesh, set.triangle, set.positions, set.poisson_radius, params.relax_iterations,
+    // The relaxation takes the triangles, and the order does without them (4 bytes a stipple less at
+    // the peaks of both): they are filled again from the counts after.
+    relax_stipples(mesh, std::move(set.triangle), set.positions, set.poisson_radius, params.relax_iterations,
                    [&](double f) { bar.update(0.05 + 0.65 * f); });  // about the shares of the time
-    std::vector<uint32_t>().swap(set.triangle);  // not needed by the order: 4 bytes a stipple less at its peak
     progressive_order(set.positions, set.first, set.poisson_radius, params.seed,
                       [&](double f) { bar.update(0.70 + 0.30 * f); });
     fill_triangles();

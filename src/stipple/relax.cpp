@@ -206,7 +206,7 @@ glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm:
     return bary.x * a + bary.y * b + bary.z * c;
 }
 
-void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::vector<glm::vec3>& positions,
+void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::vector<glm::vec3>& positions,
                     double spacing, int iterations, const std::function<void(double)>& progress) {
     const size_t n = positions.size();
     if (n < 2 || iterations <= 0 || !(spacing > 0.0)) return;
@@ -216,16 +216,15 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::v
     // Work on a copy in the grid's spatial order (one sort up front, undone at the end): points
     // move little per iteration, so later grids come out nearly in input order and every pass
     // below walks memory sequentially instead of jumping between the triangle order and the cell
-    // order.
-    // One array at a time, so that a stipple never costs more than an iteration's 48 bytes (the
-    // caller's position and triangle, 16, are freed once copied and rebuilt at the end).
+    // order. One array at a time, so that a stipple never costs more than an iteration's 48 bytes (the
+    // caller's positions and triangles, 16, are freed once copied; the positions come back at the end).
     const std::vector<uint32_t> original = PointGrid::spatial_order(positions, h);
     std::vector<glm::vec3> pos(n);
     for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
     std::vector<glm::vec3>().swap(positions);
     std::vector<uint32_t> tri(n);
     for (uint32_t slot = 0; slot < n; ++slot) tri[slot] = triangle_of[original[slot]];
-    std::vector<uint32_t>().swap(triangle_of);
+    std::vector<uint32_t>().swap(triangle_of);  // taken: the caller rebuilds it from the counts
 
     static const RepulsionKernel kernel = pick_kernel();
     PointGrid grid;
@@ -261,10 +260,10 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::v
         });
         if (progress) progress(double(it + 1) / iterations);
     }
-    grid = PointGrid();  // its memory before the arrays come back
+    grid = PointGrid();  // its memory before the positions come back
+    std::vector<uint32_t>().swap(tri);
     positions.resize(n);
-    triangle_of.resize(n);
-    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i], triangle_of[original[i]] = tri[i];
+    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];
 }
 
 }  // namespace stipple

@@ -18,9 +18,10 @@ namespace stipple {
 // the hexagonal-packing spacing at the stipple density (neighbours within 2 * spacing repel).
 // Deterministic for any thread count (Jacobi iterations over fixed chunks).
 // `progress`, if set, is called with the fraction done after each iteration.
-// It works on copies in spatial order and frees `triangle_of` and `positions` meanwhile (a stipple
-// costs 48 bytes at the peak instead of 64); both hold the same stipples again when it returns.
-void relax_stipples(const Mesh& mesh, std::vector<uint32_t>& triangle_of, std::vector<glm::vec3>& positions,
+// It works on copies in spatial order and frees `positions` meanwhile (a stipple costs 48 bytes at
+// the peak instead of 64); they hold the relaxed stipples when it returns. It takes `triangle_of`
+// (derivable from the triangles' counts, which is how the caller gets it back).
+void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::vector<glm::vec3>& positions,
                     double spacing, int iterations, const std::function<void(double)>& progress = {});
 
 // The point of triangle (a, b, c) closest to p, moved inside by a hair (barycentric coordinates
