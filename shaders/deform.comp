@@ -10,17 +10,29 @@ layout(local_size_x = kDeformWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingDeformVertices, std430) readonly buffer Vertices { DeformVertex vertices[]; };
 layout(set = 0, binding = kBindingDeformMorphDeltas, std430) readonly buffer Deltas { MorphDelta deltas[]; };
-layout(set = 0, binding = kBindingDeformPalette, std430) readonly buffer Palette { mat4 palette[]; };
+// Three texels per slot: the top three rows of its affine matrix (the fourth is always 0 0 0 1). A
+// texel buffer rather than a storage buffer: a software GPU gathers a texel's four floats at once.
+layout(set = 0, binding = kBindingDeformPalette) uniform samplerBuffer palette_rows;
 layout(set = 0, binding = kBindingDeformMorphWeights, std430) readonly buffer Weights { float morph_weights[]; };
 layout(set = 0, binding = kBindingDeformPositions, std430) writeonly buffer Positions { float positions[]; };
 layout(set = 0, binding = kBindingDeformNormals, std430) writeonly buffer Normals { float normals[]; };
 
 layout(push_constant) uniform Push { DeformPush push; };
+layout(constant_id = kSpecDeformInfluences) const uint kInfluences = kDeformMaxInfluences;
 
-// One influence added to the blended matrix. Called with constant slot halves only: indexing a vector
-// with a variable makes a software GPU spill it to memory.
-void add_influence(inout mat4 m, float weight, uint slot) {
-    if (weight != 0.0) m += weight * palette[slot];
+// The blended matrix's three rows: three fetches an influence.
+struct Blend {
+    vec4 r0, r1, r2;
+};
+
+// One influence added to the blend. Called with constant slot halves only: indexing a vector with a
+// variable makes a software GPU spill it to memory.
+void add_influence(inout Blend m, float weight, uint slot) {
+    if (weight != 0.0) {
+        m.r0 += weight * texelFetch(palette_rows, int(3u * slot));
+        m.r1 += weight * texelFetch(palette_rows, int(3u * slot + 1u));
+        m.r2 += weight * texelFetch(palette_rows, int(3u * slot + 2u));
+    }
 }
 
 void main() {
@@ -39,26 +51,30 @@ void main() {
         normal += w * d.normal.xyz;
     }
 
-    // The blended matrix (only its top three rows matter: palette matrices are affine). Weights are
-    // sorted by nothing, but a vertex has at least one, and most have none in the second set.
+    // The blended matrix (only its top three rows matter: palette matrices are affine). The used pairs
+    // come first, and a vertex has at least one.
     uvec4 slots = vertex.slots;
     vec4 w0 = vertex.weights0;
-    mat4 m = w0.x * palette[slots.x & 0xFFFFu];
-    add_influence(m, w0.y, slots.x >> 16u);
-    add_influence(m, w0.z, slots.y & 0xFFFFu);
-    add_influence(m, w0.w, slots.y >> 16u);
-    vec4 w1 = vertex.weights1;
-    if (w1 != vec4(0.0)) {
-        add_influence(m, w1.x, slots.z & 0xFFFFu);
-        add_influence(m, w1.y, slots.z >> 16u);
-        add_influence(m, w1.z, slots.w & 0xFFFFu);
-        add_influence(m, w1.w, slots.w >> 16u);
+    uint first = slots.x & 0xFFFFu;
+    Blend m = Blend(w0.x * texelFetch(palette_rows, int(3u * first)), w0.x * texelFetch(palette_rows, int(3u * first + 1u)), w0.x * texelFetch(palette_rows, int(3u * first + 2u)));
+    if (kInfluences > 1u) add_influence(m, w0.y, slots.x >> 16u);
+    if (kInfluences > 2u) add_influence(m, w0.z, slots.y & 0xFFFFu);
+    if (kInfluences > 3u) add_influence(m, w0.w, slots.y >> 16u);
+    if (kInfluences > 4u) {
+        vec4 w1 = vertex.weights1;
+        if (w1 != vec4(0.0)) {
+            add_influence(m, w1.x, slots.z & 0xFFFFu);
+            if (kInfluences > 5u) add_influence(m, w1.y, slots.z >> 16u);
+            if (kInfluences > 6u) add_influence(m, w1.z, slots.w & 0xFFFFu);
+            if (kInfluences > 7u) add_influence(m, w1.w, slots.w >> 16u);
+        }
     }
 
-    vec3 p = (m * vec4(position, 1.0)).xyz;
+    vec4 homogeneous = vec4(position, 1.0);
+    vec3 p = vec3(dot(m.r0, homogeneous), dot(m.r1, homogeneous), dot(m.r2, homogeneous));
     // Inverse transpose by cofactors: its columns are the cross products of the matrix's columns,
     // over det; only det's sign survives the normalisation (and a singular matrix still gives one).
-    vec3 c0 = m[0].xyz, c1 = m[1].xyz, c2 = m[2].xyz;
+    vec3 c0 = vec3(m.r0.x, m.r1.x, m.r2.x), c1 = vec3(m.r0.y, m.r1.y, m.r2.y), c2 = vec3(m.r0.z, m.r1.z, m.r2.z);
     vec3 x = cross(c1, c2);
     float det_sign = dot(c0, x) < 0.0 ? -1.0 : 1.0;
     vec3 n = mat3(x, cross(c2, c0), cross(c0, c1)) * normal;

@@ -13,6 +13,10 @@ namespace stipple::gpu {
 STIPPLE_CONST uint kDeformWorkgroupSize = 64;
 // Influences per vertex: glTF's JOINTS_0/WEIGHTS_0 and JOINTS_1/WEIGHTS_1.
 STIPPLE_CONST uint kDeformMaxInfluences = 8;
+// deform.comp's specialisation constant: how many of a vertex's influence pairs it reads (the most
+// that any vertex of the model uses; pack_deform_vertices puts the used pairs first). A software GPU
+// runs both sides of a data-dependent branch, so skipping unused pairs at run time saves nothing there.
+STIPPLE_CONST uint kSpecDeformInfluences = 0;
 // Palette slots are stored as 16-bit numbers, two per uint.
 STIPPLE_CONST uint kDeformMaxPaletteSlots = 65536;
 // Morph weights: the first weight in 16 bits, the target count in the other 16.
@@ -21,7 +25,7 @@ STIPPLE_CONST uint kDeformMaxMorphWeights = 65536;
 // Descriptor bindings of the deformation pass's own set (set 0 of its pipeline layout).
 STIPPLE_CONST uint kBindingDeformVertices = 0;     // DeformVertex[] (read)
 STIPPLE_CONST uint kBindingDeformMorphDeltas = 1;  // MorphDelta[] (read)
-STIPPLE_CONST uint kBindingDeformPalette = 2;      // mat4[] (read): per slot, world(node, t) * inverse bind
+STIPPLE_CONST uint kBindingDeformPalette = 2;      // vec4[3 per slot] (read): top three rows of world(node, t) * inverse bind
 STIPPLE_CONST uint kBindingDeformMorphWeights = 3; // float[] (read): this frame's morph weights
 STIPPLE_CONST uint kBindingDeformPositions = 4;    // float[] (write): 3 floats per vertex, as kBindingMeshPositions
 STIPPLE_CONST uint kBindingDeformNormals = 5;      // float[] (write): 3 floats per vertex, unit length

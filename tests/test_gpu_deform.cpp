@@ -84,6 +84,26 @@ TEST_F(GpuDeform, GeneratedRigsMatchTheCpuReference) {
         expect_matches(test::load_rig(builder, "gpu_deform_" + name, name), name, kTimes);
 }
 
+TEST_F(GpuDeform, ReadsOnlyTheInfluencesTheModelUses) {
+    // The kernel is specialised for the busiest vertex's number of used pairs, which pack first: a
+    // wrong count or packing would leave influences out (and the comparisons above would fail).
+    const AnimatedModel cylinder = test::load_rig(rigs::bending_cylinder(), "gpu_deform_used_cylinder", "cylinder");
+    const AnimatedModel box = test::load_rig(rigs::node_animated_box(), "gpu_deform_used_box", "box");
+    const AnimatedModel eight = test::load_rig(rigs::eight_joint_sheet(), "gpu_deform_used_eight", "eight");
+    EXPECT_EQ(most_used_influences(cylinder), 2u);
+    EXPECT_EQ(most_used_influences(box), 1u);
+    EXPECT_EQ(most_used_influences(eight), 8u);
+    for (const AnimatedModel* model : {&cylinder, &eight}) {
+        const std::vector<gpu::DeformVertex> packed = pack_deform_vertices(*model);
+        for (size_t v = 0; v < packed.size(); ++v) {
+            const float w[8] = {packed[v].weights0.x, packed[v].weights0.y, packed[v].weights0.z, packed[v].weights0.w,
+                                packed[v].weights1.x, packed[v].weights1.y, packed[v].weights1.z, packed[v].weights1.w};
+            for (int i = 1; i < 8; ++i)
+                if (w[i] != 0.0f) ASSERT_NE(w[i - 1], 0.0f) << "vertex " << v << ": a used pair after an unused one";
+        }
+    }
+}
+
 TEST_F(GpuDeform, FoxMatchesTheCpuReference) {
     const std::string fox = test::shared_model("fox.glb");
     if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <span>
 
+#include <glm/gtc/matrix_access.hpp>
+
 #include "anim/deform_layout.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -10,6 +12,20 @@
 #include "gpu/vk_check.hpp"
 
 namespace stipple::anim {
+
+namespace {
+VkDescriptorType descriptor_type(uint32_t binding) {
+    return binding == gpu::kBindingDeformPalette ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+}
+
+uint32_t most_used_influences(const AnimatedModel& model) {
+    uint32_t most = 1;  // the kernel always reads the first pair
+    for (const Influences& inf : model.influences)
+        most = std::max(most, static_cast<uint32_t>(std::count_if(inf.weight.begin(), inf.weight.end(),
+                                                                  [](float w) { return w != 0.0f; })));
+    return most;
+}
 
 std::vector<gpu::DeformVertex> pack_deform_vertices(const AnimatedModel& model) {
     std::vector<gpu::DeformVertex> out(model.vertex_count());
@@ -20,11 +36,15 @@ std::vector<gpu::DeformVertex> pack_deform_vertices(const AnimatedModel& model) 
         const MorphRef& morph = model.morph_refs[v];
         d.morph_first = morph.first_delta;
         d.morph_weights = morph.count == 0 ? 0u : (morph.first_weight | morph.count << 16);
+        // The used pairs first, in their order (the kernel reads only as many as the model's busiest vertex uses).
         const Influences& inf = model.influences[v];
+        uint32_t packed = 0;
         for (uint32_t i = 0; i < kMaxInfluences; ++i) {
             STIPPLE_CHECK(inf.slot[i] < gpu::kDeformMaxPaletteSlots, "palette slot beyond 16 bits");
-            d.slots[i / 2] |= inf.slot[i] << (16 * (i % 2));
-            (i < 4 ? d.weights0[i] : d.weights1[i - 4]) = inf.weight[i];
+            if (inf.weight[i] == 0.0f) continue;
+            d.slots[packed / 2] |= inf.slot[i] << (16 * (packed % 2));
+            (packed < 4 ? d.weights0[packed] : d.weights1[packed - 4]) = inf.weight[i];
+            ++packed;
         }
     }
     return out;
@@ -65,7 +85,19 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
     vertices_ = upload(context, pack_deform_vertices(model));
     deltas_ = upload(context, pack_morph_deltas(model));
     const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    palette_ = gpu::Buffer(context, std::max(palette_slots_, 1u) * sizeof(glm::mat4), per_frame, gpu::MemoryUse::DeviceLocal);
+    // The palette is a texel buffer: a software GPU fetches a texel's four floats in one gather, where
+    // it loads a storage buffer's floats one lane at a time.
+    const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);
+    if (palette_texels > context.properties.limits.maxTexelBufferElements)
+        fail("the model's " + std::to_string(palette_slots_) + " palette matrices exceed the device's texel buffer limit of " +
+             std::to_string(context.properties.limits.maxTexelBufferElements / 3));
+    palette_ = gpu::Buffer(context, palette_texels * sizeof(glm::vec4),
+                           VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
+    VkBufferViewCreateInfo view_info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    view_info.buffer = palette_.handle();
+    view_info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    view_info.range = VK_WHOLE_SIZE;
+    VK_CHECK(vkCreateBufferView(context.device, &view_info, nullptr, &palette_view_));
     weights_ = gpu::Buffer(context, std::max(morph_weights_, 1u) * sizeof(float), per_frame, gpu::MemoryUse::DeviceLocal);
     const VkDeviceSize output_bytes = std::max(vertex_count_, 1u) * 3 * sizeof(float);
     positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
@@ -73,7 +105,7 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
 
     VkDescriptorSetLayoutBinding bindings[6];
     for (uint32_t b = 0; b < 6; ++b)
-        bindings[b] = {b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        bindings[b] = {b, descriptor_type(b), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = 6;
     set_info.pBindings = bindings;
@@ -85,13 +117,15 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &push;
     VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &pipeline_layout_));
-    pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_);
+    gpu::Specialization influences;
+    influences.constants.push_back({gpu::kSpecDeformInfluences, most_used_influences(model)});
+    pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_, influences);
 
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6};
+    const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}, {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 1;
-    pool_info.pPoolSizes = &size;
+    pool_info.poolSizeCount = 2;
+    pool_info.pPoolSizes = sizes;
     VK_CHECK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &pool_));
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = pool_;
@@ -104,6 +138,7 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
 GpuDeformer::~GpuDeformer() {
     const VkDevice device = context_.device;
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
+    if (palette_view_) vkDestroyBufferView(device, palette_view_, nullptr);
     if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
     if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
@@ -121,8 +156,11 @@ void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
         writes[b].dstSet = set_;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[b].pBufferInfo = &infos[b];
+        writes[b].descriptorType = descriptor_type(b);
+        if (b == gpu::kBindingDeformPalette)
+            writes[b].pTexelBufferView = &palette_view_;
+        else
+            writes[b].pBufferInfo = &infos[b];
     }
     static_assert(gpu::kBindingDeformVertices == 0 && gpu::kBindingDeformMorphDeltas == 1 && gpu::kBindingDeformPalette == 2 &&
                   gpu::kBindingDeformMorphWeights == 3 && gpu::kBindingDeformPositions == 4 && gpu::kBindingDeformNormals == 5);
@@ -135,7 +173,11 @@ void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
     // The previous dispatch's reads of the palette and weights come before this frame's writes.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    update(cb, palette_, pose.palette.data(), pose.palette.size() * sizeof(glm::mat4));
+    // Each slot's top three rows (the kernel's layout; the fourth row of an affine matrix is 0 0 0 1).
+    palette_rows_.resize(3 * pose.palette.size());
+    for (size_t s = 0; s < pose.palette.size(); ++s)
+        for (int r = 0; r < 3; ++r) palette_rows_[3 * s + r] = glm::row(pose.palette[s], r);
+    update(cb, palette_, palette_rows_.data(), palette_rows_.size() * sizeof(glm::vec4));
     update(cb, weights_, pose.morph_weights.data(), pose.morph_weights.size() * sizeof(float));
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);

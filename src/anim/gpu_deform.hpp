@@ -18,8 +18,11 @@ class Context;
 
 namespace stipple::anim {
 
-// The kernel's per-vertex records for a model (what GpuDeformer uploads).
+// The kernel's per-vertex records for a model (what GpuDeformer uploads): each vertex's used influence
+// pairs (weight not 0) first.
 std::vector<gpu::DeformVertex> pack_deform_vertices(const AnimatedModel& model);
+// The most used influence pairs of any vertex (at least 1): the kernel's kSpecDeformInfluences.
+uint32_t most_used_influences(const AnimatedModel& model);
 std::vector<gpu::MorphDelta> pack_morph_deltas(const AnimatedModel& model);
 
 class GpuDeformer {
@@ -50,11 +53,13 @@ private:
     uint32_t palette_slots_ = 0;
     uint32_t morph_weights_ = 0;
     gpu::Buffer vertices_, deltas_, palette_, weights_, positions_, normals_;
+    std::vector<glm::vec4> palette_rows_;  // this frame's palette as the kernel reads it (kept: no allocation a frame)
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
+    VkBufferView palette_view_ = VK_NULL_HANDLE;  // the palette's texels (RGBA32F, three per slot)
 };
 
 }  // namespace stipple::anim
