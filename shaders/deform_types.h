@@ -22,6 +22,16 @@ STIPPLE_CONST uint kDeformMaxPaletteSlots = 65536;
 // Morph weights: the first weight in 16 bits, the target count in the other 16.
 STIPPLE_CONST uint kDeformMaxMorphWeights = 65536;
 
+// polygon_constants.comp's own set: the deformed mesh as texel buffers (a software GPU fetches a
+// texel's components in one gather, where it loads a storage buffer's floats lane by lane), and the
+// polygons it writes.
+STIPPLE_CONST uint kBindingPolygonPositions = 0;  // texel buffer: the object's vertices (RGB32F, or R32F)
+STIPPLE_CONST uint kBindingPolygonIndices = 1;    // texel buffer: its triangles (RGB32UI, or R32UI)
+STIPPLE_CONST uint kBindingPolygonInfos = 2;      // TriangleInfo[] (storage, read and written)
+// Whether the texel buffers hold a vertex (triangle) per texel (1) or one float (index) per texel (0):
+// three-component texel buffers are optional in Vulkan.
+STIPPLE_CONST uint kSpecPolygonVec3Texels = 0;
+
 // Descriptor bindings of the deformation pass's own set (set 0 of its pipeline layout).
 STIPPLE_CONST uint kBindingDeformVertices = 0;     // DeformVertex[] (read)
 STIPPLE_CONST uint kBindingDeformMorphDeltas = 1;  // MorphDelta[] (read)
@@ -52,6 +62,16 @@ struct MorphDelta {
 // Push constants of the deformation pass.
 struct DeformPush {
     uint vertex_count;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+// polygon_constants.comp's push constants. 48 bytes.
+struct PolygonConstantsPush {
+    vec4 box_min;    // xyz: the object-space box the centroids are quantised in (every pose)
+    vec4 box_size;   // xyz: its extent
+    uint triangle_count;
     uint pad0;
     uint pad1;
     uint pad2;

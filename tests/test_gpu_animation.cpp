@@ -98,17 +98,28 @@ protected:
     std::unique_ptr<StippleRenderer> renderer(bool count_drawn = false) {
         return std::make_unique<StippleRenderer>(*context, kColorFormat, context->depth_format, RendererOptions{count_drawn});
     }
+    void check_polygon_constants(bool scalar_texels);
 };
 
 TEST_F(GpuAnimation, PolygonConstantsFollowThePose) {
     // The pass rewrites each polygon's centroid, normal and area from the deformed mesh, packed exactly as
-    // the CPU packs a static mesh (so the rest pose draws as the static model does), selection kept.
+    // the CPU packs a static mesh (so the rest pose draws as the static model does), selection kept. Both
+    // variants: a texel a vertex, and a texel a float (devices without three-component texel buffers).
+    for (bool scalar_texels : {false, true}) {
+        SCOPED_TRACE(scalar_texels ? "a float per texel" : "a vertex per texel");
+        check_polygon_constants(scalar_texels);
+    }
+}
+
+void GpuAnimation::check_polygon_constants(bool scalar_texels) {
     const std::string path = test::write_rig(anim::rigs::bending_cylinder(), "gpu_anim_constants", "cylinder");
     const Loaded loaded = load(path);
     ASSERT_TRUE(loaded.model.motion);
     const anim::AnimatedModel& model = *loaded.model.motion.model;
     const Mesh& rest = *loaded.model.mesh;
-    auto r = renderer();
+    RendererOptions options;
+    options.scalar_texels = scalar_texels;
+    auto r = std::make_unique<StippleRenderer>(*context, kColorFormat, context->depth_format, options);
     r->add_object(rest, *loaded.stipples, glm::mat4(1.0f), ObjectParams{}, loaded.model.motion);
     OffscreenTarget target(*context, {160, 128});
     const FrameView view = test::framed_view(loaded.model.bounds, target.extent());

@@ -99,7 +99,9 @@ TEST_F(GpuDeform, ReadsOnlyTheInfluencesTheModelUses) {
             const float w[8] = {packed[v].weights0.x, packed[v].weights0.y, packed[v].weights0.z, packed[v].weights0.w,
                                 packed[v].weights1.x, packed[v].weights1.y, packed[v].weights1.z, packed[v].weights1.w};
             for (int i = 1; i < 8; ++i)
-                if (w[i] != 0.0f) ASSERT_NE(w[i - 1], 0.0f) << "vertex " << v << ": a used pair after an unused one";
+                if (w[i] != 0.0f) {
+                    ASSERT_NE(w[i - 1], 0.0f) << "vertex " << v << ": a used pair after an unused one";
+                }
         }
     }
 }

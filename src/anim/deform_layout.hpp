@@ -18,6 +18,9 @@ static_assert(sizeof(MorphDelta) == 32);
 static_assert(offsetof(MorphDelta, normal) == 16);
 
 static_assert(sizeof(DeformPush) == 16);
+static_assert(sizeof(PolygonConstantsPush) == 48);
+static_assert(offsetof(PolygonConstantsPush, box_size) == 16);
+static_assert(offsetof(PolygonConstantsPush, triangle_count) == 32);
 static_assert(kDeformMaxInfluences == 8);
 
 }  // namespace stipple::gpu

@@ -2,9 +2,11 @@
 
 #include <vector>
 
+#include "anim/deform_layout.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "gpu/pipelines.hpp"
+#include "gpu/vk_check.hpp"
 #include "render/object_gpu.hpp"
 
 namespace stipple {
@@ -43,12 +45,104 @@ void check_animated_path(const ObjectGpu& object) {
                   "pose): use vertex, indirect or splat");
 }
 
-DeformPass::DeformPass(const gpu::Context& context, VkPipelineLayout layout) : context_(context), layout_(layout) {
-    pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout);
+PolygonBinding::~PolygonBinding() {
+    if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
+    if (positions) vkDestroyBufferView(device, positions, nullptr);
+    if (indices) vkDestroyBufferView(device, indices, nullptr);
+}
+
+namespace {
+
+bool reads_uniform_texels(const gpu::Context& context, VkFormat format) {
+    VkFormatProperties properties{};
+    vkGetPhysicalDeviceFormatProperties(context.physical_device, format, &properties);
+    return (properties.bufferFeatures & VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
+}
+
+}  // namespace
+
+DeformPass::DeformPass(const gpu::Context& context, bool scalar_texels) : context_(context) {
+    vec3_texels_ = !scalar_texels && reads_uniform_texels(context, VK_FORMAT_R32G32B32_SFLOAT) &&
+                   reads_uniform_texels(context, VK_FORMAT_R32G32B32_UINT);
+    const VkDescriptorSetLayoutBinding bindings[3] = {
+        {gpu::kBindingPolygonPositions, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+        {gpu::kBindingPolygonIndices, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+        {gpu::kBindingPolygonInfos, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    };
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = 3;
+    set_info.pBindings = bindings;
+    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &set_layout_));
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PolygonConstantsPush)};
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout_;
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push;
+    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout_));
+    gpu::Specialization texels;
+    texels.constants.push_back({gpu::kSpecPolygonVec3Texels, vec3_texels_ ? 1u : 0u});
+    pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout_, texels);
 }
 
 DeformPass::~DeformPass() {
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
+    if (set_layout_) vkDestroyDescriptorSetLayout(context_.device, set_layout_, nullptr);
+}
+
+void DeformPass::bind(ObjectGpu& object) const {
+    const VkDevice device = context_.device;
+    auto binding = std::make_unique<PolygonBinding>();
+    binding->device = device;
+    // One texel a vertex (triangle), or one a float (index) where three-component texels are not read.
+    const uint64_t per_texel = vec3_texels_ ? 1 : 3;
+    const uint64_t vertices = object.geometry.positions.size() / sizeof(glm::vec3);
+    const uint64_t texels = per_texel * std::max<uint64_t>(vertices, object.geometry.triangle_count);
+    const uint64_t limit = context_.properties.limits.maxTexelBufferElements;
+    if (texels > limit)
+        fail("an animated object of " + std::to_string(object.geometry.triangle_count) +
+             " polygons exceeds this device's texel buffer limit (" + std::to_string(limit) + " texels)");
+    auto make_view = [&](VkBuffer buffer, VkFormat format, VkBufferView& view) {
+        VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+        info.buffer = buffer;
+        info.format = format;
+        info.range = VK_WHOLE_SIZE;
+        VK_CHECK(vkCreateBufferView(device, &info, nullptr, &view));
+    };
+    make_view(object.geometry.positions.handle(), vec3_texels_ ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT,
+              binding->positions);
+    make_view(object.geometry.indices.handle(), vec3_texels_ ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT,
+              binding->indices);
+
+    const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = 2;
+    pool_info.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &binding->pool));
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = binding->pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &set_layout_;
+    VK_CHECK(vkAllocateDescriptorSets(device, &alloc, &binding->set));
+
+    const VkDescriptorBufferInfo infos{object.polygons.gpu.handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[3];
+    for (uint32_t b = 0; b < 3; ++b) {
+        writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[b].dstSet = binding->set;
+        writes[b].dstBinding = b;
+        writes[b].descriptorCount = 1;
+    }
+    writes[gpu::kBindingPolygonPositions].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    writes[gpu::kBindingPolygonPositions].pTexelBufferView = &binding->positions;
+    writes[gpu::kBindingPolygonIndices].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    writes[gpu::kBindingPolygonIndices].pTexelBufferView = &binding->indices;
+    writes[gpu::kBindingPolygonInfos].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[gpu::kBindingPolygonInfos].pBufferInfo = &infos;
+    vkUpdateDescriptorSets(device, 3, writes, 0, nullptr);
+    object.animation->polygons = std::move(binding);
 }
 
 void DeformPass::evaluate(std::span<const std::unique_ptr<ObjectGpu>> objects) {
@@ -78,7 +172,14 @@ void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects) {
         if (!object->animation || object->geometry.triangle_count == 0) continue;
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &object->set, 0, nullptr);
+        if (!object->animation->polygons) bind(*object);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &object->animation->polygons->set, 0,
+                                nullptr);
+        gpu::PolygonConstantsPush push{};
+        push.box_min = glm::vec4(object->polygons.box_min, 0.0f);
+        push.box_size = glm::vec4(object->polygons.box_size, 0.0f);
+        push.triangle_count = object->geometry.triangle_count;
+        vkCmdPushConstants(cb, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatch(cb, (object->geometry.triangle_count + group - 1) / group, 1, 1);
     }
     // Deformed vertices and polygons before everything that draws or densifies from them.

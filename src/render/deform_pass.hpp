@@ -27,6 +27,20 @@ class Context;
 }
 struct ObjectGpu;
 
+// The polygon pass's view of one animated object: texel views of its mesh buffers and a descriptor set
+// naming them and its polygons (DeformPass makes it the first time the object is recorded).
+struct PolygonBinding {
+    VkDevice device = VK_NULL_HANDLE;
+    VkBufferView positions = VK_NULL_HANDLE, indices = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+
+    PolygonBinding() = default;
+    ~PolygonBinding();
+    PolygonBinding(const PolygonBinding&) = delete;
+    PolygonBinding& operator=(const PolygonBinding&) = delete;
+};
+
 // What moves one object, and when it is.
 struct ObjectAnimation {
     anim::Motion motion;
@@ -35,6 +49,7 @@ struct ObjectAnimation {
     double seconds = 0.0;    // into the animation (wrapped or clamped by `loop`)
     bool loop = true;
     anim::Pose pose;         // evaluated by prepare(), sent by the frame's recording
+    std::unique_ptr<PolygonBinding> polygons;  // made by DeformPass on first use
 };
 
 // The area at which each polygon's candidates are all due: its rest area (`mesh` is the motion's rest
@@ -53,7 +68,8 @@ void check_animated_path(const ObjectGpu& object);
 // The pass that recomputes animated objects' polygon constants (shaders/polygon_constants.comp).
 class DeformPass {
 public:
-    DeformPass(const gpu::Context& context, VkPipelineLayout layout);
+    // scalar_texels: read the mesh a float per texel even where three-component texels would do.
+    DeformPass(const gpu::Context& context, bool scalar_texels);
     ~DeformPass();
     DeformPass(const DeformPass&) = delete;
     DeformPass& operator=(const DeformPass&) = delete;
@@ -68,8 +84,12 @@ public:
     void record_polygons(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const;
 
 private:
+    void bind(ObjectGpu& object) const;
+
     const gpu::Context& context_;
-    VkPipelineLayout layout_;
+    bool vec3_texels_ = false;  // the device reads RGB32F and RGB32UI texel buffers
+    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 

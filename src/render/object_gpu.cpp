@@ -139,10 +139,12 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
     upload.staged.resize(kStagedCount);
     // The stipple shaders read the corners of the polygons whose stipples they place.
-    upload.staged[kPositions] = gpu::stage_buffer(context, std::span(mesh.positions), vertex | storage);
+    // Texels too: an animated object's polygon pass reads them so (render/deform_pass.hpp).
+    const auto texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    upload.staged[kPositions] = gpu::stage_buffer(context, std::span(mesh.positions), vertex | storage | texels);
     // Storage too: an animated object's deformation pass writes them.
     upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex | storage);
-    upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage);
+    upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage | texels);
     upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage);
     upload.staged[kPolygons] = gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage);
     upload.staged[kDensities] = gpu::stage_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage);

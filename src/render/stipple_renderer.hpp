@@ -64,6 +64,9 @@ struct RendererOptions {
     // List the stipples the splat draws, with their window positions (read_visible_stipples): vector
     // output. Objects on the splat paths only (the export draws every object with one of them).
     bool record_visible = false;
+    // Read an animated object's mesh one float per texel even where the device reads three-component texel
+    // buffers (the variant for devices that do not): tests.
+    bool scalar_texels = false;
 };
 
 struct FrameStats {
