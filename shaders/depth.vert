@@ -10,5 +10,5 @@ layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms fram
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 
 void main() {
-    gl_Position = frame.view_proj * (object.model * vec4(in_position, 1.0));
+    gl_Position = object.model_view_proj * vec4(in_position, 1.0);
 }

@@ -76,7 +76,7 @@ const float kBridgePx = 3.5;
 // by more than any slope offset covers, and single samples fail all along the outline. An occluder
 // that narrow is below what the line, at least a pixel wide, could show anyway.
 void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
-    mat4 model_view_proj = frame.view_proj * object.model;
+    mat4 model_view_proj = object.model_view_proj;
     vec4 c0 = model_view_proj * vec4(p0, 1.0);
     vec4 c1 = model_view_proj * vec4(p1, 1.0);
     if (c0.z < 0.0 && c1.z < 0.0) return;  // wholly before the near plane (Vulkan clip z >= 0)

@@ -229,7 +229,8 @@ struct FrameUniforms {
 struct ObjectUniforms {
     mat4 model_view;        // object -> view
     mat4 normal_view;       // inverse transpose of model_view (upper 3x3 used)
-    mat4 model;             // object -> world
+    mat4 model_view_proj;   // object -> clip (the frame's view_proj times the object's model matrix, once per frame: a
+                            // software GPU pays for each matrix product per vertex, culled ones included)
     vec4 shading;           // x: shading exponent n (§2.2); y: point size (px); z: toon sharpness (§3.1); w: unused
     vec4 extrinsic;         // x: pr; y: minimum stipple area (px^2); z: reference pixels per world unit; w: area scale (linear scale^2, object -> world)
     vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre

@@ -179,7 +179,7 @@ void main() {
     float density = draw.density;
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
-    mat4 model_view_proj = frame.view_proj * object.model;
+    mat4 model_view_proj = object.model_view_proj;
     uint candidates = (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - first;
     uint begin = item - first;
     uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);

@@ -58,5 +58,5 @@ void main() {
         atomicOr(drawn_mask[stipple >> 5u], 1u << (stipple & 31u));
     }
     vec3 position = stipple_position(polygon_frame(triangle), barycentric);  // survivors only
-    gl_Position = frame.view_proj * (object.model * vec4(position, 1.0));
+    gl_Position = object.model_view_proj * vec4(position, 1.0);
 }

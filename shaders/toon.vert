@@ -16,5 +16,5 @@ layout(location = 1) out vec3 out_position_view;
 void main() {
     out_normal_view = mat3(object.normal_view) * in_normal;
     out_position_view = (object.model_view * vec4(in_position, 1.0)).xyz;
-    gl_Position = frame.view_proj * (object.model * vec4(in_position, 1.0));
+    gl_Position = object.model_view_proj * vec4(in_position, 1.0);
 }

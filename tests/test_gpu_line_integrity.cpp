@@ -162,7 +162,7 @@ std::string pieces_problem(const Model& m, const ObjectGpu& object, const Stippl
     auto normal = [&](uint32_t t) {
         return formulas::polygon_view(object.polygons.cpu[t], 0.0f, object.frame.uniforms).normal;
     };
-    const glm::mat4 mvp = view.camera.proj * view.camera.view * object.frame.uniforms.model;
+    const glm::mat4 mvp = object.frame.uniforms.model_view_proj;
     auto window = [&](uint32_t vertex) {
         glm::vec4 c = mvp * glm::vec4(m.object.mesh.positions[vertex], 1.0f);
         return glm::vec2((c.x / c.w + 1.0f) * 0.5f * float(view.extent.width),

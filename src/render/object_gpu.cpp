@@ -245,8 +245,9 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     const ObjectParams& p = object.params;
     const Sphere& bounds = object.polygons.bounds;
     gpu::ObjectUniforms u{};
-    u.model = object_to_world(object);
-    u.model_view = view.camera.view * u.model;
+    const glm::mat4 model = object_to_world(object);
+    u.model_view = view.camera.view * model;
+    u.model_view_proj = (view.camera.proj * view.camera.view) * model;  // as FrameUniforms::view_proj times it
     u.normal_view = glm::inverseTranspose(u.model_view);
     float scale = linear_scale(object.model);
     float radius_world = std::max(bounds.radius * scale, 1e-20f);

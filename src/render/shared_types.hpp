@@ -57,7 +57,7 @@ static_assert(offsetof(FrameUniforms, projection) == 192);
 
 static_assert(sizeof(ObjectUniforms) == 3 * 64 + 7 * 16);
 static_assert(offsetof(ObjectUniforms, normal_view) == 64);
-static_assert(offsetof(ObjectUniforms, model) == 128);
+static_assert(offsetof(ObjectUniforms, model_view_proj) == 128);
 static_assert(offsetof(ObjectUniforms, shading) == 192);
 static_assert(offsetof(ObjectUniforms, extrinsic) == 208);
 static_assert(offsetof(ObjectUniforms, intrinsic) == 224);

@@ -79,7 +79,7 @@ InkFigures measure_ink(const RenderedFrame& frame) {
 double unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
                         const RenderedFrame& rendered) {
     const formulas::DensityParams params = formulas::density_params(frame, object.frame.uniforms);
-    const glm::mat4 model_view_proj = frame.view_proj * object.model;
+    const glm::mat4 model_view_proj = object.frame.uniforms.model_view_proj;
     const int width = int(frame.viewport.x), height = int(frame.viewport.y);
     const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
     double ink = 0.0;
