@@ -72,6 +72,7 @@ public:
     // The index in `points` of a slot's stipple.
     uint32_t point_of(uint32_t slot) const { return grid_.sorted_index(slot); }
     float nearest(uint32_t slot) const { return nearest_[slot]; }
+    void release_nearest() { std::vector<float>().swap(nearest_); }
     glm::vec3 position(uint32_t slot) const { return grid_.sorted_position(slot); }
 
     // nearest = min(nearest, |q - p|^2) for the stipples q of the cells within `reach` of p (a
@@ -188,6 +189,10 @@ void Orderer::run(const std::function<void(double)>& progress) {
     const size_t slabs = slab_units_.size();
     state_.resize(slabs);
     parallel_for(slabs, 1, [&](size_t slab) { start_slab(slab); });
+    // Every stipple is now in its slab's grid, which is all the ordering reads: the positions are put
+    // back from the grids at the end (12 bytes a stipple less while ordering).
+    const size_t count = positions_.size();
+    std::vector<glm::vec3>().swap(positions_);
 
     // Window w ends at tau = 2^(-w/8); the last (w = 0) takes everything left. The first window
     // ends below the earliest slot, 0.5 / (the largest unit).
@@ -207,6 +212,14 @@ void Orderer::run(const std::function<void(double)>& progress) {
         // A unit's slots are spread evenly in tau, so by time `until` about that share is placed.
         if (progress) progress(w == 0 ? 1.0 : until);
     }
+    // What only the windows needed goes before the positions come back.
+    for (SlabState& state : state_) {
+        std::vector<uint32_t>().swap(state.slots);
+        std::vector<uint32_t>().swap(state.placed_count);
+        std::vector<std::pair<glm::vec3, float>>().swap(state.placed_in_window);
+        state.grid->release_nearest();
+    }
+    positions_.resize(count);
     parallel_for(slabs, 1, [&](size_t slab) { finish_slab(slab); });
     std::vector<SlabState>().swap(state_);
     apply_order();
@@ -433,11 +446,15 @@ void Orderer::take_in_neighbours(size_t slab) {
     }
 }
 
-// Back from grid slots to indices in positions_.
+// Back from grid slots to indices in positions_, and the slab's positions back into positions_.
 void Orderer::finish_slab(size_t slab) {
     SlabState& state = state_[slab];
     const std::vector<uint32_t> own = own_stipples(slab);
-    for (uint32_t i : own) order_[i] = own[state.grid->point_of(order_[i])];
+    for (uint32_t i : own) {
+        const uint32_t slot = order_[i];
+        order_[i] = own[state.grid->point_of(slot)];
+        positions_[order_[i]] = state.grid->position(slot);
+    }
     state.grid.reset();
 }
 

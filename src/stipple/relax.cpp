@@ -209,7 +209,10 @@ glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm:
 void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::vector<glm::vec3>& positions,
                     double spacing, int iterations, const std::function<void(double)>& progress) {
     const size_t n = positions.size();
-    if (n < 2 || iterations <= 0 || !(spacing > 0.0)) return;
+    if (n < 2 || iterations <= 0 || !(spacing > 0.0)) {
+        std::vector<uint32_t>().swap(triangle_of);  // taken either way (the caller rebuilds it)
+        return;
+    }
     const float s = static_cast<float>(spacing);
     const float h = kKernelRadius * s;
 
