@@ -170,8 +170,8 @@ void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
 void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
     STIPPLE_CHECK(pose.palette.size() == palette_slots_ && pose.morph_weights.size() == morph_weights_,
                   "the pose is not of the deformer's model");
-    // The previous dispatch's reads of the palette and weights come before this frame's writes.
-    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+    // The previous dispatch's reads of the palette (texels) and weights come before this frame's writes.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_READ_BIT,
                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     // Each slot's top three rows (the kernel's layout; the fourth row of an affine matrix is 0 0 0 1).
     palette_rows_.resize(3 * pose.palette.size());
@@ -179,8 +179,9 @@ void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
         for (int r = 0; r < 3; ++r) palette_rows_[3 * s + r] = glm::row(pose.palette[s], r);
     update(cb, palette_, palette_rows_.data(), palette_rows_.size() * sizeof(glm::vec4));
     update(cb, weights_, pose.morph_weights.data(), pose.morph_weights.size() * sizeof(float));
+    // Shader reads of both kinds: the palette's texels (sampled) and the weights (storage).
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_READ_BIT);
     // Whatever read the outputs last frame (vertex input, shaders) finishes before they are rewritten.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);

@@ -165,9 +165,9 @@ bool DeformPass::record_skinning(VkCommandBuffer cb, std::span<const std::unique
 }
 
 void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const {
-    // The deformed vertices before the polygons read them.
+    // The deformed vertices before the polygons read them (as texels: a sampled read).
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_READ_BIT);
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects) {
