@@ -213,6 +213,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     // Densities: the compute pass (vertex, indirect and splat paths) or the CPU's upload; clears first.
     bool any_indirect = false;
     bool any_pass = false;
+    bool any_facing = false;  // CPU densities with lines: the density pass's facing bits alone
     for (auto& object : objects_) {
         if (object->geometry.triangle_count == 0) continue;
         if (options_.count_drawn) vkCmdFillBuffer(cb, object->frame.debug.handle(), 0, VK_WHOLE_SIZE, 0);
@@ -230,7 +231,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_stipples.handle(), 1, &regions[1]);
             else if (splat)
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
-            if (draws_edge_lines(*object)) dispatch(*object, facing_pipeline_);  // the lines' facing bits
+            any_facing = any_facing || draws_edge_lines(*object);
             continue;
         }
         any_pass = true;
@@ -244,13 +245,19 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
         }
     }
-    if (any_pass) {
+    if (any_pass || any_facing) {
+        // After the copies and fills above, also for the facing-only variant: it binds the densities the
+        // CPU just copied, and a shader that can write a buffer is ordered after its transfers.
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        for (auto& object : objects_)
-            if (object->geometry.triangle_count > 0 && !density_on_cpu(object->params.density_path))
+        for (auto& object : objects_) {
+            if (object->geometry.triangle_count == 0) continue;
+            if (!density_on_cpu(object->params.density_path))
                 dispatch(*object, uses_splat(*object) ? density_list_pipeline_ : density_pipeline_);
+            else if (draws_edge_lines(*object))
+                dispatch(*object, facing_pipeline_);  // the lines' facing bits
+        }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written.
     if (any_indirect) {
