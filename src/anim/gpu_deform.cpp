@@ -8,15 +8,24 @@
 #include "anim/deform_layout.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "gpu/descriptors.hpp"
 #include "gpu/pipelines.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace stipple::anim {
 
 namespace {
-VkDescriptorType descriptor_type(uint32_t binding) {
-    return binding == gpu::kBindingDeformPalette ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-}
+// The kernel's set, by binding number; the palette is read as texels.
+constexpr gpu::DescriptorBinding kDeformBindings[6] = {
+    {gpu::kBindingDeformVertices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformMorphDeltas, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformPalette, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {gpu::kBindingDeformMorphWeights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+};
+static_assert(gpu::kBindingDeformVertices == 0 && gpu::kBindingDeformMorphDeltas == 1 && gpu::kBindingDeformPalette == 2 &&
+              gpu::kBindingDeformMorphWeights == 3 && gpu::kBindingDeformPositions == 4 && gpu::kBindingDeformNormals == 5);
 }
 
 uint32_t most_used_influences(const AnimatedModel& model) {
@@ -103,35 +112,14 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
     positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
     normals_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
 
-    VkDescriptorSetLayoutBinding bindings[6];
-    for (uint32_t b = 0; b < 6; ++b)
-        bindings[b] = {b, descriptor_type(b), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 6;
-    set_info.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &set_layout_));
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::DeformPush)};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &set_layout_;
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &pipeline_layout_));
+    set_layout_ = gpu::create_set_layout(context, kDeformBindings, VK_SHADER_STAGE_COMPUTE_BIT);
+    pipeline_layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::DeformPush));
     gpu::Specialization influences;
     influences.constants.push_back({gpu::kSpecDeformInfluences, most_used_influences(model)});
     pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_, influences);
 
-    const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}, {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1}};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 2;
-    pool_info.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &pool_));
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = pool_;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &set_layout_;
-    VK_CHECK(vkAllocateDescriptorSets(context.device, &alloc, &set_));
+    pool_ = gpu::create_pool(context, kDeformBindings, 1);
+    set_ = gpu::allocate_set(context, pool_, set_layout_);
     write_descriptors(positions_.handle(), normals_.handle());
 }
 
@@ -156,14 +144,12 @@ void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
         writes[b].dstSet = set_;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = descriptor_type(b);
+        writes[b].descriptorType = kDeformBindings[b].type;
         if (b == gpu::kBindingDeformPalette)
             writes[b].pTexelBufferView = &palette_view_;
         else
             writes[b].pBufferInfo = &infos[b];
     }
-    static_assert(gpu::kBindingDeformVertices == 0 && gpu::kBindingDeformMorphDeltas == 1 && gpu::kBindingDeformPalette == 2 &&
-                  gpu::kBindingDeformMorphWeights == 3 && gpu::kBindingDeformPositions == 4 && gpu::kBindingDeformNormals == 5);
     vkUpdateDescriptorSets(context_.device, 6, writes, 0, nullptr);
 }
 
@@ -188,7 +174,7 @@ void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set_, 0, nullptr);
     const gpu::DeformPush push{vertex_count_, 0, 0, 0};
-    vkCmdPushConstants(cb, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdPushConstants(cb, pipeline_layout_, gpu::kPushConstantStages, 0, sizeof push, &push);
     vkCmdDispatch(cb, (vertex_count_ + gpu::kDeformWorkgroupSize - 1) / gpu::kDeformWorkgroupSize, 1, 1);
 }
 

@@ -22,8 +22,7 @@ VkDescriptorSetLayout create_set_layout(const Context& context, std::span<const 
 
 VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> sets,
                                         uint32_t push_bytes) {
-    const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
-                                   0, push_bytes};
+    const VkPushConstantRange push{kPushConstantStages, 0, push_bytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     info.setLayoutCount = uint32_t(sets.size());
     info.pSetLayouts = sets.data();

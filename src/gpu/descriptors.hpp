@@ -19,6 +19,10 @@ struct DescriptorBinding {
 VkDescriptorSetLayout create_set_layout(const Context& context, std::span<const DescriptorBinding> bindings,
                                         VkShaderStageFlags stages);
 
+// The stages of every push-constant block create_pipeline_layout makes (vkCmdPushConstants names them all).
+inline constexpr VkShaderStageFlags kPushConstantStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+
 // A pipeline layout of these sets and one push-constant block of `push_bytes` for every stage.
 VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const VkDescriptorSetLayout> sets,
                                         uint32_t push_bytes);

@@ -5,6 +5,7 @@
 #include "anim/deform_layout.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "gpu/descriptors.hpp"
 #include "gpu/pipelines.hpp"
 #include "gpu/vk_check.hpp"
 #include "render/object_gpu.hpp"
@@ -53,6 +54,14 @@ PolygonBinding::~PolygonBinding() {
 
 namespace {
 
+// The polygon pass's set: the deformed mesh as texels, and the polygons it writes.
+constexpr gpu::DescriptorBinding kPolygonBindings[3] = {
+    {gpu::kBindingPolygonPositions, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {gpu::kBindingPolygonIndices, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {gpu::kBindingPolygonInfos, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+};
+static_assert(gpu::kBindingPolygonPositions == 0 && gpu::kBindingPolygonIndices == 1 && gpu::kBindingPolygonInfos == 2);
+
 bool reads_uniform_texels(const gpu::Context& context, VkFormat format) {
     VkFormatProperties properties{};
     vkGetPhysicalDeviceFormatProperties(context.physical_device, format, &properties);
@@ -64,22 +73,8 @@ bool reads_uniform_texels(const gpu::Context& context, VkFormat format) {
 DeformPass::DeformPass(const gpu::Context& context, bool scalar_texels) : context_(context) {
     vec3_texels_ = !scalar_texels && reads_uniform_texels(context, VK_FORMAT_R32G32B32_SFLOAT) &&
                    reads_uniform_texels(context, VK_FORMAT_R32G32B32_UINT);
-    const VkDescriptorSetLayoutBinding bindings[3] = {
-        {gpu::kBindingPolygonPositions, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-        {gpu::kBindingPolygonIndices, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-        {gpu::kBindingPolygonInfos, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-    };
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 3;
-    set_info.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(context.device, &set_info, nullptr, &set_layout_));
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PolygonConstantsPush)};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &set_layout_;
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout_));
+    set_layout_ = gpu::create_set_layout(context, kPolygonBindings, VK_SHADER_STAGE_COMPUTE_BIT);
+    layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
     gpu::Specialization texels;
     texels.constants.push_back({gpu::kSpecPolygonVec3Texels, vec3_texels_ ? 1u : 0u});
     pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout_, texels);
@@ -115,17 +110,8 @@ void DeformPass::bind(ObjectGpu& object) const {
     make_view(object.geometry.indices.handle(), vec3_texels_ ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT,
               binding->indices);
 
-    const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 2;
-    pool_info.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &binding->pool));
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = binding->pool;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &set_layout_;
-    VK_CHECK(vkAllocateDescriptorSets(device, &alloc, &binding->set));
+    binding->pool = gpu::create_pool(context_, kPolygonBindings, 1);
+    binding->set = gpu::allocate_set(context_, binding->pool, set_layout_);
 
     const VkDescriptorBufferInfo infos{object.polygons.gpu.handle(), 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet writes[3];
@@ -134,12 +120,10 @@ void DeformPass::bind(ObjectGpu& object) const {
         writes[b].dstSet = binding->set;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
+        writes[b].descriptorType = kPolygonBindings[b].type;
     }
-    writes[gpu::kBindingPolygonPositions].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     writes[gpu::kBindingPolygonPositions].pTexelBufferView = &binding->positions;
-    writes[gpu::kBindingPolygonIndices].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     writes[gpu::kBindingPolygonIndices].pTexelBufferView = &binding->indices;
-    writes[gpu::kBindingPolygonInfos].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[gpu::kBindingPolygonInfos].pBufferInfo = &infos;
     vkUpdateDescriptorSets(device, 3, writes, 0, nullptr);
     object.animation->polygons = std::move(binding);
@@ -179,7 +163,7 @@ void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique
         push.box_min = glm::vec4(object->polygons.box_min, 0.0f);
         push.box_size = glm::vec4(object->polygons.box_size, 0.0f);
         push.triangle_count = object->geometry.triangle_count;
-        vkCmdPushConstants(cb, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdPushConstants(cb, layout_, gpu::kPushConstantStages, 0, sizeof push, &push);
         vkCmdDispatch(cb, (object->geometry.triangle_count + group - 1) / group, 1, 1);
     }
     // Deformed vertices and polygons before everything that draws or densifies from them.

@@ -512,8 +512,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
 
     timer_.mark(cb, "splat_in");
     const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
-    vkCmdPushConstants(cb, layouts_.splat_pipeline, VK_SHADER_STAGE_VERTEX_BIT |
-                       VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, push);
+    vkCmdPushConstants(cb, layouts_.splat_pipeline, gpu::kPushConstantStages, 0, sizeof push, push);
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
         if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
