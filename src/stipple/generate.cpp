@@ -37,6 +37,7 @@
 //   stipple is clamped back into its own triangle.
 // * Progressive order (progressive_order.cpp). Within each triangle the stipples are stored so
 //   that the first ones, kept at low density, are well spread over the whole surface.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -97,6 +98,35 @@ double sum_in_order(const std::vector<double>& values) {
     return sum;
 }
 
+// Stratified positions (see the top of this file): point k of triangle t is the k-th point of the R2
+// sequence offset by hash(seed, t), folded onto the triangle. A function of the counts and the seed
+// alone, so that the relaxation can have its input again (relax.hpp).
+std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed) {
+    const size_t triangles = first.size() - 1;
+    std::vector<glm::vec3> positions(first[triangles]);
+    const uint64_t seed_key = mix64(seed ^ 0x53544950504C4531ull);
+    // In chunks of stipples, not of triangles: a model of a few large triangles uses every core too.
+    parallel_for_chunks(positions.size(), kPointChunk, [&](size_t, size_t begin, size_t end) {
+        size_t t = size_t(std::upper_bound(first.begin(), first.end(), uint32_t(begin)) - first.begin()) - 1;
+        for (size_t i = begin; i < end; ++t) {
+            while (first[t + 1] <= i) ++t;  // past empty triangles
+            const uint64_t bits = mix64(seed_key ^ mix64(uint64_t(t) << 32));
+            const double o1 = double(bits >> 40) * 0x1p-24, o2 = double(bits & 0xFFFFFF) * 0x1p-24;
+            const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
+            const glm::dvec3 b(mesh.positions[mesh.indices[3 * t + 1]]);
+            const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
+            for (; i < std::min<size_t>(end, first[t + 1]); ++i) {
+                const uint64_t k = i - first[t];
+                double u1 = o1 + double(k) * 0.7548776662466927, u2 = o2 + double(k) * 0.5698402909980532;
+                u1 -= std::floor(u1), u2 -= std::floor(u2);
+                if (u1 + u2 > 1.0) u1 = 1.0 - u1, u2 = 1.0 - u2;
+                positions[i] = glm::vec3(a + u1 * (b - a) + u2 * (c - a));
+            }
+        }
+    });
+    return positions;
+}
+
 double density_for_area(const Mesh& mesh, const GenerationParams& params, double area) {
     const float radius = compute_bounding_sphere(mesh).radius;
     if (!(area > 0.0) || !(radius > 0.0f) || params.dmax <= 0.0f || params.max_stipples == 0) return 0.0;
@@ -147,29 +177,13 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
     };
     fill_triangles();
 
-    // Stratified positions: point k of triangle t from the R2 sequence, offset by hash(seed, t).
-    set.positions.resize(n);
-    const uint64_t seed_key = mix64(params.seed ^ 0x53544950504C4531ull);
-    parallel_for_chunks(n, kPointChunk, [&](size_t, size_t begin, size_t end) {
-        for (size_t i = begin; i < end; ++i) {
-            const uint32_t t = set.triangle[i];
-            const uint64_t k = i - set.first[t];
-            const uint64_t bits = mix64(seed_key ^ mix64(uint64_t(t) << 32));
-            const double o1 = double(bits >> 40) * 0x1p-24, o2 = double(bits & 0xFFFFFF) * 0x1p-24;
-            double u1 = o1 + double(k) * 0.7548776662466927, u2 = o2 + double(k) * 0.5698402909980532;
-            u1 -= std::floor(u1), u2 -= std::floor(u2);
-            if (u1 + u2 > 1.0) u1 = 1.0 - u1, u2 = 1.0 - u2;
-            const glm::dvec3 a(mesh.positions[mesh.indices[3 * size_t(t)]]);
-            const glm::dvec3 b(mesh.positions[mesh.indices[3 * size_t(t) + 1]]);
-            const glm::dvec3 c(mesh.positions[mesh.indices[3 * size_t(t) + 2]]);
-            set.positions[i] = glm::vec3(a + u1 * (b - a) + u2 * (c - a));
-        }
-    });
+    set.positions = stratified_positions(mesh, set.first, params.seed);
     bar.update(0.05);
 
     // The relaxation takes the triangles, and the order does without them (4 bytes a stipple less at
     // the peaks of both): they are filled again from the counts after.
     relax_stipples(mesh, std::move(set.triangle), set.positions, set.poisson_radius, params.relax_iterations,
+                   [&] { return stratified_positions(mesh, set.first, params.seed); },
                    [&](double f) { bar.update(0.05 + 0.65 * f); });  // about the shares of the time
     progressive_order(set.positions, set.first, set.poisson_radius, params.seed,
                       [&](double f) { bar.update(0.70 + 0.30 * f); });

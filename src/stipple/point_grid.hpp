@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <span>
 #include <vector>
@@ -96,10 +97,13 @@ public:
     // `buckets_per_point`: 2 suits cells of a few points (see below); grids of large cells need
     // fewer.
     void build(std::span<const glm::vec3> points, float cell_size, double buckets_per_point = 2.0) {
-        sort_into_buckets(points, cell_size, buckets_per_point);
         // Padded by one SIMD width of points that are out of every query's reach.
         const size_t n = points.size();
         const float far = std::numeric_limits<float>::max();
+        // The x coordinates' storage holds the points' buckets while they are sorted (it is written
+        // only after): no scratch array of 4 bytes a point beside the grid.
+        xs_.resize(n + kPad);
+        sort_into_buckets(points, cell_size, buckets_per_point, xs_.data());
         xs_.assign(n + kPad, far), ys_.assign(n + kPad, far), zs_.assign(n + kPad, far);
         for (size_t slot = 0; slot < n; ++slot) {
             const glm::vec3& p = points[index_[slot]];
@@ -112,12 +116,10 @@ public:
     static std::vector<uint32_t> spatial_order(std::span<const glm::vec3> points, float cell_size,
                                                double buckets_per_point = 2.0) {
         PointGrid grid;
-        grid.sort_into_buckets(points, cell_size, buckets_per_point);
+        std::vector<float> scratch(points.size());
+        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data());
         return std::move(grid.index_);
     }
-
-    // Frees build()'s scratch memory (a grid built once and kept).
-    void release_scratch() { std::vector<uint32_t>().swap(bucket_of_point_); }
 
     glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
     uint32_t bucket(const glm::ivec3& c) const { return hash_.bucket(c); }
@@ -157,6 +159,7 @@ public:
     }
 
     size_t bucket_count() const { return hash_.bucket_count(); }
+    size_t sorted_size() const { return index_.size(); }  // the points built from
     uint32_t bucket_begin(uint32_t b) const { return start_[b]; }
     uint32_t bucket_end(uint32_t b) const { return start_[b + 1]; }
     glm::vec3 sorted_position(uint32_t slot) const { return {xs_[slot], ys_[slot], zs_[slot]}; }
@@ -171,8 +174,15 @@ public:
 
 private:
     // hash_, start_ and index_ for `points`. Deterministic: within a bucket, points keep their input
-    // order.
-    void sort_into_buckets(std::span<const glm::vec3> points, float cell_size, double buckets_per_point) {
+    // order. `scratch` (n floats) holds each point's bucket as a word meanwhile.
+    void sort_into_buckets(std::span<const glm::vec3> points, float cell_size, double buckets_per_point,
+                           float* scratch) {
+        auto put = [scratch](size_t i, uint32_t bucket) { std::memcpy(scratch + i, &bucket, sizeof bucket); };
+        auto get = [scratch](size_t i) {
+            uint32_t bucket;
+            std::memcpy(&bucket, scratch + i, sizeof bucket);
+            return bucket;
+        };
         const size_t n = points.size();
         glm::vec3 lo(0.0f);
         if (n > 0) {
@@ -184,15 +194,14 @@ private:
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
-        bucket_of_point_.resize(n);
-        parallel_for(n, 65536, [&](size_t i) { bucket_of_point_[i] = hash_.bucket(hash_.cell_of(points[i])); });
+        parallel_for(n, 65536, [&](size_t i) { put(i, hash_.bucket(hash_.cell_of(points[i]))); });
         start_.assign(hash_.bucket_count() + 1, 0);
-        for (size_t i = 0; i < n; ++i) ++start_[bucket_of_point_[i] + 1];
+        for (size_t i = 0; i < n; ++i) ++start_[get(i) + 1];
         for (size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
         index_.resize(n);
         // Scatter with start_[b] as bucket b's cursor, which leaves it at bucket b's end (the next
         // bucket's start); one shift puts the starts back. No cursor array of bucket-table size.
-        for (size_t i = 0; i < n; ++i) index_[start_[bucket_of_point_[i]]++] = static_cast<uint32_t>(i);
+        for (size_t i = 0; i < n; ++i) index_[start_[get(i)]++] = static_cast<uint32_t>(i);
         for (size_t b = start_.size() - 1; b > 0; --b) start_[b] = start_[b - 1];
         start_[0] = 0;
     }
@@ -201,7 +210,6 @@ private:
     std::vector<uint32_t> start_;  // bucket b's points are slots [start_[b], start_[b+1])
     std::vector<float> xs_, ys_, zs_;
     std::vector<uint32_t> index_;
-    std::vector<uint32_t> bucket_of_point_;  // scratch of build()
 };
 
 }  // namespace stipple

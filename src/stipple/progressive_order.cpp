@@ -57,15 +57,15 @@ constexpr double kPushCell = 6.0;
 class PushGrid {
 public:
     // Cells of kPushCell spacings hold ~40 stipples: a bucket for every 8 stipples is plenty.
-    PushGrid(std::span<const glm::vec3> points, float cell) {
-        grid_.build(points, cell, 1.0 / 8.0);
-        grid_.release_scratch();
-        nearest_.assign(points.size(), std::numeric_limits<float>::max());
-    }
+    PushGrid(std::span<const glm::vec3> points, float cell) { grid_.build(points, cell, 1.0 / 8.0); }
+
+    // Every stipple as far from any placed one as can be. Separate from the constructor so that these
+    // 4 bytes a stipple are allocated once the positions the grids were built from are freed.
+    void start_distances() { nearest_.assign(grid_.sorted_size(), std::numeric_limits<float>::max()); }
 
     // The slot of every point of `points`, by index there.
     std::vector<uint32_t> slots_of_points() const {
-        std::vector<uint32_t> slot_of(nearest_.size());
+        std::vector<uint32_t> slot_of(grid_.sorted_size());
         for (uint32_t slot = 0; slot < slot_of.size(); ++slot) slot_of[grid_.sorted_index(slot)] = slot;
         return slot_of;
     }
@@ -190,9 +190,14 @@ void Orderer::run(const std::function<void(double)>& progress) {
     state_.resize(slabs);
     parallel_for(slabs, 1, [&](size_t slab) { start_slab(slab); });
     // Every stipple is now in its slab's grid, which is all the ordering reads: the positions are put
-    // back from the grids at the end (12 bytes a stipple less while ordering).
+    // back from the grids at the end (12 bytes a stipple less while ordering). What only the ordering
+    // needs (the slots in order, the distances, 8 bytes a stipple) comes after them.
     const size_t count = positions_.size();
     std::vector<glm::vec3>().swap(positions_);
+    parallel_for(slabs, 1, [&](size_t slab) {
+        state_[slab].slots = slots_in_order(slab_units_[slab]);
+        state_[slab].grid->start_distances();
+    });
 
     // Window w ends at tau = 2^(-w/8); the last (w = 0) takes everything left. The first window
     // ends below the earliest slot, 0.5 / (the largest unit).
@@ -393,13 +398,10 @@ std::vector<uint32_t> Orderer::slots_in_order(const std::vector<uint32_t>& units
     return slots;
 }
 
-// The slab's slots in order, and its own stipples in a grid; order_ names them by grid slot until
-// finish_slab.
+// The slab's own stipples in a grid; order_ names them by grid slot until finish_slab.
 void Orderer::start_slab(size_t slab) {
     SlabState& state = state_[slab];
-    const std::vector<uint32_t>& units = slab_units_[slab];
-    state.slots = slots_in_order(units);
-    state.placed_count.assign(units.size(), 0);
+    state.placed_count.assign(slab_units_[slab].size(), 0);
     const std::vector<uint32_t> own = own_stipples(slab);
     {
         std::vector<glm::vec3> points(own.size());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #if defined(__SSE2__)
@@ -11,6 +12,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 
@@ -41,13 +43,26 @@ struct Candidates {
         size_t n = 0;
         for (int r = 0; r < run_count; ++r) n += runs[r].end - runs[r].begin;
         count = (n + kLanes - 1) / kLanes * kLanes;
-        if (x.size() < count) x.resize(2 * count), y.resize(2 * count), z.resize(2 * count);
+        // Room for a whole block past the end: runs are copied in blocks of kLanes that may overrun.
+        if (x.size() < count + kLanes) {
+            const size_t size = 2 * count + kLanes;
+            x.resize(size), y.resize(size), z.resize(size);
+        }
         size_t i = 0;
-        for (int r = 0; r < run_count; ++r) {  // whole runs: three block copies, not a loop of scalars
+        // Runs are a few points long: blocks of kLanes floats copied inline (a library copy per run and
+        // axis cost more in calls than in bytes). Reading up to kLanes - 1 points past a run stays within
+        // the grid's padding (PointGrid::kPad); what lands past the run is overwritten by the next run
+        // or by the padding below.
+        static_assert(PointGrid::kPad >= kLanes - 1, "block copies read past the last run");
+        for (int r = 0; r < run_count; ++r) {
             const uint32_t begin = runs[r].begin, length = runs[r].end - runs[r].begin;
-            std::copy_n(grid.xs() + begin, length, x.data() + i);
-            std::copy_n(grid.ys() + begin, length, y.data() + i);
-            std::copy_n(grid.zs() + begin, length, z.data() + i);
+            const float *sx = grid.xs() + begin, *sy = grid.ys() + begin, *sz = grid.zs() + begin;
+            float *dx = x.data() + i, *dy = y.data() + i, *dz = z.data() + i;
+            for (uint32_t k = 0; k < length; k += kLanes) {
+                std::memcpy(dx + k, sx + k, kLanes * sizeof(float));
+                std::memcpy(dy + k, sy + k, kLanes * sizeof(float));
+                std::memcpy(dz + k, sz + k, kLanes * sizeof(float));
+            }
             i += length;
         }
         for (; i < count; ++i) x[i] = y[i] = z[i] = std::numeric_limits<float>::max();
@@ -207,7 +222,8 @@ glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm:
 }
 
 void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::vector<glm::vec3>& positions,
-                    double spacing, int iterations, const std::function<void(double)>& progress) {
+                    double spacing, int iterations, const std::function<std::vector<glm::vec3>()>& input_again,
+                    const std::function<void(double)>& progress) {
     const size_t n = positions.size();
     if (n < 2 || iterations <= 0 || !(spacing > 0.0)) {
         std::vector<uint32_t>().swap(triangle_of);  // taken either way (the caller rebuilds it)
@@ -219,15 +235,17 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     // Work on a copy in the grid's spatial order (one sort up front, undone at the end): points
     // move little per iteration, so later grids come out nearly in input order and every pass
     // below walks memory sequentially instead of jumping between the triangle order and the cell
-    // order. One array at a time, so that a stipple never costs more than an iteration's 48 bytes (the
-    // caller's positions and triangles, 16, are freed once copied; the positions come back at the end).
-    const std::vector<uint32_t> original = PointGrid::spatial_order(positions, h);
+    // order. One array at a time, so that a stipple never costs more than an iteration's 40 bytes (the
+    // caller's positions and triangles, 16, are freed once copied; the positions come back at the end,
+    // in the order found by sorting the input again: see relax.hpp).
+    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h);
     std::vector<glm::vec3> pos(n);
     for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
     std::vector<glm::vec3>().swap(positions);
     std::vector<uint32_t> tri(n);
     for (uint32_t slot = 0; slot < n; ++slot) tri[slot] = triangle_of[original[slot]];
     std::vector<uint32_t>().swap(triangle_of);  // taken: the caller rebuilds it from the counts
+    std::vector<uint32_t>().swap(original);
 
     static const RepulsionKernel kernel = pick_kernel();
     PointGrid grid;
@@ -265,6 +283,8 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     }
     grid = PointGrid();  // its memory before the positions come back
     std::vector<uint32_t>().swap(tri);
+    original = PointGrid::spatial_order(input_again(), h);
+    STIPPLE_CHECK(original.size() == n, "relax_stipples: input_again must return the positions given");
     positions.resize(n);
     for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];
 }
