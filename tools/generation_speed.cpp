@@ -30,7 +30,15 @@ stipple::Mesh make_cube() {
 int main(int argc, char** argv) {
     using namespace stipple;
     std::vector<std::string> meshes;
-    for (int i = 1; i < argc; ++i) meshes.push_back(argv[i]);
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const bool count = !arg.empty() && arg.size() <= 9 && arg.find_first_not_of("0123456789") == std::string::npos;
+        if (arg != "cube" && (!count || std::stoull(arg) < 8)) {
+            std::fprintf(stderr, "usage: generation_speed [TRIANGLES (>= 8) | cube ...]  (default: 100000 1000000 cube)\n");
+            return arg == "--help" || arg == "-h" ? 0 : 2;
+        }
+        meshes.push_back(arg);
+    }
     if (meshes.empty()) meshes = {"100000", "1000000", "cube"};
     try {
         for (const std::string& name : meshes) {
