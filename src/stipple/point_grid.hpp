@@ -36,10 +36,13 @@ public:
         int bits = 6;
         while (bits < 30 && (size_t(1) << bits) < buckets) ++bits;
         mask_ = (uint32_t(1) << bits) - 1;
-        // Windows small enough to leave a few bits (16+ offsets) for the window hash: a surface
-        // meets only a 2D slice of a window, and windows sharing an offset pile their cells into the
-        // same buckets (a flat face meets all its windows at the same place).
+        // Windows of at most 1/16 of the table: a surface meets only a 2D slice of a window, so
+        // windows at random offsets rarely share buckets.
         window_bits_ = (bits - 4) / 3;
+        // Half a window below the points: the faces of a box lie at their minimum, which would put
+        // them on window borders, where every neighbourhood straddles two windows (the slow path of
+        // PointGrid::neighbor_runs for half of a cube's stipples).
+        if (window_bits_ > 0) origin_ -= glm::vec3(cell_size * float(1 << (window_bits_ - 1)));
     }
 
     glm::ivec3 cell_of(const glm::vec3& p) const {
@@ -55,14 +58,22 @@ public:
         const uint32_t wmask = (uint32_t(1) << window_bits_) - 1;
         const uint32_t local = (uint32_t(c.x) & wmask) | (uint32_t(c.y) & wmask) << window_bits_ |
                                (uint32_t(c.z) & wmask) << (2 * window_bits_);
-        return (local ^ (window_hash(c) << (3 * window_bits_))) & mask_;
+        // The window's offset spans the whole table: a flat face meets each of its windows in the same
+        // slice of local indices, and with offsets above the local bits alone (16 or so of them) the
+        // windows sharing one piled their slices into the same buckets (a 12-triangle cube's relaxation
+        // read twice its neighbours' points, its ordering pushed to them).
+        return (local + window_hash(c)) & mask_;
     }
 
-    // True when cells x0..x1 of a row (same y, z) are in one window: then their buckets are
-    // consecutive, bucket(x0) .. bucket(x0) + (x1 - x0).
+    // True when cells x0..x1 of a row (same y, z) are in one window.
     bool one_window(int x0, int x1) const { return (uint32_t(x0) >> window_bits_) == (uint32_t(x1) >> window_bits_); }
     bool one_window(const glm::ivec3& lo, const glm::ivec3& hi) const {
         return one_window(lo.x, hi.x) && one_window(lo.y, hi.y) && one_window(lo.z, hi.z);
+    }
+    // True when the cells from `first` to x = x1 of its row are in one window and their buckets do not
+    // wrap around the table: then they are consecutive, bucket(first) .. bucket(first) + (x1 - first.x).
+    bool row_is_run(const glm::ivec3& first, int x1) const {
+        return one_window(first.x, x1) && bucket(first) + uint32_t(x1 - first.x) <= mask_;
     }
 
     size_t bucket_count() const { return size_t(mask_) + 1; }
@@ -123,18 +134,25 @@ public:
 
     glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
     uint32_t bucket(const glm::ivec3& c) const { return hash_.bucket(c); }
-    bool one_window(int x0, int x1) const { return hash_.one_window(x0, x1); }
+    bool row_is_run(const glm::ivec3& first, int x1) const { return hash_.row_is_run(first, x1); }
 
     // The points of the 27 cells around `cell` as runs of slots; returns the number of runs.
     // Runs never overlap (a bucket shared by two of the cells is listed once).
     int neighbor_runs(const glm::ivec3& cell, Run out[27]) const {
         int count = 0;
         if (hash_.one_window(cell - glm::ivec3(1), cell + glm::ivec3(1))) {
-            // Distinct rows of one window: 9 disjoint runs of 3 consecutive buckets.
+            // Distinct rows of one window, whose cells have distinct buckets: 9 disjoint runs of 3
+            // consecutive buckets (a row that wraps around the table, rarely, in two runs).
             for (int z = -1; z <= 1; ++z)
                 for (int y = -1; y <= 1; ++y) {
                     const uint32_t first = bucket(cell + glm::ivec3(-1, y, z));
-                    out[count++] = {start_[first], start_[first + 3]};
+                    if (first + 3 <= bucket_count()) {
+                        out[count++] = {start_[first], start_[first + 3]};
+                        continue;
+                    }
+                    const uint32_t last = first + 2 - uint32_t(bucket_count());  // wrapped to the start
+                    out[count++] = {start_[first], start_[bucket_count()]};
+                    out[count++] = {start_[0], start_[last + 1]};
                 }
             return count;
         }
