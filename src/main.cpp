@@ -4,22 +4,10 @@
 #include <string>
 #include <vector>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
-#if defined(__GLIBC__)
-    // Blocks of 4 MiB and more straight from the system and back to it when freed. By default glibc
-    // raises this threshold to the largest block freed so far (up to 32 MiB), after which stipple
-    // generation's per-slab arrays (1-30 MiB, short-lived ones between long-lived ones) come from the
-    // heap and stay resident as holes after they are freed: the 8M-stipple dragon peaked at 401 MB
-    // instead of 354 MB (`STIPPLE_NO_CACHE=1 /usr/bin/time -v stipple info dragon.ply --dmax 4`).
-    mallopt(M_MMAP_THRESHOLD, 4 << 20);
-#endif
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         stipple::cli::print_usage();

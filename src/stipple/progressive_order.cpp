@@ -10,6 +10,7 @@
 #endif
 
 #include "core/hash.hpp"
+#include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 
@@ -223,6 +224,10 @@ void Orderer::run(const std::function<void(double)>& progress) {
         std::vector<std::pair<glm::vec3, float>>().swap(state.placed_in_window);
         state.grid->release_nearest();
     }
+    // Those were blocks of a few MiB a slab between the grids' blocks: the allocator keeps them resident
+    // unless asked (core/memory.hpp), and the positions coming back on top of them made the peak of the
+    // 8M-stipple dragon's generation (401 MB against 354 in the relaxation).
+    release_free_memory();
     positions_.resize(count);
     parallel_for(slabs, 1, [&](size_t slab) { finish_slab(slab); });
     std::vector<SlabState>().swap(state_);
