@@ -10,10 +10,10 @@ namespace stipple {
 // heap once a block that large has been freed (its mmap threshold follows the largest block freed), and
 // keeps the pages of blocks freed in the middle of the heap resident: the progressive order frees blocks
 // of a few MiB a slab between the slabs' grids it keeps, and those holes counted in generation's peak
-// (the 8M-stipple dragon peaked at 401 MB with them, 355 MB without). Setting the threshold once for the
-// whole program instead (mallopt) made the renderer's per-frame allocations fault their pages every
-// frame (the vertex path's frame 25% slower), so generation calls this where it has just freed such
-// blocks. A no-op without glibc.
+// (the 8M-stipple dragon peaked at 401,000 KiB resident with them, 355,000 without). Setting the
+// threshold once for the whole program instead (mallopt) made the renderer's per-frame allocations fault
+// their pages every frame (the vertex path's frame 25% slower), so generation calls this where it has
+// just freed such blocks. A no-op without glibc.
 inline void release_free_memory() {
 #if defined(__GLIBC__)
     malloc_trim(0);
