@@ -1,16 +1,18 @@
 #pragma once
-// A static 3D spatial hash of points for fixed-radius neighbour queries (stipple relaxation and the
-// nearest-neighbour quality metric).
+// A static 3D spatial hash of points for fixed-radius neighbour queries (stipple relaxation, the
+// progressive order, the nearest-neighbour quality metric; CellHash alone also serves the polygons'
+// selection ranking).
 //
 // Points go into cubic cells; cells go into a power-of-two bucket table; a counting sort stores
 // each bucket's points contiguously, as separate x, y, z arrays so that a query can stream
 // through them with SIMD. Different cells may share a bucket: queries always test the real
 // distance, so a collision costs a few extra distance tests and never a wrong answer.
 //
-// Bucket layout: space is tiled by windows of W^3 cells (W = 2^w). Inside a window a cell's
-// bucket is its row-major index (x fastest), offset by a hash of the window that only touches
-// bits above 3w. So neighbouring cells share cache lines, and the three cells x-1, x, x+1 of a
-// row are three consecutive buckets: the 27 neighbours of a cell are 9 contiguous runs of points.
+// Bucket layout: space is tiled by windows of W^3 cells (W = 2^w), starting half a window below the
+// points. Inside a window a cell's bucket is its row-major index (x fastest) plus a hash of the window,
+// modulo the table. So neighbouring cells share cache lines, and the three cells x-1, x, x+1 of a row
+// are three consecutive buckets (two runs where the row wraps around the table): the 27 neighbours of
+// a cell are 9 contiguous runs of points.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
