@@ -25,13 +25,20 @@ struct Blend {
     vec4 r0, r1, r2;
 };
 
+// One influence: its slot's rows times its weight.
+Blend weighted_rows(float weight, uint slot) {
+    return Blend(weight * texelFetch(palette_rows, int(3u * slot)), weight * texelFetch(palette_rows, int(3u * slot + 1u)),
+                 weight * texelFetch(palette_rows, int(3u * slot + 2u)));
+}
+
 // One influence added to the blend. Called with constant slot halves only: indexing a vector with a
 // variable makes a software GPU spill it to memory.
 void add_influence(inout Blend m, float weight, uint slot) {
     if (weight != 0.0) {
-        m.r0 += weight * texelFetch(palette_rows, int(3u * slot));
-        m.r1 += weight * texelFetch(palette_rows, int(3u * slot + 1u));
-        m.r2 += weight * texelFetch(palette_rows, int(3u * slot + 2u));
+        Blend w = weighted_rows(weight, slot);
+        m.r0 += w.r0;
+        m.r1 += w.r1;
+        m.r2 += w.r2;
     }
 }
 
@@ -55,8 +62,7 @@ void main() {
     // come first, and a vertex has at least one.
     uvec4 slots = vertex.slots;
     vec4 w0 = vertex.weights0;
-    uint first = slots.x & 0xFFFFu;
-    Blend m = Blend(w0.x * texelFetch(palette_rows, int(3u * first)), w0.x * texelFetch(palette_rows, int(3u * first + 1u)), w0.x * texelFetch(palette_rows, int(3u * first + 2u)));
+    Blend m = weighted_rows(w0.x, slots.x & 0xFFFFu);
     if (kInfluences > 1u) add_influence(m, w0.y, slots.x >> 16u);
     if (kInfluences > 2u) add_influence(m, w0.z, slots.y & 0xFFFFu);
     if (kInfluences > 3u) add_influence(m, w0.w, slots.y >> 16u);

@@ -10,7 +10,6 @@
 #include "gpu/context.hpp"
 #include "gpu/descriptors.hpp"
 #include "gpu/pipelines.hpp"
-#include "gpu/vk_check.hpp"
 
 namespace stipple::anim {
 
@@ -102,11 +101,7 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
              std::to_string(context.properties.limits.maxTexelBufferElements / 3));
     palette_ = gpu::Buffer(context, palette_texels * sizeof(glm::vec4),
                            VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
-    VkBufferViewCreateInfo view_info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-    view_info.buffer = palette_.handle();
-    view_info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    view_info.range = VK_WHOLE_SIZE;
-    VK_CHECK(vkCreateBufferView(context.device, &view_info, nullptr, &palette_view_));
+    palette_view_ = gpu::create_texel_view(context, palette_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
     weights_ = gpu::Buffer(context, std::max(morph_weights_, 1u) * sizeof(float), per_frame, gpu::MemoryUse::DeviceLocal);
     const VkDeviceSize output_bytes = std::max(vertex_count_, 1u) * 3 * sizeof(float);
     positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);

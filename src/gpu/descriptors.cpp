@@ -33,6 +33,16 @@ VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const 
     return layout;
 }
 
+VkBufferView create_texel_view(const Context& context, VkBuffer buffer, VkFormat format) {
+    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = buffer;
+    info.format = format;
+    info.range = VK_WHOLE_SIZE;
+    VkBufferView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateBufferView(context.device, &info, nullptr, &view));
+    return view;
+}
+
 VkDescriptorPool create_pool(const Context& context, std::span<const DescriptorBinding> bindings, uint32_t sets) {
     std::vector<VkDescriptorPoolSize> sizes;
     for (const DescriptorBinding& b : bindings) {

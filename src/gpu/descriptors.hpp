@@ -31,6 +31,9 @@ VkPipelineLayout create_pipeline_layout(const Context& context, std::span<const 
 VkDescriptorPool create_pool(const Context& context, std::span<const DescriptorBinding> bindings, uint32_t sets);
 VkDescriptorSet allocate_set(const Context& context, VkDescriptorPool pool, VkDescriptorSetLayout layout);
 
+// A view of the whole of `buffer` as texels of `format`, for a texel-buffer binding (the caller destroys it).
+VkBufferView create_texel_view(const Context& context, VkBuffer buffer, VkFormat format);
+
 // Points every binding at the whole of its buffer (`buffers[i]` for `bindings[i]`).
 void write_buffer_set(VkDevice device, VkDescriptorSet set, std::span<const DescriptorBinding> bindings,
                       std::span<const VkBuffer> buffers);

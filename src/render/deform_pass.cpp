@@ -7,7 +7,6 @@
 #include "gpu/context.hpp"
 #include "gpu/descriptors.hpp"
 #include "gpu/pipelines.hpp"
-#include "gpu/vk_check.hpp"
 #include "render/object_gpu.hpp"
 
 namespace stipple {
@@ -98,17 +97,10 @@ void DeformPass::bind(ObjectGpu& object) const {
     if (texels > limit)
         fail("an animated object of " + std::to_string(object.geometry.triangle_count) +
              " polygons exceeds this device's texel buffer limit (" + std::to_string(limit) + " texels)");
-    auto make_view = [&](VkBuffer buffer, VkFormat format, VkBufferView& view) {
-        VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-        info.buffer = buffer;
-        info.format = format;
-        info.range = VK_WHOLE_SIZE;
-        VK_CHECK(vkCreateBufferView(device, &info, nullptr, &view));
-    };
-    make_view(object.geometry.positions.handle(), vec3_texels_ ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT,
-              binding->positions);
-    make_view(object.geometry.indices.handle(), vec3_texels_ ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT,
-              binding->indices);
+    binding->positions = gpu::create_texel_view(context_, object.geometry.positions.handle(),
+                                                vec3_texels_ ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
+    binding->indices = gpu::create_texel_view(context_, object.geometry.indices.handle(),
+                                              vec3_texels_ ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
 
     binding->pool = gpu::create_pool(context_, kPolygonBindings, 1);
     binding->set = gpu::allocate_set(context_, binding->pool, set_layout_);

@@ -72,10 +72,11 @@ public:
     bool one_window(const glm::ivec3& lo, const glm::ivec3& hi) const {
         return one_window(lo.x, hi.x) && one_window(lo.y, hi.y) && one_window(lo.z, hi.z);
     }
-    // True when the cells from `first` to x = x1 of its row are in one window and their buckets do not
-    // wrap around the table: then they are consecutive, bucket(first) .. bucket(first) + (x1 - first.x).
-    bool row_is_run(const glm::ivec3& first, int x1) const {
-        return one_window(first.x, x1) && bucket(first) + uint32_t(x1 - first.x) <= mask_;
+    // True when the cells x0..x1 of a row whose first cell has bucket `first_bucket` are in one window and
+    // their buckets do not wrap around the table: then they are consecutive, first_bucket .. first_bucket +
+    // (x1 - x0).
+    bool row_is_run(uint32_t first_bucket, int x0, int x1) const {
+        return one_window(x0, x1) && first_bucket + uint32_t(x1 - x0) <= mask_;
     }
 
     size_t bucket_count() const { return size_t(mask_) + 1; }
@@ -136,7 +137,7 @@ public:
 
     glm::ivec3 cell_of(const glm::vec3& p) const { return hash_.cell_of(p); }
     uint32_t bucket(const glm::ivec3& c) const { return hash_.bucket(c); }
-    bool row_is_run(const glm::ivec3& first, int x1) const { return hash_.row_is_run(first, x1); }
+    bool row_is_run(uint32_t first_bucket, int x0, int x1) const { return hash_.row_is_run(first_bucket, x0, x1); }
 
     // The points of the 27 cells around `cell` as runs of slots; returns the number of runs.
     // Runs never overlap (a bucket shared by two of the cells is listed once).

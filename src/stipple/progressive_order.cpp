@@ -102,9 +102,9 @@ public:
         // Buckets listed twice (shared by two cells) are pushed twice: a minimum does not mind.
         for (int z = c0.z; z <= c1.z; ++z)
             for (int y = c0.y; y <= c1.y; ++y) {
-                if (grid_.row_is_run({c0.x, y, z}, c1.x)) {
+                const uint32_t row = grid_.bucket({c0.x, y, z});
+                if (grid_.row_is_run(row, c0.x, c1.x)) {
                     // Within a window the cells of a row are consecutive buckets.
-                    const uint32_t row = grid_.bucket({c0.x, y, z});
                     visit(grid_.bucket_begin(row), grid_.bucket_begin(row + uint32_t(c1.x - c0.x) + 1));
                 } else {
                     for (int x = c0.x; x <= c1.x; ++x) {

@@ -43,8 +43,8 @@ public:
         for (int dz = -1; dz <= 1; ++dz)
             for (int dy = -1; dy <= 1; ++dy) {
                 const glm::ivec3 row(c.x - 1, c.y + dy, c.z + dz);
-                if (hash_.row_is_run(row, c.x + 1)) {
-                    const uint32_t first = hash_.bucket(row);
+                const uint32_t first = hash_.bucket(row);
+                if (hash_.row_is_run(first, row.x, c.x + 1)) {
                     for (uint32_t b = first; b < first + 3; ++b)
                         if (any_in(b, p)) return true;
                 } else {
