@@ -76,13 +76,13 @@ InkFigures measure_ink(const RenderedFrame& frame) {
     return f;
 }
 
-double unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
-                        const RenderedFrame& rendered) {
+void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
+                          const RenderedFrame& rendered, InkFigures& figures) {
     const formulas::DensityParams params = formulas::density_params(frame, object.frame.uniforms);
     const glm::mat4 model_view_proj = object.frame.uniforms.model_view_proj;
     const int width = int(frame.viewport.x), height = int(frame.viewport.y);
     const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
-    double ink = 0.0;
+    double ink = 0.0, off_surface = 0.0, hidden = 0.0;
     for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
         const float density = formulas::polygon_density(
             formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), params);
@@ -102,12 +102,18 @@ double unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame
                     const glm::vec2 d = (glm::vec2(x, y) + 0.5f - window) / side;
                     if (round && glm::dot(d, d) > 0.25f) continue;
                     const float surface = rendered.depth[size_t(y) * size_t(width) + size_t(x)];
-                    if (surface >= 1.0f || ndc.z > surface + 1e-6f) continue;
-                    ink += intensity;
+                    if (surface >= 1.0f)
+                        off_surface += intensity;
+                    else if (ndc.z > surface + 1e-6f)
+                        hidden += intensity;
+                    else
+                        ink += intensity;
                 }
         }
     }
-    return ink;
+    figures.unshared_ink += ink;
+    figures.off_surface_ink += off_surface;
+    figures.hidden_ink += hidden;
 }
 
 namespace {
@@ -209,8 +215,7 @@ ToneSurvey survey_tone(const gpu::Context& context, StippleRenderer& renderer, s
                 ink.covered += f.covered;
                 ink.ink += f.ink;
                 if (positions)
-                    ink.unshared_ink +=
-                        unshared_dot_ink(renderer.object(object), renderer.frame_uniforms(), *positions, frame);
+                    add_unshared_dot_ink(renderer.object(object), renderer.frame_uniforms(), *positions, frame, ink);
             }
             sample.mean_ink.push_back(ink.mean());
             sample.tallies.push_back(tally);

@@ -49,6 +49,10 @@ struct InkFigures {
     // The drawn stipples' ink if no two overlapped: each dot's visible pixels (covered, not hidden)
     // times its intensity, summed (only with the stipples' positions; see survey_tone).
     double unshared_ink = 0.0;
+    // Where the rest of the dots' footprints went: pixels no surface covers (a dot spilling over the
+    // outline) and pixels where a nearer surface hides it (or the depth test does), times intensity.
+    double off_surface_ink = 0.0;
+    double hidden_ink = 0.0;
     double mean() const { return covered ? ink / double(covered) : 0.0; }
 };
 InkFigures measure_ink(const RenderedFrame& frame);
@@ -56,8 +60,9 @@ InkFigures measure_ink(const RenderedFrame& frame);
 // Ink the frame's drawn stipples of `object` would leave if none overlapped another: each dot's pixels
 // (the splat's square or disc) that a surface covers and that do not hide it, times its intensity.
 // `positions` are the object's candidates in object space (StippleSet::positions).
-double unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
-                        const RenderedFrame& rendered);
+// Fills `ink`'s unshared_ink, off_surface_ink and hidden_ink (adding to them).
+void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& frame, const std::vector<glm::vec3>& positions,
+                          const RenderedFrame& rendered, InkFigures& ink);
 
 struct ToneSurveyOptions {
     VkExtent2D extent{1280, 1024};  // the image the object is framed in at distance 1
