@@ -78,9 +78,10 @@ bool uncovered(uint word) {
     return uintBitsToFloat(word) >= 1.0;
 }
 
-// Inks one pixel with a stipple of the given intensity (see the top of this file).
-void ink_pixel(uint at, float intensity, uint ink_word) {
-    if (intensity >= 1.0f) {
+// Inks one pixel with a stipple of the given intensity (see the top of this file). `full` is
+// intensity >= 1, known where the call is made (see main).
+void ink_pixel(uint at, float intensity, uint ink_word, bool full) {
+    if (full) {
         color[at] = ink_word;  // the least word there is: no other stipple replaces it
     } else {
         vec3 paper = paper_background != 0u ? frame.paper_color.rgb : unpack_color(background[at]);
@@ -88,7 +89,7 @@ void ink_pixel(uint at, float intensity, uint ink_word) {
     }
 }
 
-void splat(uint index, float intensity, float side, mat4 model_view_proj, PolygonFrame polygon) {
+void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -129,7 +130,7 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
                 continue;
             }
             inked = true;
-            ink_pixel(at, intensity, ink_word);
+            ink_pixel(at, intensity, ink_word, full);
         }
     if (kRecordVisible && inked) {
         uint slot = atomicAdd(visible.count, 1u);
@@ -164,7 +165,7 @@ void splat(uint index, float intensity, float side, mat4 model_view_proj, Polygo
                 best_at = at;
             }
         if (best_at == 0xFFFFFFFFu) return;
-        ink_pixel(best_at, intensity, ink_word);
+        ink_pixel(best_at, intensity, ink_word, full);
         last_distance = best_distance;
         last_at = best_at;
     }
@@ -185,6 +186,11 @@ void main() {
     uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
-    for (uint k = begin; k < end; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), side, model_view_proj, polygon);
+    // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
+    // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
+    // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
+    uint whole_end = clamp(uint(floor(density)), begin, end);
+    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon);
+    for (uint k = whole_end; k < end; ++k)
+        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon);
 }
