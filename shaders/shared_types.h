@@ -35,6 +35,7 @@ STIPPLE_CONST uint kSpecDrawnList = 1;       // stipple.vert: draw the survivors
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
 STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
+STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
@@ -46,8 +47,8 @@ STIPPLE_CONST uint kBindingDrawnStipples = 4;  // DrawCommand + uint[] (storage)
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
 STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
-STIPPLE_CONST uint kBindingMeshPositions = 8;  // float[] (storage): the mesh's vertices, 3 floats each
-STIPPLE_CONST uint kBindingMeshIndices = 9;    // uint[] (storage): the mesh's triangles, 3 indices each
+STIPPLE_CONST uint kBindingMeshPositions = 8;  // texel buffer: the mesh's vertices (RGB32F, or R32F: kSpecMeshVec3Texels)
+STIPPLE_CONST uint kBindingMeshIndices = 9;    // texel buffer: the mesh's triangles (RGB32UI, or R32UI)
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + VisibleStipple[] (storage), when recording

@@ -1,13 +1,28 @@
 // A candidate stipple's object-space position from its polygon and its place in it (StippleVertex,
-// shared_types.h): a + u (b - a) + v (c - a). Declares the mesh buffers (set 0) it reads.
+// shared_types.h): a + u (b - a) + v (c - a). Declares the mesh's texel buffers (set 0) it reads.
+//
+// Texel buffers, not storage buffers: a software GPU (lavapipe) loads a storage buffer float by float
+// and lane by lane, where a texel fetch gathers a whole texel for every lane at once. The corners were
+// twelve such loads; on the vertex path, where lavapipe runs them for every candidate (the survivors'
+// code under a mask), they were two thirds of the pass (docs/architecture.md).
 #ifndef STIPPLE_POSITION_H
 #define STIPPLE_POSITION_H
 
-layout(set = 0, binding = kBindingMeshPositions, std430) readonly buffer MeshPositions { float mesh_positions[]; };
-layout(set = 0, binding = kBindingMeshIndices, std430) readonly buffer MeshIndices { uint mesh_indices[]; };
+layout(set = 0, binding = kBindingMeshPositions) uniform samplerBuffer mesh_positions;
+layout(set = 0, binding = kBindingMeshIndices) uniform usamplerBuffer mesh_indices;
+// Three-component texel buffers are optional in Vulkan: without them each texel holds one float (index).
+layout(constant_id = kSpecMeshVec3Texels) const bool kMeshVec3Texels = true;
 
 vec3 mesh_vertex(uint index) {
-    return vec3(mesh_positions[3u * index], mesh_positions[3u * index + 1u], mesh_positions[3u * index + 2u]);
+    if (kMeshVec3Texels) return texelFetch(mesh_positions, int(index)).xyz;
+    return vec3(texelFetch(mesh_positions, int(3u * index)).x, texelFetch(mesh_positions, int(3u * index + 1u)).x,
+                texelFetch(mesh_positions, int(3u * index + 2u)).x);
+}
+
+uvec3 mesh_triangle(uint triangle) {
+    if (kMeshVec3Texels) return texelFetch(mesh_indices, int(triangle)).xyz;
+    return uvec3(texelFetch(mesh_indices, int(3u * triangle)).x, texelFetch(mesh_indices, int(3u * triangle + 1u)).x,
+                 texelFetch(mesh_indices, int(3u * triangle + 2u)).x);
 }
 
 // The polygon's corner a and its edges b - a, c - a.
@@ -18,9 +33,10 @@ struct PolygonFrame {
 };
 
 PolygonFrame polygon_frame(uint triangle) {
-    vec3 a = mesh_vertex(mesh_indices[3u * triangle]);
-    vec3 b = mesh_vertex(mesh_indices[3u * triangle + 1u]);
-    vec3 c = mesh_vertex(mesh_indices[3u * triangle + 2u]);
+    uvec3 corners = mesh_triangle(triangle);
+    vec3 a = mesh_vertex(corners.x);
+    vec3 b = mesh_vertex(corners.y);
+    vec3 c = mesh_vertex(corners.z);
     return PolygonFrame(a, b - a, c - a);
 }
 

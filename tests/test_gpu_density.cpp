@@ -227,9 +227,10 @@ struct PathFrames {
 
 // Every density path draws the subject; the masks and images must agree (checked by the caller).
 PathFrames draw_with_every_path(const gpu::Context& context, const test::Prepared& subject, const ObjectParams& params,
-                                float distance) {
+                                float distance, bool scalar_texels = false) {
     RendererOptions options;
     options.count_drawn = true;
+    options.scalar_texels = scalar_texels;
     StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
     renderer.add_object(subject.mesh, subject.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(context, {1280, 1024});
@@ -283,6 +284,25 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     EXPECT_GT(test::popcount(out.masks[0]), 10000u);
     EXPECT_LT(test::popcount(out.masks[0]), blob.stipples.size());
     expect_same_stipples_and_images(out);
+}
+
+TEST_F(DensityPaths, EveryPathReadsTheMeshAlikeAFloatOrAVertexPerTexel) {
+    // The stipple shaders read the polygons' corners from texel buffers (shaders/stipple_position.h):
+    // a vertex per texel, or a float per texel on devices without three-component texel buffers.
+    // Both layouts must place the same stipples.
+    ObjectParams params;
+    Prepared blob = test::prepare(load_mesh(blobby_path()), params);
+    const PathFrames vec3 = draw_with_every_path(*context, blob, params, 1.5f);
+    const PathFrames scalar = draw_with_every_path(*context, blob, params, 1.5f, true);
+    for (size_t i = 0; i < vec3.masks.size(); ++i) {
+        const DensityPath path = kAllDensityPaths[i];
+        EXPECT_EQ(scalar.masks[i], vec3.masks[i]) << density_path_name(path);
+        const double differing = fraction_differing(vec3.frames[i].color, scalar.frames[i].color, 0);
+        std::printf("%s path: %.4f%% of pixels differ between the texel layouts\n", density_path_name(path),
+                    100.0 * differing);
+        EXPECT_LE(differing, 0.001) << density_path_name(path);
+    }
+    EXPECT_GT(test::mean_ink(scalar.frames[0]), 0.05);
 }
 
 TEST_F(DensityPaths, AllPathsDrawEveryStippleOfLargePolygons) {

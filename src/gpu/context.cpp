@@ -241,6 +241,13 @@ void Context::create_device(const ContextOptions& options) {
     features.max_line_width = supported.wideLines ? properties.limits.lineWidthRange[1] : 1.0f;
     features.timestamp_period_ns = properties.limits.timestampPeriod;
     features.timestamps = features.timestamps && properties.limits.timestampComputeAndGraphics;
+    auto reads_uniform_texels = [&](VkFormat format) {
+        VkFormatProperties format_properties{};
+        vkGetPhysicalDeviceFormatProperties(physical_device, format, &format_properties);
+        return (format_properties.bufferFeatures & VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
+    };
+    features.vec3_texels =
+        reads_uniform_texels(VK_FORMAT_R32G32B32_SFLOAT) && reads_uniform_texels(VK_FORMAT_R32G32B32_UINT);
     depth_format = choose_depth_format(physical_device);
 
     float priority = 1.0f;

@@ -28,6 +28,9 @@ struct DeviceFeatures {
     bool wide_lines = false;
     bool pipeline_statistics = false;
     bool timestamps = false;
+    // The device reads RGB32F and RGB32UI uniform texel buffers (optional in Vulkan): a mesh's vertex or
+    // triangle is then one texel; else one float or index a texel.
+    bool vec3_texels = false;
     float max_point_size = 1.0f;
     float max_line_width = 1.0f;
     double timestamp_period_ns = 1.0;

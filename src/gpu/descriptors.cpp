@@ -71,8 +71,9 @@ VkDescriptorSet allocate_set(const Context& context, VkDescriptorPool pool, VkDe
 }
 
 void write_buffer_set(VkDevice device, VkDescriptorSet set, std::span<const DescriptorBinding> bindings,
-                      std::span<const VkBuffer> buffers) {
+                      std::span<const VkBuffer> buffers, std::span<const VkBufferView> views) {
     STIPPLE_CHECK(bindings.size() == buffers.size(), "write_buffer_set: one buffer per binding");
+    STIPPLE_CHECK(views.empty() || views.size() == bindings.size(), "write_buffer_set: one view per binding");
     std::vector<VkDescriptorBufferInfo> infos(bindings.size());
     std::vector<VkWriteDescriptorSet> writes(bindings.size());
     for (size_t i = 0; i < bindings.size(); ++i) {
@@ -82,7 +83,14 @@ void write_buffer_set(VkDevice device, VkDescriptorSet set, std::span<const Desc
         writes[i].dstBinding = bindings[i].binding;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = bindings[i].type;
-        writes[i].pBufferInfo = &infos[i];
+        const bool texels = bindings[i].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER ||
+                            bindings[i].type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+        STIPPLE_CHECK(!texels || (!views.empty() && views[i] != VK_NULL_HANDLE),
+                      "write_buffer_set: a texel-buffer binding needs its view");
+        if (texels)
+            writes[i].pTexelBufferView = &views[i];
+        else
+            writes[i].pBufferInfo = &infos[i];
     }
     vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
 }

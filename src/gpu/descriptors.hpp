@@ -34,8 +34,9 @@ VkDescriptorSet allocate_set(const Context& context, VkDescriptorPool pool, VkDe
 // A view of the whole of `buffer` as texels of `format`, for a texel-buffer binding (the caller destroys it).
 VkBufferView create_texel_view(const Context& context, VkBuffer buffer, VkFormat format);
 
-// Points every binding at the whole of its buffer (`buffers[i]` for `bindings[i]`).
+// Points every binding at the whole of its buffer (`buffers[i]` for `bindings[i]`), or a texel-buffer
+// binding at its view (`views[i]`; `views` may be empty when no binding is a texel buffer).
 void write_buffer_set(VkDevice device, VkDescriptorSet set, std::span<const DescriptorBinding> bindings,
-                      std::span<const VkBuffer> buffers);
+                      std::span<const VkBuffer> buffers, std::span<const VkBufferView> views = {});
 
 }  // namespace stipple::gpu

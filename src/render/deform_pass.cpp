@@ -61,17 +61,10 @@ constexpr gpu::DescriptorBinding kPolygonBindings[3] = {
 };
 static_assert(gpu::kBindingPolygonPositions == 0 && gpu::kBindingPolygonIndices == 1 && gpu::kBindingPolygonInfos == 2);
 
-bool reads_uniform_texels(const gpu::Context& context, VkFormat format) {
-    VkFormatProperties properties{};
-    vkGetPhysicalDeviceFormatProperties(context.physical_device, format, &properties);
-    return (properties.bufferFeatures & VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
-}
-
 }  // namespace
 
 DeformPass::DeformPass(const gpu::Context& context, bool scalar_texels) : context_(context) {
-    vec3_texels_ = !scalar_texels && reads_uniform_texels(context, VK_FORMAT_R32G32B32_SFLOAT) &&
-                   reads_uniform_texels(context, VK_FORMAT_R32G32B32_UINT);
+    vec3_texels_ = !scalar_texels && context.features.vec3_texels;
     set_layout_ = gpu::create_set_layout(context, kPolygonBindings, VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
     gpu::Specialization texels;
@@ -162,7 +155,8 @@ void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 }  // namespace stipple

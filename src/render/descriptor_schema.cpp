@@ -11,6 +11,7 @@ namespace {
 
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 constexpr VkShaderStageFlags kAllStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
 
@@ -24,8 +25,10 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingDebug, kStorage}, [](const O& o) { return o.frame.debug.handle(); }},
     {{gpu::kBindingStipples, kStorage}, [](const O& o) { return o.geometry.stipples.handle(); }},
     {{gpu::kBindingDrawnPolygons, kStorage}, [](const O& o) { return o.frame.drawn_polygons.handle(); }},
-    {{gpu::kBindingMeshPositions, kStorage}, [](const O& o) { return o.geometry.positions.handle(); }},
-    {{gpu::kBindingMeshIndices, kStorage}, [](const O& o) { return o.geometry.indices.handle(); }},
+    {{gpu::kBindingMeshPositions, kTexels}, [](const O& o) { return o.geometry.positions.handle(); },
+     [](const O& o) { return o.geometry.position_texels; }},
+    {{gpu::kBindingMeshIndices, kTexels}, [](const O& o) { return o.geometry.indices.handle(); },
+     [](const O& o) { return o.geometry.index_texels; }},
     {{gpu::kBindingSilhouetteEdges, kStorage}, [](const O& o) { return o.geometry.silhouette_edges.handle(); }},
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
     {{gpu::kBindingVisibleStipples, kStorage}, [](const O& o) { return o.frame.visible_stipples.handle(); }},
@@ -78,8 +81,12 @@ void create_object_descriptors(const gpu::Context& context, VkDescriptorSetLayou
 
 void write_object_descriptors(const ObjectGpu& object) {
     std::vector<VkBuffer> buffers;
-    for (const ObjectBinding& b : kObjectBindings) buffers.push_back(b.buffer(object));
-    gpu::write_buffer_set(object.context->device, object.set, object_descriptor_bindings(), buffers);
+    std::vector<VkBufferView> views;
+    for (const ObjectBinding& b : kObjectBindings) {
+        buffers.push_back(b.buffer(object));
+        views.push_back(b.view ? b.view(object) : VK_NULL_HANDLE);
+    }
+    gpu::write_buffer_set(object.context->device, object.set, object_descriptor_bindings(), buffers, views);
 }
 
 }  // namespace stipple

@@ -15,10 +15,12 @@ class Context;
 }
 struct ObjectGpu;
 
-// One binding of the object set: its number and type, and the object's buffer behind it.
+// One binding of the object set: its number and type, and the object's buffer behind it (and for a
+// texel buffer, the view of it that the binding holds).
 struct ObjectBinding {
     gpu::DescriptorBinding binding;
     VkBuffer (*buffer)(const ObjectGpu& object);
+    VkBufferView (*view)(const ObjectGpu& object) = nullptr;
 };
 std::span<const ObjectBinding> object_bindings();
 

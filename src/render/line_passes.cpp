@@ -46,7 +46,8 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     // Reads the depth pass's words from the splat's frame set (set 1), hence the splat's layout.
     const uint32_t unorm24 = depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     line_walk_pipeline_ = gpu::create_compute_pipeline(context_, "line_walk.comp", layouts_.splat_pipeline,
-                                                       {{{gpu::kSpecDepthUnorm24, unorm24}}});
+                                                       {{{gpu::kSpecDepthUnorm24, unorm24},
+                                                         {gpu::kSpecMeshVec3Texels, mesh_vec3_texels() ? 1u : 0u}}});
 }
 
 void StippleRenderer::record_line_edges(VkCommandBuffer cb) {

@@ -117,6 +117,8 @@ float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::dete
 
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
+    for (VkBufferView view : {geometry.position_texels, geometry.index_texels})
+        if (view) vkDestroyBufferView(context->device, view, nullptr);
 }
 
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
@@ -153,7 +155,8 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
 
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const Buffer& frame_uniforms, const ObjectUpload& upload,
-                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn) {
+                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn,
+                                             bool vec3_texels) {
     validate_params(params);
     if (params.point_size > context.features.max_point_size)
         fail("--point-size " + std::to_string(params.point_size) + " exceeds this device's maximum of " +
@@ -165,6 +168,16 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->params = params;
     object->model = model;
     upload_object(context, upload, count_drawn, *object);
+    ObjectGeometry& geometry = object->geometry;
+    const uint64_t per_texel = vec3_texels ? 1 : 3;
+    const uint64_t texels = per_texel * std::max<uint64_t>(geometry.positions.size() / sizeof(glm::vec3), geometry.triangle_count);
+    if (texels > context.properties.limits.maxTexelBufferElements)
+        fail("an object of " + std::to_string(geometry.triangle_count) + " polygons exceeds this device's texel buffer limit (" +
+             std::to_string(context.properties.limits.maxTexelBufferElements) + " texels): use a simplified model");
+    geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
+                                                      vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
+    geometry.index_texels = gpu::create_texel_view(context, geometry.indices.handle(),
+                                                   vec3_texels ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
     if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);
     check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);

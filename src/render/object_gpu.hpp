@@ -35,6 +35,10 @@ struct ObjectGeometry {
     gpu::Buffer positions;
     gpu::Buffer normals;
     gpu::Buffer indices;    // mesh triangles
+    // The stipple shaders read both as texels (shaders/stipple_position.h): a vertex (triangle) per
+    // texel where the device reads three-component texel buffers (mesh_vec3_texels), else a float (index).
+    VkBufferView position_texels = VK_NULL_HANDLE;
+    VkBufferView index_texels = VK_NULL_HANDLE;
     gpu::Buffer stipples;   // StippleVertex per candidate: (u, v) in its polygon, so it follows the surface
     // Every edge of the mesh once with its polygons (§3.1 and object-space lines), built the first time
     // lines are drawn.
@@ -111,9 +115,11 @@ struct ObjectUpload {
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                                    uint64_t seed, const anim::Motion& motion = {});
 
+// `vec3_texels`: the texel views' layout, as the renderer's pipelines read it (kSpecMeshVec3Texels).
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,
-                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn);
+                                             const glm::mat4& model, const ObjectParams& params, bool count_drawn,
+                                             bool vec3_texels);
 
 // Builds the object's edge table and the buffers its lines use (facing bits, the Raskar-Cohen index
 // list, the object-space line pieces) the first time it draws lines; the GPU must not be using the

@@ -70,7 +70,9 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     gpu::GraphicsPipelineDesc stipple;
     stipple.vertex_shader = "stipple.vert";
     stipple.fragment_shader = "stipple.frag";
-    stipple.specialization.constants = {{gpu::kSpecCountDrawn, options_.count_drawn ? 1u : 0u}};
+    const uint32_t vec3_texels = mesh_vec3_texels() ? 1u : 0u;
+    stipple.specialization.constants = {{gpu::kSpecCountDrawn, options_.count_drawn ? 1u : 0u},
+                                        {gpu::kSpecMeshVec3Texels, vec3_texels}};
     stipple.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     stipple.vertex_bindings = {{0, sizeof(gpu::StippleVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     stipple.vertex_attributes = {{0, 0, VK_FORMAT_R16G16_UNORM, offsetof(gpu::StippleVertex, barycentric)},
@@ -107,11 +109,16 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     const uint32_t record = options_.record_visible ? 1u : 0u;
     splat_pipeline_ = gpu::create_compute_pipeline(
         context_, "splat.comp", layouts_.splat_pipeline,
-        {{{gpu::kSpecCountDrawn, count}, {gpu::kSpecDepthUnorm24, unorm24}, {gpu::kSpecRecordVisible, record}}});
+        {{{gpu::kSpecCountDrawn, count},
+          {gpu::kSpecDepthUnorm24, unorm24},
+          {gpu::kSpecRecordVisible, record},
+          {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
 }
+
+bool StippleRenderer::mesh_vec3_texels() const { return context_.features.vec3_texels && !options_.scalar_texels; }
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
                                    const ObjectParams& params, const anim::Motion& motion) {
@@ -120,7 +127,8 @@ size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples,
 
 size_t StippleRenderer::add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params) {
     objects_.push_back(
-        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn));
+        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn,
+                          mesh_vec3_texels()));
     return objects_.size() - 1;
 }
 
@@ -129,7 +137,8 @@ void StippleRenderer::replace_object(size_t object, const ObjectUpload& upload) 
     const ObjectParams params = objects_[object]->params;
     const glm::mat4 model = objects_[object]->model;
     auto replacement =
-        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn);
+        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn,
+                          mesh_vec3_texels());
     VK_CHECK(vkDeviceWaitIdle(context_.device));  // the old object's buffers may be in use
     objects_[object] = std::move(replacement);
 }

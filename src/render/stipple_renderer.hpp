@@ -64,8 +64,8 @@ struct RendererOptions {
     // List the stipples the splat draws, with their window positions (read_visible_stipples): vector
     // output. Objects on the splat paths only (the export draws every object with one of them).
     bool record_visible = false;
-    // Read an animated object's mesh one float per texel even where the device reads three-component texel
-    // buffers (the variant for devices that do not): tests.
+    // Read every object's mesh one float (index) per texel even where the device reads three-component
+    // texel buffers (the variant for devices that do not): tests.
     bool scalar_texels = false;
 };
 
@@ -130,6 +130,8 @@ public:
     LinePieces read_line_pieces(size_t object) const;
 
 private:
+    // The mesh texel views' layout (shaders/stipple_position.h, kSpecMeshVec3Texels).
+    bool mesh_vec3_texels() const;
     void create_pipelines(VkFormat color_format, VkFormat depth_format);
     void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
