@@ -58,6 +58,9 @@ STIPPLE_CONST uint kBindingLineCandidates = 15;   // LineCandidates + uint[] (st
 // float[] (storage), per polygon, constant: the object-space area at which all of its candidates are due
 // (its rest area times its stretch headroom, src/anim/headroom.hpp). Read with kFlagStretch only.
 STIPPLE_CONST uint kBindingFullAreas = 16;
+// texel buffer (RG32UI): the TriangleDraw[] of kBindingTriangleDraw, a polygon per texel, for the shaders
+// that read it at scattered places (stipple.vert, splat.comp: one gather instead of a load per member).
+STIPPLE_CONST uint kBindingTriangleDrawTexels = 17;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.

@@ -19,6 +19,7 @@
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
+#include "triangle_draws.h"
 #include "uniform_branch.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
@@ -29,7 +30,6 @@ layout(constant_id = kSpecRecordVisible) const bool kRecordVisible = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
     DrawnPolygons drawn;
@@ -176,12 +176,12 @@ void main() {
     if (slot >= drawn.count) return;
     uint item = drawn_polygons[slot];  // the run's first stipple
     uint t = stipples[item].triangle;
-    TriangleDraw draw = draws[t];
+    TriangleDraw draw = triangle_draw(t);
     float density = draw.density;
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = object.model_view_proj;
-    uint candidates = (t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w) - first;
+    uint candidates = polygon_candidates(t, first, object.flags);
     uint begin = item - first;
     uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more

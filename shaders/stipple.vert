@@ -9,6 +9,7 @@
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
+#include "triangle_draws.h"
 
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 layout(constant_id = kSpecDrawnList) const bool kDrawnList = false;
@@ -18,7 +19,6 @@ layout(location = 1) in uint in_triangle;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDrawnStipples, std430) readonly buffer DrawnStipples {
     DrawCommand draw;
@@ -41,7 +41,7 @@ void main() {
         triangle = stipples[stipple].triangle;
         barycentric = unpackUnorm2x16(stipples[stipple].barycentric);
     }
-    TriangleDraw draw = draws[triangle];
+    TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);
     float intensity = stipple_intensity(draw.density, index);
     out_intensity = intensity;
@@ -51,8 +51,8 @@ void main() {
         return;
     }
     // Larger dots where the polygon's candidates cannot carry its density (stipple_scale).
-    uint end = triangle + 1u < object.flags.y ? draws[triangle + 1u].first_stipple : object.flags.w;
-    gl_PointSize = object.shading.y * stipple_scale(draw.density, float(end - draw.first_stipple));
+    uint candidates = polygon_candidates(triangle, draw.first_stipple, object.flags);
+    gl_PointSize = object.shading.y * stipple_scale(draw.density, float(candidates));
     if (kCountDrawn) {
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[stipple >> 5u], 1u << (stipple & 31u));

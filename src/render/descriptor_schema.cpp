@@ -36,6 +36,8 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingLinePieces, kStorage}, [](const O& o) { return o.frame.line_pieces.handle(); }},
     {{gpu::kBindingLineCandidates, kStorage}, [](const O& o) { return o.frame.line_candidates.handle(); }},
     {{gpu::kBindingFullAreas, kStorage}, [](const O& o) { return o.polygons.full_areas.handle(); }},
+    {{gpu::kBindingTriangleDrawTexels, kTexels}, [](const O& o) { return o.frame.triangle_draw.handle(); },
+     [](const O& o) { return o.frame.triangle_draw_texels; }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

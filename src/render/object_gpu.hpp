@@ -62,6 +62,7 @@ struct ObjectFrame {
     gpu::ObjectUniforms uniforms{};
     gpu::Buffer object_uniforms;   // ObjectUniforms, uploaded each frame
     gpu::Buffer triangle_draw;     // TriangleDraw per polygon: density per frame, first stipple constant
+    VkBufferView triangle_draw_texels = VK_NULL_HANDLE;  // the same as RG32UI texels (kBindingTriangleDrawTexels)
     // Buffers of one density path or two (PathBuffer), full size once the object draws with that path.
     gpu::Buffer drawn_polygons;    // splat paths: DrawnPolygons header + the work items drawing this frame
     gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU

@@ -283,7 +283,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                         VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 void StippleRenderer::record_depth(VkCommandBuffer cb) {

@@ -1,0 +1,21 @@
+// Reading a polygon's TriangleDraw (its density this frame and its first stipple) at a scattered place:
+// through the RG32UI texel view of the densities (kBindingTriangleDrawTexels), one gather on a software
+// GPU where a storage buffer is loaded member by member, lane by lane (docs/architecture.md).
+#ifndef TRIANGLE_DRAWS_H
+#define TRIANGLE_DRAWS_H
+
+layout(set = 0, binding = kBindingTriangleDrawTexels) uniform usamplerBuffer triangle_draw_texels;
+
+TriangleDraw triangle_draw(uint triangle) {
+    uvec2 texel = texelFetch(triangle_draw_texels, int(triangle)).xy;
+    return TriangleDraw(uintBitsToFloat(texel.x), texel.y);
+}
+
+// Its candidates: from its first stipple to the next polygon's (object.flags.y polygons,
+// object.flags.w stipples in all).
+uint polygon_candidates(uint triangle, uint first_stipple, uvec4 flags) {
+    uint end = triangle + 1u < flags.y ? texelFetch(triangle_draw_texels, int(triangle + 1u)).y : flags.w;
+    return end - first_stipple;
+}
+
+#endif
