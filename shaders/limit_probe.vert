@@ -1,13 +1,15 @@
 #version 460
 // The bench's limit probe (issue 17): as many points as the vertex path draws candidates, with no
 // inputs but the vertex index. Culled ones go beyond the far plane (as stipple.vert culls), drawn
-// ones are one-pixel points at hashed places in a square the size of the model's footprint; the
-// drawn ones are spread evenly among the culled, as survivors are among a polygon's candidates.
+// ones are points of the stipples' size at hashed places in a square the size of the model's
+// footprint; the drawn ones are spread evenly among the culled, as survivors are among a polygon's
+// candidates.
 layout(push_constant) uniform Probe {
     uint total;   // points in the draw
     uint drawn;   // of which drawn
     float side;   // the footprint square's side, pixels
     float width, height;
+    float point_size;  // the stipples' (ObjectParams::point_size): a rasteriser may set up wider points otherwise
 } probe;
 
 uint hash(uint x) {  // a 32-bit integer mix (lowbias32)
@@ -22,7 +24,7 @@ uint hash(uint x) {  // a 32-bit integer mix (lowbias32)
 void main() {
     uint i = uint(gl_VertexIndex);
     float rate = float(probe.drawn) / float(probe.total);
-    gl_PointSize = 1.0;
+    gl_PointSize = probe.point_size;
     if (uint(float(i + 1u) * rate) == uint(float(i) * rate)) {
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // z > w: beyond the far plane, clipped
         return;

@@ -155,7 +155,7 @@ void limit_table(std::ostringstream& md, const BenchResults& r) {
     if (!any) return;
     md << "## The vertex path against the machine's limit\n\n";
     md << "The limit probe draws as many points as the vertex path's stipple pass (vertex, no lines) with a trivial "
-          "shader: the culled ones beyond the far plane, the drawn ones as one-pixel points over the model's "
+          "shader: the culled ones beyond the far plane, the drawn ones as points of the stipples' size over the model's "
           "footprint; GPU ms are medians of timestamps. x of the limit = the stipple pass / the probe.\n\n";
     md << "| model | culled | drawn | vertex stipple pass ms | probe ms | x of the limit | ns per candidate (vertex, probe) |\n";
     md << "|---|---:|---:|---:|---:|---:|---:|\n";

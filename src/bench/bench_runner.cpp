@@ -269,7 +269,8 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                 limit->drawn = uint64_t(cell.drawn);
                 limit->culled = model.candidates - std::min<uint64_t>(model.candidates, limit->drawn);
                 probe_frame = [&](bool timed) {
-                    const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels);
+                    const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels,
+                                                          renderer.params(0).point_size);
                     if (timed) limit->probe_frame_ms.push_back(ms);
                 };
             }

@@ -18,7 +18,7 @@ namespace {
 
 struct ProbeConstants {  // shaders/limit_probe.vert's push constants
     uint32_t total, drawn;
-    float side, width, height;
+    float side, width, height, point_size;
 };
 
 }  // namespace
@@ -45,7 +45,7 @@ LimitProbe::~LimitProbe() {
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
 }
 
-double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side) {
+double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side, float point_size) {
     gpu::GpuTimer timer(context_, 4);
     auto start = std::chrono::steady_clock::now();
     VkCommandBuffer cb = context_.begin_one_shot();
@@ -73,7 +73,7 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side) {
     VkRect2D scissor{{0, 0}, extent_};
     vkCmdSetViewport(cb, 0, 1, &viewport);
     vkCmdSetScissor(cb, 0, 1, &scissor);
-    const ProbeConstants constants{total, drawn, side, float(extent_.width), float(extent_.height)};
+    const ProbeConstants constants{total, drawn, side, float(extent_.width), float(extent_.height), point_size};
     vkCmdPushConstants(cb, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof constants, &constants);
     vkCmdDraw(cb, total, 1, 0, 0);
     timer.mark(cb, "probe");
@@ -84,12 +84,12 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side) {
     return passes.size() == 2 ? passes[1].second : wall_ms;
 }
 
-double LimitProbe::frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels) {
+double LimitProbe::frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, float point_size) {
     const uint64_t total = culled + drawn;
     if (total == 0 || total > UINT32_MAX) fail("limit probe: " + std::to_string(total) + " points is out of range");
     const float side = std::min(std::sqrt(float(std::max<uint64_t>(footprint_pixels, 1))),
                                 float(std::min(extent_.width, extent_.height)));
-    return frame_ms(uint32_t(total), uint32_t(drawn), side);
+    return frame_ms(uint32_t(total), uint32_t(drawn), side, point_size);
 }
 
 }  // namespace stipple::bench
