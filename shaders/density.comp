@@ -17,7 +17,9 @@ layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingTriangleDraw, std430) buffer TriangleDraws { TriangleDraw draws[]; };
-layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
+// A polygon's constants as one texel: a software GPU gathers it at once, where it loads a storage
+// buffer's members one by one, lane by lane.
+layout(set = 0, binding = kBindingTriangleInfoTexels) uniform usamplerBuffer info_texels;
 layout(set = 0, binding = kBindingFullAreas, std430) readonly buffer FullAreas { float full_areas[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
@@ -60,7 +62,8 @@ void main() {
         uint end = t + 1u < object.flags.y ? draws[t + 1u].first_stipple : object.flags.w;
         candidates = float(end - draws[t].first_stipple);
     }
-    TriangleInfo info = infos[in_range ? t : 0u];
+    uvec4 raw = texelFetch(info_texels, int(in_range ? t : 0u));
+    TriangleInfo info = TriangleInfo(raw.x, raw.y, raw.z, uintBitsToFloat(raw.w));
     PolygonView p = polygon_view(info, candidates, object);
     if ((flags & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
     if (kFacingOnly || !in_range) return;

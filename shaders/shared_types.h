@@ -61,6 +61,9 @@ STIPPLE_CONST uint kBindingFullAreas = 16;
 // texel buffer (RG32UI): the TriangleDraw[] of kBindingTriangleDraw, a polygon per texel, for the shaders
 // that read it at scattered places (stipple.vert, splat.comp: one gather instead of a load per member).
 STIPPLE_CONST uint kBindingTriangleDrawTexels = 17;
+// texel buffer (RGBA32UI): the TriangleInfo[] of kBindingTriangleInfo, a polygon per texel (density.comp:
+// one gather instead of four lane-by-lane loads).
+STIPPLE_CONST uint kBindingTriangleInfoTexels = 18;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.

@@ -117,7 +117,7 @@ float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::dete
 
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
-    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels})
+    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels, polygons.texels})
         if (view) vkDestroyBufferView(context->device, view, nullptr);
 }
 
@@ -148,7 +148,8 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex | storage);
     upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage | texels);
     upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage);
-    upload.staged[kPolygons] = gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage);
+    upload.staged[kPolygons] =
+        gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage | texels);
     upload.staged[kDensities] = gpu::stage_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage | texels);
     return upload;
 }
@@ -181,6 +182,8 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     static_assert(sizeof(gpu::TriangleDraw) == 8, "TriangleDraw is read as one RG32UI texel");
     object->frame.triangle_draw_texels =
         gpu::create_texel_view(context, object->frame.triangle_draw.handle(), VK_FORMAT_R32G32_UINT);
+    static_assert(sizeof(gpu::TriangleInfo) == 16, "TriangleInfo is read as one RGBA32UI texel");
+    object->polygons.texels = gpu::create_texel_view(context, object->polygons.gpu.handle(), VK_FORMAT_R32G32B32A32_UINT);
     if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);
     check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);

@@ -50,6 +50,7 @@ struct ObjectGeometry {
 
 struct PolygonConstants {
     gpu::Buffer gpu;                      // TriangleInfo per polygon (16 bytes, packed)
+    VkBufferView texels = VK_NULL_HANDLE;  // the same as RGBA32UI texels (kBindingTriangleInfoTexels)
     std::vector<gpu::TriangleInfo> cpu;   // the same, for the CPU density paths (an animated object's: its rest pose)
     // Object space, of the rest shape (distance enhancement's reference scale, thinning): the sphere
     // generation framed in its reference view.
