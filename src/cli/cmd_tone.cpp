@@ -95,17 +95,18 @@ void print_regimes(const ToneSurvey& survey, const ToneSurveyOptions& options, f
         }
         // On the screen: ink per drawn stipple against an isolated dot's (point_size^2 pixels).
         std::printf("\n| distance | covered px | ink px | drawn stipples | unshared ink / (drawn x point_size^2) | "
-                    "off the surface | hidden | ink / unshared ink | owed x point_size^2 / covered | mean ink |\n"
+                    "off the surface | hidden (whole dots) | ink / unshared ink | owed x point_size^2 / covered | mean ink |\n"
                     "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         const double dot = double(point_size) * double(point_size);
         for (const ToneSample& s : survey.samples) {
             const InkFigures& ink = s.ink[v];
             const RegimeTally total = s.tallies[v].total();
             const double footprint = ink.unshared_ink + ink.off_surface_ink + ink.hidden_ink;
-            std::printf("| %g | %zu | %.0f | %.0f | %.3f | %.3f | %.3f | %.3f | %.4f | %.4f |\n", s.distance, ink.covered,
+            std::printf("| %g | %zu | %.0f | %.0f | %.3f | %.3f | %.3f (%.3f) | %.3f | %.4f | %.4f |\n", s.distance, ink.covered,
                         ink.ink, total.drawn, total.drawn > 0.0 ? ink.unshared_ink / (total.drawn * dot) : 0.0,
                         footprint > 0.0 ? ink.off_surface_ink / footprint : 0.0,
                         footprint > 0.0 ? ink.hidden_ink / footprint : 0.0,
+                        footprint > 0.0 ? ink.hidden_whole_ink / footprint : 0.0,
                         ink.unshared_ink > 0.0 ? ink.ink / ink.unshared_ink : 0.0,
                         ink.covered ? total.owed * dot / double(ink.covered) : 0.0, ink.mean());
         }

@@ -82,7 +82,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
     const glm::mat4 model_view_proj = object.frame.uniforms.model_view_proj;
     const int width = int(frame.viewport.x), height = int(frame.viewport.y);
     const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
-    double ink = 0.0, off_surface = 0.0, hidden = 0.0;
+    double ink = 0.0, off_surface = 0.0, hidden = 0.0, hidden_whole = 0.0;
     for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
         const float density = formulas::polygon_density(
             formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), params);
@@ -97,6 +97,8 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             // The splat's pixels: centres inside the square (or the disc) of side point_size.
             const glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(window - 0.5f * side - 0.5f)), glm::ivec2(0));
             const glm::ivec2 hi = glm::min(glm::ivec2(glm::floor(window + 0.5f * side - 0.5f)), glm::ivec2(width - 1, height - 1));
+            double dot_hidden = 0.0;
+            bool dot_shows = false;
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x) {
                     const glm::vec2 d = (glm::vec2(x, y) + 0.5f - window) / side;
@@ -105,15 +107,18 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
                     if (surface >= 1.0f)
                         off_surface += intensity;
                     else if (ndc.z > surface + 1e-6f)
-                        hidden += intensity;
+                        dot_hidden += intensity;
                     else
-                        ink += intensity;
+                        ink += intensity, dot_shows = true;
                 }
+            hidden += dot_hidden;
+            if (!dot_shows) hidden_whole += dot_hidden;
         }
     }
     figures.unshared_ink += ink;
     figures.off_surface_ink += off_surface;
     figures.hidden_ink += hidden;
+    figures.hidden_whole_ink += hidden_whole;
 }
 
 namespace {

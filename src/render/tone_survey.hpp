@@ -53,6 +53,7 @@ struct InkFigures {
     // outline) and pixels where a nearer surface hides it (or the depth test does), times intensity.
     double off_surface_ink = 0.0;
     double hidden_ink = 0.0;
+    double hidden_whole_ink = 0.0;  // of hidden_ink: dots with no pixel left (a nearer part covers them)
     double mean() const { return covered ? ink / double(covered) : 0.0; }
 };
 InkFigures measure_ink(const RenderedFrame& frame);
