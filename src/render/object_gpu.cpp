@@ -53,6 +53,13 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need a " +
              mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(context.max_storage_buffer_bytes()) +
              lower);
+    // The stipple shaders read the mesh and the polygons as texels (a vertex or triangle a texel, or a
+    // float or index a texel where three-component texel buffers are not read).
+    const uint64_t texels = (context.features.vec3_texels ? 1 : 3) * std::max(v, t);
+    if (texels > context.properties.limits.maxTexelBufferElements)
+        fail(what + ": its " + std::to_string(v) + " vertices and " + std::to_string(t) +
+             " polygons exceed this device's texel buffer limit (" +
+             std::to_string(context.properties.limits.maxTexelBufferElements) + " texels): use a simplified model");
     const uint64_t available = context.device_memory_available();
     if (needed > available)
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
@@ -169,12 +176,8 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->params = params;
     object->model = model;
     upload_object(context, upload, count_drawn, *object);
+    // Within the device's texel buffer limit (check_device_fits).
     ObjectGeometry& geometry = object->geometry;
-    const uint64_t per_texel = vec3_texels ? 1 : 3;
-    const uint64_t texels = per_texel * std::max<uint64_t>(geometry.positions.size() / sizeof(glm::vec3), geometry.triangle_count);
-    if (texels > context.properties.limits.maxTexelBufferElements)
-        fail("an object of " + std::to_string(geometry.triangle_count) + " polygons exceeds this device's texel buffer limit (" +
-             std::to_string(context.properties.limits.maxTexelBufferElements) + " texels): use a simplified model");
     geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
                                                       vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
     geometry.index_texels = gpu::create_texel_view(context, geometry.indices.handle(),
