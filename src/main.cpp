@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
         if (command == "params") return stipple::cli::run_params(args);
         if (command == "cache") return stipple::cli::run_cache(args);
         if (command == "tone") return stipple::cli::run_tone(args);
+        if (command == "parity") return stipple::cli::run_parity(args);
         std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
         return 2;
     } catch (const stipple::Error& e) {

@@ -151,6 +151,10 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--frobnicate"}, "--frobnicate"},
         {{"render", "--device", "99"}, "--device"},
         {{"info"}, "MODEL"},
+        {{"parity", "--devices", "0,99"}, "--devices"},
+        {{"parity", "--devices", "0"}, "--devices"},
+        {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
+        {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
     };
     for (const Case& c : cases) {
         auto result = run_stipple(c.args);
@@ -158,6 +162,17 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         EXPECT_EQ(count_lines(result.err), 1u) << result.err;
         EXPECT_NE(result.err.find(c.expect), std::string::npos) << result.err;
     }
+}
+
+// `stipple parity` compares two devices' drawings (issue 17); CI has one, compared with itself: the
+// same stipples, a table row per view and path, and the verdict with exit status 0.
+TEST(CliParity, ComparesADeviceWithItself) {
+    const test::CommandResult r = run_stipple(
+        {"parity", "--devices", "0,0", "--yaws", "2", "--paths", "splat,indirect", "--width", "160", "--height", "128"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("parity holds"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| indirect | 180:-20 |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("drawn counts 0.0000% apart"), std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ int run_bench(const std::vector<std::string>& args);
 int run_params(const std::vector<std::string>& args);
 int run_cache(const std::vector<std::string>& args);
 int run_tone(const std::vector<std::string>& args);
+int run_parity(const std::vector<std::string>& args);
 
 void print_usage();
 std::string default_model_path();  // the built-in default scene (assets/blobby.glb)

@@ -30,6 +30,8 @@ Usage:
                                   the paper's Table 1 on this machine: results.md, .json, chart.svg
   stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
                                   inside its footprint per distance, extrinsic enhancement on and off
+  stipple parity [MODEL] [options]
+                                  do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
   stipple params [--markdown]     list the per-object parameters: ranges, defaults, scene keys
   stipple cache --list | --clear  what the stipple cache holds, or empty it
   stipple --help                  this text
@@ -161,6 +163,14 @@ Tone options (and the stipple options; without MODEL the default scene's model):
   --regimes               also print, per distance, the stipples each regime of the extrinsic
                           enhancement owes and draws, and the ink they leave on the screen
   --images DIR            write each view and distance (cropped to the object, enlarged) as PNG
+
+Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when
+the drawn counts differ by more than 0.1%% or the mean ink by more than 1%% in any view):
+  --devices I,J           the two devices (default 0,1; stipple render --list-devices shows them;
+                          0,0 compares a device with itself)
+  --paths splat,vertex    the density paths to compare (default splat,vertex)
+  --yaws N                views all around the model at two elevations (default 8)
+  --width N --height N    image size (default 1280 x 1024)
 
 Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
   --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames, only
