@@ -89,7 +89,18 @@ void ink_pixel(uint at, float intensity, uint ink_word, bool full) {
     }
 }
 
-void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon) {
+// What every stipple of a run reads from the uniforms, read once per run: loads from a uniform block
+// inside the loop are not hoisted past its stores to the colour buffer (they might alias), and each
+// costs the loop over the lanes that any load does on a software GPU.
+struct SplatConstants {
+    vec2 size;          // the viewport
+    bool round_points;  // discs, not squares
+    bool whole_dot;     // print detail (see splat)
+    uint ink_word;      // a whole stipple's word
+};
+
+void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon,
+           SplatConstants c) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -99,22 +110,21 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
     vec3 ndc = clip.xyz / clip.w;
     if (ndc.z < 0.0 || ndc.z > 1.0) return;  // the rasteriser clips these too
     // Window coordinates with the renderer's negative-height viewport (y up in NDC, top row first).
-    vec2 size = frame.viewport.xy;
+    vec2 size = c.size;
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
-    const uint zero = unfoldable_zero();  // object.flags.x and frame.projection.w, see uniform_branch.h
-    bool round_points = (object.flags[zero] & kFlagRoundPoints) != 0u;
+    bool round_points = c.round_points;
     // Print detail (frame.projection.w > 1): a stipple is a disc many pixels wide while the depth pass's
     // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
     // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
     // its pixels only need a surface under them (it stops at the outline, as the screen's points do).
-    bool whole_dot = frame.projection[3u + zero] > 1.0;
+    bool whole_dot = c.whole_dot;
     if (whole_dot) {
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
         if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
     }
-    uint ink_word = pack_color(frame.ink_color.rgb, 0.0);
+    uint ink_word = c.ink_word;
     uint lost = 0u;  // pixels of the dot beyond the outline
     bool inked = false;
     for (int y = lo.y; y <= hi.y; ++y)
@@ -186,11 +196,14 @@ void main() {
     uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
+    const uint zero = unfoldable_zero();  // object.flags.x and frame.projection.w, see uniform_branch.h
+    SplatConstants c = SplatConstants(frame.viewport.xy, (object.flags[zero] & kFlagRoundPoints) != 0u,
+                                      frame.projection[3u + zero] > 1.0, pack_color(frame.ink_color.rgb, 0.0));
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     uint whole_end = clamp(uint(floor(density)), begin, end);
-    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon);
+    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon, c);
     for (uint k = whole_end; k < end; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon);
+        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon, c);
 }
