@@ -78,4 +78,18 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
     return v;
 }
 
+std::vector<std::string> split_list(const std::string& option, const std::string& list) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= list.size()) {
+        size_t end = list.find(',', start);
+        if (end == std::string::npos) end = list.size();
+        std::string item = list.substr(start, end - start);
+        if (item.empty()) fail(option + " '" + list + "' has an empty entry");
+        items.push_back(item);
+        start = end + 1;
+    }
+    return items;
+}
+
 }  // namespace stipple::cli

@@ -31,4 +31,7 @@ private:
     std::map<std::string, std::string> values_;
 };
 
+// The comma-separated entries of an option's value; an empty entry is an error naming `option`.
+std::vector<std::string> split_list(const std::string& option, const std::string& list);
+
 }  // namespace stipple::cli

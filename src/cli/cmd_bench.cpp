@@ -17,20 +17,6 @@ namespace stipple::cli {
 
 namespace {
 
-std::vector<std::string> split_list(const std::string& option, const std::string& list) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start <= list.size()) {
-        size_t end = list.find(',', start);
-        if (end == std::string::npos) end = list.size();
-        std::string item = list.substr(start, end - start);
-        if (item.empty()) fail(option + " '" + list + "' has an empty entry");
-        items.push_back(item);
-        start = end + 1;
-    }
-    return items;
-}
-
 long long bounded(const Args& args, const std::string& name, long long fallback, long long lo, long long hi) {
     long long value = args.integer(name, fallback);
     if (value < lo || value > hi)

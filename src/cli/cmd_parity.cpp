@@ -1,7 +1,6 @@
 // stipple parity: do two Vulkan devices (lavapipe and a real GPU) draw the same stipples? (issue 17)
 #include <cstdio>
 #include <set>
-#include <sstream>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -17,12 +16,10 @@ namespace {
 
 std::vector<int> parse_devices(const std::string& text, size_t available) {
     std::vector<int> devices;
-    std::stringstream in(text);
-    std::string part;
-    while (std::getline(in, part, ',')) {
+    for (const std::string& part : split_list("--devices", text)) {
         char* end = nullptr;
         const long index = std::strtol(part.c_str(), &end, 10);
-        if (part.empty() || *end != '\0' || index < 0 || size_t(index) >= available)
+        if (*end != '\0' || index < 0 || size_t(index) >= available)
             fail("--devices: '" + part + "' is not a device index (this machine's are 0 to " +
                  std::to_string(available - 1) + "; stipple render --list-devices shows them)");
         devices.push_back(int(index));
@@ -33,14 +30,11 @@ std::vector<int> parse_devices(const std::string& text, size_t available) {
 
 std::vector<DensityPath> parse_paths(const std::string& text) {
     std::vector<DensityPath> paths;
-    std::stringstream in(text);
-    std::string part;
-    while (std::getline(in, part, ',')) {
+    for (const std::string& part : split_list("--paths", text)) {
         const auto path = parse_density_path(part);
         if (!path) fail("--paths: unknown density path '" + part + "' (vertex, cpu, indirect, splat, cpu-splat)");
         paths.push_back(*path);
     }
-    if (paths.empty()) fail("--paths needs at least one density path");
     return paths;
 }
 

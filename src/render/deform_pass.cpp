@@ -47,8 +47,6 @@ void check_animated_path(const ObjectGpu& object) {
 
 PolygonBinding::~PolygonBinding() {
     if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
-    if (positions) vkDestroyBufferView(device, positions, nullptr);
-    if (indices) vkDestroyBufferView(device, indices, nullptr);
 }
 
 namespace {
@@ -63,8 +61,7 @@ static_assert(gpu::kBindingPolygonPositions == 0 && gpu::kBindingPolygonIndices 
 
 }  // namespace
 
-DeformPass::DeformPass(const gpu::Context& context, bool scalar_texels) : context_(context) {
-    vec3_texels_ = !scalar_texels && context.features.vec3_texels;
+DeformPass::DeformPass(const gpu::Context& context, bool vec3_texels) : context_(context), vec3_texels_(vec3_texels) {
     set_layout_ = gpu::create_set_layout(context, kPolygonBindings, VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
     gpu::Specialization texels;
@@ -79,38 +76,15 @@ DeformPass::~DeformPass() {
 }
 
 void DeformPass::bind(ObjectGpu& object) const {
-    const VkDevice device = context_.device;
     auto binding = std::make_unique<PolygonBinding>();
-    binding->device = device;
-    // One texel a vertex (triangle), or one a float (index) where three-component texels are not read.
-    const uint64_t per_texel = vec3_texels_ ? 1 : 3;
-    const uint64_t vertices = object.geometry.positions.size() / sizeof(glm::vec3);
-    const uint64_t texels = per_texel * std::max<uint64_t>(vertices, object.geometry.triangle_count);
-    const uint64_t limit = context_.properties.limits.maxTexelBufferElements;
-    if (texels > limit)
-        fail("an animated object of " + std::to_string(object.geometry.triangle_count) +
-             " polygons exceeds this device's texel buffer limit (" + std::to_string(limit) + " texels)");
-    binding->positions = gpu::create_texel_view(context_, object.geometry.positions.handle(),
-                                                vec3_texels_ ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
-    binding->indices = gpu::create_texel_view(context_, object.geometry.indices.handle(),
-                                              vec3_texels_ ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
-
+    binding->device = context_.device;
     binding->pool = gpu::create_pool(context_, kPolygonBindings, 1);
     binding->set = gpu::allocate_set(context_, binding->pool, set_layout_);
-
-    const VkDescriptorBufferInfo infos{object.polygons.gpu.handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet writes[3];
-    for (uint32_t b = 0; b < 3; ++b) {
-        writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[b].dstSet = binding->set;
-        writes[b].dstBinding = b;
-        writes[b].descriptorCount = 1;
-        writes[b].descriptorType = kPolygonBindings[b].type;
-    }
-    writes[gpu::kBindingPolygonPositions].pTexelBufferView = &binding->positions;
-    writes[gpu::kBindingPolygonIndices].pTexelBufferView = &binding->indices;
-    writes[gpu::kBindingPolygonInfos].pBufferInfo = &infos;
-    vkUpdateDescriptorSets(device, 3, writes, 0, nullptr);
+    // The object's own texel views of its mesh (the stipple shaders read them too).
+    const VkBuffer buffers[] = {object.geometry.positions.handle(), object.geometry.indices.handle(),
+                                object.polygons.gpu.handle()};
+    const VkBufferView views[] = {object.geometry.position_texels, object.geometry.index_texels, VK_NULL_HANDLE};
+    gpu::write_buffer_set(context_.device, binding->set, kPolygonBindings, buffers, views);
     object.animation->polygons = std::move(binding);
 }
 

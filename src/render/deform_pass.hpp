@@ -31,7 +31,6 @@ struct ObjectGpu;
 // naming them and its polygons (DeformPass makes it the first time the object is recorded).
 struct PolygonBinding {
     VkDevice device = VK_NULL_HANDLE;
-    VkBufferView positions = VK_NULL_HANDLE, indices = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
 
@@ -68,8 +67,9 @@ void check_animated_path(const ObjectGpu& object);
 // The pass that recomputes animated objects' polygon constants (shaders/polygon_constants.comp).
 class DeformPass {
 public:
-    // scalar_texels: read the mesh a float per texel even where three-component texels would do.
-    DeformPass(const gpu::Context& context, bool scalar_texels);
+    // vec3_texels: the layout of the objects' mesh texel views (ObjectGeometry::position_texels), a vertex
+    // (triangle) per texel, else a float (index).
+    DeformPass(const gpu::Context& context, bool vec3_texels);
     ~DeformPass();
     DeformPass(const DeformPass&) = delete;
     DeformPass& operator=(const DeformPass&) = delete;
@@ -87,7 +87,7 @@ private:
     void bind(ObjectGpu& object) const;
 
     const gpu::Context& context_;
-    bool vec3_texels_ = false;  // the device reads RGB32F and RGB32UI texel buffers
+    bool vec3_texels_ = false;  // the objects' mesh texel views hold a vertex (triangle) per texel
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -28,7 +28,7 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       timer_(context) {
     layouts_ = create_render_layouts(context);
     create_pipelines(color_format, depth_format);
-    deform_pass_ = std::make_unique<DeformPass>(context, options.scalar_texels);
+    deform_pass_ = std::make_unique<DeformPass>(context, mesh_vec3_texels());
     frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 }
 
