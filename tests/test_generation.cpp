@@ -9,6 +9,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -98,7 +99,7 @@ TEST(Generation, DistributionQualityFullAndPrefix) {
                 mesh.triangle_count(), set.size(), double(set.size()) / mesh.triangle_count(),
                 set.generation_seconds, set.size() / set.generation_seconds);
     std::printf("delta-bar full %.3f, prefix f=0.25 (%zu stipples) %.3f\n", full, quarter.size(), prefix);
-    EXPECT_GE(full, 0.83);  // 0.838 measured (issue 18 asks 0.85)
+    EXPECT_GE(full, 0.85);  // 0.858 measured (issue 18 asks 0.85; 0.838 with Jacobi relaxation)
     EXPECT_GE(prefix, 0.68);  // 0.699: one stipple of each triangle's ~4 (issue 18 asks 0.80)
     // The prefix keeps, in every triangle, the stipples with k + 0.5 < f N_t: ceil(f N_t - 0.5) of them.
     size_t expected = 0;
@@ -122,7 +123,7 @@ TEST(Generation, RelaxationImprovesSpread) {
     // Stratified within each triangle, but triangles of ~4 stipples clump along shared edges.
     std::printf("delta-bar stratified (no relaxation) %.3f, relaxed (6 iterations) %.3f\n", before, after);
     EXPECT_LT(before, 0.6);
-    EXPECT_GE(after, 0.80);
+    EXPECT_GE(after, 0.85);  // 0.860 measured
     EXPECT_EQ(initial.size(), relaxed.size());
 }
 
@@ -255,7 +256,7 @@ TEST(Generation, StipplesInsideTheirTriangles) {
     // Even across a shared edge the big triangles' stipples stay apart: the quality holds.
     std::printf("quad: delta-bar full %.3f, prefix f=0.1 %.3f\n", normalized_nn_distance(big.positions, 4.0),
                 normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0));
-    EXPECT_GE(normalized_nn_distance(big.positions, 4.0), 0.85);                  // 0.866 measured
+    EXPECT_GE(normalized_nn_distance(big.positions, 4.0), 0.85);                  // 0.874 measured
     EXPECT_GE(normalized_nn_distance(prefix_at_fraction(big, 0.1), 4.0), 0.73);  // 0.758 measured
 }
 
@@ -308,6 +309,39 @@ TEST(Quality, MetricMatchesKnownDistributions) {
     std::printf("delta-bar random %.3f, hexagonal %.3f\n", r, h);
     EXPECT_NEAR(r, 0.465, 0.02);
     EXPECT_NEAR(h, 1.0, 0.01);
+    // Six-fold order: every neighbourhood of a lattice is hexagonal and oriented alike; random points
+    // have neither (their windowed order is noise, ~1/sqrt(points per window)).
+    const HexagonalOrder hr = hexagonal_order(random, {0, 0, 1}), hh = hexagonal_order(hex, {0, 0, 1});
+    std::printf("psi_6 local / windowed: random %.3f / %.3f, hexagonal %.3f / %.3f\n", hr.local, hr.windowed, hh.local,
+                hh.windowed);
+    EXPECT_NEAR(hr.local, 0.365, 0.02);
+    EXPECT_LT(hr.windowed, 0.05);
+    EXPECT_NEAR(hh.local, 1.0, 1e-3);
+    EXPECT_NEAR(hh.windowed, 1.0, 1e-3);
+    // Tilted, the lattice is seen in its own plane, whatever that is. (Not 1: the plane's frame turns the
+    // lattice's square within the bounding square, and neighbourhoods at its edges inside the margin
+    // are cut.)
+    std::vector<glm::vec3> tilted;
+    const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1, 2, 3))));
+    for (const glm::vec3& p : hex) tilted.push_back(turn * p);
+    const HexagonalOrder ht = hexagonal_order(tilted, turn * glm::vec3(0, 0, 1));
+    EXPECT_GT(ht.local, 0.9);
+    EXPECT_GT(ht.windowed, 0.9);
+}
+
+TEST(Generation, NoHexagonalRegularity) {
+    // Two triangles of ~20k stipples each: relaxation from a lattice-like start (the R2 sequence) grew
+    // hexagonal domains oriented alike across a whole triangle (windowed order 0.32-0.40); jittered, it
+    // does not (issue 18: better blue noise "without hexagonal regularity").
+    const Mesh quad = make_grid(1);
+    GenerationParams params;
+    params.dmax = 0.05f;
+    const StippleSet set = generate_stipples(quad, params);
+    const HexagonalOrder order = hexagonal_order(set.positions, {0, 0, 1});
+    std::printf("quad of %zu stipples: psi_6 local %.3f, windowed %.3f (dart throwing about 0.41 / 0.05)\n", set.size(),
+                order.local, order.windowed);
+    EXPECT_LT(order.windowed, 0.15);  // 0.066 measured
+    EXPECT_LT(order.local, 0.6);      // 0.49 measured: more hexagonal than dart throwing, locally
 }
 
 }  // namespace

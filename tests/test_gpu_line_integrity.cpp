@@ -66,7 +66,7 @@ Model load_model(const std::string& name, const std::string& path) {
     Mesh mesh = path.empty() ? test::make_open_hemisphere(48, 16) : load_mesh_for_drawing(path);
     Model m{name, test::prepare(std::move(mesh), params), {}};
     // Ranked once here rather than by each renderer the model is added to (the costliest part of adding it).
-    m.object.stipples.selection = polygon_selection_values(m.object.mesh, params.generation.seed);
+    m.object.stipples.selection = polygon_selection_values(m.object.mesh, m.object.stipples, params.generation.seed);
     // The edges as the renderer keys them: corners at one position are one vertex.
     std::vector<uint32_t> indices = m.object.mesh.indices;
     const std::vector<uint32_t> welded = weld_by_position(m.object.mesh.positions);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/density_formulas.hpp"
+#include "stipple/selection_order.hpp"
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
 #include "support/test_paths.hpp"
@@ -134,6 +135,10 @@ TEST_F(OpenSurfaces, TwoSidedStipplesTheInsideByTheOutsidesToneRule) {
     test::Prepared bowl = test::prepare(test::make_open_hemisphere(64, 16), params);
     // The same bowl turned inside out: its inside is made of front faces, whose normals point inward.
     test::Prepared inside_out = test::prepare(reversed_winding(bowl.mesh), params);
+    // Its polygons drawn with the bowl's selection values (§2.3): they rank a polygon by its first stipple,
+    // which its own generation places elsewhere in the flipped triangle.
+    bowl.stipples.selection = polygon_selection_values(bowl.mesh, bowl.stipples, params.generation.seed);
+    inside_out.stipples.selection = bowl.stipples.selection;
     std::vector<uint8_t> opening = opening_mask(*context, bowl, inside_out);
     const FrameView view = bowl_view(bowl.mesh);
     for (DensityPath path : kAllDensityPaths) {

@@ -62,8 +62,9 @@ TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {
     const StippleSet reopened = generate_stipples_cached(mesh, params, dir);
     EXPECT_TRUE(reopened.from_cache);
     EXPECT_TRUE(same(generated, reopened)) << "a hit must give the stipples a miss gave";
-    // The polygons' selection values (§2.3) come back too, on their 16-bit steps.
-    const std::vector<float> ranked = polygon_selection_values(mesh, params.seed);
+    // The polygons' selection values (§2.3) come back too, on their 16-bit steps: ranked by the stipples
+    // the polygons draw when selected.
+    const std::vector<float> ranked = polygon_selection_values(mesh, reopened, params.seed);
     ASSERT_EQ(reopened.selection.size(), ranked.size());
     for (size_t t = 0; t < ranked.size(); ++t) ASSERT_EQ(selection_step(reopened.selection[t]), selection_step(ranked[t]));
     const uint64_t bytes = fs::file_size(entry_of(dir, mesh, params));

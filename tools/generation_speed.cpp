@@ -1,6 +1,7 @@
 // Stipple generation speed and quality on UV spheres of ~100k and ~1M triangles and on a 12-triangle
 // cube, whose few large triangles hold ~10^5 stipples each (relaxation and progressive order
-// included). Prints its figures; the test suite asserts quality, never time.
+// included), with delta-bar and, on a face of the cube, the six-fold order psi_6 (quality.hpp). Prints
+// its figures; the test suite asserts quality, never time.
 // Usage: generation_speed [TRIANGLES | cube ...]   (default: 100000 1000000 cube)
 #include <cmath>
 #include <cstdio>
@@ -51,10 +52,18 @@ int main(int argc, char** argv) {
                 const double radius = compute_bounding_sphere(mesh).radius;
                 params.dmax = float(count / (area * std::pow(kReferenceHeight / 2.0 / radius, 2)));
                 const StippleSet set = generate_stipples(mesh, params);
-                std::printf("%s: %zu triangles, %zu stipples: %.3f s, %.0f stipples/s, delta-bar %.3f (prefix f=0.25: %.3f)\n",
+                std::printf("%s: %zu triangles, %zu stipples: %.3f s, %.0f stipples/s, delta-bar %.3f (prefix f=0.25: %.3f)",
                             name == "cube" ? "cube" : "UV sphere", mesh.triangle_count(), set.size(), set.generation_seconds,
                             set.size() / set.generation_seconds, normalized_nn_distance(set.positions, area),
                             normalized_nn_distance(prefix_at_fraction(set, 0.25), area));
+                if (name == "cube") {  // hexagonal regularity on one face (quality.hpp)
+                    std::vector<glm::vec3> face;
+                    for (const glm::vec3& p : set.positions)
+                        if (p.z > 0.9999f) face.push_back(p);
+                    const HexagonalOrder order = hexagonal_order(face, {0, 0, 1});
+                    std::printf(", psi_6 on a face: local %.3f, windowed %.3f", order.local, order.windowed);
+                }
+                std::printf("\n");
             }
         }
     } catch (const Error& e) {

@@ -48,7 +48,7 @@ PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& s
     polygons.box_size = box.max - box.min;
     const std::vector<float> selection = stipples.selection.size() == mesh.triangle_count()
                                              ? stipples.selection
-                                             : polygon_selection_values(mesh, seed);
+                                             : polygon_selection_values(mesh, stipples, seed);
     polygons.cpu = pack_polygon_constants(mesh, selection, polygons.box_min, polygons.box_size);
     return polygons;
 }

@@ -18,11 +18,13 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // 5: generation with two buckets per point in the grids and large triangles ordered in pieces;
 // 6: stratified (R2) initial positions, the progressive order in windows of tau; 7: slabs at least
 // 4 search caps wide (5-7: same kind of stipples, other positions for the same parameters); 8: the
-// point grids' windows at offsets over the whole bucket table (the relaxation's sums, in their last bits)
-inline constexpr uint32_t kVersion = 8;
+// point grids' windows at offsets over the whole bucket table (the relaxation's sums, in their last bits);
+// 9: jittered stratified positions and Gauss-Seidel relaxation (better spread, no hexagonal domains),
+// selection values ranked by the polygons' first stipples
+inline constexpr uint32_t kVersion = 9;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0x2fe22044d3814775;
+inline constexpr uint64_t kGenerationFingerprint = 0xf5cc712eb9e862f0;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

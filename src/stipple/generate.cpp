@@ -30,8 +30,14 @@
 //   independent of the thread count and of the order in which triangles are processed. Starting
 //   the relaxation from stratified rather than independent points leaves fewer clumps for it to
 //   undo: delta-bar after the 6 default iterations rose from 0.832 to 0.838 on a 100k-triangle
-//   sphere with 4 stipples per triangle, and from 0.828 to 0.868 on a 12-triangle cube.
-// * Relaxation (relax.cpp). A few Jacobi iterations of repulsion between neighbours within two
+//   sphere with 4 stipples per triangle, and from 0.828 to 0.868 on a 12-triangle cube (Jacobi
+//   relaxation, before 2026-11-26). But R2 is a lattice of one orientation, and a large triangle's
+//   relaxed stipples kept it: hexagonal domains aligned over the whole triangle (six-fold order
+//   |<psi_6>| 0.32-0.40 over windows of an eighth of a 40k-stipple square, against 0.05 for dart
+//   throwing; quality.hpp). Each point is therefore jittered by up to a quarter of the sequence's
+//   spacing either way (kJitter = 0.5 of 1/sqrt(N) in all): the order falls to 0.07 while
+//   delta-bar keeps its gain (square 0.874, cube 0.870, sphere 0.858 after Gauss-Seidel relaxation).
+// * Relaxation (relax.cpp). A few Gauss-Seidel iterations of repulsion between neighbours within two
 //   hexagonal spacings, over the whole surface (not per triangle, which would leave stipples
 //   clumped along shared edges of small triangles); moves stay in the triangle's plane and each
 //   stipple is clamped back into its own triangle.
@@ -57,6 +63,9 @@ namespace {
 
 constexpr size_t kTriangleChunk = 16384;
 constexpr size_t kPointChunk = 16384;
+// Jitter of the stratified positions, in units of the R2 sequence's spacing in its unit square (1/sqrt(N)):
+// breaks its lattice orientation (see the top of this file).
+constexpr double kJitter = 0.5;
 
 // The name errors start with: the file the mesh came from, or its generator's name.
 std::string source_name(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh") : mesh.source; }
@@ -99,7 +108,7 @@ double sum_in_order(const std::vector<double>& values) {
 }
 
 // Stratified positions (see the top of this file): point k of triangle t is the k-th point of the R2
-// sequence offset by hash(seed, t), folded onto the triangle. A function of the counts and the seed
+// sequence offset by hash(seed, t) and jittered by hash(seed, t, k), folded onto the triangle. A function of the counts and the seed
 // alone, so that the relaxation can have its input again (relax.hpp).
 std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed) {
     const size_t triangles = first.size() - 1;
@@ -117,7 +126,12 @@ std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const ui
             const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
             for (; i < std::min<size_t>(end, first[t + 1]); ++i) {
                 const uint64_t k = i - first[t];
-                double u1 = o1 + double(k) * 0.7548776662466927, u2 = o2 + double(k) * 0.5698402909980532;
+                // Jittered by up to a quarter of the sequence's spacing, 1/sqrt(N), either way (see the
+                // top of this file).
+                const uint64_t jitter = mix64(bits ^ mix64(k + 0x4A49545445520000ull));
+                const double amount = kJitter / std::sqrt(double(first[t + 1] - first[t]));
+                double u1 = o1 + double(k) * 0.7548776662466927 + amount * (double(jitter >> 40) * 0x1p-24 - 0.5);
+                double u2 = o2 + double(k) * 0.5698402909980532 + amount * (double(jitter & 0xFFFFFF) * 0x1p-24 - 0.5);
                 u1 -= std::floor(u1), u2 -= std::floor(u2);
                 if (u1 + u2 > 1.0) u1 = 1.0 - u1, u2 = 1.0 - u2;
                 positions[i] = glm::vec3(a + u1 * (b - a) + u2 * (c - a));

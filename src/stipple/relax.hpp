@@ -16,7 +16,7 @@ namespace stipple {
 // Moves every stipple away from its neighbours within its own triangle's plane, `iterations`
 // times. Stipple i belongs to triangle triangle_of[i] of `mesh` and stays inside it. `spacing` is
 // the hexagonal-packing spacing at the stipple density (neighbours within 2 * spacing repel).
-// Deterministic for any thread count (Jacobi iterations over fixed chunks).
+// Deterministic for any thread count (Gauss-Seidel iterations within fixed chunks, Jacobi between them).
 // `progress`, if set, is called with the fraction done after each iteration.
 // It works on copies in spatial order and frees `positions` meanwhile (a stipple costs 40 bytes at
 // the peak instead of 64); they hold the relaxed stipples when it returns. It takes `triangle_of`

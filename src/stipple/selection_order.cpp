@@ -109,15 +109,18 @@ void calibrate_by_area(const std::vector<double>& areas, const std::vector<doubl
 
 }  // namespace
 
-std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed) {
+namespace {
+
+glm::vec3 centroid(const Mesh& mesh, size_t t) {
+    return (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
+            mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
+}
+
+// The values, from the blue-noise order of one site per triangle.
+std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&& centroids, uint64_t seed) {
     const size_t count = mesh.triangle_count();
     std::vector<float> values(count, 0.0f);
     if (count == 0) return values;
-
-    std::vector<glm::vec3> centroids(count);
-    for (size_t t = 0; t < count; ++t)
-        centroids[t] = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                        mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
     const double area = std::max(total_area(mesh), 1e-30);
     glm::vec3 lowest = centroids[0];
     for (const glm::vec3& c : centroids) lowest = glm::min(lowest, c);
@@ -172,6 +175,22 @@ std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed) {
     }
     calibrate_by_area(areas, scaled, seed, values);
     return values;
+}
+
+}  // namespace
+
+std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed) {
+    std::vector<glm::vec3> sites(mesh.triangle_count());
+    for (size_t t = 0; t < sites.size(); ++t) sites[t] = centroid(mesh, t);
+    return selection_values_at(mesh, std::move(sites), seed);
+}
+
+std::vector<float> polygon_selection_values(const Mesh& mesh, const StippleSet& stipples, uint64_t seed) {
+    std::vector<glm::vec3> sites(mesh.triangle_count());
+    const bool counted = stipples.first.size() == sites.size() + 1;
+    for (size_t t = 0; t < sites.size(); ++t)
+        sites[t] = counted && stipples.count(t) > 0 ? stipples.positions[stipples.first[t]] : centroid(mesh, t);
+    return selection_values_at(mesh, std::move(sites), seed);
 }
 
 }  // namespace stipple

@@ -115,7 +115,7 @@ void finish_generated_stipples(const Mesh& mesh, uint64_t seed, StippleSet& stip
         const uint32_t t = stipples.triangle[i];
         stipples.positions[i] = unpack_barycentric(mesh, t, pack_barycentric(mesh, t, stipples.positions[i]));
     }
-    stipples.selection = polygon_selection_values(mesh, seed);
+    stipples.selection = polygon_selection_values(mesh, stipples, seed);
     for (float& value : stipples.selection) value = selection_from_step(selection_step(value));
 }
 
