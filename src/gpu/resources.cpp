@@ -1,5 +1,6 @@
 #include "gpu/resources.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -123,6 +124,64 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     VK_CHECK(vkCreateImageView(device_, &view_info, nullptr, &view_));
 }
 
+Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(context.physical_device, format, &properties);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    if ((properties.linearTilingFeatures & needed) != needed)
+        return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+
+    Image image;
+    image.device_ = context.device;
+    image.format_ = format;
+    image.extent_ = extent;
+    image.aspect_ = VK_IMAGE_ASPECT_COLOR_BIT;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_LINEAR;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(image.device_, &info, nullptr, &image.image_));
+    VkImageSubresource pixels{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0};
+    VkSubresourceLayout layout;
+    vkGetImageSubresourceLayout(image.device_, image.image_, &pixels, &layout);
+    const VkDeviceSize row = VkDeviceSize(extent.width) * 4;
+    if (layout.offset != 0 || layout.rowPitch != row)  // rows padded: no words
+        return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+
+    VkBufferCreateInfo buffer_info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    buffer_info.size = row * extent.height;
+    buffer_info.usage =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_CHECK(vkCreateBuffer(image.device_, &buffer_info, nullptr, &image.words_));
+    VkMemoryRequirements for_image, for_words;
+    vkGetImageMemoryRequirements(image.device_, image.image_, &for_image);
+    vkGetBufferMemoryRequirements(image.device_, image.words_, &for_words);
+    const uint32_t types = for_image.memoryTypeBits & for_words.memoryTypeBits;
+    if (types == 0) return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = std::max(for_image.size, for_words.size);
+    alloc.memoryTypeIndex = context.find_memory_type(types, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_CHECK(vkAllocateMemory(image.device_, &alloc, nullptr, &image.memory_));
+    VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_, 0));
+    VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
+
+    VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view_info.image = image.image_;
+    view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view_info.format = format;
+    view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VK_CHECK(vkCreateImageView(image.device_, &view_info, nullptr, &image.view_));
+    return image;
+}
+
 Image& Image::operator=(Image&& other) noexcept {
     if (this != &other) {
         reset();
@@ -130,6 +189,7 @@ Image& Image::operator=(Image&& other) noexcept {
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        words_ = std::exchange(other.words_, VK_NULL_HANDLE);
         format_ = other.format_;
         extent_ = other.extent_;
         aspect_ = other.aspect_;
@@ -140,9 +200,11 @@ Image& Image::operator=(Image&& other) noexcept {
 void Image::reset() {
     if (!device_) return;
     if (view_) vkDestroyImageView(device_, view_, nullptr);
+    if (words_) vkDestroyBuffer(device_, words_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
     if (memory_) vkFreeMemory(device_, memory_, nullptr);
     view_ = VK_NULL_HANDLE;
+    words_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     device_ = VK_NULL_HANDLE;

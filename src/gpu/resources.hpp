@@ -57,9 +57,17 @@ public:
     Image(const Image&) = delete;
     Image& operator=(const Image&) = delete;
 
+    // A colour image in linear tiling whose memory is also a buffer of its pixels' 4-byte words, row after
+    // row (words(), with STORAGE and TRANSFER usage): a compute pass then writes the image's pixels with no
+    // copy. Where the device cannot (the format is no linear colour attachment, or the rows are padded),
+    // an ordinary image without words. Between writes through the words and uses of the image, the image
+    // is in the GENERAL layout: a linear image's memory holds its pixels as laid out only there.
+    static Image linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
+
     void reset();
     VkImage handle() const { return image_; }
     VkImageView view() const { return view_; }
+    VkBuffer words() const { return words_; }
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
     VkImageAspectFlags aspect() const { return aspect_; }
@@ -69,6 +77,7 @@ private:
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkBuffer words_ = VK_NULL_HANDLE;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
     VkImageAspectFlags aspect_ = 0;

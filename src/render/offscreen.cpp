@@ -24,9 +24,10 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent)
         extent.height > context.properties.limits.maxImageDimension2D)
         fail("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
              " is out of range: 1.." + std::to_string(context.properties.limits.maxImageDimension2D) + " per side");
-    color_ = gpu::Image(context, extent, kColorFormat,
-                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                        VK_IMAGE_ASPECT_COLOR_BIT);
+    // Linear, with its pixels as words for the splat to draw in (no copy back), where the device allows.
+    color_ = gpu::Image::linear_with_words(
+        context, extent, kColorFormat,
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     depth_ = gpu::Image(context, extent, context.depth_format,
                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
@@ -35,7 +36,7 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent)
 }
 
 RenderTargets OffscreenTarget::targets() const {
-    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true};
+    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true, color_.words()};
 }
 
 double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) {

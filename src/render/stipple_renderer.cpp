@@ -446,23 +446,31 @@ void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& t
     vkCmdSetScissor(cb, 0, 1, &scissor);
 }
 
-void StippleRenderer::ensure_frame_buffers(VkExtent2D extent) {
-    if (splat_extent_.width == extent.width && splat_extent_.height == extent.height) return;
+void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
+    const VkExtent2D extent = targets.extent;
+    // The target's own words are bound every frame: another target's buffer may come at the same handle.
+    const bool words = targets.color_words != VK_NULL_HANDLE;
+    const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
+    if (!resized && !words && !splat_in_words_) return;
     const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                    gpu::MemoryUse::DeviceLocal);
-    splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                               gpu::MemoryUse::DeviceLocal);
-    splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
-    splat_extent_ = extent;
+    if (resized) {
+        splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        gpu::MemoryUse::DeviceLocal);
+        splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                   gpu::MemoryUse::DeviceLocal);
+        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_extent_ = extent;
+    }
+    splat_in_words_ = words;
     // In the order of splat_frame_bindings(): background, scene depth, colour. The previous frame has completed.
-    const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(), splat_color_.handle()};
+    const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(),
+                                      words ? targets.color_words : splat_color_.handle()};
     gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
 }
 
 void StippleRenderer::copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets) {
-    ensure_frame_buffers(targets.extent);
+    ensure_frame_buffers(targets);
     const bool stencil = gpu::format_has_stencil(depth_format_);
     const VkImageAspectFlags depth_aspect =
         stencil ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
@@ -496,23 +504,38 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const bool paper_only = paper_under_splat();
     const uint32_t blue_first =
         color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
-    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                       VK_ACCESS_2_TRANSFER_READ_BIT);
-    if (!paper_only)
-        vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(), 1,
-                               &region);
-    if (paper_only) {
-        const glm::vec4 paper = blue_first ? glm::vec4(glm::vec3(view_.paper_color.b, view_.paper_color.g,
-                                                                 view_.paper_color.r), 1.0f)
-                                           : glm::vec4(glm::vec3(view_.paper_color), 1.0f);
-        vkCmdFillBuffer(cb, splat_color_.handle(), 0, pixels * 4, glm::packUnorm4x8(paper));
+    const glm::vec4 paper = blue_first ? glm::vec4(glm::vec3(view_.paper_color.b, view_.paper_color.g,
+                                                             view_.paper_color.r), 1.0f)
+                                       : glm::vec4(glm::vec3(view_.paper_color), 1.0f);
+    const VkBuffer words = targets.color_words;
+    if (words) {
+        // The splat draws in the image's own pixels: GENERAL, where a linear image's memory is its pixels.
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        if (paper_only) {
+            vkCmdFillBuffer(cb, words, 0, pixels * 4, glm::packUnorm4x8(paper));
+        } else {
+            const VkBufferCopy whole{0, 0, pixels * 4};
+            vkCmdCopyBuffer(cb, words, splat_background_.handle(), 1, &whole);
+        }
     } else {
-        gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-        const VkBufferCopy whole{0, 0, pixels * 4};
-        vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT);
+        if (paper_only) {
+            vkCmdFillBuffer(cb, splat_color_.handle(), 0, pixels * 4, glm::packUnorm4x8(paper));
+        } else {
+            vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(),
+                                   1, &region);
+            gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_READ_BIT);
+            const VkBufferCopy whole{0, 0, pixels * 4};
+            vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
+        }
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -534,6 +557,17 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     }
     timer_.mark(cb, "splat");
 
+    if (words) {  // already in the image: back to an attachment for what follows
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                VK_ACCESS_2_TRANSFER_READ_BIT);
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        return;
+    }
     // Back into the colour image, and back to an attachment for what follows.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);

@@ -57,6 +57,10 @@ struct RenderTargets {
     // For the compute splat: colour and depth images with TRANSFER_SRC usage, the colour also with
     // TRANSFER_DST (8-bit RGBA or BGRA). Without them, splat objects are drawn by the vertex path.
     bool splat_transfers = false;
+    // The colour image's pixels as a buffer of words, row after row (a linear image sharing its memory,
+    // gpu::Image::linear_with_words), or null: the splat then draws in them instead of in a buffer of its
+    // own that is copied into the image after.
+    VkBuffer color_words = VK_NULL_HANDLE;
 };
 
 struct RendererOptions {
@@ -141,7 +145,7 @@ private:
     void record_lines(VkCommandBuffer cb);       // line_passes.cpp
     // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
-    void ensure_frame_buffers(VkExtent2D extent);
+    void ensure_frame_buffers(const RenderTargets& targets);
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
@@ -174,9 +178,10 @@ private:
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
-    gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it
+    gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it (targets without words)
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
     VkExtent2D splat_extent_{};
+    bool splat_in_words_ = false;  // the splat's colour binding holds a target's words (RenderTargets::color_words)
     bool splat_targets_ = false;  // this frame's targets support the splat
     gpu::Buffer frame_uniforms_;
     gpu::FrameUniforms frame_{};
