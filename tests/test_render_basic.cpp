@@ -97,5 +97,36 @@ TEST_F(RenderBasics, HiddenSphereContributesNoInk) {
     EXPECT_GT(fraction_differing(alone.color, visible.color, 0), 0.001);
 }
 
+TEST_F(RenderBasics, TheSplatDrawsTheSameInTheImagesWordsAsThroughACopy) {
+    // Offscreen targets let the splat draw in the colour image's own memory (a linear image); other
+    // targets (a window's swapchain images) get the splat's buffer copied in. Same frame both ways: over
+    // paper only, and over toon surfaces, where the splat mixes its ink into the colour already there.
+    Prepared sphere = prepare(make_icosphere(4), ObjectParams{});
+    const Sphere frame_on{glm::vec3(0.0f), 1.0f};
+    const VkExtent2D extent{320, 256};
+    const float aspect = float(extent.width) / float(extent.height);
+    FrameView view;
+    view.camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    for (bool toon : {false, true}) {
+        ObjectParams params;
+        params.toon = toon;
+        StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+        renderer.add_object(sphere.mesh, sphere.stipples, sphere.model, params);
+        OffscreenTarget in_words(*context, extent, true), copied(*context, extent, false);
+        ASSERT_NE(in_words.targets().color_words, VK_NULL_HANDLE) << "lavapipe has linear colour attachments";
+        ASSERT_EQ(copied.targets().color_words, VK_NULL_HANDLE);
+        const RenderedFrame a = in_words.render(renderer, view), b = copied.render(renderer, view);
+        // Twice into the same words: nothing of the first frame may remain.
+        const RenderedFrame again = in_words.render(renderer, view);
+        size_t inked = 0;
+        for (size_t i = 0; i < a.color.pixels.size(); i += 4) inked += a.color.pixels[i] < 128;
+        std::printf("toon %d: %zu inked pixels; images differ in %.6f%% and %.6f%% of pixels\n", int(toon), inked,
+                    100.0 * fraction_differing(a.color, b.color, 0), 100.0 * fraction_differing(a.color, again.color, 0));
+        EXPECT_GT(inked, 1000u);
+        EXPECT_EQ(a.color.pixels, b.color.pixels) << "toon " << toon;
+        EXPECT_EQ(a.color.pixels, again.color.pixels) << "toon " << toon;
+    }
+}
+
 }  // namespace
 }  // namespace stipple

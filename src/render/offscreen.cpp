@@ -19,15 +19,17 @@ Image RenderedFrame::coverage_mask() const {
     return mask;
 }
 
-OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent) : context_(context), extent_(extent) {
+OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent, bool color_words)
+    : context_(context), extent_(extent) {
     if (extent.width == 0 || extent.height == 0 || extent.width > context.properties.limits.maxImageDimension2D ||
         extent.height > context.properties.limits.maxImageDimension2D)
         fail("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
              " is out of range: 1.." + std::to_string(context.properties.limits.maxImageDimension2D) + " per side");
     // Linear, with its pixels as words for the splat to draw in (no copy back), where the device allows.
-    color_ = gpu::Image::linear_with_words(
-        context, extent, kColorFormat,
-        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    const VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    color_ = color_words ? gpu::Image::linear_with_words(context, extent, kColorFormat, usage)
+                         : gpu::Image(context, extent, kColorFormat, usage, VK_IMAGE_ASPECT_COLOR_BIT);
     depth_ = gpu::Image(context, extent, context.depth_format,
                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;

@@ -20,7 +20,10 @@ struct RenderedFrame {
 
 class OffscreenTarget {
 public:
-    OffscreenTarget(const gpu::Context& context, VkExtent2D extent);
+    // color_words: a linear colour image the splat draws in directly, where the device allows
+    // (RenderTargets::color_words); false: an ordinary image the splat's buffer is copied into, as for a
+    // window's swapchain images (tests compare the two).
+    OffscreenTarget(const gpu::Context& context, VkExtent2D extent, bool color_words = true);
     OffscreenTarget(const OffscreenTarget&) = delete;
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;
     VkExtent2D extent() const { return extent_; }
