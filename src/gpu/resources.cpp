@@ -29,6 +29,34 @@ VkMemoryPropertyFlags preferred_flags(MemoryUse use) {
     return 0;
 }
 
+VkImage create_image_2d(VkDevice device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                        VkImageTiling tiling) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = tiling;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImage image = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImage(device, &info, nullptr, &image));
+    return image;
+}
+
+VkImageView create_view_2d(VkDevice device, VkImage image, VkFormat format, VkImageAspectFlags aspect) {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format;
+    info.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(device, &info, nullptr, &view));
+    return view;
+}
+
 }  // namespace
 
 Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use)
@@ -95,17 +123,7 @@ void Buffer::invalidate() const {
 Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
              VkImageAspectFlags aspect)
     : device_(context.device), format_(format), extent_(extent), aspect_(aspect) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = usage;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+    image_ = create_image_2d(device_, extent, format, usage, VK_IMAGE_TILING_OPTIMAL);
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device_, image_, &requirements);
@@ -115,13 +133,7 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
         context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
-
-    VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view_info.image = image_;
-    view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view_info.format = format;
-    view_info.subresourceRange = {aspect, 0, 1, 0, 1};
-    VK_CHECK(vkCreateImageView(device_, &view_info, nullptr, &view_));
+    view_ = create_view_2d(device_, image_, format, aspect);
 }
 
 Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
@@ -137,17 +149,7 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
     image.format_ = format;
     image.extent_ = extent;
     image.aspect_ = VK_IMAGE_ASPECT_COLOR_BIT;
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_LINEAR;
-    info.usage = usage;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(image.device_, &info, nullptr, &image.image_));
+    image.image_ = create_image_2d(image.device_, extent, format, usage, VK_IMAGE_TILING_LINEAR);
     VkImageSubresource pixels{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0};
     VkSubresourceLayout layout;
     vkGetImageSubresourceLayout(image.device_, image.image_, &pixels, &layout);
@@ -172,13 +174,7 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
     VK_CHECK(vkAllocateMemory(image.device_, &alloc, nullptr, &image.memory_));
     VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_, 0));
     VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
-
-    VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view_info.image = image.image_;
-    view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view_info.format = format;
-    view_info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VK_CHECK(vkCreateImageView(image.device_, &view_info, nullptr, &image.view_));
+    image.view_ = create_view_2d(image.device_, image.image_, format, VK_IMAGE_ASPECT_COLOR_BIT);
     return image;
 }
 
