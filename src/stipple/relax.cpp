@@ -61,9 +61,11 @@ struct OwnSlots {
 struct Candidates {
     std::vector<float> x, y, z;
     size_t count = 0;  // a multiple of kLanes
-    // Where each run's points start in the arrays, to update a point that moves (see relax_stipples).
-    PointGrid::Run runs[27];
-    uint32_t run_start[27];
+    // Where each run's points start in the arrays, to update a point that moves (see relax_stipples): up
+    // to 27 runs of the neighbourhood, and one more each where the chunk's own slots begin and end.
+    static constexpr int kMaxRuns = 27 + 2;
+    PointGrid::Run runs[kMaxRuns];
+    uint32_t run_start[kMaxRuns];
     int run_count = 0;
     int last_run = 0;
 
