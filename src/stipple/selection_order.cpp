@@ -107,23 +107,19 @@ void calibrate_by_area(const std::vector<double>& areas, const std::vector<doubl
     }
 }
 
-}  // namespace
-
-namespace {
-
 glm::vec3 centroid(const Mesh& mesh, size_t t) {
     return (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
             mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
 }
 
 // The values, from the blue-noise order of one site per triangle.
-std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&& centroids, uint64_t seed) {
+std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&& sites, uint64_t seed) {
     const size_t count = mesh.triangle_count();
     std::vector<float> values(count, 0.0f);
     if (count == 0) return values;
     const double area = std::max(total_area(mesh), 1e-30);
-    glm::vec3 lowest = centroids[0];
-    for (const glm::vec3& c : centroids) lowest = glm::min(lowest, c);
+    glm::vec3 lowest = sites[0];
+    for (const glm::vec3& c : sites) lowest = glm::min(lowest, c);
 
     std::vector<uint32_t> remaining(count);
     std::iota(remaining.begin(), remaining.end(), 0u);
@@ -132,27 +128,27 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
 
     std::vector<uint32_t> ranked;
     ranked.reserve(count);
-    // Level L aims at 2^L ranked centroids: Poisson-disc radius 0.75 x the hexagonal spacing of that
+    // Level L aims at 2^L ranked sites: Poisson-disc radius 0.75 x the hexagonal spacing of that
     // many points. Each level examines at most 8x its target, so the whole order costs O(count).
     for (size_t target = 1; target < count && !remaining.empty(); target *= 2) {
         float radius = float(0.75 * std::sqrt(2.0 * area / (std::sqrt(3.0) * double(target))));
         size_t budget = std::min(remaining.size(), 8 * target);
         RankedGrid grid(lowest, radius, ranked.size() + budget);
-        for (uint32_t t : ranked) grid.insert(centroids[t]);
+        for (uint32_t t : ranked) grid.insert(sites[t]);
         std::vector<uint32_t> rejected;
         constexpr size_t kAhead = 8;  // queries whose memory is fetched while this one runs
         for (size_t i = 0; i < budget; ++i) {
-            if (i + 2 * kAhead < budget) __builtin_prefetch(&centroids[remaining[i + 2 * kAhead]]);
-            if (i + kAhead < budget) grid.prefetch(centroids[remaining[i + kAhead]]);
+            if (i + 2 * kAhead < budget) __builtin_prefetch(&sites[remaining[i + 2 * kAhead]]);
+            if (i + kAhead < budget) grid.prefetch(sites[remaining[i + kAhead]]);
             uint32_t t = remaining[i];
-            if (grid.any_within(centroids[t])) {
+            if (grid.any_within(sites[t])) {
                 rejected.push_back(t);
             } else {
                 ranked.push_back(t);
-                grid.insert(centroids[t]);
+                grid.insert(sites[t]);
             }
         }
-        // Unexamined centroids go first at the next level, then the rejected ones.
+        // Unexamined sites go first at the next level, then the rejected ones.
         std::vector<uint32_t> next(remaining.begin() + budget, remaining.end());
         next.insert(next.end(), rejected.begin(), rejected.end());
         remaining.swap(next);
@@ -163,7 +159,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // given rank about a times as often as the mean one: rank / count x relative area is close to uniform
     // for every triangle. Only close: a triangle far smaller than the mean has a value below its relative
     // area whatever its rank (it would be selected for certain once p passes that), and one far larger is
-    // ranked before its regular share once its region runs out of centroids. So the value is made exactly
+    // ranked before its regular share once its region runs out of sites. So the value is made exactly
     // uniform where it matters, among triangles of about the same area (calibrate_by_area).
     const double mean_area = area / double(count);
     std::vector<double> areas(count);
