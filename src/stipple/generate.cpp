@@ -121,15 +121,15 @@ std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const ui
             while (first[t + 1] <= i) ++t;  // past empty triangles
             const uint64_t bits = mix64(seed_key ^ mix64(uint64_t(t) << 32));
             const double o1 = double(bits >> 40) * 0x1p-24, o2 = double(bits & 0xFFFFFF) * 0x1p-24;
+            // Each point jittered by up to a quarter of the sequence's spacing, 1/sqrt(N), either way (see the
+            // top of this file).
+            const double amount = kJitter / std::sqrt(double(first[t + 1] - first[t]));
             const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
             const glm::dvec3 b(mesh.positions[mesh.indices[3 * t + 1]]);
             const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
             for (; i < std::min<size_t>(end, first[t + 1]); ++i) {
                 const uint64_t k = i - first[t];
-                // Jittered by up to a quarter of the sequence's spacing, 1/sqrt(N), either way (see the
-                // top of this file).
                 const uint64_t jitter = mix64(bits ^ mix64(k + 0x4A49545445520000ull));
-                const double amount = kJitter / std::sqrt(double(first[t + 1] - first[t]));
                 double u1 = o1 + double(k) * 0.7548776662466927 + amount * (double(jitter >> 40) * 0x1p-24 - 0.5);
                 double u2 = o2 + double(k) * 0.5698402909980532 + amount * (double(jitter & 0xFFFFFF) * 0x1p-24 - 0.5);
                 u1 -= std::floor(u1), u2 -= std::floor(u2);
