@@ -73,15 +73,17 @@ void main() {
     float density = polygon_density(p, q);
     draws[t].density = density;
     if (!kListDrawn) return;
-    // The polygon's work items: runs of kSplatChunk drawn stipples (see DrawnPolygons). Most polygons
-    // have one; one atomic add per subgroup hands out their slots. The few with more take theirs with
-    // an atomic add each. Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of the
+    // The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons). Most
+    // polygons have one; one atomic add per subgroup hands out their slots. Those with more take theirs
+    // with an atomic add each. Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of the
     // splat's dispatch that start in it.
-    uint items = (drawn_stipple_count(density, uint(candidates)) + kSplatChunk - 1u) / kSplatChunk;
+    uint drawn_here = drawn_stipple_count(density, uint(candidates));
+    uint run = splat_run_length(drawn_here);
+    uint items = (drawn_here + run - 1u) / run;
     uint first = draws[t].first_stipple;
     if (items > 1u) {
         uint own = claim_slots(items);
-        for (uint i = 0u; i < items; ++i) drawn_polygons[own + i] = first + i * kSplatChunk;
+        for (uint i = 0u; i < items; ++i) drawn_polygons[own + i] = first + i * run;
     }
     bool single = items == 1u;
     uvec4 ballot = subgroupBallot(single);

@@ -26,8 +26,16 @@ STIPPLE_CONST uint kDensityWorkgroupSize = 64;
 // (65535) iterations in all, silently: one invocation walking a large polygon's 10,000 stipples with
 // their pixel loops inked only the first ~3,500 (a framed 12-triangle cube read 0.08 instead of 0.27
 // ink). A run of 64 stipples costs ~6 iterations each (one-pixel to two-pixel dots), ~60 for 4x dots:
-// far under the limit. It also evens out the work of the invocations sharing a SIMD vector.
+// far under the limit.
 STIPPLE_CONST uint kSplatChunk = 64;
+// A polygon drawing at most kSplatChunk stipples is cut into runs of this many instead
+// (splat_run_length): the invocations of a SIMD vector wait for the longest run among them, and a
+// polygon's few to few dozen stipples vary from one polygon to the next. On the low-res dragon (45k
+// polygons, ~3 drawn each, up to a few dozen) the splat took 4.45 ms against 5.33 with runs of 64
+// (median of 4 alternating runs each); 8 gave 4.72 and 16 4.85. The bunny, the horse and the ogre,
+// whose polygons draw 1-3, did not change. Polygons that draw more keep runs of kSplatChunk: a framed
+// 12-triangle cube, all runs full, was 20% slower with runs of 4 (each run reads its polygon again).
+STIPPLE_CONST uint kSplatShortRun = 4;
 
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
@@ -117,9 +125,10 @@ struct TriangleInfo {
 // The splat's work list: the polygons that draw at least one stipple this frame, appended by the
 // density pass (or written by the CPU), then the splat dispatched over them alone. Most polygons of a
 // dense mesh draw nothing (shading, probabilistic selection), so the splat skips them without a visit.
-// Each item is a run of at most kSplatChunk drawn stipples of one polygon, named by the index of its
-// first stipple (its StippleVertex names the polygon): a polygon drawing k stipples has ceil(k /
-// kSplatChunk) items, so a list holds at most polygons + candidates / kSplatChunk of them.
+// Each item is a run of drawn stipples of one polygon (splat_run_length of them, the last one fewer),
+// named by the index of its first stipple (its StippleVertex names the polygon): a polygon drawing k
+// stipples has ceil(k / run) items, run >= kSplatShortRun, so a list holds at most polygons +
+// candidates / kSplatShortRun of them.
 // The header is a VkDispatchIndirectCommand (groups of kDensityWorkgroupSize) and the item count;
 // the items follow it in the same buffer.
 struct DrawnPolygons {

@@ -193,7 +193,8 @@ void main() {
     mat4 model_view_proj = object.model_view_proj;
     uint candidates = polygon_candidates(t, first, object.flags);
     uint begin = item - first;
-    uint end = min(drawn_stipple_count(density, candidates), begin + kSplatChunk);
+    uint drawn_here = drawn_stipple_count(density, candidates);
+    uint end = min(drawn_here, begin + splat_run_length(drawn_here));
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     const uint zero = unfoldable_zero();  // object.flags.x and frame.projection.w, see uniform_branch.h

@@ -131,6 +131,10 @@ STIPPLE_FN uint drawn_stipple_count(float density, uint candidates) {
     return min(uint(ceil(max(density, 0.0f))), candidates);
 }
 
+// The splat's work items: a polygon drawing `drawn` stipples is cut into runs of this many (kSplatShortRun
+// and kSplatChunk in shared_types.h say why). The density pass, the CPU's list and the splat all cut alike.
+STIPPLE_FN uint splat_run_length(uint drawn) { return drawn <= kSplatChunk ? kSplatShortRun : kSplatChunk; }
+
 STIPPLE_FN float stipple_scale(float density, float candidates) {
     return clamp(sqrt(density / max(candidates, 1.0f)), 1.0f, kMaxStippleScale);
 }

@@ -163,12 +163,12 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     EXPECT_EQ(sizes(), std::vector<VkDeviceSize>(std::size(kPathBuffers), placeholder)) << "the vertex path needs none";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
-    // The work list: a header, then at most one item per polygon and one per kSplatChunk candidates.
-    const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatChunk;
+    // The work list: a header, then at most one item per polygon and one per kSplatShortRun candidates.
+    const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatShortRun;
     EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder}));
 
-    // With the splat path, what the object costs on the GPU per candidate: 8.06 bytes per candidate
-    // (the stipple and its share of the work list) and 28 per polygon besides the mesh, so at most 16
+    // With the splat path, what the object costs on the GPU per candidate: 9 bytes per candidate
+    // (the stipple and its share of the work list) and 28 per polygon besides the mesh, so at most 17
     // where candidates outnumber polygons ~4 to 1.
     VkDeviceSize bytes = object.geometry.positions.size() + object.geometry.normals.size() + object.geometry.indices.size() +
                          object.geometry.stipples.size() + object.polygons.gpu.size() + object.frame.triangle_draw.size() +
@@ -179,7 +179,7 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
                 object.geometry.triangle_count, object.geometry.stipple_count, per_candidate);
     EXPECT_EQ(object.geometry.stipples.size(), 8u * object.geometry.stipple_count);
     EXPECT_EQ(object.polygons.gpu.size(), 16u * object.geometry.triangle_count);
-    EXPECT_LE(per_candidate, 16.0);
+    EXPECT_LE(per_candidate, 17.0);
 
     // The indirect path's list of survivors: a draw command, then room for every candidate.
     renderer.params(0).density_path = DensityPath::Indirect;
@@ -189,7 +189,7 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
 }
 
 // A 12-triangle box: a few thousand drawn stipples per polygon when framed, far more than one splat
-// work item (kSplatChunk) carries.
+// work item (kSplatChunk at most) carries.
 Mesh make_box() {
     Mesh mesh;
     for (int i = 0; i < 8; ++i) mesh.positions.push_back(glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f));
@@ -198,8 +198,8 @@ Mesh make_box() {
     return mesh;
 }
 
-// The splat's work list holds, for each polygon that draws, its runs of kSplatChunk drawn stipples
-// (named by their first stipple), and nothing else.
+// The splat's work list holds, for each polygon that draws, its runs of splat_run_length drawn
+// stipples (named by their first stipple), and nothing else.
 void expect_splat_work_list(const gpu::Context& context, StippleRenderer& renderer, const StippleSet& stipples,
                             DensityPath path) {
     std::vector<std::byte> list = gpu::read_buffer(context, renderer.object(0).frame.drawn_polygons);
@@ -213,7 +213,8 @@ void expect_splat_work_list(const gpu::Context& context, StippleRenderer& render
     for (uint32_t t = 0; t < densities.size(); ++t) {
         if (!(densities[t] > 0.0f)) continue;
         uint32_t drawn = formulas::drawn_stipple_count(densities[t], stipples.first[t + 1] - stipples.first[t]);
-        for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) expected.push_back(stipples.first[t] + k);
+        const uint32_t run = formulas::splat_run_length(drawn);
+        for (uint32_t k = 0; k < drawn; k += run) expected.push_back(stipples.first[t] + k);
     }
     EXPECT_EQ(listed, expected) << density_path_name(path) << ": the work list is not the drawing polygons' runs";
     EXPECT_EQ(header.groups_x, (header.count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize);

@@ -47,10 +47,11 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
             visit(first, formulas::drawn_stipple_count(densities[t], geometry.first_stipple[t + 1] - first));
         }
     };
-    if (draws_by_splat(object.params.density_path)) {  // runs of kSplatChunk drawn stipples
+    if (draws_by_splat(object.params.density_path)) {  // runs of splat_run_length drawn stipples
         uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
         for_each_drawing_polygon([&](uint32_t first, uint32_t drawn) {
-            for (uint32_t k = 0; k < drawn; k += gpu::kSplatChunk) items[count++] = first + k;
+            const uint32_t run = formulas::splat_run_length(drawn);
+            for (uint32_t k = 0; k < drawn; k += run) items[count++] = first + k;
         });
         const uint32_t group = gpu::kDensityWorkgroupSize;
         const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};

@@ -32,8 +32,8 @@ const Buffer& path_buffer(const ObjectFrame& frame, PathBuffer kind) {
 
 VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBuffer kind) {
     const VkDeviceSize n = object.geometry.triangle_count;
-    // At most one splat work item per polygon plus one per kSplatChunk candidates (gpu::DrawnPolygons).
-    const VkDeviceSize items = n + object.geometry.stipple_count / gpu::kSplatChunk;
+    // At most one splat work item per polygon plus one per kSplatShortRun candidates (gpu::DrawnPolygons).
+    const VkDeviceSize items = n + object.geometry.stipple_count / gpu::kSplatShortRun;
     const VkDeviceSize list = sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * items;
     // Every candidate may draw (a close-up), each listed once.
     const VkDeviceSize survivors = sizeof(gpu::DrawCommand) + sizeof(uint32_t) * VkDeviceSize(object.geometry.stipple_count);
