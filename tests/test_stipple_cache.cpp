@@ -189,9 +189,10 @@ TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {
 }
 
 // A cache entry holds what generation made, keyed by the parameters, not by the code: a change to
-// generation that moves stipples must come with a new kVersion, or users keep loading stipples the
-// new code would not make (and tests compare against them). This fingerprint of what generation
-// makes now fails the moment it changes; update kGenerationFingerprint and kVersion together.
+// generation that moves stipples, or to the selection values kept beside them, must come with a new
+// kVersion, or users keep loading what the new code would not make (and tests compare against it).
+// This fingerprint of both fails the moment either changes; update kGenerationFingerprint and kVersion
+// together.
 TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     uint64_t fingerprint = 0;
     GenerationParams params;
@@ -204,11 +205,16 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
             std::memcpy(bits, &p, sizeof(bits));
             fingerprint = mix64(fingerprint ^ (uint64_t(bits[0]) << 32 | bits[1]) ^ mix64(bits[2]));
         }
+        for (const float value : polygon_selection_values(mesh, set, params.seed)) {
+            uint32_t bits;
+            std::memcpy(&bits, &value, sizeof(bits));
+            fingerprint = mix64(fingerprint ^ bits);
+        }
     }
     char text[32];
     std::snprintf(text, sizeof(text), "0x%016llx", static_cast<unsigned long long>(fingerprint));
     EXPECT_EQ(fingerprint, cache_format::kGenerationFingerprint)
-        << "generation makes other stipples than cache format " << cache_format::kVersion
+        << "generation makes other stipples or selection values than cache format " << cache_format::kVersion
         << " recorded: bump kVersion in src/stipple/cache_entry_format.hpp and set kGenerationFingerprint = " << text;
 }
 

@@ -20,11 +20,12 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // 4 search caps wide (5-7: same kind of stipples, other positions for the same parameters); 8: the
 // point grids' windows at offsets over the whole bucket table (the relaxation's sums, in their last bits);
 // 9: jittered stratified positions and Gauss-Seidel relaxation (better spread, no hexagonal domains),
-// selection values ranked by the polygons' first stipples
-inline constexpr uint32_t kVersion = 9;
+// selection values ranked by the polygons' first stipples; 10: selection values uniform per class of
+// candidate count and area (the stipples unchanged)
+inline constexpr uint32_t kVersion = 10;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0xf5cc712eb9e862f0;
+inline constexpr uint64_t kGenerationFingerprint = 0x2d81c121464ab1e1;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {
