@@ -74,22 +74,23 @@ private:
     std::vector<Entry> entries_;   // centroids in insertion order
 };
 
-// Triangles in classes of the same candidate count (below kExactCounts; above it the area decides alone)
-// and about the same area (within kClassRatio of the class's smallest); in each class of n the k-th in the order of `scaled` (the blue-noise rank) gets a
-// value in [k / n, (k + 1) / n), at a place in that step drawn per triangle. So every class holds
-// exactly uniform values whatever the spread of triangle sizes (a lone large triangle among tiny ones
-// included), P(value < p) = p for a triangle of any size, and the probabilistic selection's expected
-// ink is the owed ink; within a class the blue-noise order is kept, so the selected triangles stay
-// evenly spread. The count matters because p is proportional to it (a polygon owes its candidates
-// times the view's terms), and the ranks are not independent of it: where triangles hold one or two
-// stipples (a low D_max), the first stipples of those with two are placed earlier in the progressive
-// order, and ranked earlier as sites. On the bunny at D_max 0.05, classes by area alone gave the
-// triangles with two candidates P(value < p) = 1.04-1.09 p and those with one 0.93-0.97 p, so the
-// probabilistic regime drew 3% more than it owed (2.6-3.9 standard deviations in `stipple tone
-// --regimes`), and the tone rose that much where the regime takes over. From kExactCounts candidates on,
-// a count follows the area to within 1/16 and a class of one count would be a triangle or two, whose
-// values would keep nothing of the blue-noise order.
-void calibrate_by_area(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
+// Triangles in classes of the same candidate count (below kExactCounts; from there on the area decides
+// alone) and about the same area (within kClassRatio of the class's smallest); in each class of n the
+// k-th in the order of `scaled` (the blue-noise rank) gets a value in [k / n, (k + 1) / n), at a place
+// in that step drawn per triangle. So every class holds exactly uniform values whatever the spread of
+// triangle sizes (a lone large triangle among tiny ones included), P(value < p) = p for a triangle of
+// any size, and the probabilistic selection's expected ink is the owed ink; within a class the
+// blue-noise order is kept, so the selected triangles stay evenly spread.
+// The count matters because p is proportional to it (a polygon owes its candidates times the view's
+// terms), and the ranks are not independent of it: where triangles hold one or two stipples (a low
+// D_max), the first stipples of those with two are placed earlier in the progressive order, and
+// ranked earlier as sites. On the bunny at D_max 0.05, classes by area alone gave the triangles with
+// two candidates P(value < p) = 1.04-1.09 p and those with one 0.93-0.97 p, and the probabilistic
+// regime drew 2.6-3.3% more than it owed framed and at twice the distance (3.7-3.9 standard
+// deviations; `stipple tone --dmax 0.05 --regimes`). From kExactCounts candidates on, a count follows
+// the area to within 1/16, and a class of one count would hold a triangle or two, whose values would
+// keep nothing of the blue-noise order.
+void calibrate_per_class(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
                        const std::vector<double>& scaled, uint64_t seed, std::vector<float>& values) {
     constexpr double kClassRatio = 1.19;  // 2^(1/4): p varies by under 10% across a class
     constexpr uint32_t kExactCounts = 8;
@@ -176,7 +177,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // for every triangle. Only close: a triangle far smaller than the mean has a value below its relative
     // area whatever its rank (it would be selected for certain once p passes that), and one far larger is
     // ranked before its regular share once its region runs out of sites. So the value is made exactly
-    // uniform where it matters, among triangles of about the same area (calibrate_by_area).
+    // uniform where it matters, among triangles of about the same area and count (calibrate_per_class).
     const double mean_area = area / double(count);
     std::vector<double> areas(count);
     std::vector<double> scaled(count);
@@ -185,16 +186,17 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         areas[t] = triangle_area(mesh, t);
         scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
     }
-    calibrate_by_area(areas, counts, scaled, seed, values);
+    calibrate_per_class(areas, counts, scaled, seed, values);
     return values;
 }
 
 }  // namespace
 
 std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed) {
-    std::vector<glm::vec3> sites(mesh.triangle_count());
-    for (size_t t = 0; t < sites.size(); ++t) sites[t] = centroid(mesh, t);
-    return selection_values_at(mesh, std::move(sites), std::vector<uint32_t>(sites.size(), 0u), seed);
+    const size_t triangles = mesh.triangle_count();
+    std::vector<glm::vec3> sites(triangles);
+    for (size_t t = 0; t < triangles; ++t) sites[t] = centroid(mesh, t);
+    return selection_values_at(mesh, std::move(sites), std::vector<uint32_t>(triangles, 0u), seed);
 }
 
 std::vector<float> polygon_selection_values(const Mesh& mesh, const StippleSet& stipples, uint64_t seed) {
