@@ -65,11 +65,48 @@ std::vector<std::array<float, 2>> parse_views(const std::string& text) {
     return views;
 }
 
-void print_table(const ToneSurvey& survey, const ToneSurveyOptions& options, const char* extrinsic) {
+// Seeds, comma-separated: "1,2,3".
+std::vector<uint64_t> parse_seeds(const std::string& text) {
+    std::vector<uint64_t> seeds;
+    for (const std::string& part : split(text, ',')) {
+        const double seed = parse_number(part, "--seeds");
+        if (seed < 0.0 || seed > 4294967295.0 || seed != std::floor(seed))
+            fail("--seeds: '" + part + "' is not a whole number in [0, 4294967295]");
+        seeds.push_back(uint64_t(seed));
+    }
+    if (seeds.empty() || seeds.size() > 16) fail("--seeds needs 1 to 16 comma-separated seeds");
+    return seeds;
+}
+
+// One row per view: the mean ink at each distance and its max/min. `label` names the seed, if several.
+void print_table(const ToneSurvey& survey, const ToneSurveyOptions& options, const char* extrinsic,
+                 const std::string& label = "") {
     for (size_t v = 0; v < options.views.size(); ++v) {
         std::printf("| %-3s | %6.1f:%-5.1f |", extrinsic, options.views[v][0], options.views[v][1]);
+        if (!label.empty()) std::printf(" %s |", label.c_str());
         for (const ToneSample& s : survey.samples) std::printf(" %.4f |", s.mean_ink[v]);
         std::printf(" %.3f |\n", survey.max_over_min(v));
+    }
+}
+
+// The surveys of several seeds as one: each distance's ink averaged over the seeds (the tone under the
+// noise of which stipples and polygons one seed draws), and the mean of the seeds' own figures.
+void print_seed_average(const std::vector<ToneSurvey>& surveys, const ToneSurveyOptions& options, const char* extrinsic) {
+    ToneSurvey mean = surveys.front();
+    for (size_t i = 0; i < mean.samples.size(); ++i)
+        for (size_t v = 0; v < options.views.size(); ++v) {
+            double sum = 0.0;
+            for (const ToneSurvey& s : surveys) sum += s.samples[i].mean_ink[v];
+            mean.samples[i].mean_ink[v] = sum / double(surveys.size());
+        }
+    print_table(mean, options, extrinsic, "mean");
+    for (size_t v = 0; v < options.views.size(); ++v) {
+        double figures = 0.0;
+        for (const ToneSurvey& s : surveys) figures += s.max_over_min(v);
+        std::printf("| %-3s | %6.1f:%-5.1f | mean of the seeds' max/min |", extrinsic, options.views[v][0],
+                    options.views[v][1]);
+        for (size_t i = 0; i < mean.samples.size(); ++i) std::printf(" |");
+        std::printf(" %.3f |\n", figures / double(surveys.size()));
     }
 }
 
@@ -119,7 +156,8 @@ int run_tone(const std::vector<std::string>& argv) {
     std::set<std::string> flags = object_flags();
     flags.insert("--regimes");
     std::set<std::string> options_set = object_options();
-    options_set.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov", "--images"});
+    options_set.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
+                        "--images", "--seeds"});
     Args args(argv, flags, options_set);
     if (args.positionals().size() > 1) fail("tone takes at most one MODEL (see stipple --help)");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
@@ -153,35 +191,55 @@ int run_tone(const std::vector<std::string>& argv) {
         if (glm::length(light) < 1e-6f) fail("--light must not be the zero vector");
     }
     ObjectParams params = read_object_params(args);
-    const ObjectData object = load_object_data(path, params.generation);
+    std::vector<uint64_t> seeds{params.generation.seed};
+    if (args.has("--seeds")) {
+        if (args.has("--seed")) fail("give --seed or --seeds, not both");
+        seeds = parse_seeds(args.get("--seeds", ""));
+    }
+    if (seeds.size() > 1 && !options.image_dir.empty()) fail("--images takes one seed (drop --seeds)");
 
     gpu::ContextOptions context_options;
     context_options.device_index = int(args.integer("--device", -1));
     gpu::Context context(context_options);
-    StippleRenderer renderer(context, kColorFormat, context.depth_format);
-    renderer.add_object(*object.mesh, *object.stipples, glm::mat4(1.0f), params);
-
-    std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, field of view %g deg, D_max %g, point size %g, "
-                "%d frame(s) per view over %g deg of yaw\n\n",
-                path.c_str(), object.mesh->triangle_count(), object.stipples->size(), options.extent.width,
-                options.extent.height, options.fov_y_deg, params.generation.dmax, params.point_size, options.frames,
-                options.arc_deg);
-    renderer.params(0).extrinsic = true;
-    const ToneSurvey on = survey_tone(context, renderer, 0, object.bounds, options, light,
-                                      args.flag("--regimes") ? &object.stipples->positions : nullptr);
-    renderer.params(0).extrinsic = false;
-    ToneSurveyOptions off_options = options;
-    off_options.regimes = false;
-    const ToneSurvey off = survey_tone(context, renderer, 0, object.bounds, off_options, light);
-    std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance):\n\n");
-    std::printf("| extrinsic | yaw:pitch |");
+    const bool several = seeds.size() > 1;
+    std::vector<ToneSurvey> ons, offs;
+    for (uint64_t seed : seeds) {
+        params.generation.seed = seed;
+        const ObjectData object = load_object_data(path, params.generation);
+        StippleRenderer renderer(context, kColorFormat, context.depth_format);
+        renderer.add_object(*object.mesh, *object.stipples, glm::mat4(1.0f), params);
+        if (seed == seeds.front())
+            std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, field of view %g deg, D_max %g, point size "
+                        "%g, %d frame(s) per view over %g deg of yaw%s\n\n",
+                        path.c_str(), object.mesh->triangle_count(), object.stipples->size(), options.extent.width,
+                        options.extent.height, options.fov_y_deg, params.generation.dmax, params.point_size,
+                        options.frames, options.arc_deg, several ? ", for each seed" : "");
+        renderer.params(0).extrinsic = true;
+        ons.push_back(survey_tone(context, renderer, 0, object.bounds, options, light,
+                                  args.flag("--regimes") ? &object.stipples->positions : nullptr));
+        renderer.params(0).extrinsic = false;
+        ToneSurveyOptions off_options = options;
+        off_options.regimes = false;
+        offs.push_back(survey_tone(context, renderer, 0, object.bounds, off_options, light));
+    }
+    std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance)%s:\n\n",
+                several ? "; per seed, then each distance averaged over the seeds" : "");
+    std::printf("| extrinsic | yaw:pitch |%s", several ? " seed |" : "");
     for (float d : options.distances) std::printf(" d=%g |", d);
-    std::printf(" max/min |\n|---|---|");
+    std::printf(" max/min |\n|---|---|%s", several ? "---|" : "");
     for (size_t i = 0; i < options.distances.size(); ++i) std::printf("---:|");
     std::printf("---:|\n");
-    print_table(on, options, "on");
-    print_table(off, options, "off");
-    if (args.flag("--regimes")) print_regimes(on, options, params.point_size);
+    for (const auto* surveys : {&ons, &offs}) {
+        const char* extrinsic = surveys == &ons ? "on" : "off";
+        for (size_t k = 0; k < seeds.size(); ++k)
+            print_table((*surveys)[k], options, extrinsic, several ? std::to_string(seeds[k]) : "");
+        if (several) print_seed_average(*surveys, options, extrinsic);
+    }
+    if (args.flag("--regimes"))
+        for (size_t k = 0; k < seeds.size(); ++k) {
+            if (several) std::printf("\nseed %llu:\n", static_cast<unsigned long long>(seeds[k]));
+            print_regimes(ons[k], options, params.point_size);
+        }
     return 0;
 }
 

@@ -162,6 +162,8 @@ Tone options (and the stipple options; without MODEL the default scene's model):
   --width N --height N    image size (default 1280 x 1024)  --light X,Y,Z  --device N
   --regimes               also print, per distance, the stipples each regime of the extrinsic
                           enhancement owes and draws, and the ink they leave on the screen
+  --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
+                          each distance's ink averaged over the seeds (instead of --seed)
   --images DIR            write each view and distance (cropped to the object, enlarged) as PNG
 
 Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when

@@ -1,0 +1,101 @@
+// `stipple tone` as a user runs it (issue 18: a command that prints the tone table for any model): the
+// table's rows and figures, the seeds averaged with --seeds, and one-line refusals of bad options.
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/run_command.hpp"
+
+namespace stipple {
+namespace {
+
+// The rows of the table that start with "| on " or "| off": the cells between the bars, trimmed.
+std::vector<std::vector<std::string>> rows(const std::string& out, const std::string& extrinsic) {
+    std::vector<std::vector<std::string>> found;
+    std::istringstream lines(out);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind("| " + extrinsic + " ", 0) != 0) continue;
+        std::vector<std::string> cells;
+        std::istringstream parts(line.substr(1));
+        std::string cell;
+        while (std::getline(parts, cell, '|')) {
+            const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+            cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+        }
+        found.push_back(cells);
+    }
+    return found;
+}
+
+// The default scene, small and quick: two distances, two views, two frames each.
+std::vector<std::string> quick(std::vector<std::string> extra) {
+    std::vector<std::string> args{"tone", "--distances", "1,4", "--views", "30:10,30:-15", "--frames", "2", "--width", "320",
+                                  "--height", "256"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+}
+
+TEST(CliTone, PrintsTheInkPerDistanceAndItsMaxOverMin) {
+    const test::CommandResult r = test::run_stipple(quick({}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto on = rows(r.out, "on"), off = rows(r.out, "off");
+    ASSERT_EQ(on.size(), 2u) << r.out;  // one row per view
+    ASSERT_EQ(off.size(), 2u) << r.out;
+    for (const auto& row : on) {
+        ASSERT_EQ(row.size(), 5u) << r.out;  // extrinsic, view, d=1, d=4, max/min
+        const double near = std::stod(row[2]), far = std::stod(row[3]), figure = std::stod(row[4]);
+        EXPECT_GT(near, 0.1);
+        EXPECT_NEAR(figure, std::max(near, far) / std::min(near, far), 0.002);
+        EXPECT_LT(figure, 1.1) << "the enhancement keeps the tone";
+    }
+    for (const auto& row : off) EXPECT_GT(std::stod(row[3]), std::stod(row[2])) << "without it, far reads darker";
+}
+
+TEST(CliTone, SeedsAreDrawnOneByOneAndAveraged) {
+    const test::CommandResult r = test::run_stipple(quick({"--seeds", "1,2,3"}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto on = rows(r.out, "on");
+    // Per view: one row per seed, the averaged row and the mean of the seeds' figures.
+    ASSERT_EQ(on.size(), 10u) << r.out;
+    for (size_t view = 0; view < 2; ++view) {
+        double sum_near = 0.0, sum_far = 0.0, sum_figures = 0.0;
+        std::vector<std::string> seen;
+        for (size_t seed = 0; seed < 3; ++seed) {
+            const auto& row = on[2 * seed + view];
+            seen.push_back(row[2]);
+            sum_near += std::stod(row[3]);
+            sum_far += std::stod(row[4]);
+            sum_figures += std::stod(row[5]);
+        }
+        EXPECT_EQ(seen, (std::vector<std::string>{"1", "2", "3"}));
+        const auto& mean = on[6 + view];
+        EXPECT_EQ(mean[2], "mean");
+        EXPECT_NEAR(std::stod(mean[3]), sum_near / 3.0, 1e-4);
+        EXPECT_NEAR(std::stod(mean[4]), sum_far / 3.0, 1e-4);
+        EXPECT_NEAR(std::stod(on[8 + view].back()), sum_figures / 3.0, 0.001);
+    }
+    // Other seeds draw other stipples: the seeds' rows are not all the same.
+    EXPECT_NE(on[0][4], on[2][4]);
+}
+
+TEST(CliTone, BadOptionsGetOneLine) {
+    for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--seeds", "1,x"}, "stipple: --seeds: 'x' is not a number\n"},
+             {{"--seeds", "1.5"}, "stipple: --seeds: '1.5' is not a whole number in [0, 4294967295]\n"},
+             {{"--seed", "2", "--seeds", "1,2"}, "stipple: give --seed or --seeds, not both\n"},
+             {{"--distances", "0"}, "stipple: --distances: 0 must be in (0, 10000]\n"},
+             {{"--views", "30"}, "stipple: --views: '30' is not YAW:PITCH (degrees)\n"}}) {
+        std::vector<std::string> argv{"tone"};
+        argv.insert(argv.end(), args.begin(), args.end());
+        const test::CommandResult r = test::run_stipple(argv);
+        EXPECT_EQ(r.exit_code, 1) << args[0];
+        EXPECT_EQ(r.err, message);
+    }
+}
+
+}  // namespace
+}  // namespace stipple
