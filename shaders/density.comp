@@ -6,6 +6,7 @@
 // does only that (for objects whose densities come from the CPU).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "uniform_branch.h"
@@ -73,24 +74,18 @@ void main() {
     float density = polygon_density(p, q);
     draws[t].density = density;
     if (!kListDrawn) return;
-    // The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons). Most
-    // polygons have one; one atomic add per subgroup hands out their slots. Those with more take theirs
-    // with an atomic add each. Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of the
-    // splat's dispatch that start in it.
+    // The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons). One atomic
+    // add per subgroup hands out the slots of all its polygons' items, each polygon's consecutive (a
+    // prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of
+    // the splat's dispatch that start in it.
     uint drawn_here = drawn_stipple_count(density, uint(candidates));
     uint run = splat_run_length(drawn_here);
     uint items = (drawn_here + run - 1u) / run;
     uint first = draws[t].first_stipple;
-    if (items > 1u) {
-        uint own = claim_slots(items);
-        for (uint i = 0u; i < items; ++i) drawn_polygons[own + i] = first + i * run;
-    }
-    bool single = items == 1u;
-    uvec4 ballot = subgroupBallot(single);
-    uint listed_here = subgroupBallotBitCount(ballot);
+    uint listed_here = subgroupAdd(items);
     if (listed_here == 0u) return;
     uint base = 0u;
     if (subgroupElect()) base = claim_slots(listed_here);
-    base = subgroupBroadcastFirst(base);
-    if (single) drawn_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = first;
+    base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(items);
+    for (uint i = 0u; i < items; ++i) drawn_polygons[base + i] = first + i * run;
 }

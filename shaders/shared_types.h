@@ -32,8 +32,9 @@ STIPPLE_CONST uint kSplatChunk = 64;
 // (splat_run_length): the invocations of a SIMD vector wait for the longest run among them, and a
 // polygon's few to few dozen stipples vary from one polygon to the next. On the low-res dragon (45k
 // polygons, ~3 drawn each, up to a few dozen) the splat took 4.45 ms against 5.33 with runs of 64
-// (median of 4 alternating runs each; the density pass, where more polygons now claim several items,
-// 1.06 to 1.18 ms); 8 gave 4.72 and 16 4.85. The bunny, the horse and the ogre,
+// (median of 4 alternating runs each; the density pass, where more polygons then claimed several items
+// with an atomic add each, 1.06 to 1.18 ms, until the subgroup's items were claimed at once); 8 gave
+// 4.72 and 16 4.85. The bunny, the horse and the ogre,
 // whose polygons draw 1-3, did not change. Polygons that draw more keep runs of kSplatChunk: a framed
 // 12-triangle cube, all runs full, was 20% slower with runs of 4 (each run reads its polygon again).
 STIPPLE_CONST uint kSplatShortRun = 4;
