@@ -203,12 +203,12 @@ int run_tone(const std::vector<std::string>& argv) {
     gpu::Context context(context_options);
     const bool several = seeds.size() > 1;
     std::vector<ToneSurvey> ons, offs;
-    for (uint64_t seed : seeds) {
-        params.generation.seed = seed;
+    for (size_t k = 0; k < seeds.size(); ++k) {
+        params.generation.seed = seeds[k];
         const ObjectData object = load_object_data(path, params.generation);
         StippleRenderer renderer(context, kColorFormat, context.depth_format);
         renderer.add_object(*object.mesh, *object.stipples, glm::mat4(1.0f), params);
-        if (seed == seeds.front())
+        if (k == 0)
             std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, field of view %g deg, D_max %g, point size "
                         "%g, %d frame(s) per view over %g deg of yaw%s\n\n",
                         path.c_str(), object.mesh->triangle_count(), object.stipples->size(), options.extent.width,

@@ -91,7 +91,7 @@ private:
 // the area to within 1/16, and a class of one count would hold a triangle or two, whose values would
 // keep nothing of the blue-noise order.
 void calibrate_per_class(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
-                       const std::vector<double>& scaled, uint64_t seed, std::vector<float>& values) {
+                         const std::vector<double>& scaled, uint64_t seed, std::vector<float>& values) {
     constexpr double kClassRatio = 1.19;  // 2^(1/4): p varies by under 10% across a class
     constexpr uint32_t kExactCounts = 8;
     const size_t count = areas.size();
