@@ -74,6 +74,9 @@ STIPPLE_CONST uint kBindingTriangleDrawTexels = 17;
 // texel buffer (RGBA32UI): the TriangleInfo[] of kBindingTriangleInfo, a polygon per texel (density.comp:
 // one gather instead of four lane-by-lane loads).
 STIPPLE_CONST uint kBindingTriangleInfoTexels = 18;
+// DepthTriangles header + uint[] (storage, also the index and indirect buffer of the depth pass): the
+// triangles that can cover a pixel centre this frame (depth_triangles.comp), when the object culls them
+STIPPLE_CONST uint kBindingDepthTriangles = 19;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -95,6 +98,7 @@ STIPPLE_CONST uint kFlagContours = 512u;       // object-space lines: edges betw
 STIPPLE_CONST uint kFlagBorders = 1024u;       // object-space lines: edges of one polygon
 STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral angle above the crease angle
 STIPPLE_CONST uint kFlagStretch = 4096u;       // animated: a polygon's due count follows its current area
+STIPPLE_CONST uint kFlagDepthOneSided = 8192u;  // the depth pass culls the faces facing away (depth_triangles.comp)
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's
@@ -232,6 +236,22 @@ struct DrawCommand {
     uint first_vertex;
     uint first_instance;
 };
+
+// The depth pass's list of triangles (kBindingDepthTriangles): this header, an indexed indirect draw
+// (VkDrawIndexedIndirectCommand and 12 bytes of padding), then the kept triangles' vertex indices,
+// three uints each. Bound as the index buffer at offset 0, the header skipped by first_index, as
+// SilhouetteLines' is (lavapipe ignores the bound offset of indexed indirect draws). Most triangles of
+// a mesh finer than the pixels cover no pixel centre, produce no fragment and change no depth, yet a
+// software rasteriser sets each one up on its one geometry thread; the list leaves them out.
+struct DepthTriangles {
+    uint index_count;
+    uint instance_count;
+    uint first_index;
+    int vertex_offset;
+    uint first_instance;
+    uint pad0, pad1, pad2;
+};
+STIPPLE_CONST uint kDepthTrianglesFirstIndex = 8;  // the header's 32 bytes, in indices
 
 struct FrameUniforms {
     mat4 view_proj;      // world -> clip

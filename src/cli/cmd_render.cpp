@@ -100,7 +100,7 @@ int run_render(const std::vector<std::string>& argv) {
     options.merge(cache_options());
     options.merge(vector_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
-                    "--device", "--frames", "--orbit"});
+                    "--device", "--frames", "--orbit", "--depth-cull"});
     options.merge(animation_options());
     Args args(argv, flags, options);
     apply_cache_options(args);
@@ -131,6 +131,9 @@ int run_render(const std::vector<std::string>& argv) {
     long long device = args.integer("--device", -1);
     long long repeat = args.integer("--repeat", 0);
     if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
+    const std::string depth_cull_arg = args.get("--depth-cull", "auto");
+    const std::optional<DepthCull> depth_cull = parse_depth_cull(depth_cull_arg);
+    if (!depth_cull) fail("--depth-cull = " + depth_cull_arg + " must be auto, on or off");
     long long frames = args.integer("--frames", 0);
     if (frames < 0 || frames > 100000 || (args.has("--frames") && frames < 1))
         fail("--frames = " + std::to_string(frames) + " must be in 1..100000");
@@ -173,6 +176,7 @@ int run_render(const std::vector<std::string>& argv) {
 
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
+    renderer_options.depth_cull = *depth_cull;
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     add_scene_objects(renderer, scene, content.objects);
     OffscreenTarget target(context, extent);
@@ -227,6 +231,11 @@ int run_render(const std::vector<std::string>& argv) {
             std::printf("scene:              %s (%zu objects)\n", what.c_str(), scene.objects.size());
         std::printf("device:             %s\n", context.device_name.c_str());
         std::printf("triangles:          %llu\n", (unsigned long long)stats.triangles);
+        uint64_t depth_triangles = 0;
+        for (size_t i = 0; i < renderer.object_count(); ++i) depth_triangles += renderer.read_depth_triangles(i);
+        std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)\n", (unsigned long long)depth_triangles,
+                    stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
+                    depth_cull_name(*depth_cull));
         std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
         std::printf("drawn stipples:     %lld\n", (long long)stats.drawn_stipples);
         std::string paths;

@@ -54,6 +54,9 @@ Render options:
                           coverage, and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
                           frame time and GPU time per pass
+  --depth-cull MODE        auto, on or off: the depth pass draws only the triangles that may cover a
+                          pixel centre, listed by a compute pass (the same image; auto when the
+                          model's triangles average under half a pixel on screen)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at

@@ -38,6 +38,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingFullAreas, kStorage}, [](const O& o) { return o.polygons.full_areas.handle(); }},
     {{gpu::kBindingTriangleDrawTexels, kTexels}, [](const O& o) { return o.frame.triangle_draw.handle(); },
      [](const O& o) { return o.frame.triangle_draw_texels; }},
+    {{gpu::kBindingDepthTriangles, kStorage}, [](const O& o) { return o.frame.depth_triangles.handle(); }},
     {{gpu::kBindingTriangleInfoTexels, kTexels}, [](const O& o) { return o.polygons.gpu.handle(); },
      [](const O& o) { return o.polygons.texels; }},
 };

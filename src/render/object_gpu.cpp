@@ -68,13 +68,6 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
 
 enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
 
-Buffer make_lines_buffer(const gpu::Context& context, VkDeviceSize bytes) {
-    return Buffer(context, bytes,
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
-                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                  MemoryUse::DeviceLocal);
-}
-
 // Every buffer of a new object, from its upload (one submission for all the staged data).
 void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool count_drawn, ObjectGpu& object) {
     STIPPLE_CHECK(upload.staged.size() == kStagedCount, "object upload is not staged");
@@ -104,12 +97,13 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     frame.triangle_draw = std::move(buffers[kDensities]);
     for (PathBuffer kind : kPathBuffers)
         path_buffer(frame, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
-    frame.silhouette_lines = make_lines_buffer(context, kPathBufferPlaceholderBytes);
+    frame.silhouette_lines = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
+    frame.depth_triangles = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
     frame.visible_stipples = Buffer(context, kPathBufferPlaceholderBytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                     MemoryUse::DeviceLocal);
     frame.facing = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
-    frame.line_candidates = make_lines_buffer(context, kPathBufferPlaceholderBytes);
-    frame.line_pieces = make_lines_buffer(context, kPathBufferPlaceholderBytes);
+    frame.line_candidates = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
+    frame.line_pieces = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
     const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((geometry.stipple_count + 31) / 32) : 0;
     frame.debug = Buffer(context, sizeof(gpu::DebugCounters) + mask_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback);
@@ -121,6 +115,13 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
 float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::determinant(glm::mat3(model)))); }
 
 }  // namespace
+
+Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes) {
+    return Buffer(context, bytes,
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  MemoryUse::DeviceLocal);
+}
 
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
@@ -176,6 +177,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     object->params = params;
     object->model = model;
     upload_object(context, upload, count_drawn, *object);
+    double surface_area = 0.0;
+    for (const gpu::TriangleInfo& info : upload.polygons.cpu) surface_area += double(info.area);
+    object->geometry.surface_area = float(surface_area);
     // Within the device's texel buffer limit (check_device_fits).
     ObjectGeometry& geometry = object->geometry;
     geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
@@ -219,16 +223,16 @@ void ensure_line_buffers(ObjectGpu& object) {
     geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges),
                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     object.frame.silhouette_lines =
-        make_lines_buffer(context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
+        make_index_list_buffer(context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
     object.frame.line_candidates =
-        make_lines_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
+        make_index_list_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
     // Room for one visible piece per edge: most edges draw no object-space line, and few of those
     // that do are split by an occluder. Pieces beyond it are dropped (and reported by the read-back).
     object.frame.line_piece_capacity = uint32_t(edges.size()) + 256;
     object.frame.line_pieces =
-        make_lines_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
+        make_index_list_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
     write_object_descriptors(object);
 }
 
@@ -289,6 +293,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.toon) flags |= gpu::kFlagToonFade;
     if (p.two_sided) flags |= gpu::kFlagTwoSided;
     if (object.animation) flags |= gpu::kFlagStretch;
+    if (!depth_holds_back_faces(object)) flags |= gpu::kFlagDepthOneSided;
     const ObjectGeometry& g = object.geometry;
     if (draws_edge_lines(object)) {
         flags |= gpu::kFlagFacingBits;

@@ -27,6 +27,7 @@ struct ObjectGeometry {
     uint32_t index_count = 0;
     uint32_t triangle_count = 0;
     uint32_t stipple_count = 0;
+    float surface_area = 0.0f;  // object space, of the rest shape: the sum of its polygons' areas
     std::vector<uint32_t> first_stipple;  // per polygon, and one more: where the last one's candidates end
     float candidates(size_t triangle) const { return float(first_stipple[triangle + 1] - first_stipple[triangle]); }
 
@@ -69,6 +70,10 @@ struct ObjectFrame {
     gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU
     gpu::Buffer drawn_stipples;    // indirect and cpu paths: DrawCommand + the stipples drawing this frame
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
+    // DepthTriangles header + the triangles the depth pass draws this frame (render/depth_triangles.hpp),
+    // full size once the object first lists them
+    gpu::Buffer depth_triangles;
+    bool depth_listed = false;     // the depth pass draws that list this frame
     gpu::Buffer facing;            // one bit per polygon: it faces away this frame (objects with lines)
     gpu::Buffer line_candidates;   // LineCandidates + this frame's edges with an object-space line
     gpu::Buffer line_pieces;       // LinePiecesHeader + this frame's visible object-space line pieces
@@ -122,6 +127,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,
                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn,
                                              bool vec3_texels);
+
+// A buffer that a compute pass fills with an indexed indirect draw and its indices (header first).
+gpu::Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes);
 
 // Builds the object's edge table and the buffers its lines use (facing bits, the Raskar-Cohen index
 // list, the object-space line pieces) the first time it draws lines; the GPU must not be using the

@@ -29,6 +29,8 @@ static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
 static_assert(offsetof(SilhouetteLines, first_instance) == 16);
 static_assert(kSilhouetteLinesFirstIndex * sizeof(uint32_t) == sizeof(SilhouetteLines));  // indices right after it
 
+static_assert(sizeof(DepthTriangles) == kDepthTrianglesFirstIndex * sizeof(uint32_t));
+static_assert(offsetof(DepthTriangles, first_instance) == 16);
 static_assert(sizeof(LineCandidates) == 16);
 static_assert(offsetof(LineCandidates, count) == 12);
 static_assert(sizeof(LinePiecesHeader) == 32);

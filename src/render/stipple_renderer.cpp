@@ -39,7 +39,7 @@ StippleRenderer::~StippleRenderer() {
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, stipple_list_pipeline_,
                          density_pipeline_, density_list_pipeline_, facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
-                         line_pieces_pipeline_,
+                         line_pieces_pipeline_, depth_triangles_pipeline_,
                          splat_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -116,6 +116,8 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
+    depth_triangles_pipeline_ = gpu::create_compute_pipeline(context_, "depth_triangles.comp", layouts_.pipeline,
+                                                             {{{gpu::kSpecMeshVec3Texels, vec3_texels}}});
 }
 
 bool StippleRenderer::mesh_vec3_texels() const { return context_.features.vec3_texels && !options_.scalar_texels; }
@@ -191,6 +193,8 @@ void StippleRenderer::prepare(const FrameView& view) {
         object->frame.uniforms = make_object_uniforms(*object, view, object->frame.line_width);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
+        object->frame.depth_listed = uses_depth_triangles(*object, object->frame.uniforms, view, options_.depth_cull);
+        if (object->frame.depth_listed) ensure_depth_triangles(*object);
         if (density_on_cpu(object->params.density_path)) run_cpu_density(*object, frame_);
         stats_.triangles += object->geometry.triangle_count;
         stats_.candidate_stipples += object->geometry.stipple_count;
@@ -286,6 +290,27 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
+void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
+    const gpu::DepthTriangles empty{0u, 1u, gpu::kDepthTrianglesFirstIndex, 0, 0u, 0u, 0u, 0u};
+    for (auto& object : objects_)
+        if (object->frame.depth_listed)
+            vkCmdUpdateBuffer(cb, object->frame.depth_triangles.handle(), 0, sizeof empty, &empty);
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_triangles_pipeline_);
+    const uint32_t group = gpu::kDensityWorkgroupSize;
+    for (auto& object : objects_) {
+        if (!object->frame.depth_listed) continue;
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
+                                nullptr);
+        vkCmdDispatch(cb, (object->geometry.triangle_count + group - 1) / group, 1, 1);
+    }
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,
+                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT);
+}
+
 void StippleRenderer::record_depth(VkCommandBuffer cb) {
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {
@@ -305,8 +330,13 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
-        vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
+        if (object->frame.depth_listed) {  // the triangles that may cover a pixel centre (depth_triangles.comp)
+            vkCmdBindIndexBuffer(cb, object->frame.depth_triangles.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexedIndirect(cb, object->frame.depth_triangles.handle(), 0, 1, sizeof(gpu::DepthTriangles));
+        } else {
+            vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
+        }
     }
 }
 
@@ -345,6 +375,10 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     }
     record_density(cb);
     timer_.mark(cb, "density");
+    if (std::any_of(objects_.begin(), objects_.end(), [](const auto& o) { return o->frame.depth_listed; })) {
+        record_depth_triangles(cb);
+        timer_.mark(cb, "depth_list");
+    }
     const bool any_lines =
         std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_edge_lines(*o); });
     const bool any_splat = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return uses_splat(*o); });
@@ -601,6 +635,15 @@ std::vector<uint32_t> StippleRenderer::drawn_mask(size_t object) const {
 }  // namespace stipple
 
 namespace stipple {
+
+uint32_t StippleRenderer::read_depth_triangles(size_t index) const {
+    const ObjectGpu& object = *objects_.at(index);
+    if (!object.frame.depth_listed) return object.geometry.index_count / 3;
+    std::vector<std::byte> bytes = gpu::read_buffer(context_, object.frame.depth_triangles);
+    gpu::DepthTriangles header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    return header.index_count / 3;
+}
 
 std::vector<float> StippleRenderer::read_densities(size_t object) const {
     std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->frame.triangle_draw);

@@ -19,6 +19,7 @@
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
 #include "render/deform_pass.hpp"
+#include "render/depth_triangles.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/object_gpu.hpp"
 #include "params/object_params.hpp"
@@ -71,6 +72,9 @@ struct RendererOptions {
     // Read every object's mesh one float (index) per texel even where the device reads three-component
     // texel buffers (the variant for devices that do not): tests.
     bool scalar_texels = false;
+    // Whether an object's depth pass draws only the triangles that may cover a pixel centre (listed by a
+    // compute pass, render/depth_triangles.hpp): the same image, less work where triangles are small.
+    DepthCull depth_cull = DepthCull::Auto;
 };
 
 struct FrameStats {
@@ -116,6 +120,9 @@ public:
     std::vector<uint32_t> drawn_mask(size_t object) const;
     // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).
     std::vector<float> read_densities(size_t object) const;  // the last frame's
+    // The triangles the last frame's depth pass drew of an object: those its list kept, or all of them
+    // when it drew the whole mesh (render/depth_triangles.hpp). Read back: call after the frame completed.
+    uint32_t read_depth_triangles(size_t object) const;
     // The stipples the last frame drew of an object and that inked a pixel (record_visible only; the
     // object must have been drawn by the splat). Throws stipple::Error otherwise.
     std::vector<gpu::VisibleStipple> read_visible_stipples(size_t object) const;
@@ -139,6 +146,7 @@ private:
     void create_pipelines(VkFormat color_format, VkFormat depth_format);
     void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
+    void record_depth_triangles(VkCommandBuffer cb);  // the depth pass's lists (objects that draw one)
     void record_depth(VkCommandBuffer cb);
     void record_stipples(VkCommandBuffer cb);
     void record_line_edges(VkCommandBuffer cb);  // line_passes.cpp
@@ -165,6 +173,7 @@ private:
     VkPipeline density_pipeline_ = VK_NULL_HANDLE;
     VkPipeline density_list_pipeline_ = VK_NULL_HANDLE;  // also lists the polygons that draw, for the splat
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
+    VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
