@@ -169,5 +169,49 @@ TEST_F(DepthTriangles, AutoListsOnlySmallTriangles) {
     EXPECT_FALSE(draw(*context, fine, params, test::framed_view(bounds, kExtent, 4.0f), DepthCull::On).listed);
 }
 
+// The chooser's rounds, fed with made-up timings: it keeps the faster, times again after its hold or
+// when the scale changes, and forgets when nothing is to be listed.
+int frames_listed(DepthCullChooser& chooser, float px, int frames, double whole_ms, double listed_ms) {
+    int listed = 0;
+    for (int i = 0; i < frames; ++i) {
+        const bool list = chooser.next_frame(px);
+        listed += list;
+        chooser.frame_done(list ? listed_ms : whole_ms);
+    }
+    return listed;
+}
+
+TEST(DepthCullChooser, KeepsTheFasterAfterTimingBoth) {
+    DepthCullChooser chooser;
+    // Small triangles: the guess lists first; the frames say the whole draw is faster.
+    EXPECT_TRUE(chooser.next_frame(0.3f));
+    chooser.frame_done(10.0);  // untimed
+    const int round = kDepthCullTimedFrames;
+    EXPECT_EQ(frames_listed(chooser, 0.3f, round, 20.0, 30.0), round / 2);
+    EXPECT_EQ(frames_listed(chooser, 0.3f, kDepthCullHoldFrames - 1, 20.0, 30.0), 0);
+    // After the hold it times both again, and now the list is faster.
+    EXPECT_EQ(frames_listed(chooser, 0.3f, round + 1, 30.0, 20.0), round / 2 + 1);
+    EXPECT_EQ(frames_listed(chooser, 0.3f, 50, 30.0, 20.0), 50);
+    // The scale changes by more than half: a new round, starting from the new guess (whole at 1.5 px).
+    EXPECT_FALSE(chooser.next_frame(1.5f));
+    chooser.frame_done(30.0);
+    EXPECT_EQ(frames_listed(chooser, 1.5f, round, 30.0, 20.0), round / 2);
+    EXPECT_EQ(frames_listed(chooser, 1.5f, 20, 30.0, 20.0), 20);
+    // Nothing to list: no list, and a fresh round once something is.
+    EXPECT_FALSE(chooser.next_frame(0.0f));
+    EXPECT_FALSE(chooser.next_frame(1.5f));  // the guess again
+    // One slow frame does not decide: the fastest of each is compared.
+    DepthCullChooser noisy;
+    noisy.next_frame(0.5f);
+    noisy.frame_done(100.0);
+    double listed_times[] = {15.0, 40.0, 16.0};
+    double whole_times[] = {18.0, 19.0, 17.5};
+    for (int i = 0; i < round; ++i) {
+        const bool list = noisy.next_frame(0.5f);
+        noisy.frame_done(list ? listed_times[i / 2] : whole_times[i / 2]);
+    }
+    EXPECT_TRUE(noisy.next_frame(0.5f));
+}
+
 }  // namespace
 }  // namespace stipple

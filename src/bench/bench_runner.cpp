@@ -246,7 +246,9 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
             results.notes.push_back(note);
         }
 
-        StippleRenderer renderer(context, kColorFormat, context.depth_format);
+        RendererOptions renderer_options;
+        renderer_options.depth_cull = options.depth_cull;
+        StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
         start = Clock::now();
         renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
         model.upload_seconds = seconds_since(start);

@@ -55,8 +55,9 @@ Render options:
   --repeat N              after the image, time N more frames (no read-back) and print the median
                           frame time and GPU time per pass
   --depth-cull MODE        auto, on or off: the depth pass draws only the triangles that may cover a
-                          pixel centre, listed by a compute pass (the same image; auto when the
-                          model's triangles average under half a pixel on screen)
+                          pixel centre, listed by a compute pass (the same image). auto considers it
+                          for models whose triangles average under 2 px on screen and keeps it where
+                          the frames' GPU times show that it pays (default auto)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at
@@ -186,6 +187,7 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
                           not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
+  --depth-cull MODE       auto, on or off, as for render (default auto)
   --compare OLD.json      after the run, list the cells (fps, generation, plot order) more than 10%%
                           slower than in an earlier results.json, and those only one of the two has
   --plot-dots N           the plot-order row's blue-noise dots (default 150000, --quick 15000 without

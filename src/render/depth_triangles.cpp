@@ -1,5 +1,7 @@
 #include "render/depth_triangles.hpp"
 
+#include <algorithm>
+
 #include "render/descriptor_schema.hpp"
 #include "render/stipple_renderer.hpp"
 
@@ -31,12 +33,48 @@ float mean_front_triangle_px(const ObjectGpu& object, const gpu::ObjectUniforms&
     return 0.5f * world_area * pixels_per_unit * pixels_per_unit / float(g.triangle_count);
 }
 
-bool uses_depth_triangles(const ObjectGpu& object, const gpu::ObjectUniforms& uniforms, const FrameView& view,
-                          DepthCull mode) {
-    if (object.geometry.index_count == 0 || object.params.toon || mode == DepthCull::Off) return false;
-    if (mode == DepthCull::On) return true;
-    const float px = mean_front_triangle_px(object, uniforms, view);
-    return px > 0.0f && px < kDepthCullBelowPx;
+bool may_list_depth_triangles(const ObjectGpu& object) {
+    return object.geometry.index_count > 0 && !object.params.toon;
+}
+
+bool DepthCullChooser::next_frame(float mean_px) {
+    awaiting_ = false;
+    if (mean_px <= 0.0f) {  // nothing to list: start afresh when something is
+        phase_ = Phase::Timing;
+        fresh_ = true;
+        return listed_ = false;
+    }
+    if (phase_ == Phase::Holding) {
+        const float change = mean_px / decided_px_;
+        if (--hold_left_ > 0 && change < 1.5f && change > 1.0f / 1.5f) return listed_;
+        phase_ = Phase::Timing;
+        fresh_ = true;
+    }
+    if (fresh_) {
+        fresh_ = false;
+        guess_ = mean_px < kDepthCullBelowPx;
+        frame_ = 0;
+        best_ms_[0] = best_ms_[1] = 0.0;
+    }
+    // Frame 0 (untimed: a first frame pays for what later ones reuse) takes the guess, then the two
+    // alternate.
+    listed_ = frame_ % 2 == 0 ? guess_ : !guess_;
+    awaiting_ = true;
+    decided_px_ = mean_px;
+    return listed_;
+}
+
+void DepthCullChooser::frame_done(double depth_ms) {
+    if (!awaiting_ || phase_ != Phase::Timing) return;
+    awaiting_ = false;
+    if (frame_ > 0) {  // the fastest of each: a software GPU's frames vary by a fifth, upwards
+        double& best = best_ms_[listed_ ? 1 : 0];
+        best = best > 0.0 ? std::min(best, depth_ms) : depth_ms;
+    }
+    if (++frame_ <= kDepthCullTimedFrames) return;
+    listed_ = best_ms_[1] < best_ms_[0];
+    phase_ = Phase::Holding;
+    hold_left_ = kDepthCullHoldFrames;
 }
 
 void ensure_depth_triangles(ObjectGpu& object) {

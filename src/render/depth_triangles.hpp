@@ -13,25 +13,60 @@ namespace stipple {
 
 struct FrameView;
 
-// auto: list the triangles when they are small on screen (uses_depth_triangles); on/off: always/never.
+// auto: list the triangles of objects whose triangles are small on screen when the frames show that it
+// pays (DepthCullChooser); on: list every object's (toon ones excepted); off: never.
 enum class DepthCull { Auto, On, Off };
 const char* depth_cull_name(DepthCull mode);
 std::optional<DepthCull> parse_depth_cull(const std::string& name);
 
-// Below this mean projected area of a triangle facing the eye, in square pixels, auto lists them: the
-// listing pass reads each triangle as the depth pass would, so it pays only where most triangles
-// cover no pixel centre (a triangle of area a covers about a centres on average).
+// auto's first guess, before it has timed anything: list an object's triangles when their mean
+// projected area (facing the eye, square pixels) is under this. The listing pass reads every triangle,
+// so it pays only where many triangles cover no pixel centre (a triangle of area a covers about a
+// centres on average) and those cost the rasteriser more than the pass does.
 inline constexpr float kDepthCullBelowPx = 0.75f;
+// auto considers listing only below this mean area: above it nearly every triangle covers a centre.
+inline constexpr float kDepthCullConsiderPx = 2.0f;
 
 // The mean screen area, in square pixels, of the object's triangles that face the eye: for a closed
 // convex surface a quarter of its area faces the eye, carried by about half its triangles. From the
 // rest shape's area, the object's scale and the view depth of its centre; 0 when the eye is in it.
 float mean_front_triangle_px(const ObjectGpu& object, const gpu::ObjectUniforms& uniforms, const FrameView& view);
 
-// Whether the object's depth pass draws the list this frame. Toon objects shade in the depth pass and
+// Whether listing could change the object's depth pass at all: toon objects shade in the depth pass and
 // draw their whole mesh (ties between equal depths would follow the list's order).
-bool uses_depth_triangles(const ObjectGpu& object, const gpu::ObjectUniforms& uniforms, const FrameView& view,
-                          DepthCull mode);
+bool may_list_depth_triangles(const ObjectGpu& object);
+
+// auto's choice, from the frames' own GPU times. What a dropped triangle saves the rasteriser differs
+// from mesh to mesh and view to view (a front face between pixel centres costs it its setup; a face
+// away, culled by its winding, almost nothing), so no estimate from the geometry tells in advance
+// whether the list pays: the same 650k-triangle hand gained a third of its frame seen from one side and
+// nothing from another. The chooser starts with the estimate (kDepthCullBelowPx), then times
+// kDepthCullTimedFrames frames alternating between the two (the depth pass plus the list), keeps the
+// one whose fastest frame was faster for kDepthCullHoldFrames frames, and times both again after that or
+// once the view's scale has changed by more than half. The image is the same either way; only the time
+// changes.
+inline constexpr int kDepthCullTimedFrames = 6;
+inline constexpr int kDepthCullHoldFrames = 120;
+class DepthCullChooser {
+public:
+    // Before a frame: whether the objects considered (kDepthCullConsiderPx) list their triangles.
+    // `mean_px`: the smallest mean front-triangle area among them; 0 when none is considered.
+    bool next_frame(float mean_px);
+    // After the frame that next_frame chose for: the GPU milliseconds of its depth pass and list.
+    void frame_done(double depth_ms);
+
+private:
+    enum class Phase { Timing, Holding };
+    Phase phase_ = Phase::Timing;
+    bool fresh_ = true;           // nothing timed since objects were last considered
+    bool guess_ = false;          // the estimate's choice when the timing started (timed first)
+    bool listed_ = false;         // the last choice
+    bool awaiting_ = false;       // a choice made for a frame not yet reported
+    int frame_ = 0;                   // frames of this round so far (an untimed one, then the timed ones)
+    double best_ms_[2] = {0.0, 0.0};  // the fastest GPU ms timed, whole and listed (0: none yet)
+    int hold_left_ = 0;
+    float decided_px_ = 0.0f;     // the scale when the choice was made
+};
 
 // Grows the object's list to hold every triangle (rewriting its descriptor set); the GPU must not be
 // using the object (StippleRenderer::prepare's contract).

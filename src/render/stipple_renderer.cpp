@@ -193,13 +193,13 @@ void StippleRenderer::prepare(const FrameView& view) {
         object->frame.uniforms = make_object_uniforms(*object, view, object->frame.line_width);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
-        object->frame.depth_listed = uses_depth_triangles(*object, object->frame.uniforms, view, options_.depth_cull);
-        if (object->frame.depth_listed) ensure_depth_triangles(*object);
+        object->frame.depth_listed = false;
         if (density_on_cpu(object->params.density_path)) run_cpu_density(*object, frame_);
         stats_.triangles += object->geometry.triangle_count;
         stats_.candidate_stipples += object->geometry.stipple_count;
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
+    choose_depth_lists(view);
     DeformPass::evaluate(objects_);
 }
 
@@ -288,6 +288,25 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+}
+
+void StippleRenderer::choose_depth_lists(const FrameView& view) {
+    // The objects whose triangles are small enough to consider, and the smallest mean area among them.
+    float smallest_px = 0.0f;
+    for (auto& object : objects_) {
+        if (!may_list_depth_triangles(*object)) continue;
+        const float px = mean_front_triangle_px(*object, object->frame.uniforms, view);
+        if (options_.depth_cull == DepthCull::On || (px > 0.0f && px < kDepthCullConsiderPx)) {
+            object->frame.depth_listed = true;  // considered; the choice below may take it back
+            smallest_px = smallest_px > 0.0f ? std::min(smallest_px, px) : px;
+        }
+    }
+    bool list = options_.depth_cull == DepthCull::On;
+    if (options_.depth_cull == DepthCull::Auto) list = depth_cull_.next_frame(smallest_px);
+    for (auto& object : objects_) {
+        object->frame.depth_listed = object->frame.depth_listed && list;
+        if (object->frame.depth_listed) ensure_depth_triangles(*object);
+    }
 }
 
 void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
@@ -615,6 +634,10 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
 
 void StippleRenderer::collect() {
     stats_.gpu_ms = timer_.read();
+    double depth_ms = 0.0;  // what the depth lists change: the depth pass and the lists' own
+    for (const auto& [pass, ms] : stats_.gpu_ms)
+        if (pass == "depth" || pass == "depth_list") depth_ms += ms;
+    if (depth_ms > 0.0) depth_cull_.frame_done(depth_ms);
     if (!options_.count_drawn) return;
     stats_.drawn_stipples = 0;
     for (const auto& object : objects_) {

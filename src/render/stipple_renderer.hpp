@@ -146,6 +146,7 @@ private:
     void create_pipelines(VkFormat color_format, VkFormat depth_format);
     void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
+    void choose_depth_lists(const FrameView& view);   // which objects' depth passes draw a list this frame
     void record_depth_triangles(VkCommandBuffer cb);  // the depth pass's lists (objects that draw one)
     void record_depth(VkCommandBuffer cb);
     void record_stipples(VkCommandBuffer cb);
@@ -195,6 +196,7 @@ private:
     gpu::Buffer frame_uniforms_;
     gpu::FrameUniforms frame_{};
     gpu::GpuTimer timer_;
+    DepthCullChooser depth_cull_;  // --depth-cull auto's choice, from the frames' GPU times
     std::vector<std::unique_ptr<ObjectGpu>> objects_;
     FrameView view_;
     FrameStats stats_;
