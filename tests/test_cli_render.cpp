@@ -150,6 +150,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--shading-exponent", "0"}, "--shading-exponent"},
         {{"render", "--frobnicate"}, "--frobnicate"},
         {{"render", "--device", "99"}, "--device"},
+        {{"render", "--depth-cull", "sometimes"}, "--depth-cull"},
+        {{"bench", "--depth-cull", "1"}, "--depth-cull"},
         {{"info"}, "MODEL"},
         {{"parity", "--devices", "0,99"}, "--devices"},
         {{"parity", "--devices", "0"}, "--devices"},
@@ -162,6 +164,25 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         EXPECT_EQ(count_lines(result.err), 1u) << result.err;
         EXPECT_NE(result.err.find(c.expect), std::string::npos) << result.err;
     }
+}
+
+// --stats says how many triangles the depth pass drew: all of them with --depth-cull off, fewer with on
+// for the default scene seen from afar (its triangles then cover a few pixels at most).
+TEST(CliRender, StatsPrintTheDepthPassTriangles) {
+    const std::filesystem::path dir = test::temp_dir("cli-depth-cull");
+    auto depth_line = [&](const std::string& mode) {
+        auto r = run_stipple({"render", "-o", (dir / (mode + ".png")).string(), "--width", "320", "--height", "256",
+                              "--distance", "6", "--depth-cull", mode, "--stats"});
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const size_t at = r.out.find("depth pass:");
+        return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
+    };
+    const std::string off = depth_line("off"), on = depth_line("on");
+    EXPECT_NE(off.find("(100.0%; --depth-cull off)"), std::string::npos) << off;
+    ASSERT_NE(on.find("--depth-cull on"), std::string::npos) << on;
+    const double percent = std::stod(on.substr(on.find('(') + 1));
+    EXPECT_LT(percent, 60.0) << on;
+    EXPECT_GT(percent, 0.0) << on;
 }
 
 // `stipple parity` compares two devices' drawings (issue 17); CI has one, compared with itself: the
