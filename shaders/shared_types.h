@@ -154,14 +154,20 @@ struct SilhouetteEdge {
     uint second_polygon;
 };
 
-// This frame's silhouette lines: a VkDrawIndexedIndirectCommand, padding, then the index pairs of
-// the edges that border a back-facing polygon. The buffer is bound as index buffer at offset 0 and
-// the command's first_index (kSilhouetteLinesFirstIndex) skips the header: lavapipe (Mesa 22.3)
-// ignores the bound offset in indexed indirect draws, so a header skipped by that offset was drawn
-// as four lines, the first from vertex 1 to vertex `index_count` (usually out of range: the origin).
-STIPPLE_CONST uint kSilhouetteLinesHeaderBytes = 32;
-STIPPLE_CONST uint kSilhouetteLinesFirstIndex = kSilhouetteLinesHeaderBytes / 4;
-struct SilhouetteLines {
+// A list that a compute pass appends indices to and a draw then reads: a VkDrawIndexedIndirectCommand,
+// padding, then the indices. The buffer is bound as index buffer at offset 0 and the command's
+// first_index (kIndexListFirstIndex) skips the header: lavapipe (Mesa 22.3) ignores the bound offset in
+// indexed indirect draws, so a header skipped by that offset was drawn as four lines, the first from
+// vertex 1 to vertex `index_count` (usually out of range: the origin).
+//   SilhouetteLines: this frame's silhouette lines, the index pairs of the edges that border a
+//     back-facing polygon.
+//   DepthTriangles (kBindingDepthTriangles): the triangles the depth pass draws, three indices each.
+//     Most triangles of a mesh finer than the pixels cover no pixel centre, produce no fragment and
+//     change no depth, yet a software rasteriser sets each one up on its one geometry thread;
+//     shaders/depth_triangles.comp leaves them out.
+STIPPLE_CONST uint kIndexListHeaderBytes = 32;
+STIPPLE_CONST uint kIndexListFirstIndex = kIndexListHeaderBytes / 4;
+struct IndexList {
     uint index_count;
     uint instance_count;
     uint first_index;
@@ -169,6 +175,13 @@ struct SilhouetteLines {
     uint first_instance;
     uint pad0, pad1, pad2;
 };
+#ifdef __cplusplus
+using SilhouetteLines = IndexList;
+using DepthTriangles = IndexList;
+#else
+#define SilhouetteLines IndexList
+#define DepthTriangles IndexList
+#endif
 
 // Object-space lines (beyond the paper): line_edges.comp walks each contour, border and crease edge
 // across the screen in pixel steps against the depth pass and appends the pieces it finds visible,
@@ -236,22 +249,6 @@ struct DrawCommand {
     uint first_vertex;
     uint first_instance;
 };
-
-// The depth pass's list of triangles (kBindingDepthTriangles): this header, an indexed indirect draw
-// (VkDrawIndexedIndirectCommand and 12 bytes of padding), then the kept triangles' vertex indices,
-// three uints each. Bound as the index buffer at offset 0, the header skipped by first_index, as
-// SilhouetteLines' is (lavapipe ignores the bound offset of indexed indirect draws). Most triangles of
-// a mesh finer than the pixels cover no pixel centre, produce no fragment and change no depth, yet a
-// software rasteriser sets each one up on its one geometry thread; the list leaves them out.
-struct DepthTriangles {
-    uint index_count;
-    uint instance_count;
-    uint first_index;
-    int vertex_offset;
-    uint first_instance;
-    uint pad0, pad1, pad2;
-};
-STIPPLE_CONST uint kDepthTrianglesFirstIndex = 8;  // the header's 32 bytes, in indices
 
 struct FrameUniforms {
     mat4 view_proj;      // world -> clip

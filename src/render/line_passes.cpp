@@ -55,7 +55,7 @@ void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
         // One instance, no indices yet; the indices follow the header (shared_types.h: why not a bind offset).
-        const gpu::SilhouetteLines empty{0u, 1u, gpu::kSilhouetteLinesFirstIndex, 0, 0u, 0u, 0u, 0u};
+        const gpu::SilhouetteLines empty{0u, 1u, gpu::kIndexListFirstIndex, 0, 0u, 0u, 0u, 0u};
         vkCmdUpdateBuffer(cb, object->frame.silhouette_lines.handle(), 0, sizeof empty, &empty);
         if (!draws_object_space_lines(object->params)) continue;
         any_walk = true;

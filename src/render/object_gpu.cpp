@@ -223,7 +223,7 @@ void ensure_line_buffers(ObjectGpu& object) {
     geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges),
                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     object.frame.silhouette_lines =
-        make_index_list_buffer(context, gpu::kSilhouetteLinesHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
+        make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
     object.frame.line_candidates =

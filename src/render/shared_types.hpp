@@ -25,12 +25,10 @@ static_assert(offsetof(DrawnPolygons, count) == 12);
 
 static_assert(sizeof(SilhouetteEdge) == 16);
 static_assert(offsetof(SilhouetteEdge, second_polygon) == 12);
-static_assert(sizeof(SilhouetteLines) == kSilhouetteLinesHeaderBytes);
-static_assert(offsetof(SilhouetteLines, first_instance) == 16);
-static_assert(kSilhouetteLinesFirstIndex * sizeof(uint32_t) == sizeof(SilhouetteLines));  // indices right after it
+static_assert(sizeof(IndexList) == kIndexListHeaderBytes);
+static_assert(offsetof(IndexList, first_instance) == 16);
+static_assert(kIndexListFirstIndex * sizeof(uint32_t) == sizeof(IndexList));  // indices right after it
 
-static_assert(sizeof(DepthTriangles) == kDepthTrianglesFirstIndex * sizeof(uint32_t));
-static_assert(offsetof(DepthTriangles, first_instance) == 16);
 static_assert(sizeof(LineCandidates) == 16);
 static_assert(offsetof(LineCandidates, count) == 12);
 static_assert(sizeof(LinePiecesHeader) == 32);

@@ -310,7 +310,7 @@ void StippleRenderer::choose_depth_lists(const FrameView& view) {
 }
 
 void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
-    const gpu::DepthTriangles empty{0u, 1u, gpu::kDepthTrianglesFirstIndex, 0, 0u, 0u, 0u, 0u};
+    const gpu::DepthTriangles empty{0u, 1u, gpu::kIndexListFirstIndex, 0, 0u, 0u, 0u, 0u};
     for (auto& object : objects_)
         if (object->frame.depth_listed)
             vkCmdUpdateBuffer(cb, object->frame.depth_triangles.handle(), 0, sizeof empty, &empty);
