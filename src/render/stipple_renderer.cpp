@@ -261,9 +261,11 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     if (any_pass || any_facing) {
         // After the copies and fills above, also for the facing-only variant: it binds the densities the
         // CPU just copied, and a shader that can write a buffer is ordered after its transfers.
+        // The pass reads the first stipples through the densities' texel view (a sampled read).
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0) continue;
             if (!density_on_cpu(object->params.density_path))
