@@ -152,6 +152,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--device", "99"}, "--device"},
         {{"render", "--depth-cull", "sometimes"}, "--depth-cull"},
         {{"bench", "--depth-cull", "1"}, "--depth-cull"},
+        {{"view", "--depth-cull", "often"}, "--depth-cull"},
         {{"info"}, "MODEL"},
         {{"parity", "--devices", "0,99"}, "--devices"},
         {{"parity", "--devices", "0"}, "--devices"},

@@ -33,6 +33,13 @@ using Clock = std::chrono::steady_clock;
 
 constexpr long long kWarmupFrames = 10;  // --benchmark-frames: the first frames compile shaders, fault in memory
 
+RendererOptions renderer_options(const ViewerOptions& options) {
+    RendererOptions r;
+    r.count_drawn = options.count_drawn;
+    r.depth_cull = options.depth_cull;
+    return r;
+}
+
 double ms_between(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
@@ -79,7 +86,7 @@ public:
           context_(context_options(options)),
           surface_(context_, window_),
           swapchain_(context_, surface_.handle),
-          renderer_(context_, swapchain_.format(), context_.depth_format, RendererOptions{options.count_drawn}),
+          renderer_(context_, swapchain_.format(), context_.depth_format, renderer_options(options)),
           live_(std::move(scene), std::move(content), renderer_),
           screenshot_(context_),
           vsync_(options.vsync),

@@ -16,7 +16,7 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames", "--script", "--frame-log", "--animation", "--time"});
+                    "--save-scene", "--benchmark-frames", "--script", "--frame-log", "--animation", "--time", "--depth-cull"});
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -30,6 +30,9 @@ int run_view(const std::vector<std::string>& argv) {
     viewer.vsync = !args.flag("--no-vsync");
     viewer.panel = !args.flag("--no-panel");
     viewer.count_drawn = !args.flag("--no-count-drawn");
+    const std::string depth_cull = args.get("--depth-cull", "auto");
+    if (!parse_depth_cull(depth_cull)) fail("--depth-cull = " + depth_cull + " must be auto, on or off");
+    viewer.depth_cull = *parse_depth_cull(depth_cull);
     viewer.verbose = args.flag("--verbose");
     viewer.device_index = int(args.integer("--device", -1));
     viewer.screenshot_dir = args.get("--screenshot-dir", ".");

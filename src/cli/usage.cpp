@@ -98,6 +98,7 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --no-vsync              present without waiting for the display (MAILBOX or IMMEDIATE) from the start
   --no-panel              start with the panel hidden
   --no-count-drawn        do not count drawn stipples on the GPU (saves an atomic per stipple)
+  --depth-cull MODE       auto, on or off, as for render (default auto)
   --screenshot-dir DIR    where S writes screenshots, stipple-0001.png, ... (default: .)
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
