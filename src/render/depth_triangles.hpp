@@ -39,8 +39,8 @@ bool may_list_depth_triangles(const ObjectGpu& object);
 // auto's choice, from the frames' own GPU times. What a dropped triangle saves the rasteriser differs
 // from mesh to mesh and view to view (a front face between pixel centres costs it its setup; a face
 // away, culled by its winding, almost nothing), so no estimate from the geometry tells in advance
-// whether the list pays: the same 650k-triangle hand gained a third of its frame seen from one side and
-// nothing from another. The chooser starts with the estimate (kDepthCullBelowPx), then times
+// whether the list pays, nor does it stay put: the same 650k-triangle hand at the same view gained a
+// third of its frame in one run and nothing in another (its whole depth pass took 38 ms or 65). The chooser starts with the estimate (kDepthCullBelowPx), then times
 // kDepthCullTimedFrames frames alternating between the two (the depth pass plus the list), keeps the
 // one whose fastest frame was faster for kDepthCullHoldFrames frames, and times both again after that or
 // once the view's scale has changed by more than half. The image is the same either way; only the time
