@@ -15,6 +15,7 @@
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
 layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
+layout(constant_id = kSpecFacingBits) const bool kFacingBits = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -69,7 +70,8 @@ void main() {
     uvec4 raw = texelFetch(info_texels, int(in_range ? t : 0u));
     TriangleInfo info = TriangleInfo(raw.x, raw.y, raw.z, uintBitsToFloat(raw.w));
     PolygonView p = polygon_view(info, candidates, object);
-    if ((flags & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);  // uniform: the barriers are safe
+    // Uniform (the barriers are safe); compiled only into the variants for objects with lines (kSpecFacingBits).
+    if ((kFacingBits || kFacingOnly) && (flags & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);
     if (kFacingOnly || !in_range) return;
     if ((flags & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);
     DensityParams q = density_params(frame, object);

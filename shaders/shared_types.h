@@ -47,6 +47,10 @@ STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
+// density.comp: the variant that can write the facing bits (objects with lines). Its barriers cost lavapipe
+// a quarter of the pass even where the flag leaves them unused (it runs a shader with barriers as
+// coroutines), so the objects without lines run a variant without them.
+STIPPLE_CONST uint kSpecFacingBits = 2;
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)

@@ -37,7 +37,8 @@ StippleRenderer::~StippleRenderer() {
     objects_.clear();
     deform_pass_.reset();
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, stipple_list_pipeline_,
-                         density_pipeline_, density_list_pipeline_, facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
+                         density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
+                         density_list_pipelines_[1], facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
                          line_pieces_pipeline_, depth_triangles_pipeline_,
                          splat_pipeline_})
@@ -97,9 +98,12 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon.cull_mode = VK_CULL_MODE_NONE;  // toon.frag flips the normal of faces seen from behind
     toon_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
 
-    density_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline);
-    density_list_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
-                                                          {{{gpu::kSpecListDrawn, 1u}}});
+    for (uint32_t facing : {0u, 1u}) {  // [1]: the variants that write the facing bits (objects with lines)
+        density_pipelines_[facing] = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
+                                                                  {{{gpu::kSpecFacingBits, facing}}});
+        density_list_pipelines_[facing] = gpu::create_compute_pipeline(
+            context_, "density.comp", layouts_.pipeline, {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}}});
+    }
     facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                     {{{gpu::kSpecFacingOnly, 1u}}});
     create_line_pipelines(depth);
@@ -268,8 +272,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0) continue;
-            if (!density_on_cpu(object->params.density_path))
-                dispatch(*object, uses_splat(*object) ? density_list_pipeline_ : density_pipeline_);
+            if (!density_on_cpu(object->params.density_path)) {
+                const size_t facing = draws_edge_lines(*object) ? 1 : 0;
+                dispatch(*object, uses_splat(*object) ? density_list_pipelines_[facing] : density_pipelines_[facing]);
+            }
             else if (draws_edge_lines(*object))
                 dispatch(*object, facing_pipeline_);  // the lines' facing bits
         }

@@ -171,8 +171,9 @@ private:
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
     VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;       // every candidate; the vertex shader culls (§3.2)
     VkPipeline stipple_list_pipeline_ = VK_NULL_HANDLE;  // the survivors' list (indirect and cpu paths)
-    VkPipeline density_pipeline_ = VK_NULL_HANDLE;
-    VkPipeline density_list_pipeline_ = VK_NULL_HANDLE;  // also lists the polygons that draw, for the splat
+    // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
+    VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
