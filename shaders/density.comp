@@ -28,21 +28,20 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
 };
-layout(set = 0, binding = kBindingFacing, std430) writeonly buffer Facing { uint facing_away[]; };
+layout(set = 0, binding = kBindingFacing, std430) buffer Facing { uint facing_away[]; };
 
-const uint kWordsPerGroup = kDensityWorkgroupSize / 32u;
-shared uint group_facing[kWordsPerGroup];
-
-// The group's facing bits gathered in shared memory, then written as whole words (no clear, no
-// global atomics). Called by every invocation of the group (it holds barriers).
+// The subgroup's facing bits from one ballot, or-ed into the words the renderer cleared before the pass:
+// an atomic per subgroup and word, and no barrier (a shader with barriers costs lavapipe a quarter of
+// the pass: it runs it as coroutines). A subgroup's invocations are consecutive polygons starting at a
+// multiple of its size, so its bits fill part of one word, or whole words. Called by every invocation
+// of the subgroup.
 void write_facing_bits(bool in_range, PolygonView p) {
-    uint local = gl_LocalInvocationIndex;
-    if (local < kWordsPerGroup) group_facing[local] = 0u;
-    barrier();
-    if (in_range && polygon_faces_away(p.center, p.normal)) atomicOr(group_facing[local >> 5u], 1u << (local & 31u));
-    barrier();
-    uint word = gl_WorkGroupID.x * kWordsPerGroup + local;
-    if (local < kWordsPerGroup && word < (object.flags.y + 31u) / 32u) facing_away[word] = group_facing[local];
+    uvec4 bits = subgroupBallot(in_range && polygon_faces_away(p.center, p.normal));
+    uint first = gl_GlobalInvocationID.x - gl_SubgroupInvocationID;  // the subgroup's first polygon
+    if (!subgroupElect()) return;
+    uint words = (gl_SubgroupSize + 31u) / 32u;
+    for (uint k = 0u; k < words && k < 4u; ++k)
+        if (bits[k] != 0u) atomicOr(facing_away[(first >> 5u) + k], bits[k] << (first & 31u));
 }
 
 // n consecutive slots of the work list; the splat's dispatch gains the workgroups that start in them.
@@ -70,7 +69,8 @@ void main() {
     uvec4 raw = texelFetch(info_texels, int(in_range ? t : 0u));
     TriangleInfo info = TriangleInfo(raw.x, raw.y, raw.z, uintBitsToFloat(raw.w));
     PolygonView p = polygon_view(info, candidates, object);
-    // Uniform (the barriers are safe); compiled only into the variants for objects with lines (kSpecFacingBits).
+    // Compiled only into the variants for objects with lines (kSpecFacingBits); uniform, so every
+    // invocation of a subgroup takes part in its ballot.
     if ((kFacingBits || kFacingOnly) && (flags & kFlagFacingBits) != 0u) write_facing_bits(in_range, p);
     if (kFacingOnly || !in_range) return;
     if ((flags & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);

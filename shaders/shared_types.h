@@ -47,9 +47,7 @@ STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
-// density.comp: the variant that can write the facing bits (objects with lines). Its barriers cost lavapipe
-// a quarter of the pass even where the flag leaves them unused (it runs a shader with barriers as
-// coroutines), so the objects without lines run a variant without them.
+// density.comp: the variant that writes the facing bits (objects with lines); the others skip its ballot.
 STIPPLE_CONST uint kSpecFacingBits = 2;
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
@@ -66,7 +64,7 @@ STIPPLE_CONST uint kBindingMeshIndices = 9;    // texel buffer: the mesh's trian
 STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + VisibleStipple[] (storage), when recording
-STIPPLE_CONST uint kBindingFacing = 13;           // uint[] (storage): one bit per polygon, set when it faces away
+STIPPLE_CONST uint kBindingFacing = 13;           // uint[] (storage): one bit per polygon, set when it faces away (cleared, then or-ed)
 STIPPLE_CONST uint kBindingLinePieces = 14;       // LinePiecesHeader + LinePiece[] (storage): visible object-space lines
 STIPPLE_CONST uint kBindingLineCandidates = 15;   // LineCandidates + uint[] (storage): the edges to walk this frame
 // float[] (storage), per polygon, constant: the object-space area at which all of its candidates are due

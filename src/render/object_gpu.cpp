@@ -225,7 +225,8 @@ void ensure_line_buffers(ObjectGpu& object) {
     object.frame.silhouette_lines =
         make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 MemoryUse::DeviceLocal);
     object.frame.line_candidates =
         make_index_list_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
     // Room for one visible piece per edge: most edges draw no object-space line, and few of those

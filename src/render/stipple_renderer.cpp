@@ -236,6 +236,8 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
         if (options_.count_drawn) vkCmdFillBuffer(cb, object->frame.debug.handle(), 0, VK_WHOLE_SIZE, 0);
         if (options_.record_visible)
             vkCmdFillBuffer(cb, object->frame.visible_stipples.handle(), 0, sizeof(gpu::VisibleStipplesHeader), 0);
+        if (draws_edge_lines(*object))  // the density pass or-s each subgroup's facing bits into it
+            vkCmdFillBuffer(cb, object->frame.facing.handle(), 0, VK_WHOLE_SIZE, 0);
         object->frame.splatted = uses_splat(*object);
         const bool splat = uses_splat(*object);
         if (density_on_cpu(object->params.density_path)) {  // the densities, then the list the CPU wrote
