@@ -46,6 +46,12 @@ STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons wi
 STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
+// splat.comp: round dots (kFlagRoundPoints), and print detail's whole dots (FrameView::detail_scale > 1).
+// Variants, not runtime flags: lavapipe runs both sides of a branch under a mask, so the code of a
+// feature that is off still cost every stipple (the bunny's splat 4.6-5.2 ms with them as flags,
+// 3.9-4.9 without).
+STIPPLE_CONST uint kSpecRoundPoints = 4;
+STIPPLE_CONST uint kSpecWholeDot = 5;
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 // density.comp: the variant that writes the facing bits (objects with lines); the others skip its ballot.
 STIPPLE_CONST uint kSpecFacingBits = 2;

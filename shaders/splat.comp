@@ -20,13 +20,14 @@
 #include "stipple_formulas.h"
 #include "stipple_position.h"
 #include "triangle_draws.h"
-#include "uniform_branch.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 // The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
 layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 layout(constant_id = kSpecRecordVisible) const bool kRecordVisible = false;
+layout(constant_id = kSpecRoundPoints) const bool kRoundPoints = false;  // discs, not squares
+layout(constant_id = kSpecWholeDot) const bool kWholeDot = false;  // print detail (see splat)
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -94,8 +95,6 @@ void ink_pixel(uint at, float intensity, uint ink_word, bool full) {
 // costs the loop over the lanes that any load does on a software GPU.
 struct SplatConstants {
     vec2 size;          // the viewport
-    bool round_points;  // discs, not squares
-    bool whole_dot;     // print detail (see splat)
     uint ink_word;      // a whole stipple's word
 };
 
@@ -114,12 +113,12 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
-    bool round_points = c.round_points;
+    const bool round_points = kRoundPoints;
     // Print detail (frame.projection.w > 1): a stipple is a disc many pixels wide while the depth pass's
     // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
     // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
     // its pixels only need a surface under them (it stops at the outline, as the screen's points do).
-    bool whole_dot = c.whole_dot;
+    const bool whole_dot = kWholeDot;
     if (whole_dot) {
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
         if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
@@ -197,9 +196,7 @@ void main() {
     uint end = min(drawn_here, begin + splat_run_length(drawn_here));
     float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
-    const uint zero = unfoldable_zero();  // object.flags.x and frame.projection.w, see uniform_branch.h
-    SplatConstants c = SplatConstants(frame.viewport.xy, (object.flags[zero] & kFlagRoundPoints) != 0u,
-                                      frame.projection[3u + zero] > 1.0, pack_color(frame.ink_color.rgb, 0.0));
+    SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0));
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)

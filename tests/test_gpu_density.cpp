@@ -14,6 +14,7 @@
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
 #include "support/test_paths.hpp"
+#include "support/test_shapes.hpp"
 
 namespace stipple {
 namespace {
@@ -285,6 +286,36 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     EXPECT_GT(test::popcount(out.masks[0]), 10000u);
     EXPECT_LT(test::popcount(out.masks[0]), blob.stipples.size());
     expect_same_stipples_and_images(out);
+}
+
+// Dots above 2.5 px are discs (round points; the splat's kSpecRoundPoints variant). On a flat disc
+// facing the eye (no pixel of a dot hidden by its own surface's curvature), the splat inks as many
+// pixels per drawn dot as the rasteriser's round points do; squares would ink about a fifth more.
+TEST_F(DensityPaths, TheSplatDrawsLargeDotsAsDiscs) {
+    ObjectParams params;
+    params.point_size = 6.0f;
+    params.generation.dmax = 0.01f;
+    params.shading = false;
+    Prepared disc = test::prepare(test::make_disc(64, 16), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
+    renderer.add_object(disc.mesh, disc.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {640, 512});
+    const FrameView view = test::framed_view(compute_bounding_sphere(disc.mesh), target.extent(), 1.0f, 0.0f, 0.0f);
+    double per_dot[2] = {0.0, 0.0};
+    const DensityPath paths[2] = {DensityPath::Vertex, DensityPath::Splat};
+    for (int i = 0; i < 2; ++i) {
+        renderer.params(0).density_path = paths[i];
+        const RenderedFrame frame = target.render(renderer, view);
+        size_t inked = 0;
+        for (size_t p = 0; p < frame.depth.size(); ++p) inked += frame.color.pixels[4 * p] < 128;
+        const double drawn = double(renderer.stats().drawn_stipples);
+        ASSERT_GT(drawn, 1000.0);
+        per_dot[i] = double(inked) / drawn;
+        std::printf("%s path: %.0f dots, %.2f inked pixels each\n", density_path_name(paths[i]), drawn, per_dot[i]);
+    }
+    EXPECT_NEAR(per_dot[1] / per_dot[0], 1.0, 0.03);
 }
 
 TEST_F(DensityPaths, EveryPathReadsTheMeshAlikeAFloatOrAVertexPerTexel) {

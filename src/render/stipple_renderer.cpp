@@ -40,8 +40,8 @@ StippleRenderer::~StippleRenderer() {
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
                          density_list_pipelines_[1], facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
-                         line_pieces_pipeline_, depth_triangles_pipeline_,
-                         splat_pipeline_})
+                         line_pieces_pipeline_, depth_triangles_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
+                         splat_pipelines_[2], splat_pipelines_[3]})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     destroy_render_layouts(context_, layouts_);
@@ -111,17 +111,26 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     const uint32_t record = options_.record_visible ? 1u : 0u;
-    splat_pipeline_ = gpu::create_compute_pipeline(
-        context_, "splat.comp", layouts_.splat_pipeline,
-        {{{gpu::kSpecCountDrawn, count},
-          {gpu::kSpecDepthUnorm24, unorm24},
-          {gpu::kSpecRecordVisible, record},
-          {gpu::kSpecMeshVec3Texels, vec3_texels}}});
+    splat_specialization_ = {{{gpu::kSpecCountDrawn, count},
+                              {gpu::kSpecDepthUnorm24, unorm24},
+                              {gpu::kSpecRecordVisible, record},
+                              {gpu::kSpecMeshVec3Texels, vec3_texels}}};
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
     depth_triangles_pipeline_ = gpu::create_compute_pipeline(context_, "depth_triangles.comp", layouts_.pipeline,
                                                              {{{gpu::kSpecMeshVec3Texels, vec3_texels}}});
+}
+
+VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots) {
+    // Made the first time a frame needs it: most runs use one of the four.
+    VkPipeline& pipeline = splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0)];
+    if (pipeline) return pipeline;
+    gpu::Specialization specialization = splat_specialization_;
+    specialization.constants.push_back({gpu::kSpecRoundPoints, round_points ? 1u : 0u});
+    specialization.constants.push_back({gpu::kSpecWholeDot, whole_dots ? 1u : 0u});
+    pipeline = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline, specialization);
+    return pipeline;
 }
 
 bool StippleRenderer::mesh_vec3_texels() const { return context_.features.vec3_texels && !options_.scalar_texels; }
@@ -611,8 +620,10 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     VkPipeline bound = VK_NULL_HANDLE;
     for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
         if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
-        if (!bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, splat_pipeline_);
-        bound = splat_pipeline_;
+        const bool round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+        const VkPipeline pipeline = splat_pipeline(round, view_.detail_scale > 1.0f);
+        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+        bound = pipeline;
         VkDescriptorSet sets[] = {object->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
                                 nullptr);

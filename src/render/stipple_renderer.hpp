@@ -158,6 +158,7 @@ private:
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
+    VkPipeline splat_pipeline(bool round_points, bool whole_dots);
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
     bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
     void ensure_visible_list(ObjectGpu& object);       // record_visible: room for every candidate
@@ -185,7 +186,10 @@ private:
     VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
     VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
-    VkPipeline splat_pipeline_ = VK_NULL_HANDLE;  // draws the densities of the GPU's pass or the CPU's
+    // Draws the densities of the GPU's pass or the CPU's: [round dots + 2 * print detail's whole dots]
+    // (kSpecRoundPoints, kSpecWholeDot), each made when a frame first needs it (splat_pipeline).
+    VkPipeline splat_pipelines_[4] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
+    gpu::Specialization splat_specialization_;  // the constants the four share
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
