@@ -114,7 +114,7 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
     const bool round_points = kRoundPoints;
-    // Print detail (frame.projection.w > 1): a stipple is a disc many pixels wide while the depth pass's
+    // Print detail (kWholeDot: FrameView::detail_scale > 1): a stipple is a disc many pixels wide while the depth pass's
     // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
     // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
     // its pixels only need a surface under them (it stops at the outline, as the screen's points do).

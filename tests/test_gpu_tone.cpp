@@ -146,8 +146,15 @@ INSTANTIATE_TEST_SUITE_P(
         name = name.substr(0, name.find('.'));
         for (char& ch : name)
             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-        name += "_" + std::to_string(info.param.width) + "x" + std::to_string(info.param.height);
-        if (info.param.dmax > 0.0f) name += "_dmax" + std::to_string(int(std::lround(info.param.dmax * 100.0f)));
+        // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "_" + std::string&&.
+        name += '_';
+        name += std::to_string(info.param.width);
+        name += 'x';
+        name += std::to_string(info.param.height);
+        if (info.param.dmax > 0.0f) {
+            name += "_dmax";
+            name += std::to_string(int(std::lround(info.param.dmax * 100.0f)));
+        }
         return name;
     });
 

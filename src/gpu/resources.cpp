@@ -237,12 +237,12 @@ std::vector<Buffer> upload_staged(const Context& context, std::span<const Staged
     return buffers;
 }
 
-std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer) {
-    std::vector<std::byte> bytes(buffer.size());
+std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer, VkDeviceSize size) {
+    std::vector<std::byte> bytes(std::min(size, buffer.size()));
     if (bytes.empty()) return bytes;
-    Buffer staging(context, buffer.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+    Buffer staging(context, bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     VkCommandBuffer cb = context.begin_one_shot();
-    VkBufferCopy region{0, 0, buffer.size()};
+    VkBufferCopy region{0, 0, bytes.size()};
     vkCmdCopyBuffer(cb, buffer.handle(), staging.handle(), 1, &region);
     buffer_barrier(cb, staging.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);

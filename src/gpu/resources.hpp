@@ -107,8 +107,8 @@ Buffer create_device_buffer(const Context& context, std::span<const T> data, VkB
     return create_device_buffer(context, std::as_bytes(data), usage);
 }
 
-// Copies a buffer's contents back to the host (waits). The buffer needs TRANSFER_SRC usage.
-std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer);
+// Copies a buffer's contents back to the host (waits), or its first `bytes`. The buffer needs TRANSFER_SRC usage.
+std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer, VkDeviceSize bytes = VK_WHOLE_SIZE);
 
 // Image layout transition with a full pipeline barrier between the two stages (synchronization2).
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,

@@ -683,7 +683,7 @@ namespace stipple {
 uint32_t StippleRenderer::read_depth_triangles(size_t index) const {
     const ObjectGpu& object = *objects_.at(index);
     if (!object.frame.depth_listed) return object.geometry.index_count / 3;
-    std::vector<std::byte> bytes = gpu::read_buffer(context_, object.frame.depth_triangles);
+    const std::vector<std::byte> bytes = gpu::read_buffer(context_, object.frame.depth_triangles, sizeof(gpu::DepthTriangles));
     gpu::DepthTriangles header;
     std::memcpy(&header, bytes.data(), sizeof header);
     return header.index_count / 3;
