@@ -91,6 +91,12 @@ STIPPLE_CONST uint kBindingDepthTriangles = 19;
 STIPPLE_CONST uint kBindingSplatBackground = 0;  // uint[]: the frame's colour before the splat (read only)
 STIPPLE_CONST uint kBindingSceneDepth = 1;       // uint[]: the depth pass's depth words (X8_D24 or float bits)
 STIPPLE_CONST uint kBindingColorBuffer = 2;      // uint[]: the frame's colour, packed 8-bit channels
+// uint[]: per pixel, the summed optical depth -log2(1 - intensity) of the large fractional stipples
+// inked there this frame, in units of 1/kSplatOpticalDepthScale (zeroed before the splat; splat.comp)
+STIPPLE_CONST uint kBindingSplatCover = 3;
+STIPPLE_CONST float kSplatOpticalDepthScale = 65536.0;
+// A fractional stipple's optical depth is capped here: 2^-9 of paper left is under half a level of 8 bits.
+STIPPLE_CONST float kSplatMaxOpticalDepth = 9.0;
 
 // Bits of ObjectUniforms.flags.
 STIPPLE_CONST uint kFlagShading = 1u;          // §2.2 (N.L)^n

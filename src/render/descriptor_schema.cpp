@@ -47,6 +47,7 @@ const gpu::DescriptorBinding kSplatFrameBindings[] = {
     {gpu::kBindingSplatBackground, kStorage},
     {gpu::kBindingSceneDepth, kStorage},
     {gpu::kBindingColorBuffer, kStorage},
+    {gpu::kBindingSplatCover, kStorage},
 };
 
 std::vector<gpu::DescriptorBinding> object_descriptor_bindings() {

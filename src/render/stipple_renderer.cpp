@@ -532,12 +532,14 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
         splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal);
         splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_cover_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
         splat_extent_ = extent;
     }
     splat_in_words_ = words;
-    // In the order of splat_frame_bindings(): background, scene depth, colour. The previous frame has completed.
+    // In the order of splat_frame_bindings(): background, scene depth, colour, cover. The previous frame
+    // has completed.
     const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(),
-                                      words ? targets.color_words : splat_color_.handle()};
+                                      words ? targets.color_words : splat_color_.handle(), splat_cover_.handle()};
     gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
 }
 
@@ -609,6 +611,11 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
             vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
         }
     }
+    // Overlapping fractional large dots compose through their summed optical depth (splat.comp).
+    bool any_round = false;
+    for (const auto& object : objects_)
+        any_round |= uses_splat(*object) && (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+    if (any_round) vkCmdFillBuffer(cb, splat_cover_.handle(), 0, pixels * 4, 0u);
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -618,7 +625,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
     vkCmdPushConstants(cb, layouts_.splat_pipeline, gpu::kPushConstantStages, 0, sizeof push, push);
     VkPipeline bound = VK_NULL_HANDLE;
-    for (const auto& object : objects_) {  // objects in one pass: each pixel keeps its strongest stipple
+    for (const auto& object : objects_) {  // objects in one pass, in any order: the same image
         if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
         const bool round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
         const VkPipeline pipeline = splat_pipeline(round, view_.detail_scale > 1.0f);

@@ -194,6 +194,7 @@ private:
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
     gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it (targets without words)
+    gpu::Buffer splat_cover_;       // the fractional stipples' summed optical depth per pixel (splat.comp)
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
     VkExtent2D splat_extent_{};
     bool splat_in_words_ = false;  // the splat's colour binding holds a target's words (RenderTargets::color_words)
