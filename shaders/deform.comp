@@ -8,7 +8,9 @@
 
 layout(local_size_x = kDeformWorkgroupSize) in;
 
-layout(set = 0, binding = kBindingDeformVertices, std430) readonly buffer Vertices { DeformVertex vertices[]; };
+// DeformVertex[] as five RGBA32UI texels a vertex (a software GPU gathers a texel at once, where it
+// loads a storage buffer's members lane by lane); the last, weights1, is read only with over 4 pairs.
+layout(set = 0, binding = kBindingDeformVertices) uniform usamplerBuffer vertex_texels;
 layout(set = 0, binding = kBindingDeformMorphDeltas, std430) readonly buffer Deltas { MorphDelta deltas[]; };
 // Three texels per slot: the top three rows of its affine matrix (the fourth is always 0 0 0 1). A
 // texel buffer rather than a storage buffer: a software GPU gathers a texel's four floats at once.
@@ -45,29 +47,31 @@ void add_influence(inout Blend m, float weight, uint slot) {
 void main() {
     uint v = gl_GlobalInvocationID.x;
     if (v >= push.vertex_count) return;
-    DeformVertex vertex = vertices[v];
+    int texel = int(5u * v);
+    uvec4 position_morph = texelFetch(vertex_texels, texel);      // position, morph_first
+    uvec4 normal_weights = texelFetch(vertex_texels, texel + 1);  // normal, morph_weights
 
-    vec3 position = vertex.position;
-    vec3 normal = vertex.normal;
-    uint targets = vertex.morph_weights >> 16u;
-    uint first_weight = vertex.morph_weights & 0xFFFFu;
+    vec3 position = uintBitsToFloat(position_morph.xyz);
+    vec3 normal = uintBitsToFloat(normal_weights.xyz);
+    uint targets = normal_weights.w >> 16u;
+    uint first_weight = normal_weights.w & 0xFFFFu;
     for (uint k = 0u; k < targets; ++k) {
         float w = morph_weights[first_weight + k];
-        MorphDelta d = deltas[vertex.morph_first + k];
+        MorphDelta d = deltas[position_morph.w + k];
         position += w * d.position.xyz;
         normal += w * d.normal.xyz;
     }
 
     // The blended matrix (only its top three rows matter: palette matrices are affine). The used pairs
     // come first, and a vertex has at least one.
-    uvec4 slots = vertex.slots;
-    vec4 w0 = vertex.weights0;
+    uvec4 slots = texelFetch(vertex_texels, texel + 2);
+    vec4 w0 = uintBitsToFloat(texelFetch(vertex_texels, texel + 3));
     Blend m = weighted_rows(w0.x, slots.x & 0xFFFFu);
     if (kInfluences > 1u) add_influence(m, w0.y, slots.x >> 16u);
     if (kInfluences > 2u) add_influence(m, w0.z, slots.y & 0xFFFFu);
     if (kInfluences > 3u) add_influence(m, w0.w, slots.y >> 16u);
     if (kInfluences > 4u) {
-        vec4 w1 = vertex.weights1;
+        vec4 w1 = uintBitsToFloat(texelFetch(vertex_texels, texel + 4));
         if (w1 != vec4(0.0)) {
             add_influence(m, w1.x, slots.z & 0xFFFFu);
             if (kInfluences > 5u) add_influence(m, w1.y, slots.z >> 16u);

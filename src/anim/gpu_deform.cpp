@@ -14,9 +14,11 @@
 namespace stipple::anim {
 
 namespace {
-// The kernel's set, by binding number; the palette is read as texels.
+constexpr uint32_t kDeformVertexTexels = sizeof(gpu::DeformVertex) / 16;  // RGBA32UI texels a vertex
+static_assert(sizeof(gpu::DeformVertex) == 16 * 5);
+// The kernel's set, by binding number; the vertices and the palette are read as texels.
 constexpr gpu::DescriptorBinding kDeformBindings[6] = {
-    {gpu::kBindingDeformVertices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformVertices, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {gpu::kBindingDeformMorphDeltas, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {gpu::kBindingDeformPalette, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {gpu::kBindingDeformMorphWeights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -90,11 +92,20 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
       vertex_count_(static_cast<uint32_t>(model.vertex_count())),
       palette_slots_(static_cast<uint32_t>(model.palette.size())),
       morph_weights_(model.morph_weight_count) {
-    vertices_ = upload(context, pack_deform_vertices(model));
+    // The vertices and the palette are texel buffers: a software GPU fetches a texel's four words in one
+    // gather, where it loads a storage buffer's members one lane at a time (the vertices' 20 loads took
+    // the skinning kernel 2.5-3.4 ms on the bench's 50k-vertex cylinder; see docs/animation.md).
+    const uint64_t vertex_texels = uint64_t(kDeformVertexTexels) * std::max(vertex_count_, 1u);
+    if (vertex_texels > context.properties.limits.maxTexelBufferElements)
+        fail("the model's " + std::to_string(vertex_count_) + " skinned vertices exceed the device's texel buffer limit of " +
+             std::to_string(context.properties.limits.maxTexelBufferElements / kDeformVertexTexels));
+    std::vector<gpu::DeformVertex> packed = pack_deform_vertices(model);
+    if (packed.empty()) packed.emplace_back();
+    vertices_ = gpu::create_device_buffer(context, std::span<const gpu::DeformVertex>(packed),
+                                          VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    vertices_view_ = gpu::create_texel_view(context, vertices_.handle(), VK_FORMAT_R32G32B32A32_UINT);
     deltas_ = upload(context, pack_morph_deltas(model));
     const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    // The palette is a texel buffer: a software GPU fetches a texel's four floats in one gather, where
-    // it loads a storage buffer's floats one lane at a time.
     const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);
     if (palette_texels > context.properties.limits.maxTexelBufferElements)
         fail("the model's " + std::to_string(palette_slots_) + " palette matrices exceed the device's texel buffer limit of " +
@@ -122,6 +133,7 @@ GpuDeformer::~GpuDeformer() {
     const VkDevice device = context_.device;
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
     if (palette_view_) vkDestroyBufferView(device, palette_view_, nullptr);
+    if (vertices_view_) vkDestroyBufferView(device, vertices_view_, nullptr);
     if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
     if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
@@ -142,6 +154,8 @@ void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
         writes[b].descriptorType = kDeformBindings[b].type;
         if (b == gpu::kBindingDeformPalette)
             writes[b].pTexelBufferView = &palette_view_;
+        else if (b == gpu::kBindingDeformVertices)
+            writes[b].pTexelBufferView = &vertices_view_;
         else
             writes[b].pBufferInfo = &infos[b];
     }

@@ -60,6 +60,7 @@ private:
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     VkBufferView palette_view_ = VK_NULL_HANDLE;  // the palette's texels (RGBA32F, three per slot)
+    VkBufferView vertices_view_ = VK_NULL_HANDLE;  // the DeformVertex[]'s texels (RGBA32UI, five per vertex)
 };
 
 }  // namespace stipple::anim
