@@ -16,8 +16,10 @@
 layout(local_size_x = kDensityWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingTriangleInfo, std430) readonly buffer TriangleInfos { TriangleInfo infos[]; };
-layout(set = 0, binding = kBindingSilhouetteEdges, std430) readonly buffer Edges { SilhouetteEdge edges[]; };
+// The edge table and the polygons' normals as texels: a software GPU gathers a texel at once, where it
+// loads a storage buffer's members one lane at a time.
+layout(set = 0, binding = kBindingSilhouetteEdgeTexels) uniform usamplerBuffer edge_texels;
+layout(set = 0, binding = kBindingTriangleInfoTexels) uniform usamplerBuffer triangle_info_texels;
 layout(set = 0, binding = kBindingSilhouetteLines, std430) buffer Lines {
     SilhouetteLines lines;
     uint line_indices[];
@@ -30,7 +32,10 @@ layout(set = 0, binding = kBindingLineCandidates, std430) buffer Candidates {
 
 bool faces_away(uint polygon) { return ((facing_away[polygon >> 5u] >> (polygon & 31u)) & 1u) != 0u; }
 
-vec3 polygon_normal(uint polygon) { return octahedral_to_unit(unpackSnorm2x16(infos[polygon].normal)); }
+// TriangleInfo's third word is its octahedral normal.
+vec3 polygon_normal(uint polygon) {
+    return octahedral_to_unit(unpackSnorm2x16(texelFetch(triangle_info_texels, int(polygon)).z));
+}
 
 void main() {
     uint e = gl_GlobalInvocationID.x;
@@ -39,7 +44,8 @@ void main() {
     uint kind = 0u;
     SilhouetteEdge edge;
     if (e < object.flags.z) {
-        edge = edges[e];
+        uvec4 texel = texelFetch(edge_texels, int(e));
+        edge = SilhouetteEdge(texel.x, texel.y, texel.z, texel.w);
         bool has_second = edge.second_polygon != kNoPolygon;
         bool first_away = faces_away(edge.first_polygon);
         bool second_away = has_second && faces_away(edge.second_polygon);

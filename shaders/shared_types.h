@@ -85,6 +85,9 @@ STIPPLE_CONST uint kBindingTriangleInfoTexels = 18;
 // DepthTriangles header + uint[] (storage, also the index and indirect buffer of the depth pass): the
 // triangles that can cover a pixel centre this frame (depth_triangles.comp), when the object culls them
 STIPPLE_CONST uint kBindingDepthTriangles = 19;
+// texel buffer (RGBA32UI): the SilhouetteEdge[] of kBindingSilhouetteEdges, an edge per texel
+// (line_edges.comp: one gather instead of four lane-by-lane loads)
+STIPPLE_CONST uint kBindingSilhouetteEdgeTexels = 20;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.

@@ -41,6 +41,8 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingDepthTriangles, kStorage}, [](const O& o) { return o.frame.depth_triangles.handle(); }},
     {{gpu::kBindingTriangleInfoTexels, kTexels}, [](const O& o) { return o.polygons.gpu.handle(); },
      [](const O& o) { return o.polygons.texels; }},
+    {{gpu::kBindingSilhouetteEdgeTexels, kTexels}, [](const O& o) { return o.geometry.silhouette_edges.handle(); },
+     [](const O& o) { return o.geometry.silhouette_edge_texels; }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

@@ -25,6 +25,9 @@ using gpu::MemoryUse;
 
 namespace {
 
+// The edge table: a storage buffer (line_walk.comp) and RGBA32UI texels (line_edges.comp).
+constexpr VkBufferUsageFlags kEdgeUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+
 // Each candidate as (u, v) in its triangle (stipple/barycentric.hpp), 16 bits each.
 std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet& stipples) {
     std::vector<gpu::StippleVertex> vertices(stipples.size());
@@ -83,7 +86,9 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     geometry.stipples = std::move(buffers[kStipples]);
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     // A placeholder until the object first draws lines (the descriptor set needs a buffer in every binding).
-    geometry.silhouette_edges = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+    geometry.silhouette_edges = Buffer(context, kPathBufferPlaceholderBytes, kEdgeUsage, MemoryUse::DeviceLocal);
+    geometry.silhouette_edge_texels =
+        gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
 
     object.polygons.cpu = upload.polygons.cpu;
     object.polygons.bounds = upload.polygons.bounds;
@@ -125,7 +130,8 @@ Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes) {
 
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
-    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels, polygons.texels})
+    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels, polygons.texels,
+                              geometry.silhouette_edge_texels})
         if (view) vkDestroyBufferView(context->device, view, nullptr);
 }
 
@@ -220,8 +226,14 @@ void ensure_line_buffers(ObjectGpu& object) {
         fail(std::to_string(edges.size()) + " edges: object-space lines take at most " +
              std::to_string(gpu::kLineEdgeMask) + " per object");
     const gpu::Context& context = *object.context;
-    geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges),
-                                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (edges.size() > context.properties.limits.maxTexelBufferElements)
+        fail(std::to_string(edges.size()) + " edges: the device's texel buffers hold at most " +
+             std::to_string(context.properties.limits.maxTexelBufferElements));
+    geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges), kEdgeUsage);
+    // The placeholder's view goes with the placeholder it views (write_object_descriptors below rewrites the set).
+    vkDestroyBufferView(context.device, geometry.silhouette_edge_texels, nullptr);
+    geometry.silhouette_edge_texels =
+        gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
     object.frame.silhouette_lines =
         make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
