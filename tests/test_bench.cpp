@@ -240,10 +240,13 @@ TEST(BenchReport, MarkdownPutsThePapersFiguresAndRatiosBesideOurs) {
     EXPECT_EQ(md.find("machine's limit"), std::string::npos);     // no probe, no section
     bench::BenchResults with_probe = synthetic_results();
     with_probe.models[0].limit = bench::ModelResult::LimitProbe{900, 100, 2.0, 0.5};
+    with_probe.models[0].limit->state_probe_ms = 1.6;
     const std::string probe_md = bench::markdown_report(with_probe);
-    EXPECT_NE(probe_md.find("| horse | 900 | 100 | 2.00 | 0.50 | 4.00× | 2000, 500 |"), std::string::npos) << probe_md;
+    EXPECT_NE(probe_md.find("| horse | 900 | 100 | 2.00 | 0.50 | 4.00× | 1.60 | 1.25× | 2000, 500 |"), std::string::npos)
+        << probe_md;
     nlohmann::json j = nlohmann::json::parse(bench::json_report(with_probe));
     EXPECT_DOUBLE_EQ(j["models"][0]["limit_probe"]["x_of_limit"].get<double>(), 4.0);
+    EXPECT_DOUBLE_EQ(j["models"][0]["limit_probe"]["x_of_state_limit"].get<double>(), 1.25);
     EXPECT_TRUE(j["models"][1]["limit_probe"].is_null());
 }
 
@@ -462,6 +465,11 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
         EXPECT_GT(limit["vertex_stipples_ms"].get<double>(), 0.0);
         EXPECT_DOUBLE_EQ(limit["x_of_limit"].get<double>(),
                          limit["vertex_stipples_ms"].get<double>() / limit["probe_ms"].get<double>());
+        // The probe with the stipple pass's depth, stencil and blending: one timing per timed frame too.
+        EXPECT_GT(limit["state_probe_ms"].get<double>(), 0.0);
+        EXPECT_EQ(limit["state_probe_frame_ms"].size(), limit["probe_frame_ms"].size());
+        EXPECT_DOUBLE_EQ(limit["x_of_state_limit"].get<double>(),
+                         limit["vertex_stipples_ms"].get<double>() / limit["state_probe_ms"].get<double>());
     }
     EXPECT_NE(md.find("## The vertex path against the machine's limit"), std::string::npos);
     // The plot-order row, shrunk: 15k blue-noise dots, no bunny view.

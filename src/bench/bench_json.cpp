@@ -43,7 +43,10 @@ json limit_json(const ModelResult& m) {
             {"vertex_stipples_ms", l.vertex_ms},
             {"probe_ms", l.probe_ms},
             {"probe_frame_ms", l.probe_frame_ms},
-            {"x_of_limit", l.ratio()}};
+            {"x_of_limit", l.ratio()},
+            {"state_probe_ms", l.state_probe_ms},
+            {"state_probe_frame_ms", l.state_probe_frame_ms},
+            {"x_of_state_limit", l.state_ratio()}};
 }
 
 json model_json(const ModelResult& m) {

@@ -157,15 +157,20 @@ void limit_table(std::ostringstream& md, const BenchResults& r) {
     md << "## The vertex path against the machine's limit\n\n";
     md << "The limit probe draws as many points as the vertex path's stipple pass (vertex, no lines) with a trivial "
           "shader: the culled ones beyond the far plane, the drawn ones as points of the stipples' size over the model's "
-          "footprint; GPU ms are medians of timestamps. x of the limit = the stipple pass / the probe.\n\n";
-    md << "| model | culled | drawn | vertex stipple pass ms | probe ms | x of the limit | ns per candidate (vertex, probe) |\n";
-    md << "|---|---:|---:|---:|---:|---:|---:|\n";
+          "footprint; GPU ms are medians of timestamps. x of the limit = the stipple pass / the probe. The second probe "
+          "draws the same points with the stipple pass's fixed-function state (depth test, coverage stencil, blending) and "
+          "the same trivial shaders: the part of the gap that is that state's work, which any drawing of these stipples "
+          "does.\n\n";
+    md << "| model | culled | drawn | vertex stipple pass ms | probe ms | x of the limit | probe with state ms | x of it "
+          "| ns per candidate (vertex, probe) |\n";
+    md << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModelResult& m : r.models) {
         if (!m.limit) continue;
         const ModelResult::LimitProbe& l = *m.limit;
         const double n = double(std::max<uint64_t>(l.culled + l.drawn, 1));
         md << "| " << m.entry.name << " | " << with_commas(l.culled) << " | " << with_commas(l.drawn) << " | "
            << printf_string("%.2f", l.vertex_ms) << " | " << printf_string("%.2f", l.probe_ms) << " | " << printf_string("%.2f×", l.ratio())
+           << " | " << printf_string("%.2f", l.state_probe_ms) << " | " << printf_string("%.2f×", l.state_ratio())
            << " | " << printf_string("%.0f, %.0f", 1e6 * l.vertex_ms / n, 1e6 * l.probe_ms / n) << " |\n";
     }
     md << "\n";

@@ -216,7 +216,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
     OffscreenTarget& target = *target_holder;
-    auto probe_holder = std::make_unique<LimitProbe>(context, extent);
+    auto probe_holder = std::make_unique<LimitProbe>(context, extent, context.depth_format);
     log(printf_string("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));
@@ -271,15 +271,18 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                 limit->drawn = uint64_t(cell.drawn);
                 limit->culled = model.candidates - std::min<uint64_t>(model.candidates, limit->drawn);
                 probe_frame = [&](bool timed) {
-                    const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels,
-                                                          renderer.params(0).point_size);
-                    if (timed) limit->probe_frame_ms.push_back(ms);
+                    const float point_size = renderer.params(0).point_size;
+                    const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels, point_size);
+                    const double state_ms =
+                        probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels, point_size, true);
+                    if (timed) limit->probe_frame_ms.push_back(ms), limit->state_probe_frame_ms.push_back(state_ms);
                 };
             }
             time_cell(target, renderer, view, options, cell, probe_frame);
             if (limit) {
                 limit->vertex_ms = pass_ms(cell, "stipples");
                 limit->probe_ms = median(limit->probe_frame_ms);
+                limit->state_probe_ms = median(limit->state_probe_frame_ms);
                 model.limit = std::move(limit);
             }
             if (row) cell.paper_fps = paper_fps(*row, cell.column);
@@ -291,10 +294,11 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
                        passes_text(cell).c_str(), (long long)cell.drawn, (unsigned long long)cell.candidates));
         }
         if (model.limit)
-            log(printf_string("  limit probe: %llu culled + %llu drawn points in %.2f ms; the vertex path's stipple pass %.2f ms "
-                       "= %.2fx the limit",
+            log(printf_string("  limit probe: %llu culled + %llu drawn points in %.2f ms (%.2f with the stipple pass's depth, "
+                       "stencil and blending); the vertex path's stipple pass %.2f ms = %.2fx the limit (%.2fx with that state)",
                        (unsigned long long)model.limit->culled, (unsigned long long)model.limit->drawn,
-                       model.limit->probe_ms, model.limit->vertex_ms, model.limit->ratio()));
+                       model.limit->probe_ms, model.limit->state_probe_ms, model.limit->vertex_ms, model.limit->ratio(),
+                       model.limit->state_ratio()));
         std::string by_path;
         for (const auto& [path, bytes] : model.gpu_bytes_by_path)
             by_path += printf_string(" %s %.1f", path.c_str(), model.candidates ? double(bytes) / double(model.candidates) : 0.0);

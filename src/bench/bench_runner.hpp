@@ -70,7 +70,11 @@ struct LimitProbeResult {
     double vertex_ms = 0.0;  // the vertex column's "stipples" pass, median GPU ms
     double probe_ms = 0.0;   // the probe's pass, median GPU ms
     std::vector<double> probe_frame_ms;  // each frame's
+    // The same points with the stipple pass's depth, stencil and blending (limit_probe.hpp).
+    double state_probe_ms = 0.0;
+    std::vector<double> state_probe_frame_ms;
     double ratio() const { return probe_ms > 0.0 ? vertex_ms / probe_ms : 0.0; }  // "x of the limit"
+    double state_ratio() const { return state_probe_ms > 0.0 ? vertex_ms / state_probe_ms : 0.0; }
 };
 
 struct ModelResult {

@@ -23,8 +23,10 @@ struct ProbeConstants {  // shaders/limit_probe.vert's push constants
 
 }  // namespace
 
-LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent) : context_(context), extent_(extent) {
+LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent, VkFormat depth_format)
+    : context_(context), extent_(extent), depth_format_(depth_format) {
     color_ = gpu::Image(context, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    depth_ = gpu::Image(context, extent, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, depth_aspect());
     VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(ProbeConstants)};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.pushConstantRangeCount = 1;
@@ -38,14 +40,28 @@ LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent) : context
     desc.depth_write = false;
     desc.color_format = kColorFormat;
     pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
+    // The stipple pass's state (render/stipple_renderer.cpp): the depth test without writes, the
+    // coverage stencil, blending.
+    desc.depth_test = true;
+    desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    desc.stencil = gpu::CoverageStencil::Test;
+    desc.blend = true;
+    desc.depth_format = depth_format;
+    state_pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
+}
+
+VkImageAspectFlags LimitProbe::depth_aspect() const {
+    return gpu::format_has_stencil(depth_format_) ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
+                                                  : VK_IMAGE_ASPECT_DEPTH_BIT;
 }
 
 LimitProbe::~LimitProbe() {
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    if (state_pipeline_) vkDestroyPipeline(context_.device, state_pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
 }
 
-double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side, float point_size) {
+double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side, float point_size, bool with_state) {
     gpu::GpuTimer timer(context_, 4);
     auto start = std::chrono::steady_clock::now();
     VkCommandBuffer cb = context_.begin_one_shot();
@@ -65,10 +81,30 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side, float po
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &color;
+    // With the state: a depth buffer the drawn points pass (cleared to the far plane) and a stencil of
+    // ones (as if a surface covered every pixel).
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    if (with_state) {
+        const bool stencil = gpu::format_has_stencil(depth_format_);
+        const VkImageLayout attachment =
+            stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        gpu::image_barrier(cb, depth_.handle(), depth_aspect(), VK_IMAGE_LAYOUT_UNDEFINED, attachment,
+                           VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                           VK_ACCESS_2_NONE,
+                           VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                           VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+        depth.imageView = depth_.view();
+        depth.imageLayout = attachment;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        depth.clearValue.depthStencil = {1.0f, 1};
+        rendering.pDepthAttachment = &depth;
+        rendering.pStencilAttachment = stencil ? &depth : nullptr;
+    }
     // The clear gets a mark of its own: only the points are timed, as the stipple pass is.
     vkCmdBeginRendering(cb, &rendering);
     timer.mark(cb, "clear");
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, with_state ? state_pipeline_ : pipeline_);
     VkViewport viewport{0.0f, 0.0f, float(extent_.width), float(extent_.height), 0.0f, 1.0f};
     VkRect2D scissor{{0, 0}, extent_};
     vkCmdSetViewport(cb, 0, 1, &viewport);
@@ -84,12 +120,12 @@ double LimitProbe::frame_ms(uint32_t total, uint32_t drawn, float side, float po
     return passes.size() == 2 ? passes[1].second : wall_ms;
 }
 
-double LimitProbe::frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, float point_size) {
+double LimitProbe::frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, float point_size, bool with_state) {
     const uint64_t total = culled + drawn;
     if (total == 0 || total > UINT32_MAX) fail("limit probe: " + std::to_string(total) + " points is out of range");
     const float side = std::min(std::sqrt(float(std::max<uint64_t>(footprint_pixels, 1))),
                                 float(std::min(extent_.width, extent_.height)));
-    return frame_ms(uint32_t(total), uint32_t(drawn), side, point_size);
+    return frame_ms(uint32_t(total), uint32_t(drawn), side, point_size, with_state);
 }
 
 }  // namespace stipple::bench
