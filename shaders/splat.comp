@@ -119,7 +119,6 @@ uint optical_depth_units(float intensity) {
     return uint(min(-log2(1.0 - intensity), kSplatMaxOpticalDepth) * kSplatOpticalDepthScale + 0.5);
 }
 
-
 void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon,
            SplatConstants c) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it

@@ -331,6 +331,11 @@ TEST_F(DensityPaths, TheSplatsLargeDotsComposeAsThePointsBlend) {
     renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {640, 512});
     const FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), 1.0f, 30.0f, 15.0f);
+    // Small square dots first: the renderer holds no cover sums until a frame draws large dots.
+    renderer.params(0).point_size = 1.5f;
+    renderer.params(0).density_path = DensityPath::Splat;
+    const double small_ink = test::mean_ink(target.render(renderer, view));
+    renderer.params(0).point_size = 6.0f;
     double dark[2] = {0.0, 0.0}, ink[2] = {0.0, 0.0};
     const DensityPath paths[2] = {DensityPath::Vertex, DensityPath::Splat};
     for (int i = 0; i < 2; ++i) {
@@ -342,6 +347,7 @@ TEST_F(DensityPaths, TheSplatsLargeDotsComposeAsThePointsBlend) {
                     ink[i]);
     }
     ASSERT_GT(dark[0], 5000.0);
+    EXPECT_LT(small_ink, 0.5 * ink[1]);
     EXPECT_NEAR(dark[1] / dark[0], 1.0, 0.02);
     EXPECT_NEAR(ink[1] / ink[0], 1.0, 0.02);
 }

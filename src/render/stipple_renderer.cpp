@@ -523,8 +523,11 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     // The target's own words are bound every frame: another target's buffer may come at the same handle.
     const bool words = targets.color_words != VK_NULL_HANDLE;
     const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
-    if (!resized && !words && !splat_in_words_) return;
     const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
+    // The large dots' cover sums, full size only while some object draws them (else a placeholder).
+    const VkDeviceSize cover_bytes = splat_composes_dots() ? pixels * 4 : 4;
+    const bool cover_changed = splat_cover_.size() != cover_bytes;
+    if (!resized && !words && !splat_in_words_ && !cover_changed) return;
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     if (resized) {
         splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -532,9 +535,9 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
         splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal);
         splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
-        splat_cover_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
         splat_extent_ = extent;
     }
+    if (cover_changed) splat_cover_ = gpu::Buffer(context_, cover_bytes, usage, gpu::MemoryUse::DeviceLocal);
     splat_in_words_ = words;
     // In the order of splat_frame_bindings(): background, scene depth, colour, cover. The previous frame
     // has completed.
@@ -564,6 +567,13 @@ void StippleRenderer::copy_scene_depth(VkCommandBuffer cb, const RenderTargets& 
     // The compute passes that read it (splat, line edges) follow.
     gpu::buffer_barrier(cb, splat_depth_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+// Whether a splat object draws large (round) dots, whose overlapping fractional ones compose (splat.comp).
+bool StippleRenderer::splat_composes_dots() const {
+    return std::any_of(objects_.begin(), objects_.end(), [&](const auto& object) {
+        return uses_splat(*object) && (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+    });
 }
 
 // The scene depth is already in splat_depth_ (copy_scene_depth).
@@ -612,10 +622,7 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
         }
     }
     // Overlapping fractional large dots compose through their summed optical depth (splat.comp).
-    bool any_round = false;
-    for (const auto& object : objects_)
-        any_round |= uses_splat(*object) && (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
-    if (any_round) vkCmdFillBuffer(cb, splat_cover_.handle(), 0, pixels * 4, 0u);
+    if (splat_composes_dots()) vkCmdFillBuffer(cb, splat_cover_.handle(), 0, pixels * 4, 0u);
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -155,6 +155,7 @@ private:
     // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
     void ensure_frame_buffers(const RenderTargets& targets);
+    bool splat_composes_dots() const;
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     bool uses_splat(const ObjectGpu& object) const;
@@ -194,7 +195,7 @@ private:
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
     gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it (targets without words)
-    gpu::Buffer splat_cover_;       // the fractional stipples' summed optical depth per pixel (splat.comp)
+    gpu::Buffer splat_cover_;       // large fractional dots' summed optical depth per pixel (splat.comp), or 4 bytes
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
     VkExtent2D splat_extent_{};
     bool splat_in_words_ = false;  // the splat's colour binding holds a target's words (RenderTargets::color_words)
