@@ -10,11 +10,11 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
+#include "triangle_draws.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingTriangleDraw, std430) readonly buffer TriangleDraws { TriangleDraw draws[]; };
 layout(set = 0, binding = kBindingDrawnStipples, std430) buffer DrawnStipples {
     DrawCommand draw;  // vertex_count: the stipples listed so far (cleared before the pass)
     uint drawn_stipples[];
@@ -26,9 +26,9 @@ void main() {
     uint first = 0u;
     uint count = 0u;
     if (t < triangles) {
-        first = draws[t].first_stipple;
-        uint end = t + 1u < triangles ? draws[t + 1u].first_stipple : object.flags.w;
-        count = drawn_stipple_count(draws[t].density, end - first);
+        TriangleDraw polygon = triangle_draw(t);  // as texels: two gathers instead of three loads
+        first = polygon.first_stipple;
+        count = drawn_stipple_count(polygon.density, polygon_candidates(t, first, object.flags));
     }
     uint total = subgroupAdd(count);
     if (total == 0u) return;  // the same in the whole subgroup
