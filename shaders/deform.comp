@@ -11,7 +11,7 @@ layout(local_size_x = kDeformWorkgroupSize) in;
 // DeformVertex[] as five RGBA32UI texels a vertex (a software GPU gathers a texel at once, where it
 // loads a storage buffer's members lane by lane); the last, weights1, is read only with over 4 pairs.
 layout(set = 0, binding = kBindingDeformVertices) uniform usamplerBuffer vertex_texels;
-layout(set = 0, binding = kBindingDeformMorphDeltas, std430) readonly buffer Deltas { MorphDelta deltas[]; };
+layout(set = 0, binding = kBindingDeformMorphDeltas) uniform samplerBuffer delta_texels;  // position, normal
 // Three texels per slot: the top three rows of its affine matrix (the fourth is always 0 0 0 1). A
 // texel buffer rather than a storage buffer: a software GPU gathers a texel's four floats at once.
 layout(set = 0, binding = kBindingDeformPalette) uniform samplerBuffer palette_rows;
@@ -57,9 +57,9 @@ void main() {
     uint first_weight = normal_weights.w & 0xFFFFu;
     for (uint k = 0u; k < targets; ++k) {
         float w = morph_weights[first_weight + k];
-        MorphDelta d = deltas[position_morph.w + k];
-        position += w * d.position.xyz;
-        normal += w * d.normal.xyz;
+        int delta = int(2u * (position_morph.w + k));
+        position += w * texelFetch(delta_texels, delta).xyz;
+        normal += w * texelFetch(delta_texels, delta + 1).xyz;
     }
 
     // The blended matrix (only its top three rows matter: palette matrices are affine). The used pairs

@@ -34,7 +34,7 @@ STIPPLE_CONST uint kSpecPolygonVec3Texels = 0;
 
 // Descriptor bindings of the deformation pass's own set (set 0 of its pipeline layout).
 STIPPLE_CONST uint kBindingDeformVertices = 0;     // DeformVertex[] as RGBA32UI texels, five a vertex (read)
-STIPPLE_CONST uint kBindingDeformMorphDeltas = 1;  // MorphDelta[] (read)
+STIPPLE_CONST uint kBindingDeformMorphDeltas = 1;  // MorphDelta[] as RGBA32F texels, two a delta (read)
 STIPPLE_CONST uint kBindingDeformPalette = 2;      // vec4[3 per slot] (read): top three rows of world(node, t) * inverse bind
 STIPPLE_CONST uint kBindingDeformMorphWeights = 3; // float[] (read): this frame's morph weights
 STIPPLE_CONST uint kBindingDeformPositions = 4;    // float[] (write): 3 floats per vertex, as kBindingMeshPositions

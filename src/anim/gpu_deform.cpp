@@ -16,10 +16,10 @@ namespace stipple::anim {
 namespace {
 constexpr uint32_t kDeformVertexTexels = sizeof(gpu::DeformVertex) / 16;  // RGBA32UI texels a vertex
 static_assert(sizeof(gpu::DeformVertex) == 16 * 5);
-// The kernel's set, by binding number; the vertices and the palette are read as texels.
+// The kernel's set, by binding number; the vertices, the morph deltas and the palette are read as texels.
 constexpr gpu::DescriptorBinding kDeformBindings[6] = {
     {gpu::kBindingDeformVertices, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
-    {gpu::kBindingDeformMorphDeltas, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {gpu::kBindingDeformMorphDeltas, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {gpu::kBindingDeformPalette, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {gpu::kBindingDeformMorphWeights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {gpu::kBindingDeformPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -104,7 +104,13 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
     vertices_ = gpu::create_device_buffer(context, std::span<const gpu::DeformVertex>(packed),
                                           VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     vertices_view_ = gpu::create_texel_view(context, vertices_.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    deltas_ = upload(context, pack_morph_deltas(model));
+    std::vector<gpu::MorphDelta> deltas = pack_morph_deltas(model);
+    if (deltas.empty()) deltas.emplace_back();
+    if (2 * deltas.size() > context.properties.limits.maxTexelBufferElements)
+        fail("the model's " + std::to_string(deltas.size()) + " morph deltas exceed the device's texel buffer limit of " +
+             std::to_string(context.properties.limits.maxTexelBufferElements / 2));
+    deltas_ = gpu::create_device_buffer(context, std::span<const gpu::MorphDelta>(deltas), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    deltas_view_ = gpu::create_texel_view(context, deltas_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
     const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);
     if (palette_texels > context.properties.limits.maxTexelBufferElements)
@@ -134,6 +140,7 @@ GpuDeformer::~GpuDeformer() {
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
     if (palette_view_) vkDestroyBufferView(device, palette_view_, nullptr);
     if (vertices_view_) vkDestroyBufferView(device, vertices_view_, nullptr);
+    if (deltas_view_) vkDestroyBufferView(device, deltas_view_, nullptr);
     if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
     if (pipeline_layout_) vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
@@ -156,6 +163,8 @@ void GpuDeformer::write_descriptors(VkBuffer positions, VkBuffer normals) {
             writes[b].pTexelBufferView = &palette_view_;
         else if (b == gpu::kBindingDeformVertices)
             writes[b].pTexelBufferView = &vertices_view_;
+        else if (b == gpu::kBindingDeformMorphDeltas)
+            writes[b].pTexelBufferView = &deltas_view_;
         else
             writes[b].pBufferInfo = &infos[b];
     }

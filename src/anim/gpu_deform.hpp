@@ -61,6 +61,7 @@ private:
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     VkBufferView palette_view_ = VK_NULL_HANDLE;  // the palette's texels (RGBA32F, three per slot)
     VkBufferView vertices_view_ = VK_NULL_HANDLE;  // the DeformVertex[]'s texels (RGBA32UI, five per vertex)
+    VkBufferView deltas_view_ = VK_NULL_HANDLE;    // the MorphDelta[]'s texels (RGBA32F, two per delta)
 };
 
 }  // namespace stipple::anim
