@@ -18,7 +18,7 @@ layout(local_size_x = kDensityWorkgroupSize) in;
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 // The edge table and the polygons' normals as texels: a software GPU gathers a texel at once, where it
 // loads a storage buffer's members one lane at a time.
-layout(set = 0, binding = kBindingSilhouetteEdgeTexels) uniform usamplerBuffer edge_texels;
+layout(set = 0, binding = kBindingSilhouetteEdges) uniform usamplerBuffer edge_texels;
 layout(set = 0, binding = kBindingTriangleInfoTexels) uniform usamplerBuffer triangle_info_texels;
 layout(set = 0, binding = kBindingSilhouetteLines, std430) buffer Lines {
     SilhouetteLines lines;

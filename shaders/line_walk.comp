@@ -13,7 +13,7 @@ layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingSilhouetteEdges, std430) readonly buffer Edges { SilhouetteEdge edges[]; };
+layout(set = 0, binding = kBindingSilhouetteEdges) uniform usamplerBuffer edge_texels;  // one gather an edge
 layout(set = 0, binding = kBindingLineCandidates, std430) readonly buffer Candidates {
     LineCandidates candidates;
     uint candidate[];
@@ -128,6 +128,6 @@ void main() {
     if (slot >= candidates.count) return;
     uint listed = candidate[slot];
     uint e = listed & kLineEdgeMask;
-    SilhouetteEdge edge = edges[e];
-    walk_edge(mesh_vertex(edge.first_vertex), mesh_vertex(edge.second_vertex), e, listed >> kLineKindShift);
+    uvec2 corners = texelFetch(edge_texels, int(e)).xy;  // SilhouetteEdge: first_vertex, second_vertex
+    walk_edge(mesh_vertex(corners.x), mesh_vertex(corners.y), e, listed >> kLineKindShift);
 }

@@ -67,7 +67,9 @@ STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
 STIPPLE_CONST uint kBindingMeshPositions = 8;  // texel buffer: the mesh's vertices (RGB32F, or R32F: kSpecMeshVec3Texels)
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // texel buffer: the mesh's triangles (RGB32UI, or R32UI)
-STIPPLE_CONST uint kBindingSilhouetteEdges = 10;  // SilhouetteEdge[] (storage): every edge of the mesh once
+// texel buffer (RGBA32UI): SilhouetteEdge[], every edge of the mesh once, an edge per texel (the line
+// passes: one gather instead of four lane-by-lane loads)
+STIPPLE_CONST uint kBindingSilhouetteEdges = 10;
 STIPPLE_CONST uint kBindingSilhouetteLines = 11;  // SilhouetteLines header + uint[] (storage): this frame's lines
 STIPPLE_CONST uint kBindingVisibleStipples = 12;  // VisibleStipplesHeader + VisibleStipple[] (storage), when recording
 STIPPLE_CONST uint kBindingFacing = 13;           // uint[] (storage): one bit per polygon, set when it faces away (cleared, then or-ed)
@@ -85,9 +87,6 @@ STIPPLE_CONST uint kBindingTriangleInfoTexels = 18;
 // DepthTriangles header + uint[] (storage, also the index and indirect buffer of the depth pass): the
 // triangles that can cover a pixel centre this frame (depth_triangles.comp), when the object culls them
 STIPPLE_CONST uint kBindingDepthTriangles = 19;
-// texel buffer (RGBA32UI): the SilhouetteEdge[] of kBindingSilhouetteEdges, an edge per texel
-// (line_edges.comp: one gather instead of four lane-by-lane loads)
-STIPPLE_CONST uint kBindingSilhouetteEdgeTexels = 20;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.

@@ -29,7 +29,8 @@ const ObjectBinding kObjectBindings[] = {
      [](const O& o) { return o.geometry.position_texels; }},
     {{gpu::kBindingMeshIndices, kTexels}, [](const O& o) { return o.geometry.indices.handle(); },
      [](const O& o) { return o.geometry.index_texels; }},
-    {{gpu::kBindingSilhouetteEdges, kStorage}, [](const O& o) { return o.geometry.silhouette_edges.handle(); }},
+    {{gpu::kBindingSilhouetteEdges, kTexels}, [](const O& o) { return o.geometry.silhouette_edges.handle(); },
+     [](const O& o) { return o.geometry.silhouette_edge_texels; }},
     {{gpu::kBindingSilhouetteLines, kStorage}, [](const O& o) { return o.frame.silhouette_lines.handle(); }},
     {{gpu::kBindingVisibleStipples, kStorage}, [](const O& o) { return o.frame.visible_stipples.handle(); }},
     {{gpu::kBindingFacing, kStorage}, [](const O& o) { return o.frame.facing.handle(); }},
@@ -41,8 +42,6 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingDepthTriangles, kStorage}, [](const O& o) { return o.frame.depth_triangles.handle(); }},
     {{gpu::kBindingTriangleInfoTexels, kTexels}, [](const O& o) { return o.polygons.gpu.handle(); },
      [](const O& o) { return o.polygons.texels; }},
-    {{gpu::kBindingSilhouetteEdgeTexels, kTexels}, [](const O& o) { return o.geometry.silhouette_edges.handle(); },
-     [](const O& o) { return o.geometry.silhouette_edge_texels; }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {

@@ -25,8 +25,8 @@ using gpu::MemoryUse;
 
 namespace {
 
-// The edge table: a storage buffer (line_walk.comp) and RGBA32UI texels (line_edges.comp).
-constexpr VkBufferUsageFlags kEdgeUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+// The edge table, read as RGBA32UI texels (line_edges.comp, line_walk.comp).
+constexpr VkBufferUsageFlags kEdgeUsage = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
 // Each candidate as (u, v) in its triangle (stipple/barycentric.hpp), 16 bits each.
 std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet& stipples) {

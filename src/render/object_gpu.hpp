@@ -44,7 +44,7 @@ struct ObjectGeometry {
     // Every edge of the mesh once with its polygons (§3.1 and object-space lines), built the first time
     // lines are drawn.
     gpu::Buffer silhouette_edges;
-    VkBufferView silhouette_edge_texels = VK_NULL_HANDLE;  // the same as RGBA32UI texels (line_edges.comp)
+    VkBufferView silhouette_edge_texels = VK_NULL_HANDLE;  // its RGBA32UI texels, as the line passes read it
     uint32_t silhouette_edge_count = 0;
     uint32_t border_edge_count = 0;  // edges with one polygon: the surface is open
     bool silhouette_edges_built = false;
