@@ -92,9 +92,10 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
       vertex_count_(static_cast<uint32_t>(model.vertex_count())),
       palette_slots_(static_cast<uint32_t>(model.palette.size())),
       morph_weights_(model.morph_weight_count) {
-    // The vertices and the palette are texel buffers: a software GPU fetches a texel's four words in one
-    // gather, where it loads a storage buffer's members one lane at a time (the vertices' 20 loads took
-    // the skinning kernel 2.5-3.4 ms on the bench's 50k-vertex cylinder; see docs/animation.md).
+    // The vertices, the morph deltas and the palette are texel buffers: a software GPU fetches a texel's
+    // four words in one gather, where it loads a storage buffer's members one lane at a time (reading the
+    // vertices as texels took the bench cylinder's deformation from 6.2-6.4 to 3.4-5.1 ms on a busy
+    // machine; docs/animation.md).
     const uint64_t vertex_texels = uint64_t(kDeformVertexTexels) * std::max(vertex_count_, 1u);
     if (vertex_texels > context.properties.limits.maxTexelBufferElements)
         fail("the model's " + std::to_string(vertex_count_) + " skinned vertices exceed the device's texel buffer limit of " +
