@@ -430,6 +430,25 @@ size_t svg_dots(const std::string& path, std::string* width) {
     return dots;
 }
 
+// A script's screenshot line followed at once by quit: the screenshot is taken and written before the
+// window closes (the quit used to close it first, and the file never appeared).
+TEST(CliView, ScriptScreenshotThenQuitWritesIt) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-screenshot-quit");
+    const std::string shot = (dir / "shot.png").string();
+    std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot " + shot + "\nquit\n";
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({"--width", "320", "--height", "256", "--no-panel", "--script", (dir / "script.txt").string(),
+                          "--cache-dir", (dir / "cache").string()});
+    ASSERT_EQ(session.viewer().wait_exit(300s), 0) << session.out() << session.err();
+    ASSERT_TRUE(std::filesystem::exists(shot)) << session.out() << session.err();
+    const Image image = read_png(shot);
+    EXPECT_EQ(image.width, 320);
+    EXPECT_GT(ink_pixels(image), 200u) << "the screenshot shows no stipples";
+}
+
 TEST(CliView, ExportsTheViewAsSvg) {
     for (const char* tool : {"Xvfb", "xdotool"})
         if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";

@@ -29,6 +29,8 @@ public:
     }
     void cancel() { requested_ = false; }
     bool requested() const { return requested_; }
+    // Requested, or copied and not yet written.
+    bool pending() const { return requested_ || copied_; }
 
     // Records the copy of `image` (in COLOR_ATTACHMENT_OPTIMAL, left so) into a host-visible buffer.
     void record_copy(VkCommandBuffer cb, VkImage image, VkFormat format, VkExtent2D extent);

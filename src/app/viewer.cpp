@@ -310,7 +310,10 @@ void Viewer::run_script() {
             case ScriptAction::Kind::Export:
                 if (!export_view(action.path, plot::ExportOptions{})) script_failed_ = true;  // exit code 1 at the end
                 break;
-            case ScriptAction::Kind::Quit: window_.request_close(); break;
+            case ScriptAction::Kind::Quit:
+                if (screenshot_.pending()) return;  // a screenshot just asked for is taken and written first
+                window_.request_close();
+                break;
         }
         ++script_at_;
     }
