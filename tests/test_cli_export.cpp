@@ -27,9 +27,11 @@ constexpr int kWidth = 640, kHeight = 512, kSuper = 8;
 
 bool have_tool(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
 
-void run_ok(const std::vector<std::string>& args) {
+// Runs stipple; returns what it printed.
+std::string run_ok(const std::vector<std::string>& args) {
     const test::CommandResult r = test::run_stipple(args);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.out;
 }
 
 void shell_ok(const std::string& command) { ASSERT_EQ(std::system(command.c_str()), 0) << command; }
@@ -101,7 +103,7 @@ void expect_vector_is_the_png(const std::string& name, std::vector<std::string> 
     std::vector<std::string> svg_args = {"-o", svg}, pdf_args = {"-o", pdf};
     svg_args.insert(svg_args.end(), page.begin(), page.end());
     pdf_args.insert(pdf_args.end(), page.begin(), page.end());
-    run_ok(args(svg_args));
+    const std::string svg_said = run_ok(args(svg_args));
     run_ok(args(pdf_args));
     const std::string w = std::to_string(kWidth * kSuper), h = std::to_string(kHeight * kSuper);
     shell_ok("rsvg-convert -w " + w + " -h " + h + " -b white '" + svg + "' -o '" + (dir / "svg8.png").string() + "'");
@@ -125,6 +127,10 @@ void expect_vector_is_the_png(const std::string& name, std::vector<std::string> 
     ASSERT_FALSE(doc.layers.empty());
     EXPECT_EQ(doc.layers[0].substr(0, 2), "1 ") << "an AxiDraw layer label starts with its number";
     ASSERT_GT(doc.dots.size(), 1000u);
+    // The closing line names the page and what is on it.
+    const std::string said = "wrote " + svg + " (" + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+                             " mm page: " + std::to_string(doc.dots.size()) + " dots, ";
+    EXPECT_NE(svg_said.find(said), std::string::npos) << svg_said;
     size_t on_ink = 0;
     for (const auto& [x, y] : doc.dots) on_ink += darkness(frame, int(x), int(y)) > 0.0;
     const double share = double(on_ink) / double(doc.dots.size());

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/vector_options.hpp"
 #include "export/plot_file.hpp"
+#include "export/text_format.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
@@ -184,6 +185,7 @@ int run_render(const std::vector<std::string>& argv) {
     // Frames are written as they are drawn (a long orbit needs no more memory than one frame).
     ProgressBar bar("Rendering frames", sequence);
     RenderedFrame frame;
+    plot::PlotStats last_plot;  // vector output: the last frame's
     FrameView view;
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
@@ -201,10 +203,9 @@ int run_render(const std::vector<std::string>& argv) {
         frame = target.render(renderer, view);
         render_seconds = seconds_since(render_start);
         if (vector) {
-            const plot::PlotStats plot =
-                app::export_frame(context, scene, content.objects, view, vector_options, output_path(output, i, sequence),
-                                  animated ? clock.frame_time(i) : 0.0);
-            if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(plot).c_str());
+            last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
+                                          output_path(output, i, sequence), animated ? clock.frame_time(i) : 0.0);
+            if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(last_plot).c_str());
         } else {
             write_png(output_path(output, i, sequence), frame.color);
         }
@@ -273,6 +274,12 @@ int run_render(const std::vector<std::string>& argv) {
         const VkExtent2D page = app::print_layout(*print).page_px;
         std::printf("wrote %s (%ux%u, %s at %g dpi)\n", output_path(output, 0, false).c_str(), page.width, page.height,
                     args.get("--page", "").c_str(), print->dpi);
+    } else if (vector) {
+        std::printf("wrote %s (%s mm page: %zu dots, %zu polylines; the frame's view at %lldx%lld)\n",
+                    output_path(output, 0, false).c_str(),
+                    (plot::format_number(vector_options.page.width_mm, 0) + "x" +
+                     plot::format_number(vector_options.page.height_mm, 0)).c_str(),
+                    last_plot.dots, last_plot.polylines, width, height);
     } else
         std::printf("wrote %s (%lldx%lld)\n", output_path(output, 0, false).c_str(), width, height);
 
