@@ -74,9 +74,9 @@ constexpr VkBufferUsageFlags kOutputUsage =
 constexpr VkDeviceSize kUpdateChunk = 65536;  // vkCmdUpdateBuffer's limit per call
 
 template <class T>
-gpu::Buffer upload(const gpu::Context& context, std::vector<T> data) {
+gpu::Buffer upload(const gpu::Context& context, std::vector<T> data, VkBufferUsageFlags usage) {
     if (data.empty()) data.emplace_back();  // a binding needs a buffer, a copy a non-zero size
-    return gpu::create_device_buffer(context, std::span<const T>(data), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    return gpu::create_device_buffer(context, std::span<const T>(data), usage);
 }
 
 void update(VkCommandBuffer cb, const gpu::Buffer& buffer, const void* data, VkDeviceSize bytes) {
@@ -100,17 +100,13 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
     if (vertex_texels > context.properties.limits.maxTexelBufferElements)
         fail("the model's " + std::to_string(vertex_count_) + " skinned vertices exceed the device's texel buffer limit of " +
              std::to_string(context.properties.limits.maxTexelBufferElements / kDeformVertexTexels));
-    std::vector<gpu::DeformVertex> packed = pack_deform_vertices(model);
-    if (packed.empty()) packed.emplace_back();
-    vertices_ = gpu::create_device_buffer(context, std::span<const gpu::DeformVertex>(packed),
-                                          VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    vertices_ = upload(context, pack_deform_vertices(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     vertices_view_ = gpu::create_texel_view(context, vertices_.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    std::vector<gpu::MorphDelta> deltas = pack_morph_deltas(model);
-    if (deltas.empty()) deltas.emplace_back();
-    if (2 * deltas.size() > context.properties.limits.maxTexelBufferElements)
-        fail("the model's " + std::to_string(deltas.size()) + " morph deltas exceed the device's texel buffer limit of " +
+    if (2 * model.morph_deltas.size() > context.properties.limits.maxTexelBufferElements)
+        fail("the model's " + std::to_string(model.morph_deltas.size()) +
+             " morph deltas exceed the device's texel buffer limit of " +
              std::to_string(context.properties.limits.maxTexelBufferElements / 2));
-    deltas_ = gpu::create_device_buffer(context, std::span<const gpu::MorphDelta>(deltas), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    deltas_ = upload(context, pack_morph_deltas(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     deltas_view_ = gpu::create_texel_view(context, deltas_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
     const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);

@@ -216,7 +216,7 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     const VkExtent2D extent{options.width, options.height};
     auto target_holder = std::make_unique<OffscreenTarget>(context, extent);
     OffscreenTarget& target = *target_holder;
-    auto probe_holder = std::make_unique<LimitProbe>(context, extent, context.depth_format);
+    auto probe_holder = std::make_unique<LimitProbe>(context, extent);
     log(printf_string("device: %s; %ux%u; %d warm-up + %d timed frames per cell; view yaw %.0f, pitch %.0f",
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));

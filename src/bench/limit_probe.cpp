@@ -23,10 +23,10 @@ struct ProbeConstants {  // shaders/limit_probe.vert's push constants
 
 }  // namespace
 
-LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent, VkFormat depth_format)
-    : context_(context), extent_(extent), depth_format_(depth_format) {
+LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent)
+    : context_(context), extent_(extent), depth_format_(context.depth_format) {
     color_ = gpu::Image(context, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    depth_ = gpu::Image(context, extent, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, depth_aspect());
+    depth_ = gpu::Image(context, extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, depth_aspect());
     VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(ProbeConstants)};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.pushConstantRangeCount = 1;
@@ -46,7 +46,7 @@ LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent, VkFormat 
     desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
     desc.stencil = gpu::CoverageStencil::Test;
     desc.blend = true;
-    desc.depth_format = depth_format;
+    desc.depth_format = depth_format_;
     state_pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
 }
 

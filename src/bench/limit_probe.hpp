@@ -22,8 +22,7 @@ namespace stipple::bench {
 
 class LimitProbe {
 public:
-    // `depth_format`: the stipple pass's, for the probe with its state.
-    LimitProbe(const gpu::Context& context, VkExtent2D extent, VkFormat depth_format);
+    LimitProbe(const gpu::Context& context, VkExtent2D extent);
     ~LimitProbe();
     LimitProbe(const LimitProbe&) = delete;
     LimitProbe& operator=(const LimitProbe&) = delete;
@@ -40,7 +39,7 @@ private:
 
     const gpu::Context& context_;
     VkExtent2D extent_;
-    VkFormat depth_format_;
+    VkFormat depth_format_;  // the context's, as the stipple pass's
     gpu::Image color_;
     gpu::Image depth_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
