@@ -3,8 +3,8 @@
 //   density (compute pass, or CPU upload; facing bits) -> depth pass (polygon offset) -> stipples
 //   (points, or the compute splat) -> line edges (compute: Raskar-Cohen list, visible object-space
 //   pieces) -> lines (wide lines, capsules).
-// The same recording serves offscreen renders and the window's swapchain images. The line passes
-// live in line_passes.cpp.
+// The same recording serves offscreen renders and the window's swapchain images. The depth pass lives
+// in depth_pass.cpp, the compute splat in splat_pass.cpp, the line passes in line_passes.cpp.
 #include <memory>
 #include <string>
 #include <utility>
@@ -146,23 +146,26 @@ private:
     void create_pipelines(VkFormat color_format, VkFormat depth_format);
     void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
+    void record_stipples(VkCommandBuffer cb);
+    // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
+    void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
+    bool uses_splat(const ObjectGpu& object) const;
+    bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
+    bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
+    // depth_pass.cpp
     void choose_depth_lists(const FrameView& view);   // which objects' depth passes draw a list this frame
     void record_depth_triangles(VkCommandBuffer cb);  // the depth pass's lists (objects that draw one)
     void record_depth(VkCommandBuffer cb);
-    void record_stipples(VkCommandBuffer cb);
-    void record_line_edges(VkCommandBuffer cb);  // line_passes.cpp
-    void record_lines(VkCommandBuffer cb);       // line_passes.cpp
-    // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
-    void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
+    void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
+    // splat_pass.cpp
     void ensure_frame_buffers(const RenderTargets& targets);
     bool splat_composes_dots() const;
-    void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
-    bool uses_splat(const ObjectGpu& object) const;
     VkPipeline splat_pipeline(bool round_points, bool whole_dots);
-    bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
-    bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
-    void ensure_visible_list(ObjectGpu& object);       // record_visible: room for every candidate
+    void ensure_visible_list(ObjectGpu& object);  // record_visible: room for every candidate
+    // line_passes.cpp
+    void record_line_edges(VkCommandBuffer cb);
+    void record_lines(VkCommandBuffer cb);
 
     const gpu::Context& context_;
     RendererOptions options_;

@@ -1,0 +1,180 @@
+// The compute splat's frame (beyond the paper; shaders/splat.comp): the colour so far as words in a
+// buffer (or the linear target's own pixels), the scene depth copied to words beside it
+// (depth_pass.cpp), one indirect dispatch per object over the work items the density pass listed,
+// and the words back into the colour image. Also the list of visible stipples it records for vector
+// output (RendererOptions::record_visible).
+#include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/packing.hpp>
+
+#include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "render/descriptor_schema.hpp"
+#include "render/shared_types.hpp"
+#include "render/stipple_renderer.hpp"
+
+namespace stipple {
+
+VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots) {
+    // Made the first time a frame needs it: most runs use one of the four.
+    VkPipeline& pipeline = splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0)];
+    if (pipeline) return pipeline;
+    gpu::Specialization specialization = splat_specialization_;
+    specialization.constants.push_back({gpu::kSpecRoundPoints, round_points ? 1u : 0u});
+    specialization.constants.push_back({gpu::kSpecWholeDot, whole_dots ? 1u : 0u});
+    pipeline = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline, specialization);
+    return pipeline;
+}
+
+void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
+    const VkExtent2D extent = targets.extent;
+    // The target's own words are bound every frame: another target's buffer may come at the same handle.
+    const bool words = targets.color_words != VK_NULL_HANDLE;
+    const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
+    const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
+    // The large dots' cover sums, full size only while some object draws them (else a placeholder).
+    const VkDeviceSize cover_bytes = splat_composes_dots() ? pixels * 4 : 4;
+    const bool cover_changed = splat_cover_.size() != cover_bytes;
+    if (!resized && !words && !splat_in_words_ && !cover_changed) return;
+    const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    if (resized) {
+        splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                        gpu::MemoryUse::DeviceLocal);
+        splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                   gpu::MemoryUse::DeviceLocal);
+        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        splat_extent_ = extent;
+    }
+    if (cover_changed) splat_cover_ = gpu::Buffer(context_, cover_bytes, usage, gpu::MemoryUse::DeviceLocal);
+    splat_in_words_ = words;
+    // In the order of splat_frame_bindings(): background, scene depth, colour, cover. The previous frame
+    // has completed.
+    const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(),
+                                      words ? targets.color_words : splat_color_.handle(), splat_cover_.handle()};
+    gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
+}
+
+// Whether a splat object draws large (round) dots, whose overlapping fractional ones compose (splat.comp).
+bool StippleRenderer::splat_composes_dots() const {
+    return std::any_of(objects_.begin(), objects_.end(), [&](const auto& object) {
+        return uses_splat(*object) && (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+    });
+}
+
+// The scene depth is already in splat_depth_ (copy_scene_depth).
+void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targets) {
+    const VkDeviceSize pixels = VkDeviceSize(targets.extent.width) * targets.extent.height;
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {targets.extent.width, targets.extent.height, 1};
+
+    // The colour so far: the background the splat mixes ink into, and the buffer it draws in. With
+    // only paper under the splat (no toon surfaces, no stipples drawn as points) both are a fill.
+    const bool paper_only = paper_under_splat();
+    const uint32_t blue_first =
+        color_format_ == VK_FORMAT_B8G8R8A8_UNORM || color_format_ == VK_FORMAT_B8G8R8A8_SRGB ? 1u : 0u;
+    const glm::vec4 paper = blue_first ? glm::vec4(glm::vec3(view_.paper_color.b, view_.paper_color.g,
+                                                             view_.paper_color.r), 1.0f)
+                                       : glm::vec4(glm::vec3(view_.paper_color), 1.0f);
+    const VkBuffer words = targets.color_words;
+    if (words) {
+        // The splat draws in the image's own pixels: GENERAL, where a linear image's memory is its pixels.
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        if (paper_only) {
+            vkCmdFillBuffer(cb, words, 0, pixels * 4, glm::packUnorm4x8(paper));
+        } else {
+            const VkBufferCopy whole{0, 0, pixels * 4};
+            vkCmdCopyBuffer(cb, words, splat_background_.handle(), 1, &whole);
+        }
+    } else {
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT);
+        if (paper_only) {
+            vkCmdFillBuffer(cb, splat_color_.handle(), 0, pixels * 4, glm::packUnorm4x8(paper));
+        } else {
+            vkCmdCopyImageToBuffer(cb, targets.color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, splat_background_.handle(),
+                                   1, &region);
+            gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                VK_ACCESS_2_TRANSFER_READ_BIT);
+            const VkBufferCopy whole{0, 0, pixels * 4};
+            vkCmdCopyBuffer(cb, splat_background_.handle(), splat_color_.handle(), 1, &whole);
+        }
+    }
+    // Overlapping fractional large dots compose through their summed optical depth (splat.comp).
+    if (splat_composes_dots()) vkCmdFillBuffer(cb, splat_cover_.handle(), 0, pixels * 4, 0u);
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    timer_.mark(cb, "splat_in");
+    const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
+    vkCmdPushConstants(cb, layouts_.splat_pipeline, gpu::kPushConstantStages, 0, sizeof push, push);
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (const auto& object : objects_) {  // objects in one pass, in any order: the same image
+        if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
+        const bool round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+        const VkPipeline pipeline = splat_pipeline(round, view_.detail_scale > 1.0f);
+        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+        bound = pipeline;
+        VkDescriptorSet sets[] = {object->set, image_set_};
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
+                                nullptr);
+        vkCmdDispatchIndirect(cb, object->frame.drawn_polygons.handle(), 0);  // the polygons that draw
+    }
+    timer_.mark(cb, "splat");
+
+    if (words) {  // already in the image: back to an attachment for what follows (lines, a read-back)
+        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                           VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                               VK_ACCESS_2_TRANSFER_READ_BIT);
+        return;
+    }
+    // Back into the colour image, and back to an attachment for what follows.
+    gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdCopyBufferToImage(cb, splat_color_.handle(), targets.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                       VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
+void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
+    const VkDeviceSize bytes =
+        sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * VkDeviceSize(object.geometry.stipple_count);
+    if (object.frame.visible_stipples.size() >= bytes) return;
+    object.frame.visible_stipples = gpu::Buffer(
+        context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
+    write_object_descriptors(object);
+}
+
+std::vector<gpu::VisibleStipple> StippleRenderer::read_visible_stipples(size_t index) const {
+    const ObjectGpu& object = *objects_.at(index);
+    if (!options_.record_visible || !object.frame.splatted)
+        fail("read_visible_stipples: object " + std::to_string(index) +
+             " was not drawn by the splat with recording on (RendererOptions::record_visible, a splat path)");
+    const std::vector<std::byte> bytes = gpu::read_buffer(context_, object.frame.visible_stipples);
+    gpu::VisibleStipplesHeader header{};
+    std::memcpy(&header, bytes.data(), sizeof header);
+    STIPPLE_CHECK(header.count <= object.geometry.stipple_count, "more visible stipples than candidates");
+    std::vector<gpu::VisibleStipple> visible(header.count);
+    if (!visible.empty())  // memcpy from or to no storage is undefined even for 0 bytes
+        std::memcpy(visible.data(), bytes.data() + sizeof header, sizeof(gpu::VisibleStipple) * visible.size());
+    return visible;
+}
+
+}  // namespace stipple
