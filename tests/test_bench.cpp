@@ -250,6 +250,27 @@ TEST(BenchReport, MarkdownPutsThePapersFiguresAndRatiosBesideOurs) {
     EXPECT_TRUE(j["models"][1]["limit_probe"].is_null());
 }
 
+TEST(BenchReport, SplatAgainstThePointsPipelinePerDrawnStipple) {
+    bench::BenchResults r = synthetic_results();
+    EXPECT_EQ(bench::markdown_report(r).find("against the points pipeline"), std::string::npos);  // no splat column
+    EXPECT_TRUE(nlohmann::json::parse(bench::json_report(r))["models"][0]["splat_against_points"].is_null());
+    // The horse gets splat cells: its indirect cells draw in 2 ms (synthetic_results), the splat's dispatches
+    // take 0.5 ms and its copies 0.25 + 0.2 + 0.05. The cell with lines must not count.
+    for (const bool lines : {false, true}) {
+        bench::CellResult splat;
+        splat.column = bench::Column{DensityPath::Splat, lines};
+        splat.gpu_ms = {{"depth", 1.0}, {"depth_copy", 0.25}, {"splat_in", 0.2}, {"splat", lines ? 9.0 : 0.5}, {"splat_out", 0.05}};
+        r.models[0].cells.push_back(splat);
+    }
+    const std::string md = bench::markdown_report(r);
+    EXPECT_NE(md.find("| horse | 2.00 | 0.50 | 4.00× | 1.00 | 2.00× |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| dragon | 2.00 |"), std::string::npos);  // no splat cell, no row
+    const nlohmann::json j = nlohmann::json::parse(bench::json_report(r));
+    EXPECT_DOUBLE_EQ(j["models"][0]["splat_against_points"]["x"].get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(j["models"][0]["splat_against_points"]["x_kernel"].get<double>(), 4.0);
+    EXPECT_TRUE(j["models"][1]["splat_against_points"].is_null());
+}
+
 TEST(BenchReport, JsonHoldsEveryCell) {
     nlohmann::json j = nlohmann::json::parse(bench::json_report(synthetic_results()));
     ASSERT_EQ(j["models"].size(), 2u);

@@ -35,6 +35,13 @@ json cell_json(const CellResult& cell) {
     return j;
 }
 
+json splat_json(const ModelResult& m) {
+    const std::optional<SplatAgainstPoints> s = splat_against_points(m);
+    if (!s) return nullptr;
+    return {{"points_ms", s->points_ms}, {"splat_ms", s->splat_ms}, {"splat_with_copies_ms", s->splat_all_ms},
+            {"x", s->x()}, {"x_kernel", s->x_kernel()}};
+}
+
 json limit_json(const ModelResult& m) {
     if (!m.limit) return nullptr;
     const ModelResult::LimitProbe& l = *m.limit;
@@ -82,6 +89,7 @@ json model_json(const ModelResult& m) {
         {"image", m.image},
         {"cells", cells},
         {"limit_probe", limit_json(m)},
+        {"splat_against_points", splat_json(m)},
     };
 }
 

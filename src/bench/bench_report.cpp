@@ -176,6 +176,28 @@ void limit_table(std::ostringstream& md, const BenchResults& r) {
     md << "\n";
 }
 
+// Issue 17's target 5: the compute splat against the points pipeline, per drawn stipple.
+void splat_table(std::ostringstream& md, const BenchResults& r) {
+    bool any = false;
+    for (const ModelResult& m : r.models) any = any || splat_against_points(m).has_value();
+    if (!any) return;
+    md << "## The splat against the points pipeline\n\n";
+    md << "Per drawn stipple: the indirect path draws the same survivors as the splat (GPU densities) as points, "
+          "in one indirect draw. Points = its stipples pass; splat = the splat's dispatches, and with what only the "
+          "splat needs (the depth copied to words, the paper filled in, the copy out); GPU ms are medians of "
+          "timestamps, no lines.\n\n";
+    md << "| model | points ms | splat ms | x | splat with its copies ms | x |\n";
+    md << "|---|---:|---:|---:|---:|---:|\n";
+    for (const ModelResult& m : r.models) {
+        const std::optional<SplatAgainstPoints> s = splat_against_points(m);
+        if (!s) continue;
+        md << "| " << m.entry.name << " | " << printf_string("%.2f | %.2f | %.2f× | %.2f | %.2f×", s->points_ms, s->splat_ms,
+                                                             s->x_kernel(), s->splat_all_ms, s->x())
+           << " |\n";
+    }
+    md << "\n";
+}
+
 }  // namespace
 
 std::string with_commas(uint64_t n) {
@@ -226,6 +248,7 @@ std::string markdown_report(const BenchResults& results) {
     model_table(md, results);
     animated_table(md, results);
     limit_table(md, results);
+    splat_table(md, results);
     if (results.plot_order) md << plot_order_markdown(*results.plot_order);
     for (const std::string& note : results.notes) md << "**Note:** " << note << "\n\n";
     if (results.validation_messages > 0)

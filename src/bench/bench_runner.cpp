@@ -315,4 +315,26 @@ BenchResults run_bench(const BenchOptions& options, const Logger& log) {
     return results;
 }
 
+std::optional<SplatAgainstPoints> splat_against_points(const ModelResult& model) {
+    const CellResult *points = nullptr, *splat = nullptr;
+    for (const CellResult& cell : model.cells) {
+        if (cell.column.lines || cell.column.object_lines != ObjectLines::None) continue;
+        if (cell.column.path == DensityPath::Indirect) points = &cell;
+        if (cell.column.path == DensityPath::Splat) splat = &cell;
+    }
+    if (!points || !splat) return std::nullopt;
+    auto pass_ms = [](const CellResult& cell, const std::string& pass) {
+        for (const auto& [name, ms] : cell.gpu_ms)
+            if (name == pass) return ms;
+        return 0.0;
+    };
+    SplatAgainstPoints r;
+    r.points_ms = pass_ms(*points, "stipples");
+    r.splat_ms = pass_ms(*splat, "splat");
+    r.splat_all_ms = r.splat_ms;
+    for (const char* pass : {"depth_copy", "splat_in", "splat_out"}) r.splat_all_ms += pass_ms(*splat, pass);
+    if (r.points_ms <= 0.0 || r.splat_ms <= 0.0) return std::nullopt;
+    return r;
+}
+
 }  // namespace stipple::bench

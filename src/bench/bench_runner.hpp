@@ -103,6 +103,19 @@ struct ModelResult {
     }
 };
 
+// Issue 17's target 5, the splat against the points pipeline per drawn stipple: the indirect path draws
+// the same survivors as the splat (the same GPU densities) through the rasteriser's points, one indirect
+// draw of the listed stipples, so the ratio of the two passes' GPU times is the ratio per drawn stipple.
+// From the cells without lines of both paths; none when either is not in the run.
+struct SplatAgainstPoints {
+    double points_ms = 0.0;      // the indirect cell's "stipples" pass, median GPU ms
+    double splat_ms = 0.0;       // the splat cell's "splat" pass (the dispatches)
+    double splat_all_ms = 0.0;   // with what only the splat needs: the depth's copy, the paper fill, the copy out
+    double x() const { return splat_all_ms > 0.0 ? points_ms / splat_all_ms : 0.0; }
+    double x_kernel() const { return splat_ms > 0.0 ? points_ms / splat_ms : 0.0; }
+};
+std::optional<SplatAgainstPoints> splat_against_points(const ModelResult& model);
+
 // The animated row: the same skinned model drawn static (its rest mesh, stipples without headroom) and
 // playing its animation (deformation pass each frame, stipples with headroom), standard view, splat path.
 struct AnimatedRow {
