@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -133,6 +135,64 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
                              "lower --dmax or --max-stipples"})
         EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The fraction of pixels darker than mid-grey in each quarter of the image (top left, top right, bottom
+// left, bottom right).
+std::array<double, 4> ink_by_quarter(const Image& image) {
+    std::array<double, 4> inked{};
+    const int w = image.width, h = image.height;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (image.pixels[(size_t(y) * w + x) * image.channels] < 128) inked[(y >= h / 2 ? 2 : 0) + (x >= w / 2 ? 1 : 0)] += 1.0;
+    for (double& q : inked) q /= double(w / 2) * double(h / 2);
+    return inked;
+}
+
+// An image whose pixel words do not fit the device's largest storage buffer (the splat's, here made so with
+// STIPPLE_MAX_STORAGE_BUFFER; lavapipe's is 128 MiB, 5792x5792 pixels) is drawn in tiles, as a print is:
+// the same drawing as one frame, without a validation message; what needs one frame says so in one line.
+TEST(CliRender, ImagesLargerThanOneFrameAreDrawnInTiles) {
+    const auto dir = test::temp_dir("cli-tiled");
+    const std::string tiled = (dir / "tiled.png").string(), whole = (dir / "whole.png").string();
+    const test::CommandResult one = run_stipple({"render", "-o", whole, "--width", "2000", "--height", "1500"});
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    // 1,572,864 pixels (the default scene's own buffers need 5.6 MiB): tiles of 1254 x 1254, 2 x 2 of them.
+    ::setenv("STIPPLE_MAX_STORAGE_BUFFER", "6M", 1);
+    const test::CommandResult r = run_stipple({"render", "-o", tiled, "--width", "2000", "--height", "1500", "--stats"});
+    const test::CommandResult mask = run_stipple(
+        {"render", "-o", tiled + ".x.png", "--width", "2000", "--height", "1500", "--mask", (dir / "m.png").string()});
+    const test::CommandResult svg = run_stipple({"render", "-o", (dir / "x.svg").string(), "--width", "2000", "--height", "1500"});
+    const test::CommandResult tone = run_stipple({"tone", "--width", "2000", "--height", "1500", "--frames", "1"});
+    ::unsetenv("STIPPLE_MAX_STORAGE_BUFFER");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("not measured (drawn in tiles)"), std::string::npos) << r.out;
+    const Image a = read_png(tiled), b = read_png(whole);
+    ASSERT_EQ(a.width, 2000);
+    ASSERT_EQ(a.height, 1500);
+    // Every tile drawn where it belongs: the drawing the same as one frame's, quarter by quarter (the tiles'
+    // seams fall at 1254 pixels, inside the right and the bottom quarters).
+    const std::array<double, 4> qa = ink_by_quarter(a), qb = ink_by_quarter(b);
+    for (int q = 0; q < 4; ++q) {
+        std::printf("quarter %d: ink %.4f tiled, %.4f one frame\n", q, qa[q], qb[q]);
+        ASSERT_GT(qb[q], 0.01) << "the default scene reaches every quarter";
+        EXPECT_NEAR(qa[q] / qb[q], 1.0, 0.01) << "quarter " << q;
+    }
+    size_t differ = 0;
+    for (size_t i = 0; i < a.pixels.size(); i += 4) differ += (a.pixels[i] < 128) != (b.pixels[i] < 128);
+    std::printf("pixels inked differently: %zu of %d\n", differ, a.width * a.height);
+    EXPECT_LT(double(differ), 1e-3 * a.width * a.height);
+    for (const test::CommandResult* refused : {&mask, &svg}) {
+        EXPECT_EQ(refused->exit_code, 1);
+        EXPECT_EQ(count_lines(refused->err), 1u) << refused->err;
+        EXPECT_NE(refused->err.find("is drawn in tiles on this device"), std::string::npos) << refused->err;
+    }
+    EXPECT_NE(mask.err.find("--mask"), std::string::npos);
+    // tone draws whole frames: refused by the renderer, in one line, before any Vulkan error.
+    EXPECT_EQ(tone.exit_code, 1);
+    EXPECT_EQ(tone.err.find("validation"), std::string::npos) << tone.err;
+    EXPECT_NE(tone.err.find("more than this device's largest storage buffer"), std::string::npos) << tone.err;
 }
 
 TEST(CliRender, BadParametersAreRejectedClearly) {

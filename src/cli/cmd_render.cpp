@@ -19,6 +19,7 @@
 #include "gpu/context.hpp"
 #include "io/png_io.hpp"
 #include "render/offscreen.hpp"
+#include "render/tiled_render.hpp"
 #include "scene/frame_sequence.hpp"
 #include "scene/scene_content.hpp"
 #include "scene/scene_json.hpp"
@@ -178,9 +179,23 @@ int run_render(const std::vector<std::string>& argv) {
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
     renderer_options.depth_cull = *depth_cull;
+    // Larger than one render target holds on this device (the splat's pixel words are one storage buffer):
+    // the image is drawn in tiles, as a print is.
+    const bool tiled = !print && !fits_one_target(context, extent);
+    if (tiled) {
+        const uint32_t side = largest_tile_side(context);
+        const std::string why = std::to_string(width) + "x" + std::to_string(height) +
+                                " is drawn in tiles on this device (one frame holds at most " +
+                                std::to_string(uint64_t(side) * side) + " pixels, e.g. " + std::to_string(side) + "x" +
+                                std::to_string(side) + ")";
+        if (vector) fail("-o " + output + ": vector output reads one frame, and " + why);
+        if (args.has("--mask")) fail("--mask needs one frame, and " + why);
+        if (repeat > 0) fail("--repeat times one frame, and " + why);
+    }
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     add_scene_objects(renderer, scene, content.objects);
-    OffscreenTarget target(context, extent);
+    std::optional<OffscreenTarget> target;
+    if (!tiled) target.emplace(context, extent);
 
     // Frames are written as they are drawn (a long orbit needs no more memory than one frame).
     ProgressBar bar("Rendering frames", sequence);
@@ -200,7 +215,14 @@ int run_render(const std::vector<std::string>& argv) {
             bar.update(double(i + 1) / double(cameras.size()));
             continue;
         }
-        frame = target.render(renderer, view);
+        if (tiled) {
+            const Image image = render_tiled(context, renderer, view, largest_tile_side(context));
+            render_seconds = seconds_since(render_start);
+            write_png(output_path(output, i, sequence), image);
+            bar.update(double(i + 1) / double(cameras.size()));
+            continue;
+        }
+        frame = target->render(renderer, view);
         render_seconds = seconds_since(render_start);
         if (vector) {
             last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
@@ -218,7 +240,7 @@ int run_render(const std::vector<std::string>& argv) {
     std::vector<double> frame_ms;
     std::map<std::string, std::vector<double>> pass_ms;
     for (long long i = 0; i < repeat; ++i) {
-        frame_ms.push_back(target.draw(renderer, view));
+        frame_ms.push_back(target->draw(renderer, view));
         for (const auto& [pass, ms] : renderer.stats().gpu_ms) pass_ms[pass].push_back(ms);
     }
 
@@ -252,11 +274,16 @@ int run_render(const std::vector<std::string>& argv) {
                         scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
                         sequence ? " (last frame)" : "");
         }
-        for (const auto& [pass, ms] : stats.gpu_ms) std::printf("gpu %-16s%.3f ms\n", (pass + ":").c_str(), ms);
+        for (const auto& [pass, ms] : stats.gpu_ms)
+            std::printf("gpu %-16s%.3f ms%s\n", (pass + ":").c_str(), ms, tiled ? " (the last tile)" : "");
         if (paths.find("cpu") != std::string::npos)
             std::printf("cpu density:        %.3f ms\n", stats.cpu_density_ms);
-        std::printf("covered pixels:     %zu\n", covered);
-        std::printf("ink inside object:  %.1f%%\n", 100.0 * ink);
+        if (tiled) {
+            std::printf("covered pixels:     not measured (drawn in tiles)\n");
+        } else {
+            std::printf("covered pixels:     %zu\n", covered);
+            std::printf("ink inside object:  %.1f%%\n", 100.0 * ink);
+        }
         std::printf("load + generation:  %.3f s (generation %.3f s)\n", prepare_seconds, content.generation_seconds);
         std::printf("render + readback:  %.3f s%s\n", render_seconds, sequence ? " (last frame)" : "");
     }

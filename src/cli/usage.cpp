@@ -206,6 +206,8 @@ Environment:
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory free: how
                           a smaller GPU refuses an object too big for it, tried on a big one
+  STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
+                          draws an image whose pixel words do not fit one in tiles (lavapipe: 128M)
 
 Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the
 file and the problem), 2 on a bad command line or Vulkan validation messages.

@@ -311,6 +311,17 @@ void Context::submit_and_wait(VkCommandBuffer cb) const {
     VK_CHECK(result);
 }
 
+// A size in bytes from an environment variable ("64M", "2G", "512k" or bytes); 0 when unset or not a size.
+static uint64_t size_from_environment(const char* name) {
+    const char* text = std::getenv(name);
+    if (!text) return 0;
+    char* end = nullptr;
+    double value = std::strtod(text, &end);
+    const std::string unit = end ? end : "";
+    value *= unit == "G" ? 1073741824.0 : unit == "M" ? 1048576.0 : unit == "k" ? 1024.0 : 1.0;
+    return value > 0.0 ? uint64_t(value) : 0;
+}
+
 uint64_t Context::device_memory_available() const {
     VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
     VkPhysicalDeviceMemoryProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
@@ -323,14 +334,14 @@ uint64_t Context::device_memory_available() const {
         if (memory_budget_) left = budget.heapBudget[h] > budget.heapUsage[h] ? budget.heapBudget[h] - budget.heapUsage[h] : 0;
         best = std::max(best, left);
     }
-    if (const char* limit = std::getenv("STIPPLE_GPU_MEMORY_LIMIT")) {
-        char* end = nullptr;
-        double value = std::strtod(limit, &end);
-        const std::string unit = end ? end : "";
-        value *= unit == "G" ? 1073741824.0 : unit == "M" ? 1048576.0 : unit == "k" ? 1024.0 : 1.0;
-        if (value > 0.0) best = std::min(best, uint64_t(value));
-    }
+    if (const uint64_t limit = size_from_environment("STIPPLE_GPU_MEMORY_LIMIT")) best = std::min(best, limit);
     return best;
+}
+
+uint64_t Context::max_storage_buffer_bytes() const {
+    const uint64_t device = properties.limits.maxStorageBufferRange;
+    const uint64_t limit = size_from_environment("STIPPLE_MAX_STORAGE_BUFFER");
+    return limit ? std::min(device, limit) : device;
 }
 
 uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,

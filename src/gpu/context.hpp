@@ -87,8 +87,9 @@ public:
     // (VK_EXT_memory_budget) where the device offers it, else the largest device-local heap. Lowered by
     // STIPPLE_GPU_MEMORY_LIMIT (e.g. 64M: how a smaller device would refuse, tried on a big one).
     uint64_t device_memory_available() const;
-    // The largest storage buffer a shader may read (maxStorageBufferRange).
-    uint64_t max_storage_buffer_bytes() const { return properties.limits.maxStorageBufferRange; }
+    // The largest storage buffer a shader may read (maxStorageBufferRange). Lowered by
+    // STIPPLE_MAX_STORAGE_BUFFER (e.g. 16M: how a device with a smaller limit draws large images in tiles).
+    uint64_t max_storage_buffer_bytes() const;
 
     // Lists the devices Vulkan sees, "index: name (type)", for --help-style output and errors.
     static std::vector<std::string> list_devices();

@@ -9,6 +9,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "gpu/context.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/shared_types.hpp"
@@ -33,6 +34,13 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     const bool words = targets.color_words != VK_NULL_HANDLE;
     const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
     const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
+    if (pixels * 4 > context_.max_storage_buffer_bytes())
+        fail(printf_string("a %ux%u frame needs %.0f MiB of pixel words for the compute splat and the object-space "
+                           "lines, more than this device's largest storage buffer (%.0f MiB): draw it in tiles "
+                           "(stipple render does so itself), smaller, or with a points path (--density-path "
+                           "vertex, indirect or cpu) and no object-space lines",
+                           extent.width, extent.height, double(pixels * 4) / 1048576.0,
+                           double(context_.max_storage_buffer_bytes()) / 1048576.0));
     // The large dots' cover sums, full size only while some object draws them (else a placeholder).
     const VkDeviceSize cover_bytes = splat_composes_dots() ? pixels * 4 : 4;
     const bool cover_changed = splat_cover_.size() != cover_bytes;

@@ -1,6 +1,7 @@
 #include "render/tiled_render.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -22,6 +23,18 @@ glm::mat4 tile_projection(const glm::mat4& proj, VkExtent2D full, VkOffset2D ori
     to_tile[3][0] = -sx * cx;
     to_tile[3][1] = -sy * cy;
     return to_tile * proj;
+}
+
+bool fits_one_target(const gpu::Context& context, VkExtent2D extent) {
+    return uint64_t(extent.width) * extent.height * 4u <= context.max_storage_buffer_bytes() &&
+           extent.width <= context.properties.limits.maxImageDimension2D &&
+           extent.height <= context.properties.limits.maxImageDimension2D;
+}
+
+uint32_t largest_tile_side(const gpu::Context& context) {
+    uint32_t side = uint32_t(std::sqrt(double(context.max_storage_buffer_bytes() / 4u)));
+    while (side > 16 && !fits_one_target(context, {side, side})) --side;
+    return std::min(side, context.properties.limits.maxImageDimension2D);
 }
 
 Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile) {

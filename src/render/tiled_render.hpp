@@ -12,6 +12,13 @@ namespace stipple {
 // (rows from the top, as the renderer's negative-height viewport puts them).
 glm::mat4 tile_projection(const glm::mat4& proj, VkExtent2D full, VkOffset2D origin, VkExtent2D tile);
 
+// The largest image one render target can draw on this device: the compute splat (and the object-space
+// lines) read the frame as a storage buffer of one 32-bit word a pixel, which must fit the device's largest
+// storage buffer (lavapipe: 128 MiB, 33.5 million pixels).
+bool fits_one_target(const gpu::Context& context, VkExtent2D extent);
+// The side of the largest square tile that fits one target.
+uint32_t largest_tile_side(const gpu::Context& context);
+
 // Draws `view` (its extent the whole image) in tiles of at most `max_tile` pixels a side and returns the
 // opaque colour image. `renderer` holds the objects; the splat paths need targets that allow it (ours do).
 Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile);
