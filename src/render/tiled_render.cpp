@@ -39,7 +39,7 @@ uint32_t largest_tile_side(const gpu::Context& context) {
 
 Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile) {
     const VkExtent2D full = view.extent;
-    const uint32_t limit = std::min<uint32_t>(max_tile, context.properties.limits.maxImageDimension2D);
+    const uint32_t limit = std::min<uint32_t>(max_tile, largest_tile_side(context));
     STIPPLE_CHECK(limit >= 16, "render_tiled: tiles of at least 16 pixels");
     Image image;
     image.width = int(full.width);

@@ -19,7 +19,8 @@ bool fits_one_target(const gpu::Context& context, VkExtent2D extent);
 // The side of the largest square tile that fits one target.
 uint32_t largest_tile_side(const gpu::Context& context);
 
-// Draws `view` (its extent the whole image) in tiles of at most `max_tile` pixels a side and returns the
+// Draws `view` (its extent the whole image) in tiles of at most `max_tile` pixels a side (and no larger
+// than one target holds: largest_tile_side) and returns the
 // opaque colour image. `renderer` holds the objects; the splat paths need targets that allow it (ours do).
 Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile);
 
