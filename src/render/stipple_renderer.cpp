@@ -278,12 +278,14 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                 dispatch(*object, facing_pipeline_);  // the lines' facing bits
         }
     }
-    // Indirect path: the list of the stipples that draw, from the densities just written.
+    // Indirect path: the list of the stipples that draw, from the densities just written (read through
+    // their texel view: a sampled read).
     if (any_indirect) {
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         for (auto& object : objects_)
             if (object->geometry.triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
                 dispatch(*object, drawn_stipples_pipeline_);
