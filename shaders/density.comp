@@ -84,7 +84,7 @@ void main() {
     // prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of
     // the splat's dispatch that start in it.
     uint drawn_here = drawn_stipple_count(density, uint(candidates));
-    uint run = splat_run_length(drawn_here);
+    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
     uint items = (drawn_here + run - 1u) / run;
     uint listed_here = subgroupAdd(items);
     if (listed_here == 0u) return;

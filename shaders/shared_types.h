@@ -38,6 +38,19 @@ STIPPLE_CONST uint kSplatChunk = 64;
 // whose polygons draw 1-3, did not change. Polygons that draw more keep runs of kSplatChunk: a framed
 // 12-triangle cube, all runs full, was 20% slower with runs of 4 (each run reads its polygon again).
 STIPPLE_CONST uint kSplatShortRun = 4;
+// Large dots cost more iterations: a dot walks its box of pixel centres, and a dot astride the outline
+// searches a ring around that box for each pixel it moves inward (splat.comp). Runs of 64 dots of 16 px
+// (289 box iterations each) went past the limit: on a framed cube with 16-px dots at D_max 0.004 the
+// splat drew 981 stipples where the points pipeline drew 1,189 (32-px dots: 127 against 596). So the
+// splat's runs are shortened to keep each invocation within kSplatIterationBudget (splat_run_length), a
+// dot moves no more pixels than kSplatRingFactor times its box's iterations allow (at most kSplatRingCap
+// iterations of ring search; 1.5- to 6-px dots never reach it), and its side is at most kSplatMaxSide
+// pixels, so that even kSplatShortRun of the largest dots fit: the points pipeline's largest are 256
+// (64-px points at kMaxStippleScale).
+STIPPLE_CONST uint kSplatIterationBudget = 32768;
+STIPPLE_CONST uint kSplatRingFactor = 32;
+STIPPLE_CONST uint kSplatRingCap = 2048;
+STIPPLE_CONST float kSplatMaxSide = 100.0f;
 
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer

@@ -177,7 +177,10 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
     ivec2 ring_lo = max(lo - 1, ivec2(0)), ring_hi = min(hi + 1, isize - 1);
     float last_distance = -1.0;
     uint last_at = 0u;
-    for (uint k = 0u; k < lost; ++k) {
+    // At most what the ring search may cost (splat_ring_budget): large dots move a few of their pixels.
+    uint ring_iterations = uint(ring_hi.x - ring_lo.x + 1) * uint(ring_hi.y - ring_lo.y + 1);
+    uint moved = min(lost, splat_ring_budget(side) / max(ring_iterations, 1u));
+    for (uint k = 0u; k < moved; ++k) {
         float best_distance = 3.0e38;
         uint best_at = 0xFFFFFFFFu;
         for (int y = ring_lo.y; y <= ring_hi.y; ++y)
@@ -214,8 +217,8 @@ void main() {
     uint candidates = polygon_candidates(t, first, object.flags);
     uint begin = item - first;
     uint drawn_here = drawn_stipple_count(density, candidates);
-    uint end = min(drawn_here, begin + splat_run_length(drawn_here));
-    float side = object.shading.y * stipple_scale(density, float(candidates));  // larger when owed more
+    float side = splat_dot_side(object.shading.y, density, float(candidates));  // larger when owed more
+    uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0), frame.ink_color.rgb,
                                       frame.paper_color.rgb);

@@ -131,12 +131,31 @@ STIPPLE_FN uint drawn_stipple_count(float density, uint candidates) {
     return min(uint(ceil(max(density, 0.0f))), candidates);
 }
 
-// The splat's work items: a polygon drawing `drawn` stipples is cut into runs of this many (kSplatShortRun
-// and kSplatChunk in shared_types.h say why). The density pass, the CPU's list and the splat all cut alike.
-STIPPLE_FN uint splat_run_length(uint drawn) { return drawn <= kSplatChunk ? kSplatShortRun : kSplatChunk; }
-
 STIPPLE_FN float stipple_scale(float density, float candidates) {
     return clamp(sqrt(density / max(candidates, 1.0f)), 1.0f, kMaxStippleScale);
+}
+
+// The side of a polygon's dots on the splat, in pixels: the point size, larger where the candidates cannot
+// carry the density (stipple_scale), and at most kSplatMaxSide (shared_types.h).
+STIPPLE_FN float splat_dot_side(float point_size, float density, float candidates) {
+    return min(point_size * stipple_scale(density, candidates), kSplatMaxSide);
+}
+
+// The iterations of a dot's box of pixel centres (at most ceil(side) + 1 a side), and at most how many
+// its search for pixels to move into may take (kSplatRingFactor, kSplatRingCap in shared_types.h).
+STIPPLE_FN uint splat_box_iterations(float side) {
+    uint n = uint(ceil(side)) + 1u;
+    return n * n;
+}
+STIPPLE_FN uint splat_ring_budget(float side) { return min(kSplatRingFactor * splat_box_iterations(side), kSplatRingCap); }
+
+// The splat's work items: a polygon drawing `drawn` stipples of side `side` is cut into runs of this many
+// (kSplatShortRun, kSplatChunk and kSplatIterationBudget in shared_types.h say why). The density pass,
+// the CPU's list and the splat all cut alike.
+STIPPLE_FN uint splat_run_length(uint drawn, float side) {
+    uint longest = drawn <= kSplatChunk ? kSplatShortRun : kSplatChunk;
+    uint per_dot = splat_box_iterations(side) + splat_ring_budget(side);
+    return clamp(kSplatIterationBudget / per_dot, kSplatShortRun, longest);
 }
 
 // Everything one polygon's density depends on, in view space.

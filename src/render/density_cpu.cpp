@@ -39,18 +39,20 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     auto* list = reinterpret_cast<uint32_t*>(static_cast<std::byte*>(state.draw_staging.mapped()) +
                                              staged_list_offset(object));
     uint32_t count = 0;
-    // Each polygon that draws this frame: its first candidate and its drawn stipples.
+    // Each polygon that draws this frame: its first candidate, its drawn stipples and its splat dots' side.
+    const float point_size = object.frame.uniforms.shading.y;
     auto for_each_drawing_polygon = [&](auto&& visit) {
         for (uint32_t t = 0; t < geometry.triangle_count; ++t) {
             if (!(densities[t] > 0.0f)) continue;
-            const uint32_t first = geometry.first_stipple[t];
-            visit(first, formulas::drawn_stipple_count(densities[t], geometry.first_stipple[t + 1] - first));
+            const uint32_t first = geometry.first_stipple[t], candidates = geometry.first_stipple[t + 1] - first;
+            visit(first, formulas::drawn_stipple_count(densities[t], candidates),
+                  formulas::splat_dot_side(point_size, densities[t], float(candidates)));
         }
     };
     if (draws_by_splat(object.params.density_path)) {  // runs of splat_run_length drawn stipples
         uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
-        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn) {
-            const uint32_t run = formulas::splat_run_length(drawn);
+        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn, float side) {
+            const uint32_t run = formulas::splat_run_length(drawn, side);
             for (uint32_t k = 0; k < drawn; k += run) items[count++] = first + k;
         });
         const uint32_t group = gpu::kDensityWorkgroupSize;
@@ -58,7 +60,7 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
         std::memcpy(list, &header, sizeof header);
     } else {
         uint32_t* stipples = list + sizeof(gpu::DrawCommand) / sizeof(uint32_t);  // the survivors, drawn as one
-        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn) {
+        for_each_drawing_polygon([&](uint32_t first, uint32_t drawn, float) {
             for (uint32_t k = 0; k < drawn; ++k) stipples[count++] = first + k;
         });
         const gpu::DrawCommand header{count, 1u, 0u, 0u};

@@ -87,7 +87,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
         const float density = formulas::polygon_density(
             formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), params);
         const uint32_t candidates = object.geometry.first_stipple[t + 1] - object.geometry.first_stipple[t];
-        const float side = object.params.point_size * formulas::stipple_scale(density, float(candidates));
+        const float side = formulas::splat_dot_side(object.params.point_size, density, float(candidates));
         for (uint32_t k = 0; k < formulas::drawn_stipple_count(density, candidates); ++k) {
             const float intensity = formulas::stipple_intensity(density, float(k));
             const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
