@@ -47,6 +47,10 @@ STIPPLE_CONST uint kSplatShortRun = 4;
 // iterations of ring search; 1.5- to 6-px dots never reach it), and its side is at most kSplatMaxSide
 // pixels, so that even kSplatShortRun of the largest dots fit: the points pipeline's largest are 256
 // (64-px points at kMaxStippleScale).
+// The depth pass's slope-scaled polygon offset (vkCmdSetDepthBias's slope factor; the constant is in
+// stipple_renderer.hpp): a surface is pushed back by this many times its depth change per pixel, which
+// leaves one- to two-pixel dots on their own surface (large_dot_depth_pull does the rest for larger ones).
+STIPPLE_CONST float kDepthBiasSlopeFactor = 1.5f;
 STIPPLE_CONST uint kSplatIterationBudget = 32768;
 STIPPLE_CONST uint kSplatRingFactor = 32;
 STIPPLE_CONST uint kSplatRingCap = 2048;

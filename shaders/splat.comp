@@ -120,7 +120,7 @@ uint optical_depth_units(float intensity) {
 }
 
 void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon,
-           SplatConstants c) {
+           SplatConstants c, float depth_pull) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -155,7 +155,7 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
             }
             uint at = uint(y) * uint(size.x) + uint(x);
             uint word = scene_depth[at];
-            if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z, word)) {
+            if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z - depth_pull, word)) {
                 if (uncovered(word)) ++lost;
                 continue;
             }
@@ -193,7 +193,7 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
                 uint at = uint(y) * uint(isize.x) + uint(x);
                 if (distance < last_distance || (distance == last_distance && at <= last_at)) continue;
                 if (distance > best_distance || (distance == best_distance && at >= best_at)) continue;
-                if (hidden_or_uncovered(ndc.z, scene_depth[at])) continue;
+                if (hidden_or_uncovered(ndc.z - depth_pull, scene_depth[at])) continue;
                 best_distance = distance;
                 best_at = at;
             }
@@ -220,13 +220,18 @@ void main() {
     float side = splat_dot_side(object.shading.y, density, float(candidates));  // larger when owed more
     uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
+    // Large dots stay on their own slanted surface (large_dot_depth_pull); the small dots' variant has none
+    // of this code.
+    float depth_pull = 0.0;
+    if (kRoundPoints) depth_pull = large_dot_depth_pull(window_depth_slope(polygon, model_view_proj, frame.viewport.xy), side);
     SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0), frame.ink_color.rgb,
                                       frame.paper_color.rgb);
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     uint whole_end = clamp(uint(floor(density)), begin, end);
-    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon, c);
+    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
     for (uint k = whole_end; k < end; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon, c);
+        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon, c,
+              depth_pull);
 }

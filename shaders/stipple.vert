@@ -13,6 +13,7 @@
 
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 layout(constant_id = kSpecDrawnList) const bool kDrawnList = false;
+layout(constant_id = kSpecRoundPoints) const bool kRoundPoints = false;  // dots above 2.5 px
 
 layout(location = 0) in vec2 in_barycentric;  // (u, v) in the polygon, R16G16_UNORM
 layout(location = 1) in uint in_triangle;
@@ -57,6 +58,11 @@ void main() {
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[stipple >> 5u], 1u << (stipple & 31u));
     }
-    vec3 position = stipple_position(polygon_frame(triangle), barycentric);  // survivors only
+    PolygonFrame polygon = polygon_frame(triangle);
+    vec3 position = stipple_position(polygon, barycentric);  // survivors only
     gl_Position = object.model_view_proj * vec4(position, 1.0);
+    if (kRoundPoints) {  // large dots stay on their own slanted surface (large_dot_depth_pull)
+        vec2 slope = window_depth_slope(polygon, object.model_view_proj, frame.viewport.xy);
+        gl_Position.z -= large_dot_depth_pull(slope, gl_PointSize) * gl_Position.w;
+    }
 }

@@ -135,6 +135,17 @@ STIPPLE_FN float stipple_scale(float density, float candidates) {
     return clamp(sqrt(density / max(candidates, 1.0f)), 1.0f, kMaxStippleScale);
 }
 
+// §2.1 hidden-stipple removal for dots larger than the depth pass's polygon offset was set for. A dot is
+// drawn flat, at its centre's depth, while its polygon's depth changes across it: on a slanted face half
+// of a 32-px disc fell behind its own surface (cut circles). Its depth is pulled toward the eye by what its
+// plane changes over half its side, less what the polygon offset already gives (kDepthBiasSlopeFactor times
+// the larger slope): nothing for dots up to 1.5 px, so the default look keeps the paper's plain test.
+// depth_slope: the polygon's window depth change per pixel along x and y (window_depth_slope).
+STIPPLE_FN float large_dot_depth_pull(vec2 depth_slope, float side) {
+    float across = 0.5f * side * (abs(depth_slope.x) + abs(depth_slope.y));
+    return max(across - kDepthBiasSlopeFactor * max(abs(depth_slope.x), abs(depth_slope.y)), 0.0f);
+}
+
 // The side of a polygon's dots on the splat, in pixels: the point size, larger where the candidates cannot
 // carry the density (stipple_scale), and at most kSplatMaxSide (shared_types.h).
 STIPPLE_FN float splat_dot_side(float point_size, float density, float candidates) {

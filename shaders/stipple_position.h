@@ -44,4 +44,19 @@ vec3 stipple_position(PolygonFrame polygon, vec2 barycentric) {
     return polygon.origin + barycentric.x * polygon.edge_u + barycentric.y * polygon.edge_v;
 }
 
+// The polygon's window depth change per pixel along x and y (rows from the top), from its projected
+// corners; zero where a corner is behind the eye or the polygon is seen edge-on.
+vec2 window_depth_slope(PolygonFrame polygon, mat4 model_view_proj, vec2 viewport) {
+    vec4 a = model_view_proj * vec4(polygon.origin, 1.0);
+    vec4 b = model_view_proj * vec4(polygon.origin + polygon.edge_u, 1.0);
+    vec4 c = model_view_proj * vec4(polygon.origin + polygon.edge_v, 1.0);
+    if (a.w <= 0.0 || b.w <= 0.0 || c.w <= 0.0) return vec2(0.0);
+    vec2 half_size = 0.5 * viewport;
+    vec3 wa = vec3(a.xy / a.w * vec2(half_size.x, -half_size.y), a.z / a.w);
+    vec3 e1 = vec3(b.xy / b.w * vec2(half_size.x, -half_size.y), b.z / b.w) - wa;
+    vec3 e2 = vec3(c.xy / c.w * vec2(half_size.x, -half_size.y), c.z / c.w) - wa;
+    float det = e1.x * e2.y - e1.y * e2.x;
+    if (abs(det) < 1e-3) return vec2(0.0);
+    return vec2(e1.z * e2.y - e2.z * e1.y, e2.z * e1.x - e1.z * e2.x) / det;
+}
 #endif

@@ -417,6 +417,34 @@ TEST_F(DensityPaths, AllPathsDrawEveryLargeDotOfLargePolygons) {
     }
 }
 
+// A large dot is drawn flat at its centre's depth while its face slants away: half of a 32-px disc fell
+// behind its own surface (cut circles, 443 inked pixels a dot on this view against 754 now), on every path.
+// large_dot_depth_pull keeps the whole disc on its face; few dots, so that they seldom overlap.
+TEST_F(DensityPaths, LargeDotsOnSlantedFacesAreWholeDiscs) {
+    ObjectParams params;
+    params.point_size = 32.0f;
+    params.generation.dmax = 0.0004f;
+    Prepared box = test::prepare(make_box(), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
+    renderer.add_object(box.mesh, box.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {1280, 1024});
+    const FrameView view = test::framed_view(compute_bounding_sphere(box.mesh), target.extent(), 1.0f, 35.0f, 25.0f);
+    const double disc = 3.14159265 * 16.0 * 16.0;
+    for (DensityPath path : {DensityPath::Vertex, DensityPath::Splat}) {
+        renderer.params(0).density_path = path;
+        const RenderedFrame frame = target.render(renderer, view);
+        size_t dark = 0;
+        for (size_t i = 0; i < frame.color.pixels.size(); i += 4) dark += frame.color.pixels[i] < 128;
+        const double drawn = double(renderer.stats().drawn_stipples);
+        std::printf("%s path: %.0f dots, %.0f dark pixels a dot (a disc: %.0f)\n", density_path_name(path), drawn,
+                    double(dark) / drawn, disc);
+        ASSERT_GT(drawn, 50.0);
+        EXPECT_GT(double(dark) / drawn, 0.85 * disc) << density_path_name(path) << ": dots cut by their own face";
+    }
+}
+
 TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
     // One triangle facing the camera, five stipples far apart, lit at 60 degrees: with shading only,
     // the density is 5 * (1 - cos 60) = 2.5, so two stipples are full, one is half and two are culled.

@@ -34,7 +34,8 @@ StippleRenderer::~StippleRenderer() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     deform_pass_.reset();
-    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipeline_, stipple_list_pipeline_,
+    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipelines_[0], stipple_pipelines_[1],
+                         stipple_list_pipelines_[0], stipple_list_pipelines_[1],
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
                          density_list_pipelines_[1], facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
@@ -82,9 +83,13 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.blend = true;
     stipple.color_format = color_format;
     stipple.depth_format = depth_format;
-    stipple_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layouts_.pipeline);
-    stipple.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
-    stipple_list_pipeline_ = gpu::create_graphics_pipeline(context_, stipple, layouts_.pipeline);
+    for (uint32_t round : {0u, 1u}) {  // [1]: large dots, pulled onto their own slanted surface
+        gpu::GraphicsPipelineDesc variant = stipple;
+        variant.specialization.constants.push_back({gpu::kSpecRoundPoints, round});
+        stipple_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
+        variant.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
+        stipple_list_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
+    }
 
     gpu::GraphicsPipelineDesc toon = depth;
     toon.vertex_shader = "toon.vert";
@@ -306,7 +311,8 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         // the list holds; the others every candidate, culled by the vertex shader.
         const bool listed = object->params.density_path == DensityPath::Indirect ||
                             object->params.density_path == DensityPath::Cpu;
-        const VkPipeline pipeline = listed ? stipple_list_pipeline_ : stipple_pipeline_;
+        const size_t round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u ? 1 : 0;
+        const VkPipeline pipeline = listed ? stipple_list_pipelines_[round] : stipple_pipelines_[round];
         if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         bound = pipeline;
         VkDeviceSize offset = 0;

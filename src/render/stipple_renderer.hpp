@@ -174,8 +174,9 @@ private:
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
     std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
     VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
-    VkPipeline stipple_pipeline_ = VK_NULL_HANDLE;       // every candidate; the vertex shader culls (§3.2)
-    VkPipeline stipple_list_pipeline_ = VK_NULL_HANDLE;  // the survivors' list (indirect and cpu paths)
+    // [1]: the variants for large dots (kSpecRoundPoints).
+    VkPipeline stipple_pipelines_[2] = {};       // every candidate; the vertex shader culls (§3.2)
+    VkPipeline stipple_list_pipelines_[2] = {};  // the survivors' list (indirect and cpu paths)
     // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
     VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
@@ -214,6 +215,6 @@ private:
 
 // Polygon offset of the depth pass, in the units of vkCmdSetDepthBias.
 inline constexpr float kDepthBiasConstant = 2.0f;
-inline constexpr float kDepthBiasSlope = 1.5f;
+inline constexpr float kDepthBiasSlope = gpu::kDepthBiasSlopeFactor;  // shaders/shared_types.h
 
 }  // namespace stipple
