@@ -373,6 +373,17 @@ TEST_F(DensityPaths, EveryPathReadsTheMeshAlikeAFloatOrAVertexPerTexel) {
     EXPECT_GT(test::mean_ink(scalar.frames[0]), 0.05);
 }
 
+// The most stipples one polygon draws, from a drawn-stipple mask.
+size_t most_drawn_by_one_polygon(const StippleSet& stipples, const std::vector<uint32_t>& mask) {
+    size_t most = 0;
+    for (size_t t = 0; t + 1 < stipples.first.size(); ++t) {
+        size_t drawn = 0;
+        for (uint32_t i = stipples.first[t]; i < stipples.first[t + 1]; ++i) drawn += (mask[i >> 5] >> (i & 31)) & 1u;
+        most = std::max(most, drawn);
+    }
+    return most;
+}
+
 TEST_F(DensityPaths, AllPathsDrawEveryStippleOfLargePolygons) {
     // A framed 12-triangle box draws thousands of stipples per polygon. One splat invocation per
     // polygon inked only the first ~3,500 of them on lavapipe (its loop limit, see kSplatChunk): the
@@ -380,12 +391,7 @@ TEST_F(DensityPaths, AllPathsDrawEveryStippleOfLargePolygons) {
     ObjectParams params;
     Prepared box = test::prepare(make_box(), params);
     PathFrames out = draw_with_every_path(*context, box, params, 1.0f);
-    size_t most = 0;
-    for (size_t t = 0; t + 1 < box.stipples.first.size(); ++t) {
-        size_t drawn = 0;
-        for (uint32_t i = box.stipples.first[t]; i < box.stipples.first[t + 1]; ++i) drawn += (out.masks[0][i >> 5] >> (i & 31)) & 1u;
-        most = std::max(most, drawn);
-    }
+    const size_t most = most_drawn_by_one_polygon(box.stipples, out.masks[0]);
     std::printf("box: %zu stipples drawn, at most %zu by one polygon\n", test::popcount(out.masks[0]), most);
     EXPECT_GT(most, 20 * size_t(gpu::kSplatChunk)) << "the box should draw many work items per polygon";
     expect_same_stipples_and_images(out);
@@ -401,12 +407,7 @@ TEST_F(DensityPaths, AllPathsDrawEveryLargeDotOfLargePolygons) {
     params.generation.dmax = 0.002f;
     Prepared box = test::prepare(make_box(), params);
     PathFrames out = draw_with_every_path(*context, box, params, 1.0f);
-    size_t most = 0;
-    for (size_t t = 0; t + 1 < box.stipples.first.size(); ++t) {
-        size_t drawn = 0;
-        for (uint32_t i = box.stipples.first[t]; i < box.stipples.first[t + 1]; ++i) drawn += (out.masks[0][i >> 5] >> (i & 31)) & 1u;
-        most = std::max(most, drawn);
-    }
+    const size_t most = most_drawn_by_one_polygon(box.stipples, out.masks[0]);
     std::printf("box, 32-px dots: %zu stipples drawn, at most %zu by one polygon\n", test::popcount(out.masks[0]), most);
     EXPECT_GT(most, size_t(gpu::kSplatChunk)) << "some polygon should draw more than one run of the old length";
     for (size_t i = 1; i < out.masks.size(); ++i) {
