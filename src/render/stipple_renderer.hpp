@@ -213,8 +213,8 @@ private:
     FrameStats stats_;
 };
 
-// Polygon offset of the depth pass, in the units of vkCmdSetDepthBias.
+// Polygon offset of the depth pass, in the units of vkCmdSetDepthBias (the slope factor,
+// kDepthBiasSlopeFactor, is in shaders/shared_types.h: the large dots read it too).
 inline constexpr float kDepthBiasConstant = 2.0f;
-inline constexpr float kDepthBiasSlope = gpu::kDepthBiasSlopeFactor;  // shaders/shared_types.h
 
 }  // namespace stipple
