@@ -430,6 +430,7 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
     for (const char* file : {"results.md", "results.json", "chart.svg"}) EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
     nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
     EXPECT_EQ(j["validation_messages"], 0);
+    EXPECT_EQ(j["queued_frames"], 1) << "a CPU device waits on every frame by default";
     EXPECT_EQ(j["width"], 1280);
     EXPECT_EQ(j["height"], 1024);
     ASSERT_EQ(j["models"].size(), 2u);
@@ -507,15 +508,20 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
 
 TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     fs::path out = test::temp_dir("bench_no_scans");
+    // Three frames queued per submission: every column's passes recorded back to back in one command
+    // buffer (the validation layer is on: a descriptor set rewritten between them would be an error).
     test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1",
                                          "--warmup", "0", "--width", "320", "--height", "256", "--models-dir",
-                                         "/nonexistent/stipple/models", "--out", out.string()});
+                                         "/nonexistent/stipple/models", "--out", out.string(), "--queued", "3"});
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("not in /nonexistent/stipple/models"), std::string::npos);
     EXPECT_NE(r.out.find("procedural UV sphere"), std::string::npos);
     nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
     EXPECT_FALSE(j["scans_found"].get<bool>());
+    EXPECT_EQ(j["queued_frames"], 3);
+    EXPECT_EQ(j["validation_messages"], 0);
+    EXPECT_NE(read_bytes(out / "results.md").find("with 3 frames queued back to back per submission"), std::string::npos);
     ASSERT_EQ(j["models"].size(), 1u);
     EXPECT_TRUE(j["models"][0]["procedural"].get<bool>());
     // Indirect without lines, with Raskar-Cohen lines, then with each kind of object-space line.
@@ -554,7 +560,7 @@ TEST(BenchCommand, CompareListsTheCellsThatGotSlower) {
 TEST(BenchCommand, BadArgumentsFailWithOneLine) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"bench", "--models", "teapot"}, {"bench", "--paths", "vertex,raytrace"},
-          {"bench", "--frames", "0"}, {"bench", "--width", "0"}, {"bench", "--paths", "vertex,,cpu"},
+          {"bench", "--frames", "0"}, {"bench", "--queued", "0"}, {"bench", "--width", "0"}, {"bench", "--paths", "vertex,,cpu"},
           {"bench", "model.obj"}, {"bench", "--no-such-option"}, {"bench", "--compare", "/nonexistent/old/results.json"}}) {
         test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 1) << args.back();

@@ -128,5 +128,45 @@ TEST_F(RenderBasics, TheSplatDrawsTheSameInTheImagesWordsAsThroughACopy) {
     }
 }
 
+TEST_F(RenderBasics, FramesQueuedInOneSubmissionAndTargetsTakenInTurnDrawTheSame) {
+    // The bench queues frames back to back in one command buffer (OffscreenTarget::draw_queued), so the
+    // splat binds a target's words only when they are new to it (by the target's serial, since a new
+    // buffer may reuse a handle). Each path: queued frames, then a second target, then the first again,
+    // all the reference image (a target left unbound would stay blank; a rebinding between queued frames
+    // is a validation error).
+    Prepared sphere = prepare(make_icosphere(4), ObjectParams{});
+    const Sphere frame_on{glm::vec3(0.0f), 1.0f};
+    const VkExtent2D extent{320, 256};
+    const float aspect = float(extent.width) / float(extent.height);
+    FrameView view;
+    view.camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    for (DensityPath path : {DensityPath::Splat, DensityPath::Vertex, DensityPath::Indirect, DensityPath::Cpu}) {
+        ObjectParams params;
+        params.density_path = path;
+        params.silhouette_lines = true;
+        StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+        renderer.add_object(sphere.mesh, sphere.stipples, sphere.model, params);
+        OffscreenTarget first(*context, extent);
+        const RenderedFrame reference = first.render(renderer, view);
+        const double ms = first.draw_queued(renderer, view, 3);
+        const RenderedFrame after_queue = first.render(renderer, view);
+        auto second = std::make_unique<OffscreenTarget>(*context, extent);
+        const RenderedFrame on_second = second->render(renderer, view);
+        second.reset();
+        OffscreenTarget third(*context, extent);  // may reuse the second's handles
+        const RenderedFrame on_third = third.render(renderer, view);
+        const RenderedFrame first_again = first.render(renderer, view);
+        size_t inked = 0;
+        for (size_t i = 0; i < reference.color.pixels.size(); i += 4) inked += reference.color.pixels[i] < 128;
+        std::printf("%s: %zu inked pixels, %.2f ms a queued frame, GPU passes %zu\n", density_path_name(path), inked, ms,
+                    renderer.stats().gpu_ms.size());
+        EXPECT_GT(inked, 1000u) << density_path_name(path);
+        EXPECT_EQ(after_queue.color.pixels, reference.color.pixels) << density_path_name(path);
+        EXPECT_EQ(on_second.color.pixels, reference.color.pixels) << density_path_name(path);
+        EXPECT_EQ(on_third.color.pixels, reference.color.pixels) << density_path_name(path);
+        EXPECT_EQ(first_again.color.pixels, reference.color.pixels) << density_path_name(path);
+    }
+}
+
 }  // namespace
 }  // namespace stipple

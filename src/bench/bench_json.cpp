@@ -136,6 +136,7 @@ std::string json_report(const BenchResults& r) {
         {"width", r.width},
         {"height", r.height},
         {"warmup_frames", r.warmup},
+        {"queued_frames", r.queued},
         {"timed_frames", r.frames},
         {"quick", r.quick},
         {"view", {{"yaw_deg", kViewYawDeg}, {"pitch_deg", kViewPitchDeg}, {"distance", kViewDistance}}},

@@ -28,8 +28,12 @@ void header_lines(std::ostringstream& md, const BenchResults& r) {
     md << "- image: " << r.width << "x" << r.height << "; standard view: the model framed, yaw " << kViewYawDeg
        << "°, pitch " << kViewPitchDeg << "°, the default light; default parameters (the README's look)\n";
     md << "- frames: " << r.warmup << " warm-up + " << r.frames
-       << " timed per cell; fps = 1000 / median wall time of a frame (prepare, record, submit, wait; no read-back); "
-          "GPU ms: median of each pass's timestamps\n";
+       << " timed per cell; fps = 1000 / median wall time of a frame (prepare, record, submit, wait; no read-back)"
+       << (r.queued > 1 ? printf_string(", with %d frames queued back to back per submission (--queued: the wall time of "
+                                        "the batch over %d; GPU ms are its last frame's)",
+                                        r.queued, r.queued)
+                        : std::string())
+       << "; GPU ms: median of each pass's timestamps\n";
     md << "- models: "
        << (r.scans_found ? "derived from the scans in " + r.models_dir + " (cache: " + r.cache_dir + ")"
                          : "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " +

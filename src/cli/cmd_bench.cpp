@@ -30,7 +30,7 @@ long long bounded(const Args& args, const std::string& name, long long fallback,
 int run_bench(const std::vector<std::string>& argv) {
     Args args(argv, {"--quick", "--list-devices", "--animated-only"},
               {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
-               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots", "--depth-cull"});
+               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots", "--depth-cull", "--queued"});
     if (args.flag("--list-devices")) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
         return 0;
@@ -43,6 +43,7 @@ int run_bench(const std::vector<std::string>& argv) {
     // --quick: the two smallest rows, the paper's two paths with and without lines, 5 timed frames.
     options.frames = int(bounded(args, "--frames", options.quick ? 5 : 20, 1, 100000));
     options.warmup = int(bounded(args, "--warmup", 3, 0, 1000));
+    options.queued = args.has("--queued") ? int(bounded(args, "--queued", 1, 1, 1000)) : 0;  // 0: by device
     options.width = uint32_t(bounded(args, "--width", 1280, 1, 16384));
     options.height = uint32_t(bounded(args, "--height", 1024, 1, 16384));
     options.device = int(args.integer("--device", -1));

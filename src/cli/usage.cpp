@@ -189,6 +189,9 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
                           not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
   --depth-cull MODE       auto, on or off, as for render (default auto)
+  --queued N              queue N frames back to back per submission, each timed frame the batch's wall
+                          time over N (default: 1 on a CPU device such as lavapipe, 8 on a GPU, which
+                          waited on after every small frame idles and lowers its clocks)
   --compare OLD.json      after the run, list the cells (fps, generation, plot order) more than 10%%
                           slower than in an earlier results.json, and those only one of the two has
   --plot-dots N           the plot-order row's blue-noise dots (default 150000, --quick 15000 without

@@ -1,5 +1,6 @@
 #include "render/offscreen.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cstring>
 
@@ -35,23 +36,36 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent,
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     color_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
     depth_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
+    static std::atomic<uint64_t> next_serial{1};
+    if (color_.words() != VK_NULL_HANDLE) words_serial_ = next_serial++;
 }
 
 RenderTargets OffscreenTarget::targets() const {
-    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true, color_.words()};
+    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true, color_.words(), words_serial_};
 }
 
-double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) {
+double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) { return draw_queued(renderer, view, 1); }
+
+double OffscreenTarget::draw_queued(StippleRenderer& renderer, const FrameView& view, int frames) {
+    STIPPLE_CHECK(frames >= 1, "draw_queued needs at least one frame");
     auto start = std::chrono::steady_clock::now();
     FrameView sized = view;
     sized.extent = extent_;
-    renderer.prepare(sized);
     VkCommandBuffer cb = context_.begin_one_shot();
-    renderer.record(cb, targets());
+    for (int i = 0; i < frames; ++i) {
+        // Nothing runs before the submission, so preparing (uniforms, CPU densities) over the last
+        // frame's data races with nothing; the GPU finishes each frame before the next one's first pass.
+        renderer.prepare(sized);
+        if (i > 0)
+            gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+        renderer.record(cb, targets());
+    }
     context_.submit_and_wait(cb);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    renderer.collect();
-    return ms;
+    renderer.collect();  // the last frame's GPU times
+    return ms / frames;
 }
 
 RenderedFrame OffscreenTarget::render(StippleRenderer& renderer, const FrameView& view) {

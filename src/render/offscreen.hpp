@@ -32,6 +32,10 @@ public:
     RenderedFrame render(StippleRenderer& renderer, const FrameView& view);
     // The same frame without the read-back (what an interactive frame costs); returns wall milliseconds.
     double draw(StippleRenderer& renderer, const FrameView& view);
+    // `frames` such frames queued back to back in one submission, each prepared on the CPU as it is recorded;
+    // returns wall milliseconds per frame. A real GPU waited on after every frame spends much of it on the
+    // round trip (submission, fence, wake-up); an interactive program keeps frames in flight instead.
+    double draw_queued(StippleRenderer& renderer, const FrameView& view, int frames);
 
 private:
     const gpu::Context& context_;
@@ -40,6 +44,7 @@ private:
     gpu::Image depth_;
     gpu::Buffer color_readback_;
     gpu::Buffer depth_readback_;
+    uint64_t words_serial_ = 0;  // RenderTargets::color_words_serial of color_'s words
 };
 
 }  // namespace stipple

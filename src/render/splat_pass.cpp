@@ -30,8 +30,10 @@ VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots) {
 
 void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     const VkExtent2D extent = targets.extent;
-    // The target's own words are bound every frame: another target's buffer may come at the same handle.
+    // A target's own words are bound again unless they are the ones bound (by serial: another target's
+    // buffer may come at the same handle).
     const bool words = targets.color_words != VK_NULL_HANDLE;
+    const bool same_words = words && targets.color_words_serial != 0 && targets.color_words_serial == splat_words_serial_;
     const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
     const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     if (pixels * 4 > context_.max_storage_buffer_bytes())
@@ -44,7 +46,7 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     // The large dots' cover sums, full size only while some object draws them (else a placeholder).
     const VkDeviceSize cover_bytes = splat_composes_dots() ? pixels * 4 : 4;
     const bool cover_changed = splat_cover_.size() != cover_bytes;
-    if (!resized && !words && !splat_in_words_ && !cover_changed) return;
+    if (!resized && !cover_changed && (words ? same_words : !splat_in_words_)) return;
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     if (resized) {
         splat_background_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -56,6 +58,7 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     }
     if (cover_changed) splat_cover_ = gpu::Buffer(context_, cover_bytes, usage, gpu::MemoryUse::DeviceLocal);
     splat_in_words_ = words;
+    splat_words_serial_ = words ? targets.color_words_serial : 0;
     // In the order of splat_frame_bindings(): background, scene depth, colour, cover. The previous frame
     // has completed.
     const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(),

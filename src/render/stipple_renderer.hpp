@@ -62,6 +62,11 @@ struct RenderTargets {
     // gpu::Image::linear_with_words), or null: the splat then draws in them instead of in a buffer of its
     // own that is copied into the image after.
     VkBuffer color_words = VK_NULL_HANDLE;
+    // Names color_words for the lifetime of its buffer (a process-wide serial; 0: unnamed). A buffer made
+    // after another was destroyed may get its handle, so the handle alone cannot tell the splat that
+    // the words it bound are still these; with a serial it rebinds only for new ones, and frames can
+    // be recorded back to back into one command buffer (OffscreenTarget::draw_queued).
+    uint64_t color_words_serial = 0;
 };
 
 struct RendererOptions {
@@ -202,6 +207,7 @@ private:
     gpu::Buffer splat_cover_;       // large fractional dots' summed optical depth per pixel (splat.comp), or 4 bytes
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
     VkExtent2D splat_extent_{};
+    uint64_t splat_words_serial_ = 0;  // RenderTargets::color_words_serial of the words bound (0: none or unnamed)
     bool splat_in_words_ = false;  // the splat's colour binding holds a target's words (RenderTargets::color_words)
     bool splat_targets_ = false;  // this frame's targets support the splat
     gpu::Buffer frame_uniforms_;
