@@ -3,7 +3,8 @@
 // compute pass can draw them without the rasteriser. One invocation per item of the work list
 // (runs of at most kSplatChunk stipples of the polygons that draw this frame, listed by the density
 // pass or the CPU) takes the polygon's density (the density pass's, §2.1-2.3, or the CPU's), walks
-// its run of the drawn stipples (index < ceil(density) and its candidates, the last at the fractional intensity, §2.1; larger dots where the
+// its run of the drawn stipples (index < ceil(density) and its candidates, the last at the fractional
+// intensity, §2.1, or as a smaller dot where dots are round, fractional_round_dot; larger dots where the
 // candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
@@ -119,8 +120,11 @@ uint optical_depth_units(float intensity) {
     return uint(min(-log2(1.0 - intensity), kSplatMaxOpticalDepth) * kSplatOpticalDepthScale + 0.5);
 }
 
-void splat(uint index, float intensity, bool full, float side, mat4 model_view_proj, PolygonFrame polygon,
-           SplatConstants c, float depth_pull) {
+// `fraction`: the stipple's intensity as the paper has it (stipple_intensity), which the visible list
+// records for vector output; `intensity` and `side`: the dot drawn (a round fractional one is smaller and
+// of full ink, fractional_round_dot).
+void splat(uint index, float fraction, float intensity, bool full, float side, mat4 model_view_proj,
+           PolygonFrame polygon, SplatConstants c, float depth_pull) {
     if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
@@ -164,7 +168,7 @@ void splat(uint index, float intensity, bool full, float side, mat4 model_view_p
         }
     if (kRecordVisible && inked) {
         uint slot = atomicAdd(visible.count, 1u);
-        visible_stipples[slot] = VisibleStipple(window.x, window.y, intensity, index);
+        visible_stipples[slot] = VisibleStipple(window.x, window.y, fraction, index);
     }
     // At print detail the dot is enlarged as a whole and its outline band is the screen's, enlarged.
     if (lost == 0u || whole_dot) return;
@@ -223,15 +227,27 @@ void main() {
     // Large dots stay on their own slanted surface (large_dot_depth_pull); the small dots' variant has none
     // of this code.
     float depth_pull = 0.0;
-    if (kRoundPoints) depth_pull = large_dot_depth_pull(window_depth_slope(polygon, model_view_proj, frame.viewport.xy), side);
+    vec2 depth_slope = vec2(0.0);
+    if (kRoundPoints) {
+        depth_slope = window_depth_slope(polygon, model_view_proj, frame.viewport.xy);
+        depth_pull = large_dot_depth_pull(depth_slope, side);
+    }
     SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0), frame.ink_color.rgb,
                                       frame.paper_color.rgb);
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     uint whole_end = clamp(uint(floor(density)), begin, end);
-    for (uint k = begin; k < whole_end; ++k) splat(first + k, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
-    for (uint k = whole_end; k < end; ++k)
-        splat(first + k, stipple_intensity(density, float(k)), false, side, model_view_proj, polygon, c,
-              depth_pull);
+    for (uint k = begin; k < whole_end; ++k)
+        splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
+    for (uint k = whole_end; k < end; ++k) {
+        float fraction = stipple_intensity(density, float(k));
+        if (kRoundPoints) {  // a smaller dot, of full ink where it is large enough to show its area
+            vec2 dot_now = fractional_round_dot(fraction, side);
+            splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, model_view_proj, polygon, c,
+                  large_dot_depth_pull(depth_slope, dot_now.x));
+        } else {
+            splat(first + k, fraction, fraction, false, side, model_view_proj, polygon, c, depth_pull);
+        }
+    }
 }

@@ -54,6 +54,11 @@ void main() {
     // Larger dots where the polygon's candidates cannot carry its density (stipple_scale).
     uint candidates = polygon_candidates(triangle, draw.first_stipple, object.flags);
     gl_PointSize = object.shading.y * stipple_scale(draw.density, float(candidates));
+    if (kRoundPoints && intensity < 1.0f) {  // the fractional last dot: smaller, of full ink
+        vec2 dot_now = fractional_round_dot(intensity, gl_PointSize);
+        gl_PointSize = dot_now.x;
+        out_intensity = dot_now.y;
+    }
     if (kCountDrawn) {
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[stipple >> 5u], 1u << (stipple & 31u));

@@ -120,6 +120,22 @@ STIPPLE_FN float stipple_intensity(float density, float index) {
     return clamp(density - index, 0.0f, 1.0f);
 }
 
+// Beyond the paper, for round dots (points above 2.5 px, kFlagRoundPoints, and every dot of a print): the
+// last stipple's fraction f of a dot of side s is drawn as a smaller dot of full ink, of side s sqrt(f).
+// Its area, so its ink, is the faded dot's, and it grows as f does: still no popping. Vector output draws
+// it so (plot_plan: radius times sqrt(intensity)), and a pen has no grey: a faint disc many pixels wide
+// reads as a wash, not as a dot. Below kShrunkDotMinSide a raster dot cannot show its area, so there
+// it keeps that side and fades instead (intensity f s^2 / side^2, the same ink). The paper's 1-2 px points
+// fade (stipple_intensity). Returns (side, intensity).
+STIPPLE_CONST float kShrunkDotMinSide = 2.5f;
+
+STIPPLE_FN vec2 fractional_round_dot(float fraction, float side) {
+    float shrunk = side * sqrt(fraction);
+    if (shrunk >= kShrunkDotMinSide) return vec2(shrunk, 1.0f);
+    float kept = min(side, kShrunkDotMinSide);
+    return vec2(kept, clamp(fraction * (side * side) / (kept * kept), 0.0f, 1.0f));
+}
+
 // A polygon owed more stipples than it has candidates (close up, on a large image, or near and dark
 // with the intrinsic enhancement) draws all of them, each dot enlarged so that the ink is the owed
 // ink: its side grows by sqrt(density / candidates), at most kMaxStippleScale (beyond that the

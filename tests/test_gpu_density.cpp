@@ -449,6 +449,8 @@ TEST_F(DensityPaths, LargeDotsOnSlantedFacesAreWholeDiscs) {
 TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
     // One triangle facing the camera, five stipples far apart, lit at 60 degrees: with shading only,
     // the density is 5 * (1 - cos 60) = 2.5, so two stipples are full, one is half and two are culled.
+    // Points of 2 px (the paper's kind): the half one has half the ink's intensity (§2.1). Round dots of
+    // 5 px: the half one is a dot of full ink and half the area (fractional_round_dot), on every path.
     Mesh mesh;
     mesh.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
     mesh.indices = {0, 1, 2};
@@ -458,32 +460,50 @@ TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
                           {0.0f, -0.1f, 0.0f}};
     stipples.triangle.assign(5, 0u);
     stipples.first = {0, 5};
-    ObjectParams params;
-    params.extrinsic = false;
-    params.intrinsic = false;
-    params.point_size = 5.0f;
-    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
-    renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
-    OffscreenTarget target(*context, {256, 256});
-    FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
-    view.light_view = glm::vec3(std::sin(glm::radians(60.0f)), 0.0f, std::cos(glm::radians(60.0f)));
-    RenderedFrame frame = target.render(renderer, view);
-    EXPECT_NEAR(renderer.read_densities(0)[0], 2.5f, 1e-5f);
+    for (const float point_size : {2.0f, 5.0f})
+        for (const DensityPath path : {DensityPath::Splat, DensityPath::Vertex}) {
+            SCOPED_TRACE(std::string(density_path_name(path)) + ", " + std::to_string(point_size) + " px");
+            ObjectParams params;
+            params.extrinsic = false;
+            params.intrinsic = false;
+            params.point_size = point_size;
+            params.density_path = path;
+            StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+            renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
+            OffscreenTarget target(*context, {256, 256});
+            FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
+            view.light_view = glm::vec3(std::sin(glm::radians(60.0f)), 0.0f, std::cos(glm::radians(60.0f)));
+            RenderedFrame frame = target.render(renderer, view);
+            EXPECT_NEAR(renderer.read_densities(0)[0], 2.5f, 1e-5f);
 
-    glm::mat4 view_proj = view.camera.proj * view.camera.view;
-    std::vector<int> values;
-    for (const glm::vec3& p : stipples.positions) {
-        glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
-        int x = int((clip.x / clip.w * 0.5f + 0.5f) * 256.0f);
-        int y = int((0.5f - clip.y / clip.w * 0.5f) * 256.0f);  // top row first
-        values.push_back(luminance(frame.color, x, y));
-    }
-    std::printf("stipple luminances: %d %d %d %d %d\n", values[0], values[1], values[2], values[3], values[4]);
-    EXPECT_EQ(values[0], 0);
-    EXPECT_EQ(values[1], 0);
-    EXPECT_NEAR(values[2], 128, 2);  // half the ink over white paper
-    EXPECT_EQ(values[3], 255);
-    EXPECT_EQ(values[4], 255);
+            glm::mat4 view_proj = view.camera.proj * view.camera.view;
+            std::vector<int> values, dark;
+            for (const glm::vec3& p : stipples.positions) {
+                glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+                int x = int((clip.x / clip.w * 0.5f + 0.5f) * 256.0f);
+                int y = int((0.5f - clip.y / clip.w * 0.5f) * 256.0f);  // top row first
+                values.push_back(luminance(frame.color, x, y));
+                int inked = 0;  // pixels of this stipple's dot darker than mid-grey
+                for (int dy = -5; dy <= 5; ++dy)
+                    for (int dx = -5; dx <= 5; ++dx) inked += luminance(frame.color, x + dx, y + dy) < 100;
+                dark.push_back(inked);
+            }
+            std::printf("%s, %.0f px: luminances %d %d %d %d %d, dark pixels %d %d %d %d %d\n",
+                        density_path_name(path), point_size, values[0], values[1], values[2], values[3], values[4],
+                        dark[0], dark[1], dark[2], dark[3], dark[4]);
+            EXPECT_EQ(values[0], 0);
+            EXPECT_EQ(values[1], 0);
+            EXPECT_EQ(values[3], 255);
+            EXPECT_EQ(values[4], 255);
+            if (point_size < 2.5f) {
+                EXPECT_NEAR(values[2], 128, 2);  // half the ink over white paper
+                EXPECT_EQ(dark[2], 0);
+            } else {
+                EXPECT_EQ(values[2], 0);  // full ink, on a smaller dot
+                EXPECT_GT(dark[0], 15);
+                EXPECT_NEAR(double(dark[2]) / double(dark[0]), 0.5, 0.2);
+            }
+        }
 }
 
 TEST_F(DensityPaths, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
