@@ -40,6 +40,15 @@ RenderedFrame render(gpu::Context& context, const std::vector<const Prepared*>& 
     return target.render(renderer, view);
 }
 
+// The unit sphere at the origin, framed as render() frames its objects.
+FrameView unit_sphere_view(VkExtent2D extent) {
+    const Sphere frame_on{glm::vec3(0.0f), 1.0f};
+    const float aspect = float(extent.width) / float(extent.height);
+    FrameView view;
+    view.camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    return view;
+}
+
 TEST_F(RenderBasics, BunnyInkStaysInsideTheFootprint) {
     std::string path = test::shared_model("stanford-bunny.obj");
     if (path.empty()) GTEST_SKIP() << "../shared/models/stanford-bunny.obj is absent";
@@ -102,11 +111,8 @@ TEST_F(RenderBasics, TheSplatDrawsTheSameInTheImagesWordsAsThroughACopy) {
     // targets (a window's swapchain images) get the splat's buffer copied in. Same frame both ways: over
     // paper only, and over toon surfaces, where the splat mixes its ink into the colour already there.
     Prepared sphere = prepare(make_icosphere(4), ObjectParams{});
-    const Sphere frame_on{glm::vec3(0.0f), 1.0f};
     const VkExtent2D extent{320, 256};
-    const float aspect = float(extent.width) / float(extent.height);
-    FrameView view;
-    view.camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    const FrameView view = unit_sphere_view(extent);
     for (bool toon : {false, true}) {
         ObjectParams params;
         params.toon = toon;
@@ -135,11 +141,8 @@ TEST_F(RenderBasics, FramesQueuedInOneSubmissionAndTargetsTakenInTurnDrawTheSame
     // all the reference image (a target left unbound would stay blank; a rebinding between queued frames
     // is a validation error).
     Prepared sphere = prepare(make_icosphere(4), ObjectParams{});
-    const Sphere frame_on{glm::vec3(0.0f), 1.0f};
     const VkExtent2D extent{320, 256};
-    const float aspect = float(extent.width) / float(extent.height);
-    FrameView view;
-    view.camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    const FrameView view = unit_sphere_view(extent);
     for (DensityPath path : {DensityPath::Splat, DensityPath::Vertex, DensityPath::Indirect, DensityPath::Cpu}) {
         ObjectParams params;
         params.density_path = path;
