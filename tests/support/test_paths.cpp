@@ -18,7 +18,9 @@ std::filesystem::path output_path(const std::string& name) {
 }
 
 std::filesystem::path temp_dir(const std::string& test_name) {
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("stipple-test-" + test_name);
+    // Inside the build tree, not in /tmp under a fixed name: two build trees tested at once (a fresh clone
+    // beside a working one) would empty each other's folders mid-test.
+    std::filesystem::path dir = std::filesystem::path(STIPPLE_TEST_OUTPUT_DIR) / "tmp" / test_name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -9,7 +9,7 @@ namespace stipple::test {
 std::string shared_model(const std::string& name);
 // <build>/test-output/<name>, creating the folder.
 std::filesystem::path output_path(const std::string& name);
-// A fresh empty temporary folder for files a test writes itself.
+// A fresh empty temporary folder for files a test writes itself: <build>/test-output/tmp/<test_name>.
 std::filesystem::path temp_dir(const std::string& test_name);
 
 }  // namespace stipple::test
