@@ -211,6 +211,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--frobnicate"}, "--frobnicate"},
         {{"render", "--device", "99"}, "--device"},
         {{"render", "--depth-cull", "sometimes"}, "--depth-cull"},
+        {{"render", "--repeat", "2", "--queued", "0"}, "--queued"},
+        {{"render", "--queued", "2"}, "--repeat"},
         {{"bench", "--depth-cull", "1"}, "--depth-cull"},
         {{"view", "--depth-cull", "often"}, "--depth-cull"},
         {{"info"}, "MODEL"},
@@ -244,6 +246,22 @@ TEST(CliRender, StatsPrintTheDepthPassTriangles) {
     const double percent = std::stod(on.substr(on.find('(') + 1));
     EXPECT_LT(percent, 60.0) << on;
     EXPECT_GT(percent, 0.0) << on;
+}
+
+// --repeat N --queued K times N batches of K frames recorded back to back (on a GPU the default is 8, on a
+// CPU device 1): it says so, and the image it wrote is the one frame's.
+TEST(CliRender, RepeatTimesQueuedFrames) {
+    const std::filesystem::path dir = test::temp_dir("cli-queued");
+    const std::string once = (dir / "once.png").string(), queued = (dir / "queued.png").string();
+    auto a = run_stipple({"render", "-o", once, "--width", "320", "--height", "256", "--repeat", "2", "--silhouette-lines"});
+    auto b = run_stipple({"render", "-o", queued, "--width", "320", "--height", "256", "--repeat", "2", "--queued", "3",
+                          "--silhouette-lines"});
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(a.out.find("frames timed:       2 (after one warm-up frame)\n"), std::string::npos) << a.out;
+    EXPECT_NE(b.out.find("each the wall time of 3 queued back to back over 3"), std::string::npos) << b.out;
+    EXPECT_NE(b.out.find("gpu splat:"), std::string::npos) << b.out;
+    EXPECT_EQ(read_png(once).pixels, read_png(queued).pixels);
 }
 
 // `stipple parity` compares two devices' drawings (issue 17); CI has one, compared with itself: the

@@ -203,11 +203,7 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
     context_options.device_index = options.device;
     gpu::Context context(context_options);
     results.device = context.device_name;
-    // A real GPU waited on after every small frame idles most of the time and its clocks fall (an H200:
-    // 400-1200 MHz of 1980 in such a run, 2026-11-27): queue frames as an interactive program keeps them
-    // in flight. A CPU device runs the same either way.
-    if (options.queued == 0)
-        options.queued = context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : kQueuedFramesOnGpus;
+    if (options.queued == 0) options.queued = OffscreenTarget::default_queued_frames(context);
     results.queued = options.queued;
 
     if (!results.scans_found)

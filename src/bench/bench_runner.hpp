@@ -30,16 +30,14 @@ inline constexpr float kViewYawDeg = 30.0f;
 inline constexpr float kViewPitchDeg = 15.0f;
 inline constexpr float kViewDistance = 1.0f;  // multiple of the framing distance
 
-inline constexpr int kQueuedFramesOnGpus = 8;
-
 struct BenchOptions {
     std::vector<std::string> models;  // Table 1 row names; empty: all
     std::vector<DensityPath> paths;   // empty: all
     int frames = 20;                  // timed frames per cell
     int warmup = 3;                   // untimed frames before them
     // Frames queued back to back per submission (OffscreenTarget::draw_queued); each timed frame is then
-    // the batch's wall time over this. 1: every frame waited on; 0: 1 on a CPU device, else
-    // kQueuedFramesOnGpus.
+    // the batch's wall time over this. 1: every frame waited on; 0: by the device
+    // (OffscreenTarget::default_queued_frames).
     int queued = 0;
     uint32_t width = 1280, height = 1024;
     int device = -1;                  // Vulkan device index (-1: the best)

@@ -14,6 +14,7 @@
 #include "export/text_format.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "core/progress.hpp"
 #include "core/timing.hpp"
 #include "gpu/context.hpp"
@@ -102,7 +103,7 @@ int run_render(const std::vector<std::string>& argv) {
     options.merge(cache_options());
     options.merge(vector_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
-                    "--device", "--frames", "--orbit", "--depth-cull"});
+                    "--device", "--frames", "--orbit", "--depth-cull", "--queued"});
     options.merge(animation_options());
     Args args(argv, flags, options);
     apply_cache_options(args);
@@ -133,6 +134,9 @@ int run_render(const std::vector<std::string>& argv) {
     long long device = args.integer("--device", -1);
     long long repeat = args.integer("--repeat", 0);
     if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
+    long long queued = args.integer("--queued", 0);  // 0: by the device (OffscreenTarget::default_queued_frames)
+    if (args.has("--queued") && (queued < 1 || queued > 1000)) fail("--queued = " + std::to_string(queued) + " must be in 1..1000");
+    if (args.has("--queued") && repeat == 0) fail("--queued queues the frames --repeat times: give --repeat N");
     const std::string depth_cull_arg = args.get("--depth-cull", "auto");
     const std::optional<DepthCull> depth_cull = parse_depth_cull(depth_cull_arg);
     if (!depth_cull) fail("--depth-cull = " + depth_cull_arg + " must be auto, on or off");
@@ -239,8 +243,9 @@ int run_render(const std::vector<std::string>& argv) {
     // Timed frames after the first (which warms caches and the driver's shader compilation).
     std::vector<double> frame_ms;
     std::map<std::string, std::vector<double>> pass_ms;
+    if (queued == 0) queued = OffscreenTarget::default_queued_frames(context);
     for (long long i = 0; i < repeat; ++i) {
-        frame_ms.push_back(target->draw(renderer, view));
+        frame_ms.push_back(target->draw_queued(renderer, view, int(queued)));
         for (const auto& [pass, ms] : renderer.stats().gpu_ms) pass_ms[pass].push_back(ms);
     }
 
@@ -288,7 +293,9 @@ int run_render(const std::vector<std::string>& argv) {
         std::printf("render + readback:  %.3f s%s\n", render_seconds, sequence ? " (last frame)" : "");
     }
     if (repeat > 0) {
-        std::printf("frames timed:       %lld (after one warm-up frame)\n", repeat);
+        std::printf("frames timed:       %lld (after one warm-up frame)%s\n", repeat,
+                    queued > 1 ? printf_string(", each the wall time of %lld queued back to back over %lld", queued, queued).c_str()
+                               : "");
         std::printf("frame time:         median %.2f ms (%.1f fps), min %.2f, max %.2f\n", median(frame_ms),
                     1000.0 / median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()),
                     *std::max_element(frame_ms.begin(), frame_ms.end()));

@@ -46,6 +46,10 @@ RenderTargets OffscreenTarget::targets() const {
 
 double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) { return draw_queued(renderer, view, 1); }
 
+int OffscreenTarget::default_queued_frames(const gpu::Context& context) {
+    return context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : kQueuedFramesOnGpus;
+}
+
 double OffscreenTarget::draw_queued(StippleRenderer& renderer, const FrameView& view, int frames) {
     STIPPLE_CHECK(frames >= 1, "draw_queued needs at least one frame");
     auto start = std::chrono::steady_clock::now();

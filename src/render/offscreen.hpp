@@ -9,6 +9,7 @@
 namespace stipple {
 
 inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+inline constexpr int kQueuedFramesOnGpus = 8;
 // The depth format is the context's (gpu::Context::depth_format).
 
 struct RenderedFrame {
@@ -36,6 +37,10 @@ public:
     // returns wall milliseconds per frame. A real GPU waited on after every frame spends much of it on the
     // round trip (submission, fence, wake-up); an interactive program keeps frames in flight instead.
     double draw_queued(StippleRenderer& renderer, const FrameView& view, int frames);
+    // How many frames to queue when timing on this device: 1 on a CPU device (lavapipe runs the same either
+    // way), kQueuedFramesOnGpus on a GPU, which waited on after every small frame idles and lowers its
+    // clocks (an H200: 400-1200 MHz of 1980, 2026-11-27).
+    static int default_queued_frames(const gpu::Context& context);
 
 private:
     const gpu::Context& context_;
