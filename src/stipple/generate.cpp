@@ -162,7 +162,7 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
     check_params(mesh, params, headroom);
     ProgressBar bar("Generating stipples", params.progress);
 
-    const std::vector<double> area = triangle_areas(mesh);
+    std::vector<double> area = triangle_areas(mesh);
     const size_t triangles = area.size();
     StippleSet set;
     set.density_per_area = density_for_area(mesh, params, sum_in_order(area));
@@ -181,6 +181,7 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
         set.first[t + 1] = static_cast<uint32_t>(rounded);
     }
     const size_t n = set.first[triangles];
+    std::vector<double>().swap(area);  // 8 bytes a triangle, through the relaxation's peak otherwise
 
     auto fill_triangles = [&] {  // the triangle of every stipple, from the counts
         set.triangle.resize(n);

@@ -58,20 +58,18 @@ constexpr double kPushCell = 6.0;
 class PushGrid {
 public:
     // Cells of kPushCell spacings hold ~40 stipples: a bucket for every 8 stipples is plenty.
-    PushGrid(std::span<const glm::vec3> points, float cell) { grid_.build(points, cell, 1.0 / 8.0); }
+    PushGrid(std::span<const glm::vec3> points, float cell) : size_(points.size()) {
+        grid_.build(points, cell, 1.0 / 8.0);
+    }
 
     // Every stipple as far from any placed one as can be. Separate from the constructor so that these
     // 4 bytes a stipple are allocated once the positions the grids were built from are freed.
-    void start_distances() { nearest_.assign(grid_.sorted_size(), std::numeric_limits<float>::max()); }
+    void start_distances() { nearest_.assign(size_, std::numeric_limits<float>::max()); }
 
-    // The slot of every point of `points`, by index there.
-    std::vector<uint32_t> slots_of_points() const {
-        std::vector<uint32_t> slot_of(grid_.sorted_size());
-        for (uint32_t slot = 0; slot < slot_of.size(); ++slot) slot_of[grid_.sorted_index(slot)] = slot;
-        return slot_of;
-    }
     // The index in `points` of a slot's stipple.
     uint32_t point_of(uint32_t slot) const { return grid_.sorted_index(slot); }
+    // point_of is not needed once the caller has named the stipples by slot.
+    void release_points() { grid_.release_index(); }
     float nearest(uint32_t slot) const { return nearest_[slot]; }
     void release_nearest() { std::vector<float>().swap(nearest_); }
     glm::vec3 position(uint32_t slot) const { return grid_.sorted_position(slot); }
@@ -116,6 +114,7 @@ public:
     }
 
 private:
+    size_t size_;  // points
     PointGrid grid_;
     std::vector<float> nearest_;  // by slot
 };
@@ -159,14 +158,12 @@ private:
     void take_in_neighbours(size_t slab);
     void finish_slab(size_t slab);
     void place(const Unit& unit, uint32_t k, double tau, SlabState& state);
-    void apply_order();
     void merge_pieces();
 
-    // Unchanged until apply_order(): stipples are named by their index here while ordering.
+    // Read by make_units and start_slab, freed while ordering, written in the new order by finish_slab.
     std::vector<glm::vec3>& positions_;
-    // order_[unit.begin + k]: the index in positions_ of slot k of the unit (filled slots are
-    // final; the others list the unit's stipples not placed yet). While its slab is ordered, the
-    // entries of its units name slots of the slab's PushGrid instead.
+    // order_[unit.begin + k]: the slot in its slab's PushGrid of the stipple in slot k of the unit
+    // (filled slots are final; the others list the unit's stipples not placed yet).
     std::vector<uint32_t> order_;
     std::span<const uint32_t> first_;
     double spacing_;
@@ -184,19 +181,26 @@ private:
 
 void Orderer::run(const std::function<void(double)>& progress) {
     if (positions_.empty()) return;
-    order_.resize(positions_.size());
     make_units();
     const size_t slabs = slab_units_.size();
     state_.resize(slabs);
     parallel_for(slabs, 1, [&](size_t slab) { start_slab(slab); });
     // Every stipple is now in its slab's grid, which is all the ordering reads: the positions are put
     // back from the grids at the end (12 bytes a stipple less while ordering). What only the ordering
-    // needs (the slots in order, the distances, 8 bytes a stipple) comes after them.
+    // needs (each stipple's slot, the slots in order, the distances: 12 bytes a stipple) comes after them,
+    // and the grids drop their input indices (4 bytes) once the slots name the stipples.
     const size_t count = positions_.size();
     std::vector<glm::vec3>().swap(positions_);
+    // Each stipple's grid slot, allocated only now: beside the positions and the grids it made the
+    // ordering's start the peak of generation (32 bytes a stipple, and more with the allocator's holes).
+    order_.resize(count);
     parallel_for(slabs, 1, [&](size_t slab) {
-        state_[slab].slots = slots_in_order(slab_units_[slab]);
-        state_[slab].grid->start_distances();
+        SlabState& state = state_[slab];
+        const std::vector<uint32_t> own = own_stipples(slab);
+        for (uint32_t slot = 0; slot < own.size(); ++slot) order_[own[state.grid->point_of(slot)]] = slot;
+        state.grid->release_points();  // slots name the stipples from now on: 4 bytes a stipple less
+        state.slots = slots_in_order(slab_units_[slab]);
+        state.grid->start_distances();
     });
 
     // Window w ends at tau = 2^(-w/8); the last (w = 0) takes everything left. The first window
@@ -231,7 +235,7 @@ void Orderer::run(const std::function<void(double)>& progress) {
     positions_.resize(count);
     parallel_for(slabs, 1, [&](size_t slab) { finish_slab(slab); });
     std::vector<SlabState>().swap(state_);
-    apply_order();
+    std::vector<uint32_t>().swap(order_);
     merge_pieces();
 }
 
@@ -310,22 +314,6 @@ void Orderer::make_units() {
     }
 }
 
-// positions_[i] = old positions_[order_[i]]: a permutation within each unit, so within each
-// triangle, done triangle by triangle.
-void Orderer::apply_order() {
-    const size_t triangles = first_.size() - 1;
-    parallel_for_chunks(triangles, 4096, [&](size_t, size_t begin, size_t end) {
-        std::vector<glm::vec3> moved;
-        for (size_t t = begin; t < end; ++t) {
-            const uint32_t b = first_[t], e = first_[t + 1];
-            moved.resize(e - b);
-            for (uint32_t i = b; i < e; ++i) moved[i - b] = positions_[order_[i]];
-            std::copy(moved.begin(), moved.end(), positions_.begin() + b);
-        }
-    });
-    std::vector<uint32_t>().swap(order_);
-}
-
 // A cut triangle's order: its pieces' slots by increasing (k + phase) / N_piece, ties by piece.
 // Each piece's prefix is spread over the piece, and the triangle's prefix takes about the same
 // fraction of every piece (systematic sampling: piece p's share of the first c is within one of
@@ -402,18 +390,14 @@ std::vector<uint32_t> Orderer::slots_in_order(const std::vector<uint32_t>& units
     return slots;
 }
 
-// The slab's own stipples in a grid; order_ names them by grid slot until finish_slab.
+// The slab's own stipples in a grid (from run() on until finish_slab, order_ names them by grid slot).
 void Orderer::start_slab(size_t slab) {
     SlabState& state = state_[slab];
     state.placed_count.assign(slab_units_[slab].size(), 0);
     const std::vector<uint32_t> own = own_stipples(slab);
-    {
-        std::vector<glm::vec3> points(own.size());
-        for (size_t local = 0; local < own.size(); ++local) points[local] = positions_[own[local]];
-        state.grid = std::make_unique<PushGrid>(points, static_cast<float>(kPushCell * spacing_));
-    }
-    const std::vector<uint32_t> slot_of = state.grid->slots_of_points();
-    for (uint32_t local = 0; local < own.size(); ++local) order_[own[local]] = slot_of[local];
+    std::vector<glm::vec3> points(own.size());
+    for (size_t local = 0; local < own.size(); ++local) points[local] = positions_[own[local]];
+    state.grid = std::make_unique<PushGrid>(points, static_cast<float>(kPushCell * spacing_));
 }
 
 // The slab's stipples, unit after unit: the grid's input order. (Rebuilt when needed rather than
@@ -452,15 +436,11 @@ void Orderer::take_in_neighbours(size_t slab) {
     }
 }
 
-// Back from grid slots to indices in positions_, and the slab's positions back into positions_.
+// The slab's stipples back into positions_, each unit's in its new order.
 void Orderer::finish_slab(size_t slab) {
     SlabState& state = state_[slab];
-    const std::vector<uint32_t> own = own_stipples(slab);
-    for (uint32_t i : own) {
-        const uint32_t slot = order_[i];
-        order_[i] = own[state.grid->point_of(slot)];
-        positions_[order_[i]] = state.grid->position(slot);
-    }
+    for (uint32_t u : slab_units_[slab])
+        for (uint32_t i = units_[u].begin; i < units_[u].end; ++i) positions_[i] = state.grid->position(order_[i]);
     state.grid.reset();
 }
 
