@@ -34,6 +34,12 @@ constexpr float kMaxStep = 0.5f;
 constexpr float kInset = 1e-5f;
 // Buckets per chunk of work, and of Gauss-Seidel (see relax_stipples): fixed, for determinism.
 constexpr size_t kChunkBuckets = 2048;
+// The grid's buckets per stipple (before rounding up to a power of two). Cells of two spacings hold
+// about five stipples, so one bucket a stipple leaves most buckets empty still, and in alternating runs
+// it was as fast as two (2026-11-27: the 8M-stipple dragon 8.2-8.4 s either way, the 100k sphere and the
+// cube of tools/generation_speed within their noise) for half the bucket table: 2 bytes a stipple of the
+// iterations' peak instead of 4-8 with 32-bit starts (issue 17 asks at most 40 bytes a generated stipple).
+constexpr double kBucketsPerPoint = 1.0;
 
 // Positions by slot of a chunk's own points (slots [begin, begin + size) of the grid), as they move
 // during an iteration, padded by a SIMD width of points out of reach like the grid's arrays.
@@ -288,10 +294,10 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     // Work on a copy in the grid's spatial order (one sort up front, undone at the end): points
     // move little per iteration, so later grids come out nearly in input order and every pass
     // below walks memory sequentially instead of jumping between the triangle order and the cell
-    // order. One array at a time, so that a stipple never costs more than an iteration's 40 bytes (the
-    // caller's positions and triangles, 16, are freed once copied; the positions come back at the end,
-    // in the order found by sorting the input again: see relax.hpp).
-    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h);
+    // order. One array at a time, so that a stipple never costs more than an iteration's 34-36 bytes
+    // (relax.hpp): the caller's positions and triangles, 16, are freed once copied; the positions come
+    // back at the end, in the order found by sorting the input again.
+    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h, kBucketsPerPoint);
     std::vector<glm::vec3> pos(n);
     for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
     std::vector<glm::vec3>().swap(positions);
@@ -314,7 +320,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
         // slabs of a hash window (2 of its 32 layers of cells at 400k stipples): in a prototype, blocks
         // of 8x8x8 cells and a single chunk gave the same figure, but Jacobi within each cell (the
         // points of a cell moving at once, sharing one gather) lost the gain (0.844).
-        grid.build(pos, h);
+        grid.build(pos, h, kBucketsPerPoint);
 
         // Bucket by bucket (spatial order). Consecutive points of the same cell share one gathered
         // set of candidates. Each stipple moves within its triangle's plane and stays inside it.
@@ -350,7 +356,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     }
     grid = PointGrid();  // its memory before the positions come back
     std::vector<uint32_t>().swap(tri);
-    original = PointGrid::spatial_order(input_again(), h);
+    original = PointGrid::spatial_order(input_again(), h, kBucketsPerPoint);
     STIPPLE_CHECK(original.size() == n, "relax_stipples: input_again must return the positions given");
     positions.resize(n);
     for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];

@@ -18,8 +18,9 @@ namespace stipple {
 // the hexagonal-packing spacing at the stipple density (neighbours within 2 * spacing repel).
 // Deterministic for any thread count (Gauss-Seidel iterations within fixed chunks, Jacobi between them).
 // `progress`, if set, is called with the fraction done after each iteration.
-// It works on copies in spatial order and frees `positions` meanwhile (a stipple costs 40 bytes at
-// the peak instead of 64); they hold the relaxed stipples when it returns. It takes `triangle_of`
+// It works on copies in spatial order and frees `positions` meanwhile (a stipple costs 34-36 bytes at
+// the peak instead of 64: its position and triangle, 16, and the grid's copy of the position, input
+// index and bucket starts, 18-20); they hold the relaxed stipples when it returns. It takes `triangle_of`
 // (derivable from the triangles' counts, which is how the caller gets it back). `input_again`
 // returns `positions` as they were given (the caller's generation is deterministic and cheap): the
 // input's spatial order is sorted again at the end to put the stipples back in their order, instead
