@@ -124,10 +124,13 @@ STIPPLE_FN float stipple_intensity(float density, float index) {
 // last stipple's fraction f of a dot of side s is drawn as a smaller dot of full ink, of side s sqrt(f).
 // Its area, so its ink, is the faded dot's, and it grows as f does: still no popping. Vector output draws
 // it so (plot_plan: radius times sqrt(intensity)), and a pen has no grey: a faint disc many pixels wide
-// reads as a wash, not as a dot. Below kShrunkDotMinSide a raster dot cannot show its area, so there
-// it keeps that side and fades instead (intensity f s^2 / side^2, the same ink). The paper's 1-2 px points
-// fade (stipple_intensity). Returns (side, intensity).
-STIPPLE_CONST float kShrunkDotMinSide = 2.5f;
+// reads as a wash, not as a dot. Down to a pixel a small black dot still inks its area on average (pixel
+// centres sample a disc without bias: a 1.8-px dot inks 2-4 pixels, 2.5 on average); below
+// kShrunkDotMinSide it keeps that side and fades instead (intensity f s^2 / side^2, the same ink). Until
+// 2026-11-27 the floor was 2.5 px: on a fine mesh at low density most dots are fractions under it, and
+// 4-px dots read as a grey wash with a few black dots (mean ink within 1% of today's). The paper's 1-2 px
+// points fade (stipple_intensity). Returns (side, intensity).
+STIPPLE_CONST float kShrunkDotMinSide = 1.0f;
 
 STIPPLE_FN vec2 fractional_round_dot(float fraction, float side) {
     float shrunk = side * sqrt(fraction);

@@ -446,11 +446,15 @@ TEST_F(DensityPaths, LargeDotsOnSlantedFacesAreWholeDiscs) {
     }
 }
 
-TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
-    // One triangle facing the camera, five stipples far apart, lit at 60 degrees: with shading only,
-    // the density is 5 * (1 - cos 60) = 2.5, so two stipples are full, one is half and two are culled.
-    // Points of 2 px (the paper's kind): the half one has half the ink's intensity (§2.1). Round dots of
-    // 5 px: the half one is a dot of full ink and half the area (fractional_round_dot), on every path.
+// One triangle facing the camera, five stipples far apart, lit at `light_deg` with shading only: the
+// density is 5 * (1 - cos(light_deg)), the ink owed where the light falls at that angle. What each stipple's dot looks like: the luminance at its centre and its
+// pixels darker than mid-grey.
+struct FiveStipples {
+    float density;
+    std::vector<int> centre, dark;
+};
+
+FiveStipples draw_five_stipples(gpu::Context& context, float point_size, DensityPath path, float light_deg) {
     Mesh mesh;
     mesh.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
     mesh.indices = {0, 1, 2};
@@ -460,50 +464,79 @@ TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
                           {0.0f, -0.1f, 0.0f}};
     stipples.triangle.assign(5, 0u);
     stipples.first = {0, 5};
+    ObjectParams params;
+    params.extrinsic = false;
+    params.intrinsic = false;
+    params.point_size = point_size;
+    params.density_path = path;
+    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+    renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(context, {256, 256});
+    FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
+    view.light_view = glm::vec3(std::sin(glm::radians(light_deg)), 0.0f, std::cos(glm::radians(light_deg)));
+    RenderedFrame frame = target.render(renderer, view);
+
+    FiveStipples result;
+    result.density = renderer.read_densities(0)[0];
+    glm::mat4 view_proj = view.camera.proj * view.camera.view;
+    for (const glm::vec3& p : stipples.positions) {
+        glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+        int x = int((clip.x / clip.w * 0.5f + 0.5f) * 256.0f);
+        int y = int((0.5f - clip.y / clip.w * 0.5f) * 256.0f);  // top row first
+        result.centre.push_back(luminance(frame.color, x, y));
+        int inked = 0;
+        for (int dy = -5; dy <= 5; ++dy)
+            for (int dx = -5; dx <= 5; ++dx) inked += luminance(frame.color, x + dx, y + dy) < 100;
+        result.dark.push_back(inked);
+    }
+    std::printf("%s, %.0f px, density %.3f: luminances %d %d %d %d %d, dark pixels %d %d %d %d %d\n",
+                density_path_name(path), point_size, result.density, result.centre[0], result.centre[1],
+                result.centre[2], result.centre[3], result.centre[4], result.dark[0], result.dark[1], result.dark[2],
+                result.dark[3], result.dark[4]);
+    return result;
+}
+
+TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
+    // Lit at 60 degrees, the density is 2.5: two stipples are full, one is half and two are culled.
+    // Points of 2 px (the paper's kind): the half one has half the ink's intensity (§2.1). Round dots of
+    // 5 px: the half one is a dot of full ink and half the area (fractional_round_dot), on every path.
     for (const float point_size : {2.0f, 5.0f})
         for (const DensityPath path : {DensityPath::Splat, DensityPath::Vertex}) {
             SCOPED_TRACE(std::string(density_path_name(path)) + ", " + std::to_string(point_size) + " px");
-            ObjectParams params;
-            params.extrinsic = false;
-            params.intrinsic = false;
-            params.point_size = point_size;
-            params.density_path = path;
-            StippleRenderer renderer(*context, kColorFormat, context->depth_format);
-            renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
-            OffscreenTarget target(*context, {256, 256});
-            FrameView view = test::framed_view({glm::vec3(0.0f), 1.2f}, target.extent(), 1.0f, 0.0f, 0.0f);
-            view.light_view = glm::vec3(std::sin(glm::radians(60.0f)), 0.0f, std::cos(glm::radians(60.0f)));
-            RenderedFrame frame = target.render(renderer, view);
-            EXPECT_NEAR(renderer.read_densities(0)[0], 2.5f, 1e-5f);
-
-            glm::mat4 view_proj = view.camera.proj * view.camera.view;
-            std::vector<int> values, dark;
-            for (const glm::vec3& p : stipples.positions) {
-                glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
-                int x = int((clip.x / clip.w * 0.5f + 0.5f) * 256.0f);
-                int y = int((0.5f - clip.y / clip.w * 0.5f) * 256.0f);  // top row first
-                values.push_back(luminance(frame.color, x, y));
-                int inked = 0;  // pixels of this stipple's dot darker than mid-grey
-                for (int dy = -5; dy <= 5; ++dy)
-                    for (int dx = -5; dx <= 5; ++dx) inked += luminance(frame.color, x + dx, y + dy) < 100;
-                dark.push_back(inked);
-            }
-            std::printf("%s, %.0f px: luminances %d %d %d %d %d, dark pixels %d %d %d %d %d\n",
-                        density_path_name(path), point_size, values[0], values[1], values[2], values[3], values[4],
-                        dark[0], dark[1], dark[2], dark[3], dark[4]);
-            EXPECT_EQ(values[0], 0);
-            EXPECT_EQ(values[1], 0);
-            EXPECT_EQ(values[3], 255);
-            EXPECT_EQ(values[4], 255);
+            const FiveStipples drawn = draw_five_stipples(*context, point_size, path, 60.0f);
+            EXPECT_NEAR(drawn.density, 2.5f, 1e-5f);
+            EXPECT_EQ(drawn.centre[0], 0);
+            EXPECT_EQ(drawn.centre[1], 0);
+            EXPECT_EQ(drawn.centre[3], 255);
+            EXPECT_EQ(drawn.centre[4], 255);
             if (point_size < 2.5f) {
-                EXPECT_NEAR(values[2], 128, 2);  // half the ink over white paper
-                EXPECT_EQ(dark[2], 0);
+                EXPECT_NEAR(drawn.centre[2], 128, 2);  // half the ink over white paper
+                EXPECT_EQ(drawn.dark[2], 0);
             } else {
-                EXPECT_EQ(values[2], 0);  // full ink, on a smaller dot
-                EXPECT_GT(dark[0], 15);
-                EXPECT_NEAR(double(dark[2]) / double(dark[0]), 0.5, 0.2);
+                EXPECT_EQ(drawn.centre[2], 0);  // full ink, on a smaller dot
+                EXPECT_GT(drawn.dark[0], 15);
+                EXPECT_NEAR(double(drawn.dark[2]) / double(drawn.dark[0]), 0.5, 0.2);
             }
         }
+}
+
+TEST_F(DensityPaths, SmallFractionsOfRoundDotsAreSmallBlackDots) {
+    // Round dots of 4 px at density 2.2 (lit at acos 0.56): the last stipple's fraction 0.2 is a dot of
+    // side 4 sqrt(0.2) = 1.8 px, still of full ink (kShrunkDotMinSide), not a faded dot the size of a
+    // larger one: at low density on a fine mesh most dots are such fractions, and faded they read as a
+    // grey wash rather than stippling. Its area, so its ink, is a fifth of a whole dot's.
+    const float light_deg = glm::degrees(std::acos(0.56f));
+    for (const DensityPath path : {DensityPath::Splat, DensityPath::Vertex}) {
+        SCOPED_TRACE(density_path_name(path));
+        const FiveStipples drawn = draw_five_stipples(*context, 4.0f, path, light_deg);
+        EXPECT_NEAR(drawn.density, 2.2f, 1e-4f);
+        EXPECT_EQ(drawn.centre[0], 0);
+        EXPECT_EQ(drawn.centre[2], 0) << "the fractional dot should be black";
+        EXPECT_GE(drawn.dark[2], 1);
+        EXPECT_LE(drawn.dark[2], 5) << "the fractional dot should be small";
+        EXPECT_GT(drawn.dark[0], 9);
+        EXPECT_EQ(drawn.centre[3], 255);
+    }
 }
 
 TEST_F(DensityPaths, ProbabilisticSelectionMatchesItsExpectationAndIsStable) {
