@@ -1,6 +1,7 @@
 // Stipple generation (paper §2.1): tessellation independence, Poisson-disc-like spread of the full
 // set and of its progressive prefixes, determinism, budgets, containment in triangles.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -239,6 +240,42 @@ TEST(Generation, ZeroAreaTrianglesGetNoStipples) {
     for (size_t t = real; t < mesh.triangle_count(); ++t) EXPECT_EQ(set.count(t), 0u) << "triangle " << t;
     for (size_t t = 0; t < real; ++t) EXPECT_GT(set.count(t), 0u) << "triangle " << t;
     expect_consistent_and_inside(mesh, set);
+}
+
+TEST(Generation, FacesPiledInOnePlaceAreLeftUnrelaxed) {
+    // A surface (a grid) beside a pile of 8,000 copies of one small triangle, as a broken model may hold:
+    // the pile's stipples crowd thousands of times the surface's density into one place. Relaxing them
+    // cost the square of their number (3,000 copies took 80 s for 330k stipples) and cannot even them
+    // out, so they stay where generation put them; the surface is relaxed as always.
+    Mesh mesh = make_grid(8);
+    const size_t surface = mesh.triangle_count();
+    const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {{0.0f, 0.0f, 3.0f}, {0.02f, 0.0f, 3.0f}, {0.0f, 0.02f, 3.0f}});
+    for (int copy = 0; copy < 8000; ++copy) mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+    compute_vertex_normals(mesh);
+    GenerationParams params;
+    params.dmax = 0.05f;
+    params.relax_iterations = 0;
+    const StippleSet unrelaxed = generate_stipples(mesh, params);
+    params.relax_iterations = 6;
+    const StippleSet relaxed = generate_stipples(mesh, params);
+    ASSERT_EQ(unrelaxed.size(), relaxed.size());
+    const size_t pile = relaxed.size() - relaxed.first[surface];
+    std::printf("%zu stipples on the surface, %zu in the pile\n", size_t(relaxed.first[surface]), pile);
+    ASSERT_GT(pile, 5000u) << "the pile should hold more stipples than a neighbourhood of a surface can";
+    auto sorted_stipples = [](const StippleSet& set, size_t t) {
+        std::vector<std::array<float, 3>> points;
+        for (uint32_t i = set.first[t]; i < set.first[t + 1]; ++i)
+            points.push_back({set.positions[i].x, set.positions[i].y, set.positions[i].z});
+        std::sort(points.begin(), points.end());
+        return points;
+    };
+    size_t moved_on_surface = 0;
+    for (size_t t = 0; t < surface; ++t) moved_on_surface += sorted_stipples(relaxed, t) != sorted_stipples(unrelaxed, t);
+    EXPECT_GT(moved_on_surface, surface / 2) << "the surface should be relaxed";
+    for (size_t t = surface; t < mesh.triangle_count(); ++t)
+        ASSERT_EQ(sorted_stipples(relaxed, t), sorted_stipples(unrelaxed, t)) << "pile triangle " << t << " relaxed";
+    expect_consistent_and_inside(mesh, relaxed);
 }
 
 TEST(Generation, StipplesInsideTheirTriangles) {

@@ -51,6 +51,9 @@ constexpr uint32_t kMaxCandidates = 16;
 // of 6 they read 1-2 cells per axis, and the few early ones (up to kSearchCap) a handful. Measured
 // fastest: cells of 2 spacings made ordering 3x slower (bucket lookups), 8 the same as 6.
 constexpr double kPushCell = 6.0;
+// The most stipples one placed stipple pushes its distance to. A surface puts a few thousand within the
+// widest reach (kSearchCap spacings, cells of kPushCell); more means faces piled on each other.
+constexpr size_t kMaxPushed = 65536;
 
 // The own stipples of one slab in a static grid, each with the squared distance to its nearest
 // placed stipple. Stipples are named by their slot in the grid (spatial order), so that a push
@@ -97,6 +100,16 @@ public:
                 nearest[i] = std::min(nearest[i], (dx * dx + dy * dy) + dz * dz);
             }
         };
+        // Faces piled in one place (the same triangle many times over) put far more stipples within reach
+        // than a surface does: their order is left as it comes rather than cost the pile's square.
+        size_t reached = 0;
+        for (int z = c0.z; z <= c1.z; ++z)
+            for (int y = c0.y; y <= c1.y; ++y)
+                for (int x = c0.x; x <= c1.x; ++x) {
+                    const uint32_t b = grid_.bucket({x, y, z});
+                    reached += grid_.bucket_end(b) - grid_.bucket_begin(b);
+                }
+        if (reached > kMaxPushed) return;
         // Buckets listed twice (shared by two cells) are pushed twice: a minimum does not mind.
         for (int z = c0.z; z <= c1.z; ++z)
             for (int y = c0.y; y <= c1.y; ++y) {
