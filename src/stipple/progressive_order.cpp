@@ -204,6 +204,7 @@ void Orderer::run(const std::function<void(double)>& progress) {
     // and the grids drop their input indices (4 bytes) once the slots name the stipples.
     const size_t count = positions_.size();
     std::vector<glm::vec3>().swap(positions_);
+    release_free_memory();  // the positions may lie in the allocator's heap, which keeps them resident
     // Each stipple's grid slot, allocated only now: beside the positions and the grids it made the
     // ordering's start the peak of generation (32 bytes a stipple, and more with the allocator's holes).
     order_.resize(count);
