@@ -3,7 +3,7 @@
 // included), with delta-bar and, on a face of the cube, the six-fold order psi_6 (quality.hpp). Prints
 // its figures; the test suite asserts quality, never time.
 // `pile`: a grid beside 3,000 copies of one small triangle (a broken model's piled faces), whose stipples
-// crowd one place: it checks that generation stays linear there (relax.cpp kMaxCandidates,
+// crowd one place: it checks that generation stays linear there (relax.cpp kMaxNeighbours,
 // progressive_order.cpp kMaxPushed; 80 s for 330k stipples before those).
 // Usage: generation_speed [TRIANGLES | cube | pile ...]   (default: 100000 1000000 cube)
 #include <cmath>

@@ -43,7 +43,7 @@ constexpr double kBucketsPerPoint = 1.0;
 // The most neighbours (within the 27 cells around a stipple) a stipple is relaxed among. A surface
 // through them holds about 40-70 stipples, a crumpled one a few times that; more means faces piled on
 // each other, which relaxing cannot even out.
-constexpr size_t kMaxCandidates = 4096;
+constexpr size_t kMaxNeighbours = 4096;
 
 // Positions by slot of a chunk's own points (slots [begin, begin + size) of the grid), as they move
 // during an iteration, padded by a SIMD width of points out of reach like the grid's arrays.
@@ -346,7 +346,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
                     // A pile of faces in one place (the same triangle many times over) holds more than the
                     // surface's density: its stipples stay where they are rather than cost their
                     // neighbourhood's square (3,000 copies of a triangle took 80 s for 330k stipples).
-                    if (candidates.count > kMaxCandidates) continue;
+                    if (candidates.count > kMaxNeighbours) continue;
                     const glm::vec3 force = kernel(p, candidates, h);
                     const uint32_t i = grid.sorted_index(slot);
                     if (tri[i] != current) current = tri[i], f = frame_of(mesh, current);
