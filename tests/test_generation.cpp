@@ -278,6 +278,28 @@ TEST(Generation, FacesPiledInOnePlaceAreLeftUnrelaxed) {
     expect_consistent_and_inside(mesh, relaxed);
 }
 
+TEST(Generation, APileOfStipplesKeepsItsOrder) {
+    // 10,000 triangles of 8 stipples each, all within a ball much smaller than the spacing: every placed
+    // stipple would reach all 80,000, so the order does not push their distances (kMaxPushed) and each
+    // triangle keeps its stipples as they came, rather than cost the pile's square in pushes.
+    constexpr uint32_t kTriangles = 10000, kPerTriangle = 8;
+    std::vector<uint32_t> first(kTriangles + 1);
+    for (uint32_t t = 0; t <= kTriangles; ++t) first[t] = t * kPerTriangle;
+    std::vector<glm::vec3> positions(first.back());
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (glm::vec3& p : positions) p = 1e-3f * glm::vec3(u(rng), u(rng), u(rng));
+    std::vector<glm::vec3> ordered = positions;
+    progressive_order(ordered, first, 0.01, 1);
+    EXPECT_EQ(ordered, positions) << "the pile's stipples were reordered";
+    // A pile within reach of fewer stipples than the bound is ordered as a surface is.
+    first.resize(1001);
+    positions.resize(first.back());
+    ordered = positions;
+    progressive_order(ordered, first, 0.01, 1);
+    EXPECT_NE(ordered, positions) << "a small pile should be ordered by distance";
+}
+
 TEST(Generation, StipplesInsideTheirTriangles) {
     GenerationParams params;
     params.dmax = dmax_for(80000);
