@@ -58,7 +58,9 @@ double OffscreenTarget::draw_queued(StippleRenderer& renderer, const FrameView& 
     VkCommandBuffer cb = context_.begin_one_shot();
     for (int i = 0; i < frames; ++i) {
         // Nothing runs before the submission, so preparing (uniforms, CPU densities) over the last
-        // frame's data races with nothing; the GPU finishes each frame before the next one's first pass.
+        // frame's data races with nothing. Host-written data is read when the GPU runs, so every queued
+        // frame reads what the last preparation wrote: the same, since they all draw `view` (a timing,
+        // not an animation). The GPU finishes each frame before the next one's first pass.
         renderer.prepare(sized);
         if (i > 0)
             gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
