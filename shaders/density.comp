@@ -11,6 +11,7 @@
 #include "stipple_formulas.h"
 #include "uniform_branch.h"
 #include "triangle_draws.h"
+#include "stipple_position.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
@@ -77,13 +78,23 @@ void main() {
     DensityParams q = density_params(frame, object);
     q.flags = flags;
     float density = polygon_density(p, q);
+    // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here): the
+    // bounds of that density over it. Only those read their corners.
+    vec2 bounds = vec2(density);
+    if (may_carry_gradient(p, q, density)) {
+        vec3 a, b, c;
+        view_corners(t, object.model_view, a, b, c);
+        bounds = polygon_density_bounds(density, a, b, c, q);
+    }
     draws[t].density = density;
+    draws[t].least = bounds.x;
+    draws[t].most = bounds.y;
     if (!kListDrawn) return;
     // The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons). One atomic
     // add per subgroup hands out the slots of all its polygons' items, each polygon's consecutive (a
     // prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of
     // the splat's dispatch that start in it.
-    uint drawn_here = drawn_stipple_count(density, uint(candidates));
+    uint drawn_here = drawn_stipple_count(bounds.y, uint(candidates));
     uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
     uint items = (drawn_here + run - 1u) / run;
     uint listed_here = subgroupAdd(items);

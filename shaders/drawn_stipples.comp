@@ -28,7 +28,9 @@ void main() {
     if (t < triangles) {
         TriangleDraw polygon = triangle_draw(t);  // as texels: two gathers instead of three loads
         first = polygon.first_stipple;
-        count = drawn_stipple_count(polygon.density, polygon_candidates(t, first, object.flags));
+        // To the most density any of its stipples sees: the vertex shader culls those of a large polygon
+        // that the density where they lie does not reach (stipple_density_here).
+        count = drawn_stipple_count(polygon.most, polygon_candidates(t, first, object.flags));
     }
     uint total = subgroupAdd(count);
     if (total == 0u) return;  // the same in the whole subgroup

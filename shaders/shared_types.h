@@ -95,7 +95,7 @@ STIPPLE_CONST uint kBindingLineCandidates = 15;   // LineCandidates + uint[] (st
 // float[] (storage), per polygon, constant: the object-space area at which all of its candidates are due
 // (its rest area times its stretch headroom, src/anim/headroom.hpp). Read with kFlagStretch only.
 STIPPLE_CONST uint kBindingFullAreas = 16;
-// texel buffer (RG32UI): the TriangleDraw[] of kBindingTriangleDraw, a polygon per texel, for the shaders
+// texel buffer (RGBA32UI): the TriangleDraw[] of kBindingTriangleDraw, a polygon per texel, for the shaders
 // that read it at scattered places (stipple.vert, splat.comp: one gather instead of a load per member).
 STIPPLE_CONST uint kBindingTriangleDrawTexels = 17;
 // texel buffer (RGBA32UI): the TriangleInfo[] of kBindingTriangleInfo, a polygon per texel (density.comp:
@@ -148,6 +148,11 @@ struct StippleVertex {
 struct TriangleDraw {
     float density;       // stipples to draw, fractional (§2.1: the last one at the fractional intensity)
     uint first_stipple;  // index of the triangle's first stipple in the stipple buffer
+    // The least and the most density any point of the polygon sees (polygon_density_bounds in
+    // stipple_formulas.h): both the density, but on a polygon large on screen, whose stipples are each drawn
+    // at the density where they lie (stipple_density_here).
+    float least;
+    float most;
 };
 
 // Per triangle, constant for a static object (an animated one's are rewritten each frame from its

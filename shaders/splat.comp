@@ -220,7 +220,8 @@ void main() {
     mat4 model_view_proj = object.model_view_proj;
     uint candidates = polygon_candidates(t, first, object.flags);
     uint begin = item - first;
-    uint drawn_here = drawn_stipple_count(density, candidates);
+    // To the most density any of its stipples sees (a large polygon's density changes across it).
+    uint drawn_here = drawn_stipple_count(draw.most, candidates);
     float side = splat_dot_side(object.shading.y, density, float(candidates));  // larger when owed more
     uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
@@ -237,11 +238,22 @@ void main() {
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
-    uint whole_end = clamp(uint(floor(density)), begin, end);
+    // Below the least density any stipple of the polygon sees, they are whole wherever they lie.
+    uint whole_end = clamp(uint(floor(draw.least)), begin, end);
     for (uint k = begin; k < whole_end; ++k)
         splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
     for (uint k = whole_end; k < end; ++k) {
-        float fraction = stipple_intensity(density, float(k));
+        float here = density;
+        if (draw.least != draw.most) {  // where it lies (stipple_density_here)
+            vec3 a, b, c;
+            view_corners(t, object.model_view, a, b, c);
+            DensityParams q = density_params(frame, object);
+            q.flags = object.flags[t >> 31u];  // object.flags.x, where lavapipe cannot fold it (uniform_branch.h)
+            vec2 uv = unpackUnorm2x16(stipples[first + k].barycentric);
+            here = stipple_density_here(density, a + uv.x * (b - a) + uv.y * (c - a), a, b, c, q);
+        }
+        float fraction = stipple_intensity(here, float(k));
+        if (fraction <= 0.0f) continue;  // where it lies, the density does not reach it
         if (kRoundPoints) {  // a smaller dot, of full ink where it is large enough to show its area
             vec2 dot_now = fractional_round_dot(fraction, side);
             splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, model_view_proj, polygon, c,

@@ -32,6 +32,17 @@ layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
 
 layout(location = 0) out float out_intensity;
 
+// The density at this stipple: its polygon's, but on a polygon large on screen whose density changes
+// across it, where the stipple lies (stipple_density_here), for the stipples whose index that decides.
+float density_where_it_lies(TriangleDraw draw, uint triangle, float index, vec2 barycentric) {
+    if (draw.least == draw.most || index + 1.0f <= draw.least || index >= draw.most) return draw.density;
+    vec3 a, b, c;
+    view_corners(triangle, object.model_view, a, b, c);
+    DensityParams q = density_params(frame, object);
+    q.flags = object.flags[triangle >> 31u];  // object.flags.x, read where lavapipe cannot fold it (uniform_branch.h)
+    return stipple_density_here(draw.density, a + barycentric.x * (b - a) + barycentric.y * (c - a), a, b, c, q);
+}
+
 void main() {
     // The vertex inputs are the candidate gl_VertexIndex names; the list variant draws another one.
     uint stipple = uint(gl_VertexIndex);
@@ -44,7 +55,7 @@ void main() {
     }
     TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);
-    float intensity = stipple_intensity(draw.density, index);
+    float intensity = stipple_intensity(density_where_it_lies(draw, triangle, index, barycentric), index);
     out_intensity = intensity;
     if (intensity <= 0.0f) {
         gl_PointSize = object.shading.y;

@@ -361,4 +361,126 @@ STIPPLE_FN float polygon_density(PolygonView p, DensityParams q) {
     return d.density;
 }
 
+// Beyond the paper: the density across a large polygon. The paper evaluates a polygon's density once, and
+// we at its centroid; the terms that depend on where the eye sees a point (the intrinsic depth, the
+// extrinsic scale s^pr with the orientation against the eye ray, the toon fade) then change in steps at
+// the polygon's edges. On a coarse mesh the triangulation showed: the two triangles of one flat face of
+// the morph cube differed in tone by about a quarter (yaw 45, pitch 35), and a floor of two triangles drew
+// its far end as densely in object space as its near end (darker on screen) with no depth cue at all. So
+// a polygon that covers more than kGradientAreaStart pixels draws each stipple at the density where it
+// lies: the polygon's density times the place-dependent terms there over their value at the centroid
+// (stipple_density_here). Where the density reaches a stipple's index depends on where it lies, so the
+// polygon's drawn set is no longer a prefix of its candidates, and each stipple is drawn at its own
+// fraction (§2.1's rule per stipple: intensities move continuously with the view, so nothing pops). The
+// density pass stores the least and the most density any point of the polygon sees (conservative bounds,
+// polygon_density_bounds): below the least every stipple is whole, and lists and work items run to the
+// most. The place-dependent part fades in from kGradientAreaStart to kGradientAreaFull px^2 of the
+// polygon's approximate screen area: smaller polygons show no step, and their densities stay the paper's.
+STIPPLE_CONST float kGradientAreaStart = 16.0f;
+STIPPLE_CONST float kGradientAreaFull = 64.0f;
+
+// The place-dependent terms of polygon_density_terms at view-space point x of a polygon with unit normal
+// `normal` (flipped toward the eye for a two-sided polygon seen from inside): (x) the intrinsic depth
+// factor, (y) the extrinsic scale s^pr, (z) the facing ratio against the eye ray. point_terms multiplies
+// them as the density does.
+STIPPLE_FN vec3 point_term_parts(vec3 x, vec3 normal, DensityParams q) {
+    float distance = max(-x.z, 1e-20f);
+    vec3 parts = vec3(1.0f, 1.0f, abs(dot(normal, -x)) / max(length(x), 1e-20f));
+    if ((q.flags & kFlagIntrinsic) != 0u) parts.x = intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
+    if ((q.flags & kFlagExtrinsic) != 0u) parts.y = extrinsic_factor(q.pixels_per_unit / (distance * q.reference_ppu), q.pr);
+    return parts;
+}
+STIPPLE_FN float facing_terms(float facing, DensityParams q) {
+    float terms = 1.0f;
+    if ((q.flags & kFlagToonFade) != 0u) terms *= toon_stipple_fade(facing, q.toon_sharpness);
+    if ((q.flags & kFlagExtrinsic) != 0u) terms *= orientation_factor(facing);
+    return terms;
+}
+STIPPLE_FN float point_terms(vec3 x, vec3 normal, DensityParams q) {
+    vec3 parts = point_term_parts(x, normal, q);
+    return parts.x * parts.y * facing_terms(parts.z, q);
+}
+
+// The point of triangle a, b, c nearest the eye (the origin): where a plane's facing ratio is largest
+// (Ericson, Real-Time Collision Detection 5.1.5).
+STIPPLE_FN vec3 triangle_point_nearest_eye(vec3 a, vec3 b, vec3 c) {
+    vec3 ab = b - a, ac = c - a, ap = -a;
+    float d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0.0f && d2 <= 0.0f) return a;
+    vec3 bp = -b;
+    float d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0.0f && d4 <= d3) return b;
+    float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return a + ab * (d1 / (d1 - d3));
+    vec3 cp = -c;
+    float d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0.0f && d5 <= d6) return c;
+    float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return a + ac * (d2 / (d2 - d6));
+    float va = d3 * d6 - d5 * d4;
+    if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    float sum = va + vb + vc;
+    return sum > 0.0f ? (a * va + b * vb + c * vc) / sum : (a + b + c) * (1.0f / 3.0f);
+}
+
+// A polygon's unit normal in view space from its view-space corners, toward the eye if it is two-sided and
+// seen from inside (as polygon_density_terms flips it).
+STIPPLE_FN vec3 view_normal_of(vec3 a, vec3 b, vec3 c, DensityParams q) {
+    vec3 n = cross(b - a, c - a);
+    float len = length(n);
+    n = len > 0.0f ? n / len : vec3(0.0f, 0.0f, 1.0f);
+    if ((q.flags & kFlagTwoSided) != 0u && dot(n, -(a + b + c)) < 0.0f) n = -n;
+    return n;
+}
+
+// How much of the place-dependent density a polygon carries, from its approximate screen area (its
+// view-space corners a, b, c): 0 below kGradientAreaStart px^2, 1 from kGradientAreaFull.
+STIPPLE_FN float density_gradient_weight(vec3 a, vec3 b, vec3 c, DensityParams q) {
+    vec3 centre = (a + b + c) * (1.0f / 3.0f);
+    float distance = -centre.z;
+    if (distance <= 0.0f) return 0.0f;
+    vec3 n = cross(b - a, c - a);
+    float area = 0.5f * length(n);
+    float facing = area > 0.0f ? abs(dot(n, -centre)) / (2.0f * area * length(centre)) : 0.0f;
+    float screen_area = area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
+    return clamp((screen_area - kGradientAreaStart) / (kGradientAreaFull - kGradientAreaStart), 0.0f, 1.0f);
+}
+
+// Whether a polygon drawing `density` may carry any (a cheap test from its constants, before its corners
+// are read; generous: its area estimate is the centroid's, not the corners').
+STIPPLE_FN bool may_carry_gradient(PolygonView p, DensityParams q, float density) {
+    float distance = -p.center.z;
+    if (!(density > 0.0f) || distance <= 0.0f) return false;
+    float facing = abs(dot(p.normal, -p.center)) / length(p.center);
+    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
+    return 2.0f * screen_area > kGradientAreaStart;
+}
+
+// The density where a stipple at view-space x lies, on a polygon with view-space corners a, b, c drawing
+// `density` at its centroid.
+STIPPLE_FN float stipple_density_here(float density, vec3 x, vec3 a, vec3 b, vec3 c, DensityParams q) {
+    float weight = density_gradient_weight(a, b, c, q);
+    if (!(weight > 0.0f)) return density;
+    vec3 normal = view_normal_of(a, b, c, q);
+    float at_centre = point_terms((a + b + c) * (1.0f / 3.0f), normal, q);
+    if (!(at_centre > 0.0f)) return density;
+    return density * mix(1.0f, point_terms(x, normal, q) / at_centre, weight);
+}
+
+// Bounds of stipple_density_here over the polygon: (least, most). Each term's extremes are at the corners
+// (depth and distance change linearly over a plane), but for the facing ratio, largest at the point
+// nearest the eye; the product of the terms' extremes bounds the product.
+STIPPLE_FN vec2 polygon_density_bounds(float density, vec3 a, vec3 b, vec3 c, DensityParams q) {
+    float weight = density_gradient_weight(a, b, c, q);
+    vec3 normal = view_normal_of(a, b, c, q);
+    float at_centre = point_terms((a + b + c) * (1.0f / 3.0f), normal, q);
+    if (!(at_centre > 0.0f) || !(weight > 0.0f)) return vec2(density);
+    vec3 pa = point_term_parts(a, normal, q), pb = point_term_parts(b, normal, q), pc = point_term_parts(c, normal, q);
+    vec3 lo = min(pa, min(pb, pc)), hi = max(pa, max(pb, pc));
+    float facing_most = point_term_parts(triangle_point_nearest_eye(a, b, c), normal, q).z;
+    float least = lo.x * lo.y * facing_terms(lo.z, q) / at_centre;
+    float most = hi.x * hi.y * facing_terms(max(hi.z, facing_most), q) / at_centre;
+    return density * vec2(mix(1.0f, least, weight), mix(1.0f, most, weight)) * vec2(0.999f, 1.001f);
+}
+
 #endif

@@ -40,6 +40,14 @@ PolygonFrame polygon_frame(uint triangle) {
     return PolygonFrame(a, b - a, c - a);
 }
 
+// The polygon's corners in view space (stipple_density_here, polygon_density_bounds).
+void view_corners(uint triangle, mat4 model_view, out vec3 a, out vec3 b, out vec3 c) {
+    uvec3 corners = mesh_triangle(triangle);
+    a = vec3(model_view * vec4(mesh_vertex(corners.x), 1.0f));
+    b = vec3(model_view * vec4(mesh_vertex(corners.y), 1.0f));
+    c = vec3(model_view * vec4(mesh_vertex(corners.z), 1.0f));
+}
+
 vec3 stipple_position(PolygonFrame polygon, vec2 barycentric) {
     return polygon.origin + barycentric.x * polygon.edge_u + barycentric.y * polygon.edge_v;
 }

@@ -1,5 +1,5 @@
-// Reading a polygon's TriangleDraw (its density this frame and its first stipple) at a scattered place:
-// through the RG32UI texel view of the densities (kBindingTriangleDrawTexels), one gather on a software
+// Reading a polygon's TriangleDraw (its density this frame, its first stipple, the density's bounds) at a
+// scattered place: through the RGBA32UI texel view of the densities (kBindingTriangleDrawTexels), one gather on a software
 // GPU where a storage buffer is loaded member by member, lane by lane (docs/architecture.md).
 #ifndef TRIANGLE_DRAWS_H
 #define TRIANGLE_DRAWS_H
@@ -7,8 +7,8 @@
 layout(set = 0, binding = kBindingTriangleDrawTexels) uniform usamplerBuffer triangle_draw_texels;
 
 TriangleDraw triangle_draw(uint triangle) {
-    uvec2 texel = texelFetch(triangle_draw_texels, int(triangle)).xy;
-    return TriangleDraw(uintBitsToFloat(texel.x), texel.y);
+    uvec4 texel = texelFetch(triangle_draw_texels, int(triangle));
+    return TriangleDraw(uintBitsToFloat(texel.x), texel.y, uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
 }
 
 // Its candidates: from its first stipple to the next polygon's (object.flags.y polygons,

@@ -58,8 +58,8 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
     OffscreenTarget target(*context, {320, 256});
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
 
-    size_t compared = 0, selection_regime = 0, drawn = 0, near_ties = 0, mismatched = 0;
-    double max_relative = 0.0, max_absolute = 0.0;
+    size_t compared = 0, selection_regime = 0, drawn = 0, near_ties = 0, mismatched = 0, with_gradient = 0;
+    double max_relative = 0.0, max_absolute = 0.0, max_gradient_relative = 0.0;
     for (int camera = 0; camera < 8; ++camera) {
         ObjectParams& params = renderer.params(0);
         params.shading_exponent = 0.5f + 3.5f * uniform(rng);
@@ -76,9 +76,13 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
         target.draw(renderer, view);
 
         std::vector<float> gpu = renderer.read_densities(0);
+        const std::vector<glm::vec2> gpu_bounds = renderer.read_density_bounds(0);
         const ObjectGpu& object = renderer.object(0);
         std::vector<float> cpu(gpu.size());
-        compute_densities_cpu(object.polygons.cpu, object.geometry.first_stipple, renderer.frame_uniforms(), object.frame.uniforms, cpu);
+        std::vector<glm::vec2> cpu_bounds(gpu.size());
+        compute_densities_cpu(object.polygons.cpu, object.geometry.first_stipple, 0, object.polygons.corner_positions,
+                              object.polygons.corner_indices, renderer.frame_uniforms(), object.frame.uniforms, cpu,
+                              cpu_bounds);
         auto q = formulas::density_params(renderer.frame_uniforms(), object.frame.uniforms);
         for (size_t t = 0; t < gpu.size(); ++t) {
             auto terms = formulas::polygon_density_terms(formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), q);
@@ -91,6 +95,10 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
                 continue;
             }
             if (cpu[t] > 0.0f) ++drawn;
+            if (cpu_bounds[t].x != cpu_bounds[t].y) ++with_gradient;
+            // The bounds of a large polygon's density, relative to the density as the density is (floored alike).
+            const double bounds_error = glm::length(glm::dvec2(gpu_bounds[t]) - glm::dvec2(cpu_bounds[t]));
+            max_gradient_relative = std::max(max_gradient_relative, bounds_error / std::max(double(std::abs(cpu[t])), 0.05));
             // Relative to the density, floored at a twentieth of a stipple (a 5% grey dot): the GPU's
             // transcendental functions differ from the C library's in the last bits.
             double absolute = std::abs(double(gpu[t]) - cpu[t]);
@@ -101,7 +109,12 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
     std::printf("compared %zu densities: %zu drawn, %zu in the selection regime, max relative error %.3g, "
                 "max absolute error %.3g stipples, %zu near-tie selections, %zu mismatched selections\n",
                 compared, drawn, selection_regime, max_relative, max_absolute, near_ties, mismatched);
+    std::printf("%zu polygons large enough on screen to draw at the density where each stipple lies; max relative "
+                "error of their density bounds %.3g\n", with_gradient,
+                max_gradient_relative);
     EXPECT_LE(max_relative, 1e-4);
+    EXPECT_LE(max_gradient_relative, 1e-4);
+    EXPECT_GT(with_gradient, 0u) << "the near cameras should put a few polygons large on screen";
     EXPECT_EQ(mismatched, 0u);
     EXPECT_GT(selection_regime, 1000u) << "the cameras should exercise probabilistic selection";
     EXPECT_GT(drawn, 5000u);
@@ -199,14 +212,16 @@ Mesh make_box() {
     return mesh;
 }
 
-// The splat's work list holds, for each polygon that draws, its runs of splat_run_length drawn
-// stipples (named by their first stipple), and nothing else.
+// The splat's work list holds, for each polygon that draws, its runs of splat_run_length stipples up to
+// the most density any of them sees (TriangleDraw::most; the density, but on polygons large on screen),
+// named by their first stipple, and nothing else.
 void expect_splat_work_list(const gpu::Context& context, StippleRenderer& renderer, const StippleSet& stipples,
                             DensityPath path) {
     std::vector<std::byte> list = gpu::read_buffer(context, renderer.object(0).frame.drawn_polygons);
     gpu::DrawnPolygons header;
     std::memcpy(&header, list.data(), sizeof header);
     std::vector<float> densities = renderer.read_densities(0);
+    const std::vector<glm::vec2> bounds = renderer.read_density_bounds(0);
     std::vector<uint32_t> listed(header.count);
     std::memcpy(listed.data(), list.data() + sizeof header, sizeof(uint32_t) * header.count);
     std::sort(listed.begin(), listed.end());
@@ -214,7 +229,7 @@ void expect_splat_work_list(const gpu::Context& context, StippleRenderer& render
     for (uint32_t t = 0; t < densities.size(); ++t) {
         if (!(densities[t] > 0.0f)) continue;
         const uint32_t candidates = stipples.first[t + 1] - stipples.first[t];
-        uint32_t drawn = formulas::drawn_stipple_count(densities[t], candidates);
+        uint32_t drawn = formulas::drawn_stipple_count(bounds[t].y, candidates);
         const float side = formulas::splat_dot_side(renderer.params(0).point_size, densities[t], float(candidates));
         const uint32_t run = formulas::splat_run_length(drawn, side);
         for (uint32_t k = 0; k < drawn; k += run) expected.push_back(stipples.first[t] + k);
@@ -227,6 +242,7 @@ struct PathFrames {
     std::vector<RenderedFrame> frames;
     std::vector<std::vector<uint32_t>> masks;
     uint32_t cpu_listed = 0, gpu_listed = 0;  // the survivors' lists of the cpu and indirect paths
+    uint32_t band = 0;  // stipples of polygons large on screen whose index lies between their least and most density
 };
 
 // Every density path draws the subject; the masks and images must agree (checked by the caller).
@@ -255,6 +271,19 @@ PathFrames draw_with_every_path(const gpu::Context& context, const test::Prepare
             EXPECT_EQ(std::adjacent_find(listed.begin(), listed.end()), listed.end()) << "a stipple listed twice";
             EXPECT_EQ(draw.instance_count, 1u);
             (path == DensityPath::Cpu ? out.cpu_listed : out.gpu_listed) = draw.vertex_count;
+            // Each drawing polygon's candidates up to the most density any of them sees.
+            const std::vector<float> densities = renderer.read_densities(0);
+            const std::vector<glm::vec2> bounds = renderer.read_density_bounds(0);
+            uint32_t expected = 0, band = 0;
+            for (size_t t = 0; t < densities.size(); ++t) {
+                if (!(densities[t] > 0.0f)) continue;
+                const uint32_t candidates = subject.stipples.first[t + 1] - subject.stipples.first[t];
+                expected += formulas::drawn_stipple_count(bounds[t].y, candidates);
+                band += formulas::drawn_stipple_count(bounds[t].y, candidates) -
+                        std::min(uint32_t(std::floor(bounds[t].x)), candidates);
+            }
+            EXPECT_EQ(draw.vertex_count, expected) << density_path_name(path);
+            out.band = std::max(out.band, band);
         }
         if (draws_by_splat(path)) expect_splat_work_list(context, renderer, subject.stipples, path);
         std::printf("%-8s path: %lld stipples drawn\n", density_path_name(path),
@@ -282,9 +311,14 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     ObjectParams params;
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     PathFrames out = draw_with_every_path(*context, blob, params, 1.5f);
-    std::printf("survivors listed: %u by the CPU path, %u by the indirect path\n", out.cpu_listed, out.gpu_listed);
-    EXPECT_EQ(out.cpu_listed, test::popcount(out.masks[0])) << "the cpu path lists exactly the stipples it draws";
-    EXPECT_EQ(out.gpu_listed, test::popcount(out.masks[0])) << "the indirect path lists exactly the stipples it draws";
+    std::printf("survivors listed: %u by the CPU path, %u by the indirect path; %u drawn (%u in the band where a "
+                "large polygon's density decides per stipple)\n",
+                out.cpu_listed, out.gpu_listed, uint32_t(test::popcount(out.masks[0])), out.band);
+    // Every drawn stipple, and besides them only stipples of the band (culled by the vertex shader).
+    for (uint32_t listed : {out.cpu_listed, out.gpu_listed}) {
+        EXPECT_GE(listed, test::popcount(out.masks[0]));
+        EXPECT_LE(listed, test::popcount(out.masks[0]) + out.band);
+    }
     EXPECT_GT(test::popcount(out.masks[0]), 10000u);
     EXPECT_LT(test::popcount(out.masks[0]), blob.stipples.size());
     expect_same_stipples_and_images(out);

@@ -138,5 +138,90 @@ TEST_F(DistanceEnhancement, FramesHalfADegreeApartShareTheirStipples) {
     EXPECT_EQ(gpu::read_buffer(*context, renderer.object(0).geometry.stipples), stipples_before);
 }
 
+// A square of two triangles, 20 wide, lying in y = 0 (normal +y).
+Mesh two_triangle_square() {
+    Mesh mesh;
+    mesh.positions = {{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}, {-10.0f, 0.0f, 10.0f}};
+    mesh.indices = {0, 2, 1, 0, 3, 2};
+    compute_vertex_normals(mesh);
+    return mesh;
+}
+
+// The enhancements act across a polygon, not only from one polygon to the next (stipple_density_here). A
+// floor of two triangles seen at a slant, the extrinsic enhancement alone: evaluated once per polygon its
+// far third read 1.70 times as dark as its near third (ink 0.563, 0.435, 0.331: the far end drew as densely
+// in object space, compressed on screen); now 0.445, 0.483, 0.523, the far end a little lighter by the
+// orientation term (which thins what is seen at a grazing angle). The intrinsic enhancement alone: the
+// share of the candidates drawn falls with depth within each triangle (per polygon it was 0.98 and 1.0
+// at every depth: no depth cue on a floor of two triangles) and is the same at a depth on both sides of
+// the diagonal.
+TEST_F(DistanceEnhancement, TheEnhancementsHoldAcrossALargePolygon) {
+    ObjectParams params;
+    params.shading = false;
+    params.intrinsic = false;
+    Prepared floor = test::prepare(two_triangle_square(), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
+    renderer.add_object(floor.mesh, floor.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {640, 512});
+    const Sphere sphere = compute_bounding_sphere(floor.mesh);
+    const FrameView view = test::framed_view(sphere, target.extent(), 1.0f, 20.0f, 25.0f);
+    const RenderedFrame frame = target.render(renderer, view);
+    // Mean ink of the footprint's rows, in its far, middle and near thirds (rows from the top).
+    int top = int(target.extent().height), bottom = -1;
+    for (uint32_t y = 0; y < target.extent().height; ++y)
+        for (uint32_t x = 0; x < target.extent().width; ++x)
+            if (frame.depth[size_t(y) * target.extent().width + x] < 1.0f) top = std::min(top, int(y)), bottom = int(y);
+    ASSERT_GT(bottom - top, 60);
+    double ink[3] = {0, 0, 0}, covered[3] = {0, 0, 0};
+    for (int y = top; y <= bottom; ++y)
+        for (uint32_t x = 0; x < target.extent().width; ++x) {
+            const size_t i = size_t(y) * target.extent().width + x;
+            if (frame.depth[i] >= 1.0f) continue;
+            const int third = std::min(2, 3 * (y - top) / (bottom - top + 1));
+            ink[third] += 1.0 - frame.color.pixels[4 * i] / 255.0;
+            covered[third] += 1.0;
+        }
+    for (int k = 0; k < 3; ++k) ink[k] /= covered[k];
+    std::printf("floor of two triangles, extrinsic only: ink %.3f far, %.3f middle, %.3f near\n", ink[0], ink[1], ink[2]);
+    EXPECT_GE(ink[0] / ink[2], 0.75);
+    EXPECT_LE(ink[0] / ink[2], 1.05);
+    EXPECT_NEAR(ink[1] / ink[2], 1.0, 0.1);
+
+    // The intrinsic enhancement alone: drawn candidates by view depth, on either side of the diagonal.
+    renderer.params(0).intrinsic = true;
+    renderer.params(0).extrinsic = false;
+    target.draw(renderer, view);
+    const std::vector<uint32_t> drawn = renderer.drawn_mask(0);
+    constexpr int kBins = 8;
+    double candidates[2][kBins] = {}, shown[2][kBins] = {};
+    float nearest = 1e30f, farthest = -1e30f;
+    std::vector<float> depth(floor.stipples.size());
+    for (size_t s = 0; s < depth.size(); ++s) {
+        depth[s] = -(view.camera.view * glm::vec4(floor.stipples.positions[s], 1.0f)).z;
+        nearest = std::min(nearest, depth[s]), farthest = std::max(farthest, depth[s]);
+    }
+    for (size_t s = 0; s < depth.size(); ++s) {
+        const int bin = std::min(kBins - 1, int(kBins * (depth[s] - nearest) / (farthest - nearest)));
+        const int side = floor.stipples.triangle[s];
+        candidates[side][bin] += 1.0;
+        shown[side][bin] += (drawn[s / 32] >> (s % 32)) & 1u;
+    }
+    double worst = 0.0, nearest_share = -1.0, farthest_share = -1.0;
+    std::printf("intrinsic only, share drawn by depth (near to far), triangle 0 / 1:");
+    for (int b = 0; b < kBins; ++b) {
+        if (candidates[0][b] < 2000 || candidates[1][b] < 2000) continue;  // only where both sides have many
+        const double a = shown[0][b] / candidates[0][b], c = shown[1][b] / candidates[1][b];
+        std::printf(" %.3f/%.3f", a, c);
+        worst = std::max(worst, std::abs(a - c) / std::max(a, c));
+        if (nearest_share < 0.0) nearest_share = 0.5 * (a + c);
+        farthest_share = 0.5 * (a + c);
+    }
+    std::printf("; worst difference %.3f\n", worst);
+    EXPECT_LE(worst, 0.05);
+    EXPECT_LT(farthest_share, 0.75 * nearest_share) << "the depth cue should act within each triangle";
+}
+
 }  // namespace
 }  // namespace stipple

@@ -12,12 +12,22 @@
 namespace stipple {
 
 void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::span<const uint32_t> first_stipple,
-                           const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
-                           std::span<float> densities) {
+                           size_t first_triangle, std::span<const glm::vec3> positions,
+                           std::span<const uint32_t> indices, const gpu::FrameUniforms& frame,
+                           const gpu::ObjectUniforms& object, std::span<float> densities,
+                           std::span<glm::vec2> bounds) {
     const formulas::DensityParams params = formulas::density_params(frame, object);
     for (size_t t = 0; t < triangles.size(); ++t) {
         float candidates = float(first_stipple[t + 1] - first_stipple[t]);
-        densities[t] = formulas::polygon_density(formulas::polygon_view(triangles[t], candidates, object), params);
+        const formulas::PolygonView view = formulas::polygon_view(triangles[t], candidates, object);
+        densities[t] = formulas::polygon_density(view, params);
+        bounds[t] = glm::vec2(densities[t]);
+        if (formulas::may_carry_gradient(view, params, densities[t])) {  // as the density pass
+            const uint32_t* corner = &indices[3 * (first_triangle + t)];
+            auto in_view = [&](uint32_t i) { return glm::vec3(object.model_view * glm::vec4(positions[i], 1.0f)); };
+            bounds[t] = formulas::polygon_density_bounds(densities[t], in_view(corner[0]), in_view(corner[1]),
+                                                         in_view(corner[2]), params);
+        }
     }
 }
 
@@ -25,14 +35,17 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
     const ObjectGeometry& geometry = object.geometry;
     ObjectFrame& state = object.frame;
     std::vector<float> densities(geometry.triangle_count);
+    std::vector<glm::vec2> bounds(geometry.triangle_count);
     auto* draws = static_cast<gpu::TriangleDraw*>(state.draw_staging.mapped());
     // Both cores: the GPU work of this frame has not been submitted yet, so the CPU is otherwise idle.
     parallel_for_chunks(densities.size(), 16384, [&](size_t, size_t begin, size_t end) {
         std::span<float> part(densities.data() + begin, end - begin);
         compute_densities_cpu(std::span(object.polygons.cpu).subspan(begin, end - begin),
-                              std::span(geometry.first_stipple).subspan(begin, end - begin + 1), frame, state.uniforms,
-                              part);
-        for (size_t t = begin; t < end; ++t) draws[t] = {densities[t], geometry.first_stipple[t]};
+                              std::span(geometry.first_stipple).subspan(begin, end - begin + 1), begin,
+                              object.polygons.corner_positions, object.polygons.corner_indices, frame, state.uniforms,
+                              part, std::span(bounds).subspan(begin, end - begin));
+        for (size_t t = begin; t < end; ++t)
+            draws[t] = {densities[t], geometry.first_stipple[t], bounds[t].x, bounds[t].y};
     });
     double sum = 0.0;
     for (float d : densities) sum += d;
@@ -45,7 +58,8 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
         for (uint32_t t = 0; t < geometry.triangle_count; ++t) {
             if (!(densities[t] > 0.0f)) continue;
             const uint32_t first = geometry.first_stipple[t], candidates = geometry.first_stipple[t + 1] - first;
-            visit(first, formulas::drawn_stipple_count(densities[t], candidates),
+            // To the most density any of its stipples sees (the vertex shader and the splat cull the rest).
+            visit(first, formulas::drawn_stipple_count(bounds[t].y, candidates),
                   formulas::splat_dot_side(point_size, densities[t], float(candidates)));
         }
     };

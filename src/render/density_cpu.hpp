@@ -3,15 +3,21 @@
 // formulas as the GPU, shaders/stipple_formulas.h) and submits only the stipples that survive.
 #include <span>
 
+#include <glm/glm.hpp>
+
 #include "shared_types.h"
 
 namespace stipple {
 
-// One density per polygon, exactly polygon_density() of the shaders. `first_stipple` holds one more
-// entry than `triangles` (where the last polygon's candidates end).
+// One density per polygon, and the bounds of the density its stipples see (TriangleDraw::least, most), as
+// the density pass computes them (polygon_density, polygon_density_bounds). `first_stipple` holds one more entry than `triangles`
+// (where the last polygon's candidates end); `first_triangle` is triangles[0]'s index in the mesh whose
+// object-space corners `positions` and `indices` (three a polygon) give.
 void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::span<const uint32_t> first_stipple,
-                           const gpu::FrameUniforms& frame, const gpu::ObjectUniforms& object,
-                           std::span<float> densities);
+                           size_t first_triangle, std::span<const glm::vec3> positions,
+                           std::span<const uint32_t> indices, const gpu::FrameUniforms& frame,
+                           const gpu::ObjectUniforms& object, std::span<float> densities,
+                           std::span<glm::vec2> bounds);
 
 }  // namespace stipple
 

@@ -23,6 +23,7 @@ using glm::log;
 using glm::mat3;
 using glm::max;
 using glm::min;
+using glm::mix;
 using glm::normalize;
 using glm::sign;
 using glm::sin;

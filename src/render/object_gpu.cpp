@@ -91,6 +91,8 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
         gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
 
     object.polygons.cpu = upload.polygons.cpu;
+    object.polygons.corner_positions = upload.polygons.corner_positions;
+    object.polygons.corner_indices = upload.polygons.corner_indices;
     object.polygons.bounds = upload.polygons.bounds;
     object.polygons.box_min = upload.polygons.box_min;
     object.polygons.box_size = upload.polygons.box_size;
@@ -151,7 +153,7 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     }
     const std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
     std::vector<gpu::TriangleDraw> draws(upload.triangle_count);
-    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, upload.first_stipple[t]};
+    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, upload.first_stipple[t], 0.0f, 0.0f};
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
     upload.staged.resize(kStagedCount);
     // The stipple shaders read the corners of the polygons whose stipples they place.
@@ -192,9 +194,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
                                                       vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
     geometry.index_texels = gpu::create_texel_view(context, geometry.indices.handle(),
                                                    vec3_texels ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
-    static_assert(sizeof(gpu::TriangleDraw) == 8, "TriangleDraw is read as one RG32UI texel");
+    static_assert(sizeof(gpu::TriangleDraw) == 16, "TriangleDraw is read as one RGBA32UI texel");
     object->frame.triangle_draw_texels =
-        gpu::create_texel_view(context, object->frame.triangle_draw.handle(), VK_FORMAT_R32G32_UINT);
+        gpu::create_texel_view(context, object->frame.triangle_draw.handle(), VK_FORMAT_R32G32B32A32_UINT);
     static_assert(sizeof(gpu::TriangleInfo) == 16, "TriangleInfo is read as one RGBA32UI texel");
     object->polygons.texels = gpu::create_texel_view(context, object->polygons.gpu.handle(), VK_FORMAT_R32G32B32A32_UINT);
     if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);

@@ -5,7 +5,8 @@
 //                     with the bounds and quantisation box of the object's shape: computed on the CPU at
 //                     creation, and rewritten each frame for an animated object (render/deform_pass.hpp);
 //   ObjectFrame       this frame's uniforms, densities and the buffers of the density paths in use.
-// The CPU density paths read PolygonConstants::cpu and ObjectGeometry::first_stipple (nothing else).
+// The CPU density paths read PolygonConstants (cpu, corner_*) and ObjectGeometry::first_stipple (nothing
+// else).
 #include <memory>
 #include <vector>
 
@@ -54,6 +55,10 @@ struct PolygonConstants {
     gpu::Buffer gpu;                      // TriangleInfo per polygon (16 bytes, packed)
     VkBufferView texels = VK_NULL_HANDLE;  // the same as RGBA32UI texels (kBindingTriangleInfoTexels)
     std::vector<gpu::TriangleInfo> cpu;   // the same, for the CPU density paths (an animated object's: its rest pose)
+    // The mesh's corners, for the CPU density paths' gradients across large polygons (stipple_formulas.h,
+    // polygon_density_gradient): object space, three indices a polygon.
+    std::vector<glm::vec3> corner_positions;
+    std::vector<uint32_t> corner_indices;
     // Object space, of the rest shape (distance enhancement's reference scale, thinning): the sphere
     // generation framed in its reference view.
     Sphere bounds;
@@ -65,7 +70,7 @@ struct ObjectFrame {
     gpu::ObjectUniforms uniforms{};
     gpu::Buffer object_uniforms;   // ObjectUniforms, uploaded each frame
     gpu::Buffer triangle_draw;     // TriangleDraw per polygon: density per frame, first stipple constant
-    VkBufferView triangle_draw_texels = VK_NULL_HANDLE;  // the same as RG32UI texels (kBindingTriangleDrawTexels)
+    VkBufferView triangle_draw_texels = VK_NULL_HANDLE;  // the same as RGBA32UI texels (kBindingTriangleDrawTexels)
     // Buffers of one density path or two (PathBuffer), full size once the object draws with that path.
     gpu::Buffer drawn_polygons;    // splat paths: DrawnPolygons header + the work items drawing this frame
     gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU

@@ -50,6 +50,8 @@ PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& s
                                              ? stipples.selection
                                              : polygon_selection_values(mesh, stipples, seed);
     polygons.cpu = pack_polygon_constants(mesh, selection, polygons.box_min, polygons.box_size);
+    polygons.corner_positions = mesh.positions;
+    polygons.corner_indices = mesh.indices;
     return polygons;
 }
 

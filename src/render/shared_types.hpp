@@ -11,9 +11,11 @@ static_assert(sizeof(StippleVertex) == 8);
 static_assert(offsetof(StippleVertex, barycentric) == 0);
 static_assert(offsetof(StippleVertex, triangle) == 4);
 
-static_assert(sizeof(TriangleDraw) == 8);
+static_assert(sizeof(TriangleDraw) == 16);
 static_assert(offsetof(TriangleDraw, density) == 0);
 static_assert(offsetof(TriangleDraw, first_stipple) == 4);
+static_assert(offsetof(TriangleDraw, least) == 8);
+static_assert(offsetof(TriangleDraw, most) == 12);
 
 static_assert(sizeof(TriangleInfo) == 16);
 static_assert(offsetof(TriangleInfo, center_z_selection) == 4);

@@ -102,13 +102,16 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
 
     for (uint32_t facing : {0u, 1u}) {  // [1]: the variants that write the facing bits (objects with lines)
-        density_pipelines_[facing] = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
-                                                                  {{{gpu::kSpecFacingBits, facing}}});
+        // The corners of polygons large on screen are read as the stipple shaders read them.
+        density_pipelines_[facing] = gpu::create_compute_pipeline(
+            context_, "density.comp", layouts_.pipeline,
+            {{{gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
         density_list_pipelines_[facing] = gpu::create_compute_pipeline(
-            context_, "density.comp", layouts_.pipeline, {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}}});
+            context_, "density.comp", layouts_.pipeline,
+            {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     }
     facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
-                                                    {{{gpu::kSpecFacingOnly, 1u}}});
+                                                    {{{gpu::kSpecFacingOnly, 1u}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     create_line_pipelines(depth);
 
     const uint32_t count = options_.count_drawn ? 1u : 0u;
@@ -473,6 +476,15 @@ std::vector<float> StippleRenderer::read_densities(size_t object) const {
     for (size_t t = 0; t < densities.size(); ++t)
         std::memcpy(&densities[t], bytes.data() + t * sizeof(gpu::TriangleDraw), sizeof(float));
     return densities;
+}
+
+std::vector<glm::vec2> StippleRenderer::read_density_bounds(size_t object) const {
+    std::vector<std::byte> bytes = gpu::read_buffer(context_, objects_.at(object)->frame.triangle_draw);
+    std::vector<glm::vec2> bounds(bytes.size() / sizeof(gpu::TriangleDraw));
+    for (size_t t = 0; t < bounds.size(); ++t)
+        std::memcpy(&bounds[t], bytes.data() + t * sizeof(gpu::TriangleDraw) + offsetof(gpu::TriangleDraw, least),
+                    sizeof(glm::vec2));
+    return bounds;
 }
 
 }  // namespace stipple

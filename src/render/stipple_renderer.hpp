@@ -125,6 +125,7 @@ public:
     std::vector<uint32_t> drawn_mask(size_t object) const;
     // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).
     std::vector<float> read_densities(size_t object) const;  // the last frame's
+    std::vector<glm::vec2> read_density_bounds(size_t object) const;  // the last frame's (TriangleDraw least, most)
     // The triangles the last frame's depth pass drew of an object: those its list kept, or all of them
     // when it drew the whole mesh (render/depth_triangles.hpp). Read back: call after the frame completed.
     uint32_t read_depth_triangles(size_t object) const;

@@ -83,13 +83,27 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
     const int width = int(frame.viewport.x), height = int(frame.viewport.y);
     const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
     double ink = 0.0, off_surface = 0.0, hidden = 0.0, hidden_whole = 0.0;
+    const std::vector<glm::vec3>& corners = object.polygons.corner_positions;
     for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
-        const float density = formulas::polygon_density(
-            formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms), params);
+        const formulas::PolygonView view =
+            formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
+        const float density = formulas::polygon_density(view, params);
         const uint32_t candidates = object.geometry.first_stipple[t + 1] - object.geometry.first_stipple[t];
         const float side = formulas::splat_dot_side(object.params.point_size, density, float(candidates));
-        for (uint32_t k = 0; k < formulas::drawn_stipple_count(density, candidates); ++k) {
-            const float intensity = formulas::stipple_intensity(density, float(k));
+        // A large polygon's stipples, each at the density where it lies, as the shaders draw them.
+        const uint32_t* corner = &object.polygons.corner_indices[3 * t];
+        const glm::mat4& model_view = object.frame.uniforms.model_view;
+        auto in_view = [&](const glm::vec3& p) { return glm::vec3(model_view * glm::vec4(p, 1.0f)); };
+        const glm::vec3 a = in_view(corners[corner[0]]), b = in_view(corners[corner[1]]), c = in_view(corners[corner[2]]);
+        glm::vec2 bounds(density);
+        if (formulas::may_carry_gradient(view, params, density)) bounds = formulas::polygon_density_bounds(density, a, b, c, params);
+        for (uint32_t k = 0; k < formulas::drawn_stipple_count(bounds.y, candidates); ++k) {
+            float here = density;
+            if (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y)
+                here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
+                                                      b, c, params);
+            const float intensity = formulas::stipple_intensity(here, float(k));
+            if (intensity <= 0.0f) continue;
             const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
             if (clip.w <= 0.0f) continue;
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
