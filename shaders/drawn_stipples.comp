@@ -3,8 +3,11 @@
 // (index below the polygon's density, §3.2; see DrawCommand in shared_types.h), drawn by one indirect
 // draw of that many points. Culled candidates never reach the vertex stage, and one draw replaces one
 // per polygon (a software GPU pays microseconds per draw: ~30,000 draws made the bunny's frame 80 ms).
-// One invocation per polygon; a subgroup claims its slots with one atomic. density_cpu.cpp writes the
-// same list for the cpu path, in polygon order.
+// One invocation per work item of the density pass (DrawnPolygons: a run of at most kSplatChunk of a
+// polygon's stipples, as the splat takes them), dispatched indirectly; a subgroup claims its slots with
+// one atomic. (One invocation per polygon lost stipples on lavapipe, which ends every loop of an
+// invocation after 65535 iterations: a polygon drawing more listed only that many.) density_cpu.cpp
+// writes the same list for the cpu path, in polygon order.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -15,22 +18,34 @@
 layout(local_size_x = kDensityWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
+layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
+layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
+    DrawnPolygons drawn;
+    uint drawn_polygons[];
+};
 layout(set = 0, binding = kBindingDrawnStipples, std430) buffer DrawnStipples {
     DrawCommand draw;  // vertex_count: the stipples listed so far (cleared before the pass)
     uint drawn_stipples[];
 };
 
 void main() {
-    uint t = gl_GlobalInvocationID.x;
-    uint triangles = object.flags.y;
+    uint slot = gl_GlobalInvocationID.x;
     uint first = 0u;
     uint count = 0u;
-    if (t < triangles) {
-        TriangleDraw polygon = triangle_draw(t);  // as texels: two gathers instead of three loads
-        first = polygon.first_stipple;
+    if (slot < drawn.count) {
+        uint item = drawn_polygons[slot];  // the run's first stipple
+        uint t = stipples[item].triangle;
+        TriangleDraw polygon = triangle_draw(t);  // as texels: one gather instead of four loads
+        uint candidates = polygon_candidates(t, polygon.first_stipple, object.flags);
         // To the most density any of its stipples sees: the vertex shader culls those of a large polygon
-        // that the density where they lie does not reach (stipple_density_here).
-        count = drawn_stipple_count(polygon.most, polygon_candidates(t, first, object.flags));
+        // that the density where they lie does not reach (stipple_density_here). The run as the density
+        // pass cut it (splat_run_length).
+        uint drawn_here = drawn_stipple_count(polygon.most, candidates);
+        float side = splat_dot_side(object.shading.y, polygon.density, float(candidates));
+        uint begin = item - polygon.first_stipple;
+        uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
+        first = item;
+        count = end > begin ? end - begin : 0u;
     }
     uint total = subgroupAdd(count);
     if (total == 0u) return;  // the same in the whole subgroup

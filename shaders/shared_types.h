@@ -81,7 +81,7 @@ STIPPLE_CONST uint kBindingTriangleInfo = 3;   // TriangleInfo[] (storage), cons
 STIPPLE_CONST uint kBindingDrawnStipples = 4;  // DrawCommand + uint[] (storage): the survivors' list (indirect, cpu)
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
 STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
-STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list
+STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list (the indirect path lists from it too)
 STIPPLE_CONST uint kBindingMeshPositions = 8;  // texel buffer: the mesh's vertices (RGB32F, or R32F: kSpecMeshVec3Texels)
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // texel buffer: the mesh's triangles (RGB32UI, or R32UI)
 // texel buffer (RGBA32UI): SilhouetteEdge[], every edge of the mesh once, an edge per texel (the line

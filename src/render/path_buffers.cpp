@@ -39,7 +39,8 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
     const VkDeviceSize survivors = sizeof(gpu::DrawCommand) + sizeof(uint32_t) * VkDeviceSize(object.geometry.stipple_count);
     const bool lists_survivors = path == DensityPath::Cpu || path == DensityPath::Indirect;
     switch (kind) {
-        case PathBuffer::DrawnPolygons: return draws_by_splat(path) ? list : 0;
+        // The indirect path lists its stipples from the same work items.
+        case PathBuffer::DrawnPolygons: return draws_by_splat(path) || path == DensityPath::Indirect ? list : 0;
         case PathBuffer::DrawStaging:
             if (path == DensityPath::Cpu) return staged_list_offset(object) + survivors;
             return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;

@@ -263,7 +263,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
             any_indirect = true;
         }
-        if (splat) {  // an empty list: no groups yet (y and z are 1)
+        if (splat || object->params.density_path == DensityPath::Indirect) {  // an empty list: no groups yet (y and z are 1)
             const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
         }
@@ -280,23 +280,31 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             if (object->geometry.triangle_count == 0) continue;
             if (!density_on_cpu(object->params.density_path)) {
                 const size_t facing = draws_edge_lines(*object) ? 1 : 0;
-                dispatch(*object, uses_splat(*object) ? density_list_pipelines_[facing] : density_pipelines_[facing]);
+                // The splat's work items, which the indirect path lists its stipples from too.
+                const bool items = uses_splat(*object) || object->params.density_path == DensityPath::Indirect;
+                dispatch(*object, items ? density_list_pipelines_[facing] : density_pipelines_[facing]);
             }
             else if (draws_edge_lines(*object))
                 dispatch(*object, facing_pipeline_);  // the lines' facing bits
         }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written (read through
-    // their texel view: a sampled read).
+    // their texel view: a sampled read), one invocation per work item of the density pass (runs of at
+    // most kSplatChunk stipples, as the splat takes them: lavapipe ends every loop of an invocation after
+    // 65535 iterations, and one invocation per polygon lost the stipples of polygons drawing more).
     if (any_indirect) {
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
-                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        for (auto& object : objects_)
-            if (object->geometry.triangle_count > 0 && object->params.density_path == DensityPath::Indirect)
-                dispatch(*object, drawn_stipples_pipeline_);
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        for (auto& object : objects_) {
+            if (object->geometry.triangle_count == 0 || object->params.density_path != DensityPath::Indirect) continue;
+            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, drawn_stipples_pipeline_);
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
+                                    nullptr);
+            vkCmdDispatchIndirect(cb, object->frame.drawn_polygons.handle(), 0);
+        }
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
