@@ -242,15 +242,20 @@ void main() {
     uint whole_end = clamp(uint(floor(draw.least)), begin, end);
     for (uint k = begin; k < whole_end; ++k)
         splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
+    // A polygon whose density changes across it: its corners and terms once for all of its stipples.
+    bool varies = draw.least != draw.most;
+    vec3 corner_a = vec3(0.0), corner_b = vec3(0.0), corner_c = vec3(0.0);
+    DensityParams q = density_params(frame, object);
+    if (varies) {
+        view_corners(t, object.model_view, corner_a, corner_b, corner_c);
+        q.flags = object.flags[t >> 31u];  // object.flags.x, where lavapipe cannot fold it (uniform_branch.h)
+    }
     for (uint k = whole_end; k < end; ++k) {
         float here = density;
-        if (draw.least != draw.most) {  // where it lies (stipple_density_here)
-            vec3 a, b, c;
-            view_corners(t, object.model_view, a, b, c);
-            DensityParams q = density_params(frame, object);
-            q.flags = object.flags[t >> 31u];  // object.flags.x, where lavapipe cannot fold it (uniform_branch.h)
+        if (varies) {  // where it lies (stipple_density_here)
             vec2 uv = unpackUnorm2x16(stipples[first + k].barycentric);
-            here = stipple_density_here(density, a + uv.x * (b - a) + uv.y * (c - a), a, b, c, q);
+            here = stipple_density_here(density, corner_a + uv.x * (corner_b - corner_a) + uv.y * (corner_c - corner_a),
+                                        corner_a, corner_b, corner_c, q);
         }
         float fraction = stipple_intensity(here, float(k));
         if (fraction <= 0.0f) continue;  // where it lies, the density does not reach it

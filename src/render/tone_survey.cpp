@@ -94,9 +94,12 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
         const uint32_t* corner = &object.polygons.corner_indices[3 * t];
         const glm::mat4& model_view = object.frame.uniforms.model_view;
         auto in_view = [&](const glm::vec3& p) { return glm::vec3(model_view * glm::vec4(p, 1.0f)); };
-        const glm::vec3 a = in_view(corners[corner[0]]), b = in_view(corners[corner[1]]), c = in_view(corners[corner[2]]);
+        glm::vec3 a(0.0f), b(0.0f), c(0.0f);
         glm::vec2 bounds(density);
-        if (formulas::may_carry_gradient(view, params, density)) bounds = formulas::polygon_density_bounds(density, a, b, c, params);
+        if (formulas::may_carry_gradient(view, params, density)) {
+            a = in_view(corners[corner[0]]), b = in_view(corners[corner[1]]), c = in_view(corners[corner[2]]);
+            bounds = formulas::polygon_density_bounds(density, a, b, c, params);
+        }
         for (uint32_t k = 0; k < formulas::drawn_stipple_count(bounds.y, candidates); ++k) {
             float here = density;
             if (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y)
