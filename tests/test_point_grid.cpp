@@ -100,5 +100,28 @@ TEST(PointGrid, FewPointsMakeATableSmallerThanABlock) {
     for (const glm::vec3& p : points) expect_neighbourhood_complete(grid, points, p);
 }
 
+// Grids of over half a million points sort on every core (sort_in_blocks): the slots must come out as
+// the serial sort orders them (spatial_order sorts serially), for a surface and for a pile that makes
+// a block too full for 16-bit offsets (the serial fallback).
+TEST(PointGrid, TheSortOnEveryCoreOrdersAsTheSerialOne) {
+    std::mt19937 rng(5);
+    std::normal_distribution<float> normal;
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<glm::vec3> points(600000);
+    for (glm::vec3& p : points) p = glm::normalize(glm::vec3(normal(rng), normal(rng), normal(rng)));
+    for (int pile = 0; pile < 2; ++pile) {
+        if (pile == 1)
+            for (int i = 0; i < 70000; ++i) points[i * 7] = glm::vec3(0.5f) + 0.001f * glm::vec3(unit(rng), unit(rng), unit(rng));
+        PointGrid grid;
+        grid.build(points, 0.004f, 1.0);
+        expect_slots_are_the_points(grid, points);
+        const std::vector<uint32_t> serial = PointGrid::spatial_order(points, 0.004f, 1.0);
+        ASSERT_EQ(serial.size(), points.size());
+        size_t differing = 0;
+        for (uint32_t slot = 0; slot < points.size(); ++slot) differing += grid.sorted_index(slot) != serial[slot];
+        EXPECT_EQ(differing, 0u) << (pile ? "with a pile" : "on a sphere");
+    }
+}
+
 }  // namespace
 }  // namespace stipple

@@ -114,24 +114,29 @@ public:
         // Padded by one SIMD width of points that are out of every query's reach.
         const size_t n = points.size();
         const float far = std::numeric_limits<float>::max();
-        // The x coordinates' storage holds the points' buckets while they are sorted (it is written
-        // only after): no scratch array of 4 bytes a point beside the grid.
-        xs_.resize(n + kPad);
-        sort_into_buckets(points, cell_size, buckets_per_point, xs_.data());
-        xs_.assign(n + kPad, far), ys_.assign(n + kPad, far), zs_.assign(n + kPad, far);
-        for (size_t slot = 0; slot < n; ++slot) {
-            const glm::vec3& p = points[index_[slot]];
-            xs_[slot] = p.x, ys_[slot] = p.y, zs_[slot] = p.z;
-        }
+        // The x coordinates' storage holds the points' buckets while they are sorted, the y coordinates'
+        // the sort's intermediate order (both are written only after): no scratch arrays beside the grid.
+        xs_.resize(n + kPad), ys_.resize(n + kPad);
+        sort_into_buckets(points, cell_size, buckets_per_point, xs_.data(), ys_.data());
+        zs_.resize(n + kPad);
+        parallel_for_chunks(n, kSortChunk, [&](size_t, size_t begin, size_t end) {
+            for (size_t slot = begin; slot < end; ++slot) {
+                const glm::vec3& p = points[index_[slot]];
+                xs_[slot] = p.x, ys_[slot] = p.y, zs_[slot] = p.z;
+            }
+        });
+        std::fill(xs_.begin() + n, xs_.end(), far), std::fill(ys_.begin() + n, ys_.end(), far);
+        std::fill(zs_.begin() + n, zs_.end(), far);
     }
 
     // The grid's spatial order alone (the input index of every slot, as sorted_index gives it after
-    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32.
+    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32
+    // (20 with `on_every_core`, which sorts on every core where that is worth it).
     static std::vector<uint32_t> spatial_order(std::span<const glm::vec3> points, float cell_size,
-                                               double buckets_per_point = 2.0) {
+                                               double buckets_per_point = 2.0, bool on_every_core = false) {
         PointGrid grid;
-        std::vector<float> scratch(points.size());
-        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data());
+        std::vector<float> scratch(points.size()), order(on_every_core ? points.size() : 0);
+        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data(), on_every_core ? order.data() : nullptr);
         return std::move(grid.index_);
     }
 
@@ -198,27 +203,104 @@ public:
 
 private:
     // hash_, the bucket starts and index_ for `points`. Deterministic: within a bucket, points keep
-    // their input order. `scratch` (n floats) holds each point's bucket as a word meanwhile.
+    // their input order (a stable sort has one result, however it is computed). `scratch` (n floats)
+    // holds each point's bucket as a word meanwhile; `order` (n floats, or null) lets the sort run on
+    // every core (sort_in_blocks).
     void sort_into_buckets(std::span<const glm::vec3> points, float cell_size, double buckets_per_point,
-                           float* scratch) {
-        auto put = [scratch](size_t i, uint32_t bucket) { std::memcpy(scratch + i, &bucket, sizeof bucket); };
-        auto get = [scratch](size_t i) {
-            uint32_t bucket;
-            std::memcpy(&bucket, scratch + i, sizeof bucket);
-            return bucket;
-        };
+                           float* scratch, float* order) {
         const size_t n = points.size();
         glm::vec3 lo(0.0f);
         if (n > 0) {
+            std::vector<glm::vec3> lows((n + kSortChunk - 1) / kSortChunk, points[0]);
+            parallel_for_chunks(n, kSortChunk, [&](size_t chunk, size_t begin, size_t end) {
+                for (size_t i = begin; i < end; ++i) lows[chunk] = glm::min(lows[chunk], points[i]);
+            });
             lo = points[0];
-            for (const glm::vec3& p : points) lo = glm::min(lo, p);
+            for (const glm::vec3& low : lows) lo = glm::min(lo, low);
         }
         // Two buckets per point by default. Cells hold several points, so most buckets are empty,
         // but a collision costs more than an empty bucket: a query reads the other cell's points too, and
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
-        parallel_for(n, 65536, [&](size_t i) { put(i, hash_.bucket(hash_.cell_of(points[i]))); });
+        parallel_for(n, 65536, [&](size_t i) { put(scratch, i, hash_.bucket(hash_.cell_of(points[i]))); });
+        index_.resize(n);
+        if (order != nullptr && n >= 2 * kSortChunk && sort_in_blocks(n, scratch, reinterpret_cast<uint32_t*>(order)))
+            return;
+        sort_serially(n, scratch);
+    }
+
+    static void put(float* scratch, size_t i, uint32_t bucket) { std::memcpy(scratch + i, &bucket, sizeof bucket); }
+    static uint32_t get(const float* scratch, size_t i) {
+        uint32_t bucket;
+        std::memcpy(&bucket, scratch + i, sizeof bucket);
+        return bucket;
+    }
+
+    // The counting sort on two cores (2.6 of the 8M-stipple dragon's 8.7 s of generation went to
+    // one core sorting its grids): points are sorted by block of buckets first, each chunk of them
+    // counted and scattered on its own (a chunk's points land after the earlier chunks' in every
+    // block), then every block by bucket on its own (its 256 buckets' counts and its points stay in
+    // the caches). False, having done nothing, when a block holds more than 16-bit offsets can count.
+    bool sort_in_blocks(size_t n, const float* scratch, uint32_t* order) {
+        const size_t buckets = hash_.bucket_count();
+        if (buckets < (size_t(1) << kBlockShift)) return false;
+        const size_t blocks = buckets >> kBlockShift;
+        // At most 8 chunks, so that the counts stay small: where the chunks end changes nothing in the result.
+        const size_t chunk = std::max(kSortChunk, (n + 7) / 8);
+        const size_t chunks = (n + chunk - 1) / chunk;
+        // cursor[c * blocks + b]: chunk c's count in block b, then where its next point in block b goes.
+        std::vector<uint32_t> cursor(chunks * blocks, 0);
+        parallel_for_chunks(n, chunk, [&](size_t c, size_t begin, size_t end) {
+            uint32_t* count = cursor.data() + c * blocks;
+            for (size_t i = begin; i < end; ++i) ++count[get(scratch, i) >> kBlockShift];
+        });
+        block_start_.assign(blocks + 1, 0);
+        uint32_t total = 0;
+        for (size_t b = 0; b < blocks; ++b) {
+            block_start_[b] = total;
+            uint32_t in_block = 0;
+            for (size_t c = 0; c < chunks; ++c) {
+                const uint32_t count = cursor[c * blocks + b];
+                cursor[c * blocks + b] = total + in_block;
+                in_block += count;
+            }
+            if (in_block > UINT16_MAX) return false;
+            total += in_block;
+        }
+        block_start_[blocks] = total;
+        block_shift_ = kBlockShift;
+        parallel_for_chunks(n, chunk, [&](size_t c, size_t begin, size_t end) {
+            uint32_t* next = cursor.data() + c * blocks;
+            for (size_t i = begin; i < end; ++i) order[next[get(scratch, i) >> kBlockShift]++] = static_cast<uint32_t>(i);
+        });
+        offset_.assign(buckets + 1, 0);
+        constexpr uint32_t kInBlock = (uint32_t(1) << kBlockShift) - 1;
+        parallel_for_chunks(blocks, 64, [&](size_t, size_t first, size_t last) {
+            for (size_t block = first; block < last; ++block) {
+                const uint32_t begin = block_start_[block], end = block_start_[block + 1];
+                uint16_t* offset = offset_.data() + (block << kBlockShift);
+                for (uint32_t j = begin; j < end; ++j) ++offset[get(scratch, order[j]) & kInBlock];
+                uint16_t running = 0;
+                for (uint32_t b = 0; b <= kInBlock; ++b) {
+                    const uint16_t count = offset[b];
+                    offset[b] = running;
+                    running = static_cast<uint16_t>(running + count);
+                }
+                // Bucket b's start as its cursor leaves it at bucket b + 1's start; one shift puts them back.
+                for (uint32_t j = begin; j < end; ++j) {
+                    const uint32_t i = order[j];
+                    index_[begin + offset[get(scratch, i) & kInBlock]++] = i;
+                }
+                for (uint32_t b = kInBlock; b > 0; --b) offset[b] = offset[b - 1];
+                offset[0] = 0;
+            }
+        });
+        return true;
+    }
+
+    void sort_serially(size_t n, const float* scratch) {
+        auto get = [scratch](size_t i) { return PointGrid::get(scratch, i); };
         // Bucket b starts at block_start_[b >> block_shift_] + offset_[b] (see start). Blocks hold at
         // most 65535 points, unless a pile of points fills one (many faces overlapping in one place) or
         // the table is smaller than a block: then every bucket is a block of its own (offsets all 0).
@@ -253,7 +335,6 @@ private:
             }
             block_start_.back() = total;  // the end sentinel's block (offset_[buckets] is 0)
         }
-        index_.resize(n);
         // Scatter with bucket b's start as its cursor, which leaves it at bucket b's end (the next
         // bucket's start); one shift puts the starts back. No cursor array of bucket-table size.
         if (block_shift_ == 0) {
@@ -278,6 +359,8 @@ private:
     // buckets a point (rounded up to a power of two) 32-bit starts were 8-16 of the 40 bytes a stipple
     // cost there (issue 17 asks at most 40 bytes a generated stipple, the whole program included).
     static constexpr int kBlockShift = 8;
+    // Points per chunk of the parallel passes over them.
+    static constexpr size_t kSortChunk = size_t(1) << 18;
     std::vector<uint32_t> block_start_;  // by block of 2^block_shift_ buckets
     std::vector<uint16_t> offset_;       // by bucket: its start within its block
     int block_shift_ = 0;

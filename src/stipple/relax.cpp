@@ -44,6 +44,8 @@ constexpr double kBucketsPerPoint = 1.0;
 // through them holds about 40-70 stipples, a crumpled one a few times that; more means faces piled on
 // each other, which relaxing cannot even out.
 constexpr size_t kMaxNeighbours = 4096;
+// Stipples per chunk of the copies into and out of the spatial order.
+constexpr size_t kCopyChunk = size_t(1) << 16;
 
 // Positions by slot of a chunk's own points (slots [begin, begin + size) of the grid), as they move
 // during an iteration, padded by a SIMD width of points out of reach like the grid's arrays.
@@ -171,9 +173,15 @@ __attribute__((target("avx2"))) glm::vec3 repulsion_avx2(const glm::vec3& p, con
         fy = _mm256_add_ps(fy, _mm256_mul_ps(w, dy));
         fz = _mm256_add_ps(fz, _mm256_mul_ps(w, dz));
     }
-    Lanes lanes;
-    _mm256_store_ps(lanes.x, fx), _mm256_store_ps(lanes.y, fy), _mm256_store_ps(lanes.z, fz);
-    return lanes.total();
+    // Lanes::total's sums in registers (stored and read back lane by lane, they cost as much as the loop
+    // over the candidates of a cell): each hadd adds neighbouring lanes within each 128-bit half, so
+    // `sums` holds ((v0 + v1) + (v2 + v3)) for x, y, z in its low half and ((v4 + v5) + (v6 + v7)) in
+    // its high half, the same IEEE operations in the same order.
+    const __m256 sums = _mm256_hadd_ps(_mm256_hadd_ps(fx, fy), _mm256_hadd_ps(fz, fz));
+    const __m128 total = _mm_add_ps(_mm256_castps256_ps128(sums), _mm256_extractf128_ps(sums, 1));
+    alignas(16) float xyz[4];
+    _mm_store_ps(xyz, total);
+    return {xyz[0], xyz[1], xyz[2]};
 }
 #endif
 
@@ -301,12 +309,17 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     // order. One array at a time, so that a stipple never costs more than an iteration's 34-36 bytes
     // (relax.hpp): the caller's positions and triangles, 16, are freed once copied; the positions come
     // back at the end, in the order found by sorting the input again.
-    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h, kBucketsPerPoint);
+    // (Sorting on every core costs 4 bytes a stipple more here, below the iterations' peak; not so at the end.)
+    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h, kBucketsPerPoint, true);
     std::vector<glm::vec3> pos(n);
-    for (uint32_t slot = 0; slot < n; ++slot) pos[slot] = positions[original[slot]];
+    parallel_for_chunks(n, kCopyChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t slot = begin; slot < end; ++slot) pos[slot] = positions[original[slot]];
+    });
     std::vector<glm::vec3>().swap(positions);
     std::vector<uint32_t> tri(n);
-    for (uint32_t slot = 0; slot < n; ++slot) tri[slot] = triangle_of[original[slot]];
+    parallel_for_chunks(n, kCopyChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t slot = begin; slot < end; ++slot) tri[slot] = triangle_of[original[slot]];
+    });
     std::vector<uint32_t>().swap(triangle_of);  // taken: the caller rebuilds it from the counts
     std::vector<uint32_t>().swap(original);
 
@@ -367,7 +380,9 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     original = PointGrid::spatial_order(input_again(), h, kBucketsPerPoint);
     STIPPLE_CHECK(original.size() == n, "relax_stipples: input_again must return the positions given");
     positions.resize(n);
-    for (size_t i = 0; i < n; ++i) positions[original[i]] = pos[i];
+    parallel_for_chunks(n, kCopyChunk, [&](size_t, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) positions[original[i]] = pos[i];
+    });
 }
 
 }  // namespace stipple
