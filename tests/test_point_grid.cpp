@@ -100,10 +100,11 @@ TEST(PointGrid, FewPointsMakeATableSmallerThanABlock) {
     for (const glm::vec3& p : points) expect_neighbourhood_complete(grid, points, p);
 }
 
-// Grids of over half a million points sort on every core (sort_in_blocks): the slots must come out as
-// the serial sort orders them (spatial_order sorts serially), for a surface and for a pile that makes
-// a block too full for 16-bit offsets (the serial fallback).
-TEST(PointGrid, TheSortOnEveryCoreOrdersAsTheSerialOne) {
+// Grids of over half a million points sort on every core (sort_in_blocks), the grid's coordinates' storage
+// holding the buckets or, for spatial_order, computing them again: both must order the slots as a stable
+// sort by bucket does, on a surface and with a pile that makes a block too full for 16-bit offsets (the
+// serial fallback).
+TEST(PointGrid, TheSortOnEveryCoreIsTheStableSortByBucket) {
     std::mt19937 rng(5);
     std::normal_distribution<float> normal;
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -115,11 +116,20 @@ TEST(PointGrid, TheSortOnEveryCoreOrdersAsTheSerialOne) {
         PointGrid grid;
         grid.build(points, 0.004f, 1.0);
         expect_slots_are_the_points(grid, points);
-        const std::vector<uint32_t> serial = PointGrid::spatial_order(points, 0.004f, 1.0);
-        ASSERT_EQ(serial.size(), points.size());
-        size_t differing = 0;
-        for (uint32_t slot = 0; slot < points.size(); ++slot) differing += grid.sorted_index(slot) != serial[slot];
-        EXPECT_EQ(differing, 0u) << (pile ? "with a pile" : "on a sphere");
+        std::vector<uint32_t> expected(points.size());
+        for (uint32_t i = 0; i < expected.size(); ++i) expected[i] = i;
+        std::stable_sort(expected.begin(), expected.end(), [&](uint32_t a, uint32_t b) {
+            return grid.bucket(grid.cell_of(points[a])) < grid.bucket(grid.cell_of(points[b]));
+        });
+        const std::vector<uint32_t> order = PointGrid::spatial_order(points, 0.004f, 1.0);
+        ASSERT_EQ(order.size(), points.size());
+        size_t built_differs = 0, ordered_differs = 0;
+        for (uint32_t slot = 0; slot < points.size(); ++slot) {
+            built_differs += grid.sorted_index(slot) != expected[slot];
+            ordered_differs += order[slot] != expected[slot];
+        }
+        EXPECT_EQ(built_differs, 0u) << (pile ? "with a pile" : "on a sphere");
+        EXPECT_EQ(ordered_differs, 0u) << (pile ? "with a pile" : "on a sphere");
     }
 }
 

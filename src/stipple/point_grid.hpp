@@ -130,13 +130,12 @@ public:
     }
 
     // The grid's spatial order alone (the input index of every slot, as sorted_index gives it after
-    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32
-    // (20 with `on_every_core`, which sorts on every core where that is worth it).
+    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32.
     static std::vector<uint32_t> spatial_order(std::span<const glm::vec3> points, float cell_size,
-                                               double buckets_per_point = 2.0, bool on_every_core = false) {
+                                               double buckets_per_point = 2.0) {
         PointGrid grid;
-        std::vector<float> scratch(points.size()), order(on_every_core ? points.size() : 0);
-        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data(), on_every_core ? order.data() : nullptr);
+        std::vector<float> scratch(points.size());
+        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data(), nullptr);
         return std::move(grid.index_);
     }
 
@@ -204,8 +203,9 @@ public:
 private:
     // hash_, the bucket starts and index_ for `points`. Deterministic: within a bucket, points keep
     // their input order (a stable sort has one result, however it is computed). `scratch` (n floats)
-    // holds each point's bucket as a word meanwhile; `order` (n floats, or null) lets the sort run on
-    // every core (sort_in_blocks).
+    // holds each point's bucket as a word meanwhile, `order` (n floats) the order by block of buckets
+    // (sort_in_blocks). Without `order`, `scratch` holds that order and the buckets are computed again
+    // where needed (or, when the sort falls back to one core, the buckets).
     void sort_into_buckets(std::span<const glm::vec3> points, float cell_size, double buckets_per_point,
                            float* scratch, float* order) {
         const size_t n = points.size();
@@ -223,9 +223,15 @@ private:
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
-        parallel_for(n, 65536, [&](size_t i) { put(scratch, i, hash_.bucket(hash_.cell_of(points[i]))); });
         index_.resize(n);
-        if (order != nullptr && n >= 2 * kSortChunk && sort_in_blocks(n, scratch, reinterpret_cast<uint32_t*>(order)))
+        const bool on_every_core = n >= 2 * kSortChunk;
+        if (on_every_core && order == nullptr &&
+            sort_in_blocks(n, [&](size_t i) { return hash_.bucket(hash_.cell_of(points[i])); },
+                           reinterpret_cast<uint32_t*>(scratch)))
+            return;
+        parallel_for(n, 65536, [&](size_t i) { put(scratch, i, hash_.bucket(hash_.cell_of(points[i]))); });
+        if (on_every_core && order != nullptr &&
+            sort_in_blocks(n, [scratch](size_t i) { return get(scratch, i); }, reinterpret_cast<uint32_t*>(order)))
             return;
         sort_serially(n, scratch);
     }
@@ -242,7 +248,8 @@ private:
     // counted and scattered on its own (a chunk's points land after the earlier chunks' in every
     // block), then every block by bucket on its own (its 256 buckets' counts and its points stay in
     // the caches). False, having done nothing, when a block holds more than 16-bit offsets can count.
-    bool sort_in_blocks(size_t n, const float* scratch, uint32_t* order) {
+    template <class BucketOf>
+    bool sort_in_blocks(size_t n, const BucketOf& bucket_of, uint32_t* order) {
         const size_t buckets = hash_.bucket_count();
         if (buckets < (size_t(1) << kBlockShift)) return false;
         const size_t blocks = buckets >> kBlockShift;
@@ -253,7 +260,7 @@ private:
         std::vector<uint32_t> cursor(chunks * blocks, 0);
         parallel_for_chunks(n, chunk, [&](size_t c, size_t begin, size_t end) {
             uint32_t* count = cursor.data() + c * blocks;
-            for (size_t i = begin; i < end; ++i) ++count[get(scratch, i) >> kBlockShift];
+            for (size_t i = begin; i < end; ++i) ++count[bucket_of(i) >> kBlockShift];
         });
         block_start_.assign(blocks + 1, 0);
         uint32_t total = 0;
@@ -272,7 +279,7 @@ private:
         block_shift_ = kBlockShift;
         parallel_for_chunks(n, chunk, [&](size_t c, size_t begin, size_t end) {
             uint32_t* next = cursor.data() + c * blocks;
-            for (size_t i = begin; i < end; ++i) order[next[get(scratch, i) >> kBlockShift]++] = static_cast<uint32_t>(i);
+            for (size_t i = begin; i < end; ++i) order[next[bucket_of(i) >> kBlockShift]++] = static_cast<uint32_t>(i);
         });
         offset_.assign(buckets + 1, 0);
         constexpr uint32_t kInBlock = (uint32_t(1) << kBlockShift) - 1;
@@ -280,7 +287,7 @@ private:
             for (size_t block = first; block < last; ++block) {
                 const uint32_t begin = block_start_[block], end = block_start_[block + 1];
                 uint16_t* offset = offset_.data() + (block << kBlockShift);
-                for (uint32_t j = begin; j < end; ++j) ++offset[get(scratch, order[j]) & kInBlock];
+                for (uint32_t j = begin; j < end; ++j) ++offset[bucket_of(order[j]) & kInBlock];
                 uint16_t running = 0;
                 for (uint32_t b = 0; b <= kInBlock; ++b) {
                     const uint16_t count = offset[b];
@@ -290,7 +297,7 @@ private:
                 // Bucket b's start as its cursor leaves it at bucket b + 1's start; one shift puts them back.
                 for (uint32_t j = begin; j < end; ++j) {
                     const uint32_t i = order[j];
-                    index_[begin + offset[get(scratch, i) & kInBlock]++] = i;
+                    index_[begin + offset[bucket_of(i) & kInBlock]++] = i;
                 }
                 for (uint32_t b = kInBlock; b > 0; --b) offset[b] = offset[b - 1];
                 offset[0] = 0;

@@ -309,8 +309,7 @@ void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::
     // order. One array at a time, so that a stipple never costs more than an iteration's 34-36 bytes
     // (relax.hpp): the caller's positions and triangles, 16, are freed once copied; the positions come
     // back at the end, in the order found by sorting the input again.
-    // (Sorting on every core costs 4 bytes a stipple more here, below the iterations' peak; not so at the end.)
-    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h, kBucketsPerPoint, true);
+    std::vector<uint32_t> original = PointGrid::spatial_order(positions, h, kBucketsPerPoint);
     std::vector<glm::vec3> pos(n);
     parallel_for_chunks(n, kCopyChunk, [&](size_t, size_t begin, size_t end) {
         for (size_t slot = begin; slot < end; ++slot) pos[slot] = positions[original[slot]];
