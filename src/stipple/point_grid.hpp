@@ -130,12 +130,13 @@ public:
     }
 
     // The grid's spatial order alone (the input index of every slot, as sorted_index gives it after
-    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32.
+    // build with the same arguments), without the coordinates: 12 bytes a point at the peak, not 32,
+    // or 16 `on_every_core`, which sorts on every core where that is worth it.
     static std::vector<uint32_t> spatial_order(std::span<const glm::vec3> points, float cell_size,
-                                               double buckets_per_point = 2.0) {
+                                               double buckets_per_point = 2.0, bool on_every_core = false) {
         PointGrid grid;
-        std::vector<float> scratch(points.size());
-        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data(), nullptr);
+        std::vector<float> scratch(points.size()), order(on_every_core ? points.size() : 0);
+        grid.sort_into_buckets(points, cell_size, buckets_per_point, scratch.data(), on_every_core ? order.data() : nullptr);
         return std::move(grid.index_);
     }
 
@@ -203,9 +204,9 @@ public:
 private:
     // hash_, the bucket starts and index_ for `points`. Deterministic: within a bucket, points keep
     // their input order (a stable sort has one result, however it is computed). `scratch` (n floats)
-    // holds each point's bucket as a word meanwhile, `order` (n floats) the order by block of buckets
-    // (sort_in_blocks). Without `order`, `scratch` holds that order and the buckets are computed again
-    // where needed (or, when the sort falls back to one core, the buckets).
+    // holds each point's bucket as a word meanwhile; `order` (n floats, or null: one core) the order by
+    // block of buckets (sort_in_blocks). Computing the buckets again where needed instead of holding
+    // them took longer than sorting on one core: the input is in triangle order, not spatial.
     void sort_into_buckets(std::span<const glm::vec3> points, float cell_size, double buckets_per_point,
                            float* scratch, float* order) {
         const size_t n = points.size();
@@ -223,15 +224,9 @@ private:
         // the relaxation gathers a cell's neighbourhood again whenever the cell changes within a
         // bucket. (n / 2 buckets made generation 1.3-2x slower.)
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
-        index_.resize(n);
-        const bool on_every_core = n >= 2 * kSortChunk;
-        if (on_every_core && order == nullptr &&
-            sort_in_blocks(n, [&](size_t i) { return hash_.bucket(hash_.cell_of(points[i])); },
-                           reinterpret_cast<uint32_t*>(scratch)))
-            return;
         parallel_for(n, 65536, [&](size_t i) { put(scratch, i, hash_.bucket(hash_.cell_of(points[i]))); });
-        if (on_every_core && order != nullptr &&
-            sort_in_blocks(n, [scratch](size_t i) { return get(scratch, i); }, reinterpret_cast<uint32_t*>(order)))
+        index_.resize(n);
+        if (order != nullptr && n >= 2 * kSortChunk && sort_in_blocks(n, scratch, reinterpret_cast<uint32_t*>(order)))
             return;
         sort_serially(n, scratch);
     }
@@ -243,13 +238,14 @@ private:
         return bucket;
     }
 
-    // The counting sort on two cores (2.6 of the 8M-stipple dragon's 8.7 s of generation went to
-    // one core sorting its grids): points are sorted by block of buckets first, each chunk of them
-    // counted and scattered on its own (a chunk's points land after the earlier chunks' in every
-    // block), then every block by bucket on its own (its 256 buckets' counts and its points stay in
-    // the caches). False, having done nothing, when a block holds more than 16-bit offsets can count.
-    template <class BucketOf>
-    bool sort_in_blocks(size_t n, const BucketOf& bucket_of, uint32_t* order) {
+    // The counting sort on two cores (the 8M-stipple dragon's relaxation grids took 0.13 s each with
+    // its counting and scattering on one core, 0.10 now): points are sorted by block of buckets first,
+    // each chunk of them counted and scattered on its own (a chunk's points land after the earlier
+    // chunks' in every block), then every block by bucket on its own (its 256 buckets' counts and its
+    // points stay in the caches). False when a block holds more than 16-bit offsets can count: the
+    // caller then sorts on one core, which sets every start again.
+    bool sort_in_blocks(size_t n, const float* scratch, uint32_t* order) {
+        auto bucket_of = [scratch](size_t i) { return get(scratch, i); };
         const size_t buckets = hash_.bucket_count();
         if (buckets < (size_t(1) << kBlockShift)) return false;
         const size_t blocks = buckets >> kBlockShift;
