@@ -125,6 +125,7 @@ public:
     // point_of is not needed once the caller has named the stipples by slot.
     void release_points() { grid_.release_index(); }
     float nearest(uint32_t slot) const { return nearest_[slot]; }
+    void prefetch_nearest(uint32_t slot) const { __builtin_prefetch(&nearest_[slot]); }
     void release_nearest() { std::vector<float>().swap(nearest_); }
     glm::vec3 position(uint32_t slot) const { return grid_.sorted_position(slot); }
 
@@ -514,8 +515,18 @@ void Orderer::place(const Unit& unit, uint32_t k, double tau, SlabState& state) 
             uint64_t key = mix64(uint64_t(unit.triangle) << 32 | k);
             if (unit.piece != 0) key = mix64(key ^ unit.piece);
             const uint64_t offset = mix64(seed_ ^ key) % remaining;
-            for (uint32_t m = 0; m < kMaxCandidates; ++m)
-                score(uint32_t((offset + uint64_t(m) * remaining / kMaxCandidates) % remaining));
+            // (offset + m * remaining / kMaxCandidates) modulo remaining: both terms are below remaining,
+            // so one subtraction takes the modulo, not a division per candidate. Their distances are
+            // fetched before any is read: they lie anywhere in a large triangle's piece, beyond the
+            // caches (the 12-triangle cube's ordering at 1.64M stipples took 0.64-0.68 s against
+            // 0.75-0.83 s with the divisions and reading each as it came).
+            uint32_t candidates[kMaxCandidates];
+            for (uint32_t m = 0; m < kMaxCandidates; ++m) {
+                const uint64_t at = offset + uint64_t(m) * remaining / kMaxCandidates;
+                candidates[m] = uint32_t(at >= remaining ? at - remaining : at);
+                grid.prefetch_nearest(order_[base + candidates[m]]);
+            }
+            for (uint32_t m = 0; m < kMaxCandidates; ++m) score(candidates[m]);
         }
     }
     std::swap(order_[base], order_[base + chosen]);
