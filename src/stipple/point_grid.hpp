@@ -130,8 +130,8 @@ public:
     }
 
     // The grid's spatial order alone (the input index of every slot, as sorted_index gives it after
-    // build with the same arguments), without the coordinates: 12 bytes a point at the peak, not 32,
-    // or 16 `on_every_core`, which sorts on every core where that is worth it.
+    // build with the same arguments), without the coordinates: 16 bytes a point at the peak, not 32,
+    // or 20 `on_every_core`, which sorts on every core where that is worth it.
     static std::vector<uint32_t> spatial_order(std::span<const glm::vec3> points, float cell_size,
                                                double buckets_per_point = 2.0, bool on_every_core = false) {
         PointGrid grid;

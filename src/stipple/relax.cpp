@@ -173,8 +173,8 @@ __attribute__((target("avx2"))) glm::vec3 repulsion_avx2(const glm::vec3& p, con
         fy = _mm256_add_ps(fy, _mm256_mul_ps(w, dy));
         fz = _mm256_add_ps(fz, _mm256_mul_ps(w, dz));
     }
-    // Lanes::total's sums in registers (stored and read back lane by lane, they cost as much as the loop
-    // over the candidates of a cell): each hadd adds neighbouring lanes within each 128-bit half, so
+    // Lanes::total's sums in registers (stored and read back lane by lane, they took about a quarter of
+    // the kernel's samples): each hadd adds neighbouring lanes within each 128-bit half, so
     // `sums` holds ((v0 + v1) + (v2 + v3)) for x, y, z in its low half and ((v4 + v5) + (v6 + v7)) in
     // its high half, the same IEEE operations in the same order.
     const __m256 sums = _mm256_hadd_ps(_mm256_hadd_ps(fx, fy), _mm256_hadd_ps(fz, fz));
@@ -303,18 +303,18 @@ glm::vec3 clamp_into_triangle(const glm::vec3& p, const glm::vec3& a, const glm:
         if (!(sum > 0.0f)) return (a + b + c) / 3.0f;  // degenerate triangle
 #if defined(__SSE2__)
         // Nearly every relaxed stipple ends here: the divisions side by side, each as exact as alone.
-        alignas(16) float q[4];
-        _mm_store_ps(q, _mm_div_ps(_mm_setr_ps(va, vb, vc, 0.0f), _mm_set1_ps(sum)));
-        bary = {q[0], q[1], q[2]};
+        alignas(16) float quotients[4];
+        _mm_store_ps(quotients, _mm_div_ps(_mm_setr_ps(va, vb, vc, 0.0f), _mm_set1_ps(sum)));
+        bary = {quotients[0], quotients[1], quotients[2]};
 #else
         bary = glm::vec3(va, vb, vc) / sum;
 #endif
     }
     bary = glm::max(bary, glm::vec3(kInset));
 #if defined(__SSE2__)
-    alignas(16) float q[4];
-    _mm_store_ps(q, _mm_div_ps(_mm_setr_ps(bary.x, bary.y, bary.z, 0.0f), _mm_set1_ps(bary.x + bary.y + bary.z)));
-    bary = {q[0], q[1], q[2]};
+    alignas(16) float normalised[4];
+    _mm_store_ps(normalised, _mm_div_ps(_mm_setr_ps(bary.x, bary.y, bary.z, 0.0f), _mm_set1_ps(bary.x + bary.y + bary.z)));
+    bary = {normalised[0], normalised[1], normalised[2]};
 #else
     bary /= bary.x + bary.y + bary.z;
 #endif
