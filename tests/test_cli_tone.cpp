@@ -1,6 +1,8 @@
 // `stipple tone` as a user runs it (issue 18: a command that prints the tone table for any model): the
 // table's rows and figures, the seeds averaged with --seeds, and one-line refusals of bad options.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,6 +55,30 @@ TEST(CliTone, PrintsTheInkPerDistanceAndItsMaxOverMin) {
         EXPECT_LT(figure, 1.1) << "the enhancement keeps the tone";
     }
     for (const auto& row : off) EXPECT_GT(std::stod(row[3]), std::stod(row[2])) << "without it, far reads darker";
+}
+
+// A figure from few dots is mostly sampling noise: the command says so, with the dots it rests on and
+// 1/sqrt of them, where that exceeds 2.5%, and stays quiet where the object fills the frame.
+TEST(CliTone, SaysWhereAFigureRestsOnTooFewDots) {
+    const test::CommandResult small = test::run_stipple(
+        {"tone", "--distances", "1,16", "--views", "30:10", "--width", "320", "--height", "256"});
+    ASSERT_EQ(small.exit_code, 0) << small.err;
+    const size_t at = small.out.find("Sampling: at d=16 a view's figure rests on about ");
+    ASSERT_NE(at, std::string::npos) << small.out;
+    double dots = 0.0, spread = 0.0;
+    ASSERT_EQ(std::sscanf(small.out.c_str() + at, "Sampling: at d=16 a view's figure rests on about %lf dots", &dots), 1);
+    const size_t by = small.out.find("by about +-", at);
+    ASSERT_NE(by, std::string::npos);
+    ASSERT_EQ(std::sscanf(small.out.c_str() + by, "by about +-%lf%%", &spread), 1);
+    EXPECT_GT(dots, 1.0);
+    EXPECT_LT(dots, 1600.0) << "a 16-pixel-tall object";
+    // The dots are printed rounded to a whole one, the spread to a tenth of a percent.
+    EXPECT_GE(spread, 100.0 / std::sqrt(dots + 0.5) - 0.05);
+    EXPECT_LE(spread, 100.0 / std::sqrt(std::max(dots - 0.5, 1.0)) + 0.05);
+
+    const test::CommandResult full = test::run_stipple({"tone", "--distances", "1", "--views", "30:10"});
+    ASSERT_EQ(full.exit_code, 0) << full.err;
+    EXPECT_EQ(full.out.find("Sampling:"), std::string::npos) << "the framed object draws thousands of dots\n" << full.out;
 }
 
 TEST(CliTone, SeedsAreDrawnOneByOneAndAveraged) {
