@@ -172,8 +172,8 @@ Tone options (and the stipple options; without MODEL the default scene's model):
   --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
                           each distance's ink averaged over the seeds (instead of --seed)
   --images DIR            write each view and distance (cropped to the object, enlarged) as PNG
-  Where a view's figure rests on so few dots that sampling alone moves it by over 2.5%% (1/sqrt of
-  the dots), a last line says so, with the dots and the spread.
+  Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
+  of the dots), a last line says so, with the dots and the spread.
 
 Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when
 the drawn counts differ by more than 0.1%% or the mean ink by more than 1%% in any view):
