@@ -226,16 +226,17 @@ private:
         hash_.init(lo, cell_size, static_cast<size_t>(buckets_per_point * double(n)));
         parallel_for(n, 65536, [&](size_t i) { put(scratch, i, hash_.bucket(hash_.cell_of(points[i]))); });
         index_.resize(n);
-        if (order != nullptr && n >= 2 * kSortChunk && sort_in_blocks(n, scratch, reinterpret_cast<uint32_t*>(order)))
+        if (order != nullptr && n >= 2 * kSortChunk && sort_in_blocks(n, scratch, order))
             return;
         sort_serially(n, scratch);
     }
 
-    static void put(float* scratch, size_t i, uint32_t bucket) { std::memcpy(scratch + i, &bucket, sizeof bucket); }
-    static uint32_t get(const float* scratch, size_t i) {
-        uint32_t bucket;
-        std::memcpy(&bucket, scratch + i, sizeof bucket);
-        return bucket;
+    // A word (a bucket or a point's index) in float storage, copied rather than aliased.
+    static void put(float* words, size_t i, uint32_t word) { std::memcpy(words + i, &word, sizeof word); }
+    static uint32_t get(const float* words, size_t i) {
+        uint32_t word;
+        std::memcpy(&word, words + i, sizeof word);
+        return word;
     }
 
     // The counting sort on two cores (the 8M-stipple dragon's relaxation grids took 0.13 s each with
@@ -244,7 +245,7 @@ private:
     // chunks' in every block), then every block by bucket on its own (its 256 buckets' counts and its
     // points stay in the caches). False when a block holds more than 16-bit offsets can count: the
     // caller then sorts on one core, which sets every start again.
-    bool sort_in_blocks(size_t n, const float* scratch, uint32_t* order) {
+    bool sort_in_blocks(size_t n, const float* scratch, float* order) {
         auto bucket_of = [scratch](size_t i) { return get(scratch, i); };
         const size_t buckets = hash_.bucket_count();
         if (buckets < (size_t(1) << kBlockShift)) return false;
@@ -275,7 +276,7 @@ private:
         block_shift_ = kBlockShift;
         parallel_for_chunks(n, chunk, [&](size_t c, size_t begin, size_t end) {
             uint32_t* next = cursor.data() + c * blocks;
-            for (size_t i = begin; i < end; ++i) order[next[bucket_of(i) >> kBlockShift]++] = static_cast<uint32_t>(i);
+            for (size_t i = begin; i < end; ++i) put(order, next[bucket_of(i) >> kBlockShift]++, static_cast<uint32_t>(i));
         });
         offset_.assign(buckets + 1, 0);
         constexpr uint32_t kInBlock = (uint32_t(1) << kBlockShift) - 1;
@@ -283,7 +284,7 @@ private:
             for (size_t block = first; block < last; ++block) {
                 const uint32_t begin = block_start_[block], end = block_start_[block + 1];
                 uint16_t* offset = offset_.data() + (block << kBlockShift);
-                for (uint32_t j = begin; j < end; ++j) ++offset[bucket_of(order[j]) & kInBlock];
+                for (uint32_t j = begin; j < end; ++j) ++offset[bucket_of(get(order, j)) & kInBlock];
                 uint16_t running = 0;
                 for (uint32_t b = 0; b <= kInBlock; ++b) {
                     const uint16_t count = offset[b];
@@ -292,7 +293,7 @@ private:
                 }
                 // Bucket b's start as its cursor leaves it at bucket b + 1's start; one shift puts them back.
                 for (uint32_t j = begin; j < end; ++j) {
-                    const uint32_t i = order[j];
+                    const uint32_t i = get(order, j);
                     index_[begin + offset[bucket_of(i) & kInBlock]++] = i;
                 }
                 for (uint32_t b = kInBlock; b > 0; --b) offset[b] = offset[b - 1];
