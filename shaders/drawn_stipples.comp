@@ -36,14 +36,12 @@ void main() {
         uint item = drawn_polygons[slot];  // the run's first stipple
         uint t = stipples[item].triangle;
         TriangleDraw polygon = triangle_draw(t);  // as texels: one gather instead of four loads
-        uint candidates = polygon_candidates(t, polygon.first_stipple, object.flags);
-        // To the most density any of its stipples sees: the vertex shader culls those of a large polygon
-        // that the density where they lie does not reach (stipple_density_here). The run as the density
-        // pass cut it (splat_run_length).
-        uint drawn_here = drawn_stipple_count(polygon.most, candidates);
-        float side = splat_dot_side(object.shading.y, polygon.density, float(candidates));
-        uint begin = item - polygon.first_stipple;
-        uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
+        // Up to the most density any of its stipples sees: the vertex shader culls those of a large polygon
+        // that the density where they lie does not reach (stipple_density_here).
+        uint begin, end;
+        float side;
+        work_item_run(item, t, polygon, polygon_candidates(t, polygon.first_stipple, object.flags), object.shading.y,
+                      begin, end, side);
         first = item;
         count = end > begin ? end - begin : 0u;
     }

@@ -218,12 +218,9 @@ void main() {
     if (density <= 0.0f) return;
     uint first = draw.first_stipple;
     mat4 model_view_proj = object.model_view_proj;
-    uint candidates = polygon_candidates(t, first, object.flags);
-    uint begin = item - first;
-    // To the most density any of its stipples sees (a large polygon's density changes across it).
-    uint drawn_here = drawn_stipple_count(draw.most, candidates);
-    float side = splat_dot_side(object.shading.y, density, float(candidates));  // larger when owed more
-    uint end = min(drawn_here, begin + splat_run_length(drawn_here, side));
+    uint begin, end;
+    float side;
+    work_item_run(item, t, draw, polygon_candidates(t, first, object.flags), object.shading.y, begin, end, side);
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     // Large dots stay on their own slanted surface (large_dot_depth_pull); the small dots' variant has none
     // of this code.

@@ -18,4 +18,17 @@ uint polygon_candidates(uint triangle, uint first_stipple, uvec4 flags) {
     return end - first_stipple;
 }
 
+// A work item of the density pass (a run of one polygon's drawn stipples, from its first stipple `item`):
+// stipples [begin, end) of polygon t, cut as the density pass cut them (splat_run_length), up to the most
+// density any of its stipples sees (a large polygon's density changes across it, stipple_density_here);
+// `side`: its dots' side on the splat. The splat and the indirect path's list read the items alike.
+// Needs stipple_formulas.h.
+void work_item_run(uint item, uint t, TriangleDraw draw, uint candidates, float point_size, out uint begin, out uint end,
+                   out float side) {
+    begin = item - draw.first_stipple;
+    uint drawn = drawn_stipple_count(draw.most, candidates);
+    side = splat_dot_side(point_size, draw.density, float(candidates));  // larger when owed more
+    end = min(drawn, begin + splat_run_length(drawn, side));
+}
+
 #endif

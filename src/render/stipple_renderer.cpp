@@ -215,6 +215,10 @@ bool StippleRenderer::uses_splat(const ObjectGpu& object) const {
     return draws_by_splat(object.params.density_path) && splat_targets_;
 }
 
+bool StippleRenderer::lists_work_items(const ObjectGpu& object) const {
+    return uses_splat(object) || object.params.density_path == DensityPath::Indirect;
+}
+
 bool StippleRenderer::paper_under_splat() const {
     return std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) { return o->params.toon || draws_points(*o); });
 }
@@ -263,7 +267,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
             any_indirect = true;
         }
-        if (splat || object->params.density_path == DensityPath::Indirect) {  // an empty list: no groups yet (y and z are 1)
+        if (lists_work_items(*object)) {  // an empty list: no groups yet (y and z are 1)
             const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
         }
@@ -280,9 +284,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             if (object->geometry.triangle_count == 0) continue;
             if (!density_on_cpu(object->params.density_path)) {
                 const size_t facing = draws_edge_lines(*object) ? 1 : 0;
-                // The splat's work items, which the indirect path lists its stipples from too.
-                const bool items = uses_splat(*object) || object->params.density_path == DensityPath::Indirect;
-                dispatch(*object, items ? density_list_pipelines_[facing] : density_pipelines_[facing]);
+                dispatch(*object, lists_work_items(*object) ? density_list_pipelines_[facing] : density_pipelines_[facing]);
             }
             else if (draws_edge_lines(*object))
                 dispatch(*object, facing_pipeline_);  // the lines' facing bits

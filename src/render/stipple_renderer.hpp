@@ -156,6 +156,9 @@ private:
     // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
     void begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear, bool clear_color = true) const;
     bool uses_splat(const ObjectGpu& object) const;
+    // Whether the density pass cuts the object's drawn stipples into work items: the splat draws them, and
+    // the indirect path lists its stipples from them.
+    bool lists_work_items(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
     bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
     // depth_pass.cpp
