@@ -92,20 +92,13 @@ void print_table(const ToneSurvey& survey, const ToneSurveyOptions& options, con
 // The surveys of several seeds as one: each distance's ink averaged over the seeds (the tone under the
 // noise of which stipples and polygons one seed draws), and the mean of the seeds' own figures.
 void print_seed_average(const std::vector<ToneSurvey>& surveys, const ToneSurveyOptions& options, const char* extrinsic) {
-    ToneSurvey mean = surveys.front();
-    for (size_t i = 0; i < mean.samples.size(); ++i)
-        for (size_t v = 0; v < options.views.size(); ++v) {
-            double sum = 0.0;
-            for (const ToneSurvey& s : surveys) sum += s.samples[i].mean_ink[v];
-            mean.samples[i].mean_ink[v] = sum / double(surveys.size());
-        }
-    print_table(mean, options, extrinsic, "mean");
+    print_table(mean_survey(surveys), options, extrinsic, "mean");
     for (size_t v = 0; v < options.views.size(); ++v) {
         double figures = 0.0;
         for (const ToneSurvey& s : surveys) figures += s.max_over_min(v);
         std::printf("| %-3s | %6.1f:%-5.1f | mean of the seeds' max/min |", extrinsic, options.views[v][0],
                     options.views[v][1]);
-        for (size_t i = 0; i < mean.samples.size(); ++i) std::printf(" |");
+        for (size_t i = 0; i < surveys.front().samples.size(); ++i) std::printf(" |");
         std::printf(" %.3f |\n", figures / double(surveys.size()));
     }
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/error.hpp"
 #include "render/density_formulas.hpp"
 
 namespace stipple {
@@ -198,6 +199,18 @@ double ToneSurvey::max_over_min(size_t view) const {
         hi = std::max(hi, ink);
     }
     return lo > 0.0 ? hi / lo : 0.0;
+}
+
+ToneSurvey mean_survey(const std::vector<ToneSurvey>& surveys) {
+    STIPPLE_CHECK(!surveys.empty(), "mean_survey: no surveys");
+    ToneSurvey mean = surveys.front();
+    for (size_t i = 0; i < mean.samples.size(); ++i)
+        for (size_t v = 0; v < mean.samples[i].mean_ink.size(); ++v) {
+            double sum = 0.0;
+            for (const ToneSurvey& s : surveys) sum += s.samples.at(i).mean_ink.at(v);
+            mean.samples[i].mean_ink[v] = sum / double(surveys.size());
+        }
+    return mean;
 }
 
 double ToneSurvey::worst_max_over_min() const {

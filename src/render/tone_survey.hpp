@@ -99,6 +99,11 @@ struct ToneSurvey {
     double worst_max_over_min() const;
 };
 
+// Surveys of the same views and distances (say, one per seed) as one: each distance's ink in each view
+// averaged over them, the tone under the noise of which stipples and polygons one seed draws. Its
+// tallies and ink figures are the first survey's.
+ToneSurvey mean_survey(const std::vector<ToneSurvey>& surveys);
+
 // Renders object `object` of `renderer` (the only one it should hold) at every distance and view,
 // framed on `bounds` in options.extent, with its current parameters; `light` is the view-space
 // direction toward the light. Each frame is rendered only around the object: the same camera and

@@ -24,10 +24,13 @@ namespace {
 // hexagonal arrangement (at 1 spacing) and most of the second (at sqrt(3)): enough to even out
 // density without the cost of a wider search.
 constexpr float kKernelRadius = 2.0f;
-// Step per iteration: kStep * spacing * force. Tuned for delta-bar after 3-10 Gauss-Seidel iterations
-// (a 100k-triangle UV sphere of 400k stipples: 0.814, 0.837, 0.850, 0.858, 0.864 after 3-7, 0.876
-// after 10). In prototypes, 0.12 reached 0.852 after 6 and 0.18 0.864, but 0.2 overshot within a
-// chunk's cells; Jacobi iterations needed 0.1 (0.838 after 6) and overshot at 0.12 (0.815).
+// Step per iteration: kStep * spacing * force. Tuned for delta-bar after a few Gauss-Seidel iterations
+// (tools/generation_speed: a 100k-triangle UV sphere of 500k stipples, and the 12-triangle cube). With
+// the squared falloff, 6 iterations gave 0.860 / 0.870; with the single falloff 5 give 0.857 / 0.870
+// (6: 0.868 / 0.881), and the test's sphere of 400k stipples 0.855 against 0.858 (2026-11-28). Steps
+// of 0.14 and 0.16, or decreasing from 0.18 to 0.12, were within 0.003 of 0.15; constant 0.2 drops to
+// 0.815 (overshoot within a chunk's cells). Jacobi iterations needed 0.1 (0.838 after 6) and overshot
+// at 0.12 (0.815).
 constexpr float kStep = 0.15f;
 // No stipple moves more than this many spacings in one iteration (tames clumps of random points).
 constexpr float kMaxStep = 0.5f;
@@ -137,9 +140,12 @@ struct Candidates {
 };
 
 // The force on p from the candidates: the sum over those q closer than h of
-//   h (1 - d^2/h^2)^2 / d^2 * (p - q),   d = |p - q|,
-// a push away from q of strength h/d (1 - d^2/h^2)^2: like 1/d when close, smoothly 0 at h. It
-// needs no square root, only a division.
+//   h (1 - d^2/h^2) / d^2 * (p - q),   d = |p - q|,
+// a push away from q of strength h/d (1 - d^2/h^2): like 1/d when close, 0 at h. It needs no square
+// root, only a division. Until 2026-11-28 the falloff was squared, (1 - d^2/h^2)^2, smooth at h; the
+// single falloff pushes harder at the first ring of neighbours (at one spacing, h/2: 0.75 of 1/d
+// against 0.56), which is what evens out the nearest-neighbour distances, so one iteration fewer
+// reaches the same delta-bar (relax_iterations' default went from 6 to 5; see kStep).
 //
 // Candidate i is summed in lane i % 8 and the lanes are added in a fixed order at the end; AVX2
 // (when the CPU has it), SSE2 and plain C++ all do exactly these IEEE operations (no FMA), so the
@@ -168,7 +174,7 @@ __attribute__((target("avx2"))) glm::vec3 repulsion_avx2(const glm::vec3& p, con
         const __m256 inside = _mm256_and_ps(_mm256_cmp_ps(d2, vh2, _CMP_LT_OQ), _mm256_cmp_ps(d2, zero, _CMP_GT_OQ));
         const __m256 x = _mm256_sub_ps(one, _mm256_mul_ps(d2, vinv_h2));
         // Masked after the division: d2 may be 0 or infinite in lanes outside.
-        const __m256 w = _mm256_and_ps(inside, _mm256_div_ps(_mm256_mul_ps(vh, _mm256_mul_ps(x, x)), d2));
+        const __m256 w = _mm256_and_ps(inside, _mm256_div_ps(_mm256_mul_ps(vh, x), d2));
         fx = _mm256_add_ps(fx, _mm256_mul_ps(w, dx));
         fy = _mm256_add_ps(fy, _mm256_mul_ps(w, dy));
         fz = _mm256_add_ps(fz, _mm256_mul_ps(w, dz));
@@ -203,7 +209,7 @@ glm::vec3 repulsion_portable(const glm::vec3& p, const Candidates& c, float h) {
             const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
             const __m128 inside = _mm_and_ps(_mm_cmplt_ps(d2, vh2), _mm_cmpgt_ps(d2, zero));
             const __m128 x = _mm_sub_ps(one, _mm_mul_ps(d2, vinv_h2));
-            const __m128 w = _mm_and_ps(inside, _mm_div_ps(_mm_mul_ps(vh, _mm_mul_ps(x, x)), d2));
+            const __m128 w = _mm_and_ps(inside, _mm_div_ps(_mm_mul_ps(vh, x), d2));
             fx[half] = _mm_add_ps(fx[half], _mm_mul_ps(w, dx));
             fy[half] = _mm_add_ps(fy[half], _mm_mul_ps(w, dy));
             fz[half] = _mm_add_ps(fz[half], _mm_mul_ps(w, dz));
@@ -221,7 +227,7 @@ glm::vec3 repulsion_portable(const glm::vec3& p, const Candidates& c, float h) {
         const float d2 = (dx * dx + dy * dy) + dz * dz;
         if (d2 > 0.0f && d2 < h2) {
             const float x = 1.0f - d2 * inv_h2;
-            const float w = (h * (x * x)) / d2;
+            const float w = (h * x) / d2;
             lanes.x[j % 8] += w * dx, lanes.y[j % 8] += w * dy, lanes.z[j % 8] += w * dz;
         }
     }
