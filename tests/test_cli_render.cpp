@@ -231,6 +231,36 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
 
 // --stats says how many triangles the depth pass drew: all of them with --depth-cull off, fewer with on
 // for the default scene seen from afar (its triangles then cover a few pixels at most).
+// Generation and drawing multiply coordinates together in single precision: a triangle 1e10 across made
+// NaN positions in the relaxation (a crash), one 1e-8 across drew nothing (the camera's floor on the
+// radius). Within the range the loader accepts (mesh.hpp kMaxCoordinate, kMinExtent) a triangle draws the
+// same stipples at every size; beyond it the loader says so in one line.
+TEST(CliRender, ATriangleDrawsTheSameAtEverySize) {
+    const std::filesystem::path dir = test::temp_dir("cli-scale");
+    auto drawn = [&](const std::string& size) {
+        const std::string model = (dir / ("t" + size + ".obj")).string();
+        write_file(model, "v 0 0 0\nv " + size + " 0 0\nv 0 " + size + " 0\nf 1 2 3\n");
+        auto r = run_stipple({"render", model, "-o", (dir / ("t" + size + ".png")).string(), "--width", "320", "--height",
+                              "256", "--stats"});
+        EXPECT_EQ(r.exit_code, 0) << size << ": " << r.err;
+        const size_t at = r.out.find("drawn stipples:");
+        return at == std::string::npos ? -1 : std::stol(r.out.substr(at + 15));
+    };
+    const long unit = drawn("1");
+    ASSERT_GT(unit, 500);
+    for (const std::string size : {"1e-12", "1e-8", "1e10", "1e17"}) EXPECT_NEAR(drawn(size), unit, 2) << size;
+    for (const auto& [size, message] : {std::pair<std::string, std::string>{"1e19", "beyond the 1e+18 units"},
+                                        {"1e-20", "units across, below the 1e-15"}}) {
+        const std::string model = (dir / ("t" + size + ".obj")).string();
+        write_file(model, "v 0 0 0\nv " + size + " 0 0\nv 0 " + size + " 0\nf 1 2 3\n");
+        auto r = run_stipple({"render", model, "-o", (dir / "refused.png").string()});
+        EXPECT_NE(r.exit_code, 0) << size;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find(model), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
+}
+
 TEST(CliRender, StatsPrintTheDepthPassTriangles) {
     const std::filesystem::path dir = test::temp_dir("cli-depth-cull");
     auto depth_line = [&](const std::string& mode) {

@@ -300,6 +300,33 @@ TEST(Generation, APileOfStipplesKeepsItsOrder) {
     EXPECT_NE(ordered, positions) << "a small pile should be ordered by distance";
 }
 
+// Far from unit size, generation runs on a copy scaled to unit radius (generate.cpp): the same counts, and
+// stipples as evenly spread, where a triangle of side 1e10 made NaN positions (squared cross products beyond
+// float range) and crashed the relaxation.
+TEST(Generation, TheSameStipplesAtEveryScale) {
+    GenerationParams params;
+    params.dmax = dmax_for(20000);
+    auto scaled_quad = [](float size) {
+        Mesh quad = make_grid(1);
+        for (glm::vec3& p : quad.positions) p *= size;
+        return quad;
+    };
+    const Mesh unit_quad = scaled_quad(1.0f);
+    const StippleSet unit = generate_stipples(unit_quad, params);
+    const double spread = normalized_nn_distance(unit.positions, total_area(unit_quad));
+    EXPECT_GT(spread, 0.85);
+    for (const float size : {1e-12f, 1e10f, 1e17f}) {
+        const Mesh quad = scaled_quad(size);
+        const StippleSet set = generate_stipples(quad, params);
+        ASSERT_EQ(set.size(), unit.size()) << size;
+        EXPECT_EQ(set.first, unit.first) << size;
+        EXPECT_NEAR(set.poisson_radius / size, unit.poisson_radius, 1e-6 * unit.poisson_radius) << size;
+        expect_consistent_and_inside(quad, set);
+        // Other rounding, so other stipples, but as evenly spread.
+        EXPECT_NEAR(normalized_nn_distance(set.positions, total_area(quad)), spread, 0.01) << size;
+    }
+}
+
 TEST(Generation, StipplesInsideTheirTriangles) {
     GenerationParams params;
     params.dmax = dmax_for(80000);

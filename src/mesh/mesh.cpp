@@ -1,6 +1,7 @@
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <string>
 
@@ -51,6 +52,25 @@ void validate_mesh(const Mesh& mesh) {
         if (std::isnan(p.x) || std::isnan(p.y) || std::isnan(p.z))
             fail_file(source, "vertex " + std::to_string(i) + " has a NaN coordinate");
         if (!finite(p)) fail_file(source, "vertex " + std::to_string(i) + " has an infinite coordinate");
+        const float largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        if (largest > kMaxCoordinate) {
+            char text[160];
+            std::snprintf(text, sizeof(text), "vertex %zu has a coordinate of %g, beyond the %g units it can be drawn within",
+                          i, double(largest), double(kMaxCoordinate));
+            fail_file(source, text);
+        }
+    }
+    if (!mesh.positions.empty()) {
+        glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
+        for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const glm::vec3 size = hi - lo;
+        const float extent = std::max({size.x, size.y, size.z});
+        if (extent > 0.0f && extent < kMinExtent) {
+            char text[160];
+            std::snprintf(text, sizeof(text), "the model is %g units across, below the %g it can be drawn at: scale it up",
+                          double(extent), double(kMinExtent));
+            fail_file(source, text);
+        }
     }
     const size_t vertex_count = mesh.positions.size();
     for (size_t i = 0; i < mesh.indices.size(); ++i) {

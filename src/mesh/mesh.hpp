@@ -35,7 +35,15 @@ struct Mesh {
 // vertex with no usable face gets +Z so that every normal is unit length.
 void compute_vertex_normals(Mesh& mesh);
 
-// Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf,
+// The coordinates a model may have. Rendering works in single precision and multiplies coordinates
+// together (squared lengths, areas): beyond 1e18 those overflow, and below an extent of 1e-15 they fall
+// among the denormals (2026-11-28: a triangle drew the same from 1e-18 to 1e18 units across; at 1e19
+// nothing, at 1e-20 twice its stipples).
+inline constexpr float kMaxCoordinate = 1e18f;
+inline constexpr float kMinExtent = 1e-15f;
+
+// Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf or beyond
+// kMaxCoordinate, the model is less than kMinExtent across,
 // the index count is not a multiple of 3, normals are missing/mismatched, or there is no triangle.
 void validate_mesh(const Mesh& mesh);
 

@@ -11,7 +11,7 @@ float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg) {
     float half_y = glm::radians(fov_y_deg) * 0.5f;
     float half_x = std::atan(std::tan(half_y) * aspect);
     float half = std::min(half_x, half_y);
-    return std::max(sphere.radius, 1e-6f) / std::sin(half);
+    return std::max(sphere.radius, 1e-30f) / std::sin(half);
 }
 
 OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg) {
@@ -33,7 +33,7 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     m.view = glm::lookAt(m.eye, camera.target, up);
 
     float center_distance = glm::length(scene.center - m.eye);
-    float radius = std::max(scene.radius, 1e-6f) * 1.02f;
+    float radius = std::max(scene.radius, 1e-30f) * 1.02f;
     m.far_plane = center_distance + radius;
     m.near_plane = std::max(center_distance - radius, m.far_plane * 1e-4f);
     m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);

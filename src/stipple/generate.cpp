@@ -47,6 +47,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
@@ -157,9 +158,50 @@ double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params
     return density_for_area(mesh, params, sum_in_order(triangle_areas(mesh)));
 }
 
+namespace {
+
+// Generation in float multiplies coordinates together (the relaxation's squared distances, and the
+// products of two cross products that clamp a stipple into its triangle: a side to the fourth power). Far
+// from unit size these overflow or vanish (a triangle of side 1e10 made NaN positions and crashed the
+// relaxation; one of 1e-10 underflows), and far from the origin the coordinates lose the spacing's
+// digits. Such a mesh is generated as a copy scaled to unit radius about its centre (in double), and the
+// stipples are scaled back: the counts, which follow the reference view, do not change.
+struct UnitFrame {
+    glm::dvec3 centre{0.0};
+    double radius = 1.0;
+};
+
+std::optional<UnitFrame> frame_to_rescale(const Mesh& mesh) {
+    if (mesh.positions.empty()) return std::nullopt;
+    glm::dvec3 lo(mesh.positions[0]), hi(mesh.positions[0]);
+    for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+    UnitFrame frame;
+    frame.centre = 0.5 * (lo + hi);
+    frame.radius = 0.5 * glm::length(hi - lo);
+    const double offset = glm::length(frame.centre);
+    const bool unit_size = frame.radius >= 1e-3 && frame.radius <= 1e3;
+    if (!(frame.radius > 0.0) || (unit_size && offset <= 100.0 * frame.radius)) return std::nullopt;
+    return frame;
+}
+
+}  // namespace
+
 StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     const auto start = std::chrono::steady_clock::now();
     check_params(mesh, params, headroom);
+    if (const std::optional<UnitFrame> frame = frame_to_rescale(mesh)) {
+        Mesh unit;
+        unit.source = mesh.source;
+        unit.indices = mesh.indices;
+        unit.positions.reserve(mesh.positions.size());
+        for (const glm::vec3& p : mesh.positions) unit.positions.push_back(glm::vec3((glm::dvec3(p) - frame->centre) / frame->radius));
+        StippleSet set = generate_stipples(unit, params, headroom);
+        for (glm::vec3& p : set.positions) p = glm::vec3(frame->centre + glm::dvec3(p) * frame->radius);
+        set.density_per_area /= frame->radius * frame->radius;
+        set.poisson_radius *= frame->radius;
+        set.generation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return set;
+    }
     ProgressBar bar("Generating stipples", params.progress);
 
     std::vector<double> area = triangle_areas(mesh);

@@ -127,11 +127,16 @@ struct Candidates {
     }
 
     // The point in `slot` has moved to p (it is among the candidates: its own cell is gathered). The
-    // points of a cell follow each other in one run: the last one found is tried first.
+    // points of a cell follow each other in one run: the last one found is tried first. A point whose
+    // position is not a number has a cell of its own that gathers none of it: nothing to update then.
     void update(uint32_t slot, const glm::vec3& p) {
-        if (!(slot >= runs[last_run].begin && slot < runs[last_run].end))
+        if (!(last_run < run_count && slot >= runs[last_run].begin && slot < runs[last_run].end)) {
+            int found = -1;
             for (int r = 0; r < run_count; ++r)
-                if (slot >= runs[r].begin && slot < runs[r].end) last_run = r;
+                if (slot >= runs[r].begin && slot < runs[r].end) found = r;
+            if (found < 0) return;
+            last_run = found;
+        }
         const size_t at = run_start[last_run] + (slot - runs[last_run].begin);
         x[at] = p.x, y[at] = p.y, z[at] = p.z;
     }
