@@ -3,6 +3,7 @@
 // and regenerated; the folder stays under its size limit, least recently used first; a writer killed
 // mid-entry leaves nothing that loads.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <chrono>
@@ -107,6 +108,11 @@ TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
         {"a flipped byte in the header", [&] { flip_byte(entry, 20); }},
         {"a truncated entry", [&] { fs::resize_file(entry, size - 7); }},
         {"a truncated header", [&] { fs::resize_file(entry, 100); }},
+        // Last: restore() would wait on it. Opened, a FIFO would wait for a writer forever.
+        {"a FIFO in its place (not a regular file)", [&] {
+             fs::remove(entry);
+             ASSERT_EQ(mkfifo(entry.c_str(), 0600), 0);
+         }},
     };
     for (const Damage& damage : damages) {
         SCOPED_TRACE(damage.what);

@@ -58,6 +58,10 @@ void write_png(const std::string& path, const Image& image) {
                             " bytes, expected " + std::to_string(expected_bytes(image)));
     if (static_cast<int64_t>(image.width) * image.channels > std::numeric_limits<int>::max())
         fail_file(path, "cannot write PNG: row too wide");
+    // stb_image_write sizes its filtered copy of the image, (width * channels + 1) * height, in an int.
+    if ((static_cast<int64_t>(image.width) * image.channels + 1) * image.height > std::numeric_limits<int>::max())
+        fail_file(path, "cannot write PNG: " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                            " is more than a PNG of 2 GiB of pixels; lower --dpi or the page size, or write SVG or PDF");
 
     std::vector<uint8_t> encoded;
     if (!stbi_write_png_to_func(append_bytes, &encoded, image.width, image.height, image.channels,

@@ -123,6 +123,12 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
                                                const GenerationParams& params, std::span<const float> headroom) {
     const uint64_t key = stipple_cache_key(mesh, params, headroom);
     const std::filesystem::path path = entry_path(dir, key);
+    // Only a regular file: opening a FIFO left there would wait for a writer forever.
+    std::error_code kind_error;
+    if (!std::filesystem::is_regular_file(path, kind_error)) {
+        if (std::filesystem::exists(path, kind_error)) warn_damaged(path, "not a regular file");
+        return std::nullopt;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     Header header{};
