@@ -78,6 +78,14 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
     return v;
 }
 
+int device_index(const Args& args) {
+    if (!args.has("--device")) return -1;
+    const long long index = args.integer("--device", -1);
+    if (index < 0 || index > 64)
+        fail("--device = " + args.get("--device", "") + " is not a device index (render --list-devices lists them)");
+    return int(index);
+}
+
 std::vector<std::string> split_list(const std::string& option, const std::string& list) {
     std::vector<std::string> items;
     size_t start = 0;

@@ -31,6 +31,10 @@ private:
     std::map<std::string, std::string> values_;
 };
 
+// --device: the index of a Vulkan device (render --list-devices), or -1 when not given (the default one).
+// Out of 0..64 it is an error with the value as typed (an index past the devices is the context's error).
+int device_index(const Args& args);
+
 // The comma-separated entries of an option's value; an empty entry is an error naming `option`.
 std::vector<std::string> split_list(const std::string& option, const std::string& list);
 

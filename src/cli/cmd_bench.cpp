@@ -46,7 +46,7 @@ int run_bench(const std::vector<std::string>& argv) {
     options.queued = args.has("--queued") ? int(bounded(args, "--queued", 1, 1, 1000)) : 0;  // 0: by device
     options.width = uint32_t(bounded(args, "--width", 1280, 1, 16384));
     options.height = uint32_t(bounded(args, "--height", 1024, 1, 16384));
-    options.device = int(args.integer("--device", -1));
+    options.device = device_index(args);
     // The animated row's skinned cylinder: >= 100k triangles (issue 16), fewer for --quick; 0 skips it, and
     // so does naming rows with --models unless the row is asked for.
     const bool rows_named = args.has("--models") && !args.has("--animated-triangles") && !args.flag("--animated-only");

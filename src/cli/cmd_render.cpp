@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -116,6 +117,15 @@ int run_render(const std::vector<std::string>& argv) {
     const std::string output = args.get("--output", args.get("-o", "stipple.png"));
     // -o x.svg, x.pdf or x.csv: the frame's visible stipples and lines as vector output.
     const bool vector = plot::is_plot_path(output);
+    // Named by its extension: a PNG written to x.jpg would be a file its name misdescribes.
+    if (!vector && !plot::is_png_path(output))
+        fail("-o " + output + ": the output is named by its extension: .png, or .svg, .pdf or .csv for vector output");
+    if (args.has("--mask")) {
+        const std::string mask = args.get("--mask", "");
+        if (!plot::is_png_path(mask)) fail("--mask " + mask + ": the coverage mask is a PNG (.png)");
+        if (std::filesystem::path(mask).lexically_normal() == std::filesystem::path(output).lexically_normal())
+            fail("--mask " + mask + " is the image's own path (-o): give it another");
+    }
     const plot::ExportOptions vector_options = read_vector_options(args);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
     const std::optional<app::PrintOptions> print = read_print_options(args);
@@ -131,7 +141,7 @@ int run_render(const std::vector<std::string>& argv) {
     if (width < 1 || width > 16384 || height < 1 || height > 16384)
         fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
              std::to_string(height) + ")");
-    long long device = args.integer("--device", -1);
+    long long device = device_index(args);
     long long repeat = args.integer("--repeat", 0);
     if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
     long long queued = args.integer("--queued", 0);  // 0: by the device (OffscreenTarget::default_queued_frames)

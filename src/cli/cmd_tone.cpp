@@ -216,7 +216,7 @@ int run_tone(const std::vector<std::string>& argv) {
     if (seeds.size() > 1 && !options.image_dir.empty()) fail("--images takes one seed (drop --seeds)");
 
     gpu::ContextOptions context_options;
-    context_options.device_index = int(args.integer("--device", -1));
+    context_options.device_index = device_index(args);
     gpu::Context context(context_options);
     const bool several = seeds.size() > 1;
     std::vector<ToneSurvey> ons, offs;

@@ -34,7 +34,7 @@ int run_view(const std::vector<std::string>& argv) {
     if (!parse_depth_cull(depth_cull)) fail("--depth-cull = " + depth_cull + " must be auto, on or off");
     viewer.depth_cull = *parse_depth_cull(depth_cull);
     viewer.verbose = args.flag("--verbose");
-    viewer.device_index = int(args.integer("--device", -1));
+    viewer.device_index = device_index(args);
     viewer.screenshot_dir = args.get("--screenshot-dir", ".");
     viewer.script = args.get("--script", "");
     viewer.frame_log = args.get("--frame-log", "");

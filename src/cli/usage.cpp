@@ -44,7 +44,7 @@ first one's size. The stipple options below apply to MODELs; a SCENE.json sets t
 
 Render options:
   -o, --output PATH       PNG to write (default: stipple.png)
-  --mask PATH             also write the coverage mask (white where a surface covers the pixel)
+  --mask PATH.png         also write the coverage mask (white where a surface covers the pixel)
   --width N, --height N   image size in pixels (default 1280 x 1024)
   --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)
   --distance D            camera distance as a multiple of the framing distance (default 1 = framed)

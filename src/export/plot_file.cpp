@@ -27,6 +27,7 @@ bool is_plot_path(const std::string& path) {
 }
 
 bool is_svg_path(const std::string& path) { return extension_of(path) == ".svg"; }
+bool is_png_path(const std::string& path) { return extension_of(path) == ".png"; }
 
 void write_plot_file(const PlotPlan& plan, const std::string& path) {
     const std::string ext = extension_of(path);

@@ -10,6 +10,7 @@ namespace stipple::plot {
 // Whether `path` names a vector or dot output (rather than an image).
 bool is_plot_path(const std::string& path);
 bool is_svg_path(const std::string& path);
+bool is_png_path(const std::string& path);
 
 // Writes the plan in the format the extension names; a path with another extension throws
 // stipple::Error naming it.
