@@ -15,6 +15,11 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
+    // `stipple render --help`: the one usage text covers every command.
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+        stipple::cli::print_usage();
+        return 0;
+    }
     try {
         if (command == "render") return stipple::cli::run_render(args);
         if (command == "info") return stipple::cli::run_info(args);

@@ -210,6 +210,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--shading-exponent", "0"}, "--shading-exponent"},
         {{"render", "--frobnicate"}, "--frobnicate"},
         {{"render", "--device", "99"}, "--device"},
+        {{"render", "--distance", "1e-300"}, "--distance = 1e-300"},
+        {{"tone", "--distances", "1,1e-300"}, "--distances: 1e-300"},
         {{"render", "--device", "-1"}, "--device = -1"},
         {{"render", "--device", "4294967296"}, "--device = 4294967296"},
         {{"tone", "--device", "-2"}, "--device = -2"},
@@ -266,6 +268,24 @@ TEST(CliRender, ATriangleDrawsTheSameAtEverySize) {
         EXPECT_NE(r.err.find(model), std::string::npos) << r.err;
         EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     }
+}
+
+// The light is a direction: its length does not matter, however large or small (its squared length in
+// float overflowed at 1e20 and vanished at 1e-15).
+TEST(CliRender, TheLightIsADirectionOfAnyLength) {
+    const std::filesystem::path dir = test::temp_dir("cli-light");
+    auto drawn = [&](const std::string& light) {
+        auto r = run_stipple({"render", "-o", (dir / "l.png").string(), "--width", "160", "--height", "128", "--light",
+                              light, "--stats"});
+        EXPECT_EQ(r.exit_code, 0) << light << ": " << r.err;
+        const size_t at = r.out.find("drawn stipples:");
+        return at == std::string::npos ? -1 : std::stol(r.out.substr(at + 15));
+    };
+    const long unit = drawn("1,2,3");
+    EXPECT_GT(unit, 100);
+    EXPECT_EQ(drawn("1e20,2e20,3e20"), unit);
+    EXPECT_EQ(drawn("1e-15,2e-15,3e-15"), unit);
+    EXPECT_NE(drawn("3,2,1"), unit) << "another direction should draw other stipples";
 }
 
 TEST(CliRender, StatsPrintTheDepthPassTriangles) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "core/unit_direction.hpp"
 #include "cli/animation_options.hpp"
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
@@ -84,14 +85,15 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
     if (args.has("--pitch")) scene.camera.pitch_deg = float(args.number("--pitch", 0.0));
     if (args.has("--distance")) {
         double distance = args.number("--distance", 1.0);
-        if (distance <= 0.0 || distance > 1e4) fail("--distance = " + std::to_string(distance) + " must be in (0, 10000]");
+        if (!(float(distance) > 0.0f) || distance > 1e4)
+            fail("--distance = " + args.get("--distance", "") + " must be in (0, 10000]");
         scene.camera.distance = float(distance);
         scene.camera.world_distance.reset();
     }
     if (args.has("--light")) {
-        glm::vec3 light = args.vec3("--light", scene.light);
-        if (glm::length(light) < 1e-6f) fail("--light must not be the zero vector");
-        scene.light = light;
+        const std::optional<glm::vec3> light = unit_direction(args.vec3("--light", scene.light));
+        if (!light) fail("--light must not be the zero vector");
+        scene.light = *light;
     }
     return scene;
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/unit_direction.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
@@ -43,7 +44,7 @@ std::vector<float> parse_distances(const std::string& text) {
     std::vector<float> distances;
     for (const std::string& part : split(text, ',')) {
         double d = parse_number(part, "--distances");
-        if (d <= 0.0 || d > 1e4) fail("--distances: " + part + " must be in (0, 10000]");
+        if (!(float(d) > 0.0f) || d > 1e4) fail("--distances: " + part + " must be in (0, 10000]");
         distances.push_back(float(d));
     }
     if (distances.empty() || distances.size() > 64) fail("--distances needs 1 to 64 comma-separated values");
@@ -204,8 +205,9 @@ int run_tone(const std::vector<std::string>& argv) {
         fail("--images " + options.image_dir + " is not a folder");
     glm::vec3 light = FrameView{}.light_view;
     if (args.has("--light")) {
-        light = args.vec3("--light", light);
-        if (glm::length(light) < 1e-6f) fail("--light must not be the zero vector");
+        const std::optional<glm::vec3> direction = unit_direction(args.vec3("--light", light));
+        if (!direction) fail("--light must not be the zero vector");
+        light = *direction;
     }
     ObjectParams params = read_object_params(args);
     std::vector<uint64_t> seeds{params.generation.seed};

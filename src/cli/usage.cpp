@@ -216,8 +216,9 @@ Environment:
   STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
                           draws an image whose pixel words do not fit one in tiles (lavapipe: 128M)
 
-Exit status: 0 on success, 1 on bad input or a failed render (one line on stderr naming the
-file and the problem), 2 on a bad command line or Vulkan validation messages.
+Exit status: 0 on success, 1 on bad input, a bad option or a failed render (one line on stderr
+naming the file or option and the problem), 2 on an unknown command or Vulkan validation messages.
+`stipple COMMAND --help` prints this text.
 )");
 }
 

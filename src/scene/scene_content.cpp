@@ -1,3 +1,4 @@
+#include "core/unit_direction.hpp"
 #include "scene/scene_content.hpp"
 
 #include <map>
@@ -102,7 +103,7 @@ FrameView scene_frame_view(const Scene& scene, const OrbitCamera& camera, const 
     view.extent = extent;
     float aspect = float(extent.width) / float(extent.height);
     view.camera = camera_matrices(camera, aspect, bounds);
-    view.light_view = glm::normalize(scene.light);
+    view.light_view = unit_direction(scene.light).value_or(glm::vec3(0.0f, 0.0f, 1.0f));
     view.ink_color = scene.ink;
     view.paper_color = scene.paper;
     return view;

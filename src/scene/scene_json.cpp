@@ -1,3 +1,4 @@
+#include "core/unit_direction.hpp"
 #include "scene/scene_json.hpp"
 
 #include <algorithm>
@@ -330,8 +331,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
             scene.camera_path.push_back(read_camera(path[i], r, "camera_path[" + std::to_string(i) + "]"));
     }
     if (root.contains("light")) {
-        scene.light = r.vec3(root["light"], "light");
-        if (glm::length(scene.light) < 1e-6f) r.error("light", "the light direction must not be the zero vector");
+        scene.light = r.vec3(root["light"], "light");  // as written (a saved scene reads back the same)
+        if (!unit_direction(scene.light)) r.error("light", "the light direction must not be the zero vector");
     }
     if (root.contains("paper")) scene.paper = r.color(root["paper"], "paper");
     if (root.contains("ink")) scene.ink = r.color(root["ink"], "ink");
