@@ -83,6 +83,7 @@ int run_bench(const std::vector<std::string>& argv) {
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
     const std::filesystem::path out = args.get("--out", "bench-results");
+    if (out.empty()) fail("--out needs a folder");
     // Read before the run: a bad file fails at once, and --out may be the folder it is in.
     const std::string compare_path = args.get("--compare", "");
     if (args.has("--compare") && compare_path.empty()) fail("--compare needs the path of an earlier results.json");

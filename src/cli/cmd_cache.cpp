@@ -1,6 +1,7 @@
 // stipple cache: what the stipple cache holds, and emptying it (src/stipple/stipple_cache.hpp).
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <ctime>
 
 #include "cli/args.hpp"
@@ -39,6 +40,9 @@ int run_cache(const std::vector<std::string>& argv) {
     if (args.flag("--list") == args.flag("--clear")) fail("cache needs one of --list or --clear");
     apply_cache_options(args);
     const StippleCacheSettings& settings = stipple_cache_settings();
+    std::error_code ec;
+    if (args.has("--cache-dir") && !std::filesystem::is_directory(settings.dir, ec))
+        fail("--cache-dir " + settings.dir.string() + ": no such folder");
     if (args.flag("--clear")) {
         const uint64_t freed = clear_cache(settings.dir);
         std::printf("cleared %s: %s freed\n", settings.dir.c_str(), megabytes(freed).c_str());

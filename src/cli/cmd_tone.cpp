@@ -201,6 +201,7 @@ int run_tone(const std::vector<std::string>& argv) {
     options.fov_y_deg = float(fov);
     options.regimes = args.flag("--regimes");
     options.image_dir = args.get("--images", "");
+    if (args.has("--images") && options.image_dir.empty()) fail("--images needs a folder");
     if (!options.image_dir.empty() && !std::filesystem::is_directory(options.image_dir))
         fail("--images " + options.image_dir + " is not a folder");
     glm::vec3 light = FrameView{}.light_view;

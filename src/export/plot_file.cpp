@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -31,6 +34,19 @@ bool is_png_path(const std::string& path) { return extension_of(path) == ".png";
 
 void write_plot_file(const PlotPlan& plan, const std::string& path) {
     const std::string ext = extension_of(path);
+    // Into a folder made if missing, as PNG images are.
+    const std::filesystem::path fs_path(path);
+    if (fs_path.has_parent_path()) {
+        std::error_code ec;
+        std::filesystem::create_directories(fs_path.parent_path(), ec);
+        if (ec) fail_file(path, "cannot create its folder: " + ec.message());
+    }
+    if (ext == ".pdf") {
+        // cairo says only "error while writing to output stream": the file is tried first for the cause.
+        std::FILE* probe = std::fopen(path.c_str(), "wb");
+        if (!probe) fail_file(path, std::string("cannot write PDF: ") + std::strerror(errno));
+        std::fclose(probe);
+    }
     if (ext == ".svg") write_svg(plan, path);
     else if (ext == ".pdf") write_pdf(plan, path);
     else if (ext == ".csv") write_csv(plan, path);
