@@ -348,6 +348,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"missing_model_file", R"({"objects": [{"model": "sphere.obj"}, {"model": "nowhere.obj"}]})",
                  "objects[1].model", "no such model file"},
         BadScene{"broken_model", R"({"objects": [{"model": "broken.obj"}]})", "objects[0].model", "broken.obj"},
+        BadScene{"model_is_a_folder", R"({"objects": [{"model": "."}]})", "objects[0].model", "is a directory, not a model file"},
+        BadScene{"model_is_a_device", R"({"objects": [{"model": "/dev/null"}]})", "objects[0].model", "is not a regular file"},
         BadScene{"out_of_range", R"({"objects": [{"model": "sphere.obj"}, {"model": "sphere.obj", "params": {"dmax": 20}}]})",
                  "objects[1].params.dmax", "out of range"},
         BadScene{"negative_integer", R"({"objects": [{"model": "sphere.obj", "params": {"seed": -3}}]})",

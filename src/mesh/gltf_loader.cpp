@@ -63,6 +63,13 @@ public:
                 fail_file(path_, "default scene " + std::to_string(scene) + " does not exist");
             add_scene(model_.scenes[scene]);
         }
+        // Points and lines are skipped with a warning; with nothing else, the one line is the error's.
+        if (mesh_.indices.empty() && !skipped_.empty())
+            fail_file(path_, "the model has no triangles, only " + skipped_.front() +
+                                 (skipped_.size() > 1 ? " and " + std::to_string(skipped_.size() - 1) + " more like it" : "") +
+                                 ": only triangles are drawn");
+        for (const std::string& what : skipped_)
+            std::fprintf(stderr, "%s: warning: skipping %s: only triangles are drawn\n", path_.c_str(), what.c_str());
         return std::move(mesh_);
     }
 
@@ -199,8 +206,7 @@ private:
     void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world) {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-            std::fprintf(stderr, "%s: warning: skipping %s (mode %s): only triangles are drawn\n", path_.c_str(),
-                         what.c_str(), mode_name(mode));
+            skipped_.push_back(what + " (mode " + mode_name(mode) + ")");
             return;
         }
         const auto position = prim.attributes.find("POSITION");
@@ -248,6 +254,7 @@ private:
     const tinygltf::Model& model_;
     const LoadOptions& options_;
     Mesh mesh_;
+    std::vector<std::string> skipped_;  // primitives of points or lines, as "mesh M primitive P (mode X)"
 };
 
 // Bytes from memory have no folder: a reference to an external file is refused, not looked up in

@@ -340,7 +340,11 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 }
 
 Scene load_scene(const std::string& path) {
-    if (std::filesystem::is_directory(path)) fail_file(path, "is a directory, not a scene file");
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status)) fail_file(path, "is a directory, not a scene file");
+    // Not opened otherwise: a FIFO would wait for a writer forever.
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) fail_file(path, "is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail_file(path, "cannot open the scene file (missing or unreadable)");
     std::stringstream text;
@@ -349,8 +353,11 @@ Scene load_scene(const std::string& path) {
     Scene scene = parse_scene(text.str(), path, base);
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         std::string model = scene.model_path(i);
-        if (!std::filesystem::is_regular_file(model))
-            fail_file(path, "objects[" + std::to_string(i) + "].model: no such model file: " + model);
+        const std::filesystem::file_status model_status = std::filesystem::status(model, ec);
+        const std::string field = "objects[" + std::to_string(i) + "].model: ";
+        if (!std::filesystem::exists(model_status)) fail_file(path, field + "no such model file: " + model);
+        if (std::filesystem::is_directory(model_status)) fail_file(path, field + model + " is a directory, not a model file");
+        if (!std::filesystem::is_regular_file(model_status)) fail_file(path, field + model + " is not a regular file");
     }
     return scene;
 }
