@@ -135,6 +135,15 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
                              "lower --dmax or --max-stipples"})
         EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
+    // A size that is not one is refused, not ignored (a typo would test nothing).
+    for (const char* bad : {"foo", "0", "-1", "2X", "99999999999G"}) {
+        ::setenv("STIPPLE_GPU_MEMORY_LIMIT", bad, 1);
+        const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+        ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
+        EXPECT_EQ(e.exit_code, 1) << bad;
+        EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+        EXPECT_NE(e.err.find(std::string("STIPPLE_GPU_MEMORY_LIMIT=") + bad + " is not a size"), std::string::npos) << e.err;
+    }
 }
 
 // The fraction of pixels darker than mid-grey in each quarter of the image (top left, top right, bottom
