@@ -71,6 +71,14 @@ void validate_mesh(const Mesh& mesh) {
                           double(extent), double(kMinExtent));
             fail_file(source, text);
         }
+        const float offset = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+        if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
+            char text[200];
+            std::snprintf(text, sizeof(text),
+                          "the model lies %g units from the origin, %g times its size: single precision keeps too few "
+                          "digits of its shape; move it near the origin", double(offset), double(offset / extent));
+            fail_file(source, text);
+        }
     }
     const size_t vertex_count = mesh.positions.size();
     for (size_t i = 0; i < mesh.indices.size(); ++i) {

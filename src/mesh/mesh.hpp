@@ -41,9 +41,14 @@ void compute_vertex_normals(Mesh& mesh);
 // nothing, at 1e-20 twice its stipples).
 inline constexpr float kMaxCoordinate = 1e18f;
 inline constexpr float kMinExtent = 1e-15f;
+// Far from the origin a float keeps about 1.7e7 steps of its magnitude: at 1e5 times its size a model is
+// drawn with ~170 steps across (the shared spot moved 1e7 units away collapsed to a few points and drew
+// nothing).
+inline constexpr float kMaxOffsetOverExtent = 1e5f;
 
 // Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf or beyond
-// kMaxCoordinate, the model is less than kMinExtent across,
+// kMaxCoordinate, the model is less than kMinExtent across or lies beyond kMaxOffsetOverExtent times its size
+// from the origin,
 // the index count is not a multiple of 3, normals are missing/mismatched, or there is no triangle.
 void validate_mesh(const Mesh& mesh);
 
