@@ -31,6 +31,9 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
                 if (i + 1 >= argv.size()) fail("option " + name + " needs a value");
                 value = argv[++i];
             }
+            // Given twice, one of them would be dropped without a word.
+            if (auto earlier = values_.find(name); earlier != values_.end())
+                fail("option " + name + " given twice (" + earlier->second + " and " + *value + ")");
             values_[name] = *value;
         } else {
             fail("unknown option " + name + " (see --help)");

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <cstdio>
 #include <map>
@@ -81,8 +82,16 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
     }
     apply_animation_option(args, scene);
     // Explicit view options override the scene's camera and light.
-    if (args.has("--yaw")) scene.camera.yaw_deg = float(args.number("--yaw", 0.0));
-    if (args.has("--pitch")) scene.camera.pitch_deg = float(args.number("--pitch", 0.0));
+    if (args.has("--yaw")) {
+        const double yaw = args.number("--yaw", 0.0);
+        if (std::abs(yaw) > 36000.0) fail("--yaw = " + args.get("--yaw", "") + " must be in -36000..36000 degrees");
+        scene.camera.yaw_deg = float(yaw);
+    }
+    if (args.has("--pitch")) {
+        const double pitch = args.number("--pitch", 0.0);
+        if (std::abs(pitch) > 90.0) fail("--pitch = " + args.get("--pitch", "") + " must be in -90..90 degrees");
+        scene.camera.pitch_deg = float(pitch);
+    }
     if (args.has("--distance")) {
         double distance = args.number("--distance", 1.0);
         if (!(float(distance) > 0.0f) || distance > 1e4)
