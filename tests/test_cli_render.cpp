@@ -221,6 +221,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--device", "99"}, "--device"},
         {{"render", "--distance", "1e-300"}, "--distance = 1e-300"},
         {{"render", "--pitch", "100"}, "--pitch = 100"},
+        {{"render", "--fill-paper"}, "--fill-paper paints the page of vector output"},
+        {{"tone", "--arc", "40"}, "--arc turns the object"},
         {{"render", "--yaw", "1e30"}, "--yaw = 1e30"},
         {{"render", "-o", "a.png", "-o", "b.png"}, "option -o given twice (a.png and b.png)"},
         {{"tone", "--distances", "1,1e-300"}, "--distances: 1e-300"},

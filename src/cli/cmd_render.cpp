@@ -143,9 +143,11 @@ int run_render(const std::vector<std::string>& argv) {
     if (print && vector) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
-    if (!vector && !print)
+    if (!vector && !print) {
         for (const char* name : {"--page", "--margin", "--pen-width", "--dot-style"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
+        if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a PNG has its paper");
+    }
     if (print && (args.has("--repeat") || args.has("--mask")))
         fail("--dpi renders a print image; --repeat and --mask are for screen images");
     long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);

@@ -193,6 +193,7 @@ int run_tone(const std::vector<std::string>& argv) {
     long long frames = args.integer("--frames", 1);
     if (frames < 1 || frames > 64) fail("--frames = " + std::to_string(frames) + " must be in 1..64");
     options.frames = int(frames);
+    if (args.has("--arc") && frames < 2) fail("--arc turns the object over the frames of a view: give --frames N (2..64)");
     double arc = args.number("--arc", frames > 1 ? 40.0 : 0.0);
     if (!(arc >= 0.0 && arc <= 360.0)) fail("--arc = " + std::to_string(arc) + " must be in [0, 360] degrees");
     options.arc_deg = float(arc);
