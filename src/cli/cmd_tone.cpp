@@ -42,7 +42,7 @@ double parse_number(const std::string& text, const std::string& option) {
 
 std::vector<float> parse_distances(const std::string& text) {
     std::vector<float> distances;
-    for (const std::string& part : split(text, ',')) {
+    for (const std::string& part : split_list("--distances", text)) {
         double d = parse_number(part, "--distances");
         if (!(float(d) > 0.0f) || d > 1e4) fail("--distances: " + part + " must be in (0, 10000]");
         distances.push_back(float(d));
@@ -54,7 +54,7 @@ std::vector<float> parse_distances(const std::string& text) {
 // YAW:PITCH pairs, comma-separated: "30:10,120:-20".
 std::vector<std::array<float, 2>> parse_views(const std::string& text) {
     std::vector<std::array<float, 2>> views;
-    for (const std::string& part : split(text, ',')) {
+    for (const std::string& part : split_list("--views", text)) {
         std::vector<std::string> angles = split(part, ':');
         if (angles.size() != 2) fail("--views: '" + part + "' is not YAW:PITCH (degrees)");
         double yaw = parse_number(angles[0], "--views"), pitch = parse_number(angles[1], "--views");
@@ -69,7 +69,7 @@ std::vector<std::array<float, 2>> parse_views(const std::string& text) {
 // Seeds, comma-separated: "1,2,3".
 std::vector<uint64_t> parse_seeds(const std::string& text) {
     std::vector<uint64_t> seeds;
-    for (const std::string& part : split(text, ',')) {
+    for (const std::string& part : split_list("--seeds", text)) {
         const double seed = parse_number(part, "--seeds");
         if (seed < 0.0 || seed > 4294967295.0 || seed != std::floor(seed))
             fail("--seeds: '" + part + "' is not a whole number in [0, 4294967295]");
