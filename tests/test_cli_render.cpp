@@ -235,6 +235,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "x.jpg"}, "-o x.jpg: the output is named by its extension"},
         {{"render", "-o", ""}, "the output is named by its extension"},
         {{"render", "-o", "same.png", "--mask", "same.png"}, "is the image's own path"},
+        {{"render", "-o", "./same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "--mask", "m.svg"}, "--mask m.svg"},
         {{"tone", "--images", ""}, "--images needs a folder"},
         {{"bench", "--out", ""}, "--out needs a folder"},

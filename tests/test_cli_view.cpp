@@ -491,6 +491,17 @@ TEST(CliView, ScriptExportNeedsAVectorPath) {
     }
     std::ofstream(script) << "export view.svg\nexport view.PDF\nexport dots.csv\n";
     EXPECT_EQ(app::read_viewer_script(script).size(), 3u);
+    // A screenshot is a PNG, and the script a file (a folder read as an empty script: the window never closed).
+    std::ofstream(script) << "screenshot shot.jpg\n";
+    for (const auto& [path, phrase] : {std::pair<std::string, std::string>{script, ":1: screenshot needs a .png path"},
+                                       {dir.string(), "is a directory, not a script"}}) {
+        try {
+            app::read_viewer_script(path);
+            ADD_FAILURE() << path << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace

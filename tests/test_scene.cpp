@@ -357,7 +357,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"bad_enum", R"({"objects": [{"model": "sphere.obj", "params": {"density_path": "gpu"}}]})",
                  "objects[0].params.density_path", "'gpu' is not one of vertex, cpu"},
         BadScene{"bad_scale", R"({"objects": [{"model": "sphere.obj", "transform": {"scale": -1}}]})",
-                 "objects[0].transform.scale", "must be > 0"},
+                 "objects[0].transform.scale", "must be in [1e-6, 1e6]"},
+        BadScene{"tiny_scale", R"({"objects": [{"model": "sphere.obj", "transform": {"scale": 1e-16}}]})",
+                 "objects[0].transform.scale", "must be in [1e-6, 1e6]"},
         BadScene{"singular_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
                  [1,0,0,0, 0,0,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "singular"},

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +24,11 @@ double parse_number(const std::string& text, bool* ok) {
 }  // namespace
 
 std::vector<ScriptAction> read_viewer_script(const std::string& path) {
+    // A folder opens as an empty stream (an empty script: the window never closed), a FIFO waits.
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status)) fail_file(path, "is a directory, not a script");
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) fail_file(path, "is not a regular file");
     std::ifstream in(path);
     if (!in) fail_file(path, "cannot open the script (missing or unreadable)");
     std::vector<ScriptAction> actions;
@@ -65,6 +71,7 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
         } else if (verb == "screenshot" && rest.size() == 1) {
             action.kind = ScriptAction::Kind::Screenshot;
             action.path = rest[0];
+            if (!plot::is_png_path(action.path)) bad("screenshot needs a .png path, got '" + action.path + "'");
         } else if (verb == "export" && rest.size() == 1) {
             action.kind = ScriptAction::Kind::Export;
             action.path = rest[0];

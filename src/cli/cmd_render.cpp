@@ -134,8 +134,11 @@ int run_render(const std::vector<std::string>& argv) {
     if (args.has("--mask")) {
         const std::string mask = args.get("--mask", "");
         if (!plot::is_png_path(mask)) fail("--mask " + mask + ": the coverage mask is a PNG (.png)");
-        if (std::filesystem::path(mask).lexically_normal() == std::filesystem::path(output).lexically_normal())
-            fail("--mask " + mask + " is the image's own path (-o): give it another");
+        // The same file however it is named (relative, absolute, through a link).
+        std::error_code ec;
+        const auto mask_file = std::filesystem::weakly_canonical(std::filesystem::absolute(mask), ec);
+        const auto image_file = std::filesystem::weakly_canonical(std::filesystem::absolute(output), ec);
+        if (mask_file == image_file) fail("--mask " + mask + " is the image's own path (-o): give it another");
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.

@@ -162,7 +162,9 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
     if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], Reader::field(where, "rotate_deg"));
     if (j.contains("scale")) {
         t.scale = r.number(j["scale"], Reader::field(where, "scale"));
-        if (!(t.scale > 0.0f) || t.scale > 1e6f) r.error(Reader::field(where, "scale"), "must be > 0 and <= 1e6");
+        // Below 1e-6 a model of unit size approaches the denormals its drawing multiplies into (1e-16 drew a
+        // black silhouette, 1e-30 nothing).
+        if (!(t.scale >= 1e-6f) || t.scale > 1e6f) r.error(Reader::field(where, "scale"), "must be in [1e-6, 1e6]");
     }
     return t;
 }
