@@ -133,6 +133,26 @@ TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
     }
 }
 
+// A cache folder that cannot be made is said once, and the stipples are still drawn.
+TEST(StippleCache, AFolderThatCannotBeMadeIsSaidOnce) {
+    const auto dir = test::temp_dir("stipple_cache_unusable");
+    std::ofstream(dir / "a_file") << "not a folder";
+    const fs::path unusable = dir / "a_file" / "cache";
+    const Mesh mesh = make_icosphere(2);
+    GenerationParams params;
+    params.dmax = 0.02f;
+    testing::internal::CaptureStderr();
+    const StippleSet first = generate_stipples_cached(mesh, params, unusable);
+    params.seed = 2;
+    const StippleSet second = generate_stipples_cached(mesh, params, unusable);
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_GT(first.size(), 0u);
+    EXPECT_GT(second.size(), 0u);
+    EXPECT_NE(warning.find("warning: " + unusable.string() + ": cannot keep the stipple cache there"), std::string::npos)
+        << warning;
+    EXPECT_EQ(std::count(warning.begin(), warning.end(), '\n'), 1) << "once: " << warning;
+}
+
 TEST(StippleCache, TheFolderStaysUnderItsLimitLeastRecentlyUsedFirst) {
     const auto dir = test::temp_dir("stipple_cache_limit");
     const Mesh mesh = make_icosphere(2);

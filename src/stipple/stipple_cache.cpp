@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -43,6 +44,14 @@ std::filesystem::path entry_path(const std::filesystem::path& dir, uint64_t key)
     char name[40];
     std::snprintf(name, sizeof(name), "%016llx%s", static_cast<unsigned long long>(key), cache_format::kExtension);
     return dir / name;
+}
+
+// Once per process: the stipples are still drawn, only generated again next time.
+void warn_unusable_folder(const std::filesystem::path& dir, const std::string& reason) {
+    static std::atomic<bool> warned{false};
+    if (warned.exchange(true)) return;
+    std::fprintf(stderr, "warning: %s: cannot keep the stipple cache there (%s); stipples are generated every time\n",
+                 dir.c_str(), reason.c_str());
 }
 
 void warn_damaged(const std::filesystem::path& path, const char* problem) {
@@ -187,7 +196,7 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
     if (stipples.selection.size() != triangles || stipples.first.size() != triangles + 1) return;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec) return;
+    if (ec) return warn_unusable_folder(dir, ec.message());
     std::vector<unsigned char> raw;
     raw.reserve(triangles * 6 + stipples.size() * 4);
     for (size_t t = 0; t < triangles; ++t) {
@@ -239,9 +248,10 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
             maybe_crash(written);
         }
         if (!out.flush()) {
+            const std::string reason = errno != 0 ? std::strerror(errno) : "cannot write";
             out.close();
             std::filesystem::remove(temporary, ec);
-            return;
+            return warn_unusable_folder(dir, reason);
         }
     }
     std::filesystem::rename(temporary, final_path, ec);
