@@ -21,6 +21,12 @@ using test::run_stipple;
 
 size_t count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
 
+// The count `render --stats` prints; -1 without one.
+long drawn_stipples(const test::CommandResult& r) {
+    const size_t at = r.out.find("drawn stipples:");
+    return at == std::string::npos ? -1 : std::stol(r.out.substr(at + 15));
+}
+
 void write_file(const std::filesystem::path& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary);
     out << bytes;
@@ -275,8 +281,7 @@ TEST(CliRender, ATriangleDrawsTheSameAtEverySize) {
         auto r = run_stipple({"render", model, "-o", (dir / ("t" + size + ".png")).string(), "--width", "320", "--height",
                               "256", "--stats"});
         EXPECT_EQ(r.exit_code, 0) << size << ": " << r.err;
-        const size_t at = r.out.find("drawn stipples:");
-        return at == std::string::npos ? -1 : std::stol(r.out.substr(at + 15));
+        return drawn_stipples(r);
     };
     const long unit = drawn("1");
     ASSERT_GT(unit, 500);
@@ -304,8 +309,7 @@ TEST(CliRender, TheLightIsADirectionOfAnyLength) {
         auto r = run_stipple({"render", "-o", (dir / "l.png").string(), "--width", "160", "--height", "128", "--light",
                               light, "--stats"});
         EXPECT_EQ(r.exit_code, 0) << light << ": " << r.err;
-        const size_t at = r.out.find("drawn stipples:");
-        return at == std::string::npos ? -1 : std::stol(r.out.substr(at + 15));
+        return drawn_stipples(r);
     };
     const long unit = drawn("1,2,3");
     EXPECT_GT(unit, 100);
