@@ -152,6 +152,23 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
     }
 }
 
+// STIPPLE_VALIDATION is 1 or 0: "yes" or "off" read as on (anything but "0") and hid a typo.
+TEST(CliRender, TheValidationSettingIsOneOrZero) {
+    const auto out = test::temp_dir("cli-validation-env") / "never.png";
+    const char* before = std::getenv("STIPPLE_VALIDATION");
+    const std::string saved = before ? before : "";
+    for (const char* bad : {"yes", "off", "2"}) {
+        ::setenv("STIPPLE_VALIDATION", bad, 1);
+        const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+        EXPECT_EQ(e.exit_code, 1) << bad;
+        EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+        EXPECT_NE(e.err.find(std::string("STIPPLE_VALIDATION=") + bad + " must be 1"), std::string::npos) << e.err;
+    }
+    if (before) ::setenv("STIPPLE_VALIDATION", saved.c_str(), 1);
+    else ::unsetenv("STIPPLE_VALIDATION");
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // The fraction of pixels darker than mid-grey in each quarter of the image (top left, top right, bottom
 // left, bottom right).
 std::array<double, 4> ink_by_quarter(const Image& image) {
@@ -244,6 +261,14 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "./same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "--mask", "m.svg"}, "--mask m.svg"},
         {{"tone", "--images", ""}, "--images needs a folder"},
+        {{"tone", "--images", "/etc/passwd"}, "--images /etc/passwd is not a folder"},
+        {{"render", "--dmax", "1e-300"}, "--dmax = 1e-300 is out of range"},
+        {{"render", "--light", "1e300,0,0"}, "has a number beyond single precision"},
+        {{"render", "-o", "x.svg", "--page", "5x5mm"}, "smaller than 10 mm a side"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--dot-style", "circle"}, "--dot-style is for vector output"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--pen-width", "0.5"}, "--pen-width is for vector output"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--fill-paper"}, "a print image has its paper"},
+        {{"render", "-o", "x.png", "--page", "A3", "--dpi", "2400"}, "more than a PNG of 2 GiB of pixels"},
         {{"bench", "--out", ""}, "--out needs a folder"},
         {{"info", "--cache-dir", ""}, "--cache-dir needs a folder"},
         {{"cache", "--list", "--cache-dir", "/nonexistent/stipple-cache"}, "no such folder"},

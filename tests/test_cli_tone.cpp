@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "support/run_command.hpp"
+#include "support/test_paths.hpp"
 
 namespace stipple {
 namespace {
@@ -42,8 +44,11 @@ std::vector<std::string> quick(std::vector<std::string> extra) {
 }
 
 TEST(CliTone, PrintsTheInkPerDistanceAndItsMaxOverMin) {
-    const test::CommandResult r = test::run_stipple(quick({}));
+    // --images makes its folder, as -o does.
+    const std::filesystem::path images = test::temp_dir("cli-tone-images") / "made" / "here";
+    const test::CommandResult r = test::run_stipple(quick({"--images", images.string()}));
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(images / "tone-30_10-d4-on.png")) << r.out;
     const auto on = rows(r.out, "on"), off = rows(r.out, "off");
     ASSERT_EQ(on.size(), 2u) << r.out;  // one row per view
     ASSERT_EQ(off.size(), 2u) << r.out;

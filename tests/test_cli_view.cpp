@@ -449,6 +449,20 @@ TEST(CliView, ScriptScreenshotThenQuitWritesIt) {
     EXPECT_GT(ink_pixels(image), 200u) << "the screenshot shows no stipples";
 }
 
+// A script's screenshot that cannot be written is an error (exit code 1), not a message in a run that passes.
+TEST(CliView, ScriptScreenshotNotWrittenFailsTheRun) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-screenshot-fails");
+    std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot /dev/null/shot.png\nquit\n";
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({"--width", "320", "--height", "256", "--no-panel", "--script", (dir / "script.txt").string(),
+                          "--cache-dir", (dir / "cache").string()});
+    EXPECT_EQ(session.viewer().wait_exit(300s), 1) << session.out() << session.err();
+    EXPECT_NE(session.err().find("/dev/null/shot.png: cannot write PNG"), std::string::npos) << session.err();
+}
+
 TEST(CliView, ExportsTheViewAsSvg) {
     for (const char* tool : {"Xvfb", "xdotool"})
         if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";

@@ -139,10 +139,12 @@ TEST_F(DensityPaths, PackedPolygonConstantsKeepCentroidNormalAreaAndSelection) {
         const Mesh& m = polygons.mesh;
         glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
                   c = m.positions[m.indices[3 * t + 2]];
-        glm::vec3 cross = glm::cross(b - a, c - a);
+        // The truth in double (the packing computes in double: a float cross product overflows for
+        // polygons beyond ~1e9 units and is 2.5e-6 off for thin ones here).
+        const glm::dvec3 cross = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
         auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), identity);
         worst_center = std::max(worst_center, double(glm::length(p.center - (a + b + c) / 3.0f)) / box);
-        glm::dvec3 exact = glm::normalize(glm::dvec3(cross)), packed = glm::dvec3(p.normal);
+        glm::dvec3 exact = glm::normalize(cross), packed = glm::dvec3(p.normal);
         double angle = std::atan2(glm::length(glm::cross(exact, packed)), glm::dot(exact, packed));
         worst_normal_deg = std::max(worst_normal_deg, angle * 180.0 / 3.14159265358979);
         worst_area = std::max(worst_area, std::abs(double(p.area) / (0.5 * glm::length(cross)) - 1.0));

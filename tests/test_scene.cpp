@@ -363,6 +363,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"singular_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
                  [1,0,0,0, 0,0,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "singular"},
+        BadScene{"flat_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
+                 [1,0,0,0, 1,1e-9,0,0, 0,0,1,0, 0,0,0,1]}}]})",
+                 "objects[0].transform.matrix", "singular"},
+        BadScene{"huge_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
+                 [1e20,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})",
+                 "objects[0].transform.matrix", "column 0 scales its axis by 1e+20"},
         BadScene{"bad_colour", R"({"objects": [{"model": "sphere.obj"}], "paper": [1, 2, 0]})", "paper", "0..1"},
         BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",
                  "camera.distance", "must be in"},

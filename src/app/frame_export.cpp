@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "export/plot_file.hpp"
 #include "gpu/context.hpp"
+#include "io/png_io.hpp"
 #include "render/offscreen.hpp"
 #include "render/tiled_render.hpp"
 #include "scene/scene_content.hpp"
@@ -52,6 +53,11 @@ PrintLayout print_layout(const PrintOptions& options) {
     if (layout.page_px.width > 65536 || layout.page_px.height > 65536)
         fail("the page is " + std::to_string(layout.page_px.width) + "x" + std::to_string(layout.page_px.height) +
              " pixels at " + std::to_string(int(options.dpi)) + " dpi: at most 65536 a side (lower --dpi)");
+    // Asked before drawing: a page beyond what a PNG holds was drawn (minutes at 2400 dpi) and then refused.
+    if (!png_size_writable(layout.page_px.width, layout.page_px.height, 4))
+        fail("the page is " + std::to_string(layout.page_px.width) + "x" + std::to_string(layout.page_px.height) +
+             " pixels at " + std::to_string(int(options.dpi)) +
+             " dpi: more than a PNG of 2 GiB of pixels (lower --dpi or the page size, or write SVG or PDF)");
     const uint32_t margin = uint32_t(std::lround(options.margin_mm * px_per_mm));
     layout.drawing_at = {int32_t(margin), int32_t(margin)};
     layout.drawing_px = {std::max(1u, layout.page_px.width - 2 * margin), std::max(1u, layout.page_px.height - 2 * margin)};

@@ -334,6 +334,7 @@ void Viewer::finish_previous_frame() {
         if (!path.empty()) message("screenshot: " + path);
     } catch (const Error& e) {
         message(e.what(), true);
+        if (!options_.script.empty()) script_failed_ = true;  // a script's screenshot not written: exit code 1
     }
 }
 

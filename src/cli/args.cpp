@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -73,12 +74,15 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
     std::istringstream in(it->second);
-    glm::vec3 v;
+    glm::dvec3 v;
     char c1 = 0, c2 = 0;
     if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() || !std::isfinite(v.x) ||
         !std::isfinite(v.y) || !std::isfinite(v.z))
         fail("option " + name + ": '" + it->second + "' is not three numbers X,Y,Z");
-    return v;
+    // Read in double so that 1e300 is named for what it is, not "not a number".
+    if (glm::any(glm::greaterThan(glm::abs(v), glm::dvec3(std::numeric_limits<float>::max()))))
+        fail("option " + name + ": '" + it->second + "' has a number beyond single precision (3.4e+38)");
+    return glm::vec3(v);
 }
 
 int device_index(const Args& args) {

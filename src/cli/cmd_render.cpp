@@ -143,6 +143,7 @@ int run_render(const std::vector<std::string>& argv) {
     const plot::ExportOptions vector_options = read_vector_options(args);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
     const std::optional<app::PrintOptions> print = read_print_options(args);
+    if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
     if (print && vector) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
@@ -150,6 +151,12 @@ int run_render(const std::vector<std::string>& argv) {
         for (const char* name : {"--page", "--margin", "--pen-width", "--dot-style"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
         if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a PNG has its paper");
+    }
+    if (print) {
+        // A print image draws the stipples and lines as the screen does, at the page's resolution.
+        for (const char* name : {"--pen-width", "--dot-style"})
+            if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv); a print image (--dpi) draws as the screen does");
+        if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a print image has its paper");
     }
     if (print && (args.has("--repeat") || args.has("--mask")))
         fail("--dpi renders a print image; --repeat and --mask are for screen images");

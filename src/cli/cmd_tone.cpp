@@ -203,8 +203,13 @@ int run_tone(const std::vector<std::string>& argv) {
     options.regimes = args.flag("--regimes");
     options.image_dir = args.get("--images", "");
     if (args.has("--images") && options.image_dir.empty()) fail("--images needs a folder");
-    if (!options.image_dir.empty() && !std::filesystem::is_directory(options.image_dir))
-        fail("--images " + options.image_dir + " is not a folder");
+    if (!options.image_dir.empty()) {
+        // Made if missing, as -o's folders are; a file of that name is refused.
+        std::error_code ec;
+        std::filesystem::create_directories(options.image_dir, ec);
+        if (!std::filesystem::is_directory(options.image_dir))
+            fail("--images " + options.image_dir + " is not a folder" + (ec ? " (" + ec.message() + ")" : ""));
+    }
     glm::vec3 light = FrameView{}.light_view;
     if (args.has("--light")) {
         const std::optional<glm::vec3> direction = unit_direction(args.vec3("--light", light));

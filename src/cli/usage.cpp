@@ -78,7 +78,7 @@ Vector and print output (render):
                           fade) as dots, and its visible lines, on a page in mm, ordered for pen
                           plotters; layers per object and kind (see docs/plot-export.md)
   --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
-                          (default A4)
+                          (WxHmm: 10 mm to 10 m a side; default A4)
   --margin MM             white border around the drawing (default 10)
   --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
                           dots 0.3)

@@ -69,6 +69,8 @@ PageSize parse_page(const std::string& name) {
         page.width_mm = parse_length(dims.substr(0, x));
         page.height_mm = parse_length(dims.substr(x + 1));
         if (page.width_mm <= 0.0 || page.height_mm <= 0.0) bad_page(name, "width and height must be positive numbers");
+        // Below a centimetre a dot of the default pen (0.3 mm) is a tenth of the page; 1e-300 mm drew nothing.
+        if (page.width_mm < 10.0 || page.height_mm < 10.0) bad_page(name, "smaller than 10 mm a side");
         // Beyond any plotter or printer; mostly a typo (metres instead of millimetres).
         if (page.width_mm > 10000.0 || page.height_mm > 10000.0) bad_page(name, "larger than 10 m");
     } else {

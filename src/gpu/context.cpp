@@ -55,7 +55,12 @@ std::vector<VkPhysicalDevice> enumerate_devices(VkInstance instance) {
 }  // namespace
 
 bool ContextOptions::default_validation() {
-    if (const char* env = std::getenv("STIPPLE_VALIDATION")) return std::strcmp(env, "0") != 0;
+    // Strict, as the other STIPPLE_* settings: "yes" or "off" read as on (anything but "0") hid a typo.
+    if (const char* env = std::getenv("STIPPLE_VALIDATION"); env && *env) {
+        if (std::strcmp(env, "1") == 0) return true;
+        if (std::strcmp(env, "0") == 0) return false;
+        fail(std::string("STIPPLE_VALIDATION=") + env + " must be 1 (validation on) or 0 (off)");
+    }
 #ifdef NDEBUG
     return false;
 #else

@@ -49,6 +49,10 @@ std::string errno_text() { return errno != 0 ? std::strerror(errno) : "unknown I
 
 }  // namespace
 
+bool png_size_writable(int64_t width, int64_t height, int channels) {
+    return width > 0 && height > 0 && (width * channels + 1) * height <= std::numeric_limits<int>::max();
+}
+
 void write_png(const std::string& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4)
         fail_file(path, "cannot write PNG: bad image size " + std::to_string(image.width) + "x" +
@@ -58,8 +62,7 @@ void write_png(const std::string& path, const Image& image) {
                             " bytes, expected " + std::to_string(expected_bytes(image)));
     if (static_cast<int64_t>(image.width) * image.channels > std::numeric_limits<int>::max())
         fail_file(path, "cannot write PNG: row too wide");
-    // stb_image_write sizes its filtered copy of the image, (width * channels + 1) * height, in an int.
-    if ((static_cast<int64_t>(image.width) * image.channels + 1) * image.height > std::numeric_limits<int>::max())
+    if (!png_size_writable(image.width, image.height, image.channels))
         fail_file(path, "cannot write PNG: " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                             " is more than a PNG of 2 GiB of pixels; lower --dpi or the page size, or write SVG or PDF");
 

@@ -17,6 +17,10 @@ struct Image {
 // Throws stipple::Error("<path>: cannot write PNG ...") on a malformed image or an I/O failure.
 void write_png(const std::string& path, const Image& image);
 
+// Whether write_png can encode an image of this size (stb_image_write sizes its filtered copy,
+// (width * channels + 1) * height bytes, in an int): callers that draw large images ask first.
+bool png_size_writable(int64_t width, int64_t height, int channels);
+
 // Reads a PNG (or any format stb_image knows) keeping its own channel count.
 // Throws stipple::Error("<path>: ...") with one line when the file is missing or not an image.
 Image read_png(const std::string& path);

@@ -216,11 +216,23 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
             break;
         case ParamType::Float: break;
     }
-    const bool above = spec.min_open ? value > spec.min : value >= spec.min;
-    if (std::isfinite(value) && above && value <= spec.max) return std::nullopt;
+    // Judged as stored: a Float parameter is a float, so 1e-300 (stored as 0) is below "> 0".
+    const double stored = spec.type == ParamType::Float ? double(float(value)) : value;
+    const bool above = spec.min_open ? stored > spec.min : stored >= spec.min;
+    if (std::isfinite(stored) && above && stored <= spec.max) return std::nullopt;
     if (!std::isfinite(value)) return "the number is not finite";
     const bool whole = spec.type == ParamType::Int && std::abs(value) < 1e15;
-    return shortest(value, whole ? ParamType::Int : ParamType::Float) + " is out of range: it must be " +
+    // A value that single precision cannot hold is shown as given ("1e-300", not "0").
+    const float as_float = float(value);
+    const bool fits_float = std::isfinite(as_float) && (as_float != 0.0f || value == 0.0);
+    std::string shown;
+    if (whole || fits_float) {
+        shown = shortest(value, whole ? ParamType::Int : ParamType::Float);
+    } else {
+        char text[32];
+        shown.assign(text, std::to_chars(text, text + sizeof(text), value).ptr);
+    }
+    return shown + " is out of range: it must be " +
            param_range_text(spec);
 }
 

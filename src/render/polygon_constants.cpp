@@ -24,17 +24,20 @@ std::vector<gpu::TriangleInfo> pack_polygon_constants(const Mesh& mesh, const st
     std::vector<gpu::TriangleInfo> infos(mesh.triangle_count());
     const glm::vec3 inverse_size = glm::vec3(1.0f) / glm::max(box_size, glm::vec3(1e-30f));
     for (size_t t = 0; t < infos.size(); ++t) {
-        glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
-        glm::vec3 b = mesh.positions[mesh.indices[3 * t + 1]];
-        glm::vec3 c = mesh.positions[mesh.indices[3 * t + 2]];
-        glm::vec3 cross = glm::cross(b - a, c - a);
-        float length = glm::length(cross);
-        glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f);
-        glm::vec3 center = ((a + b + c) / 3.0f - box_min) * inverse_size;
+        // In double: the squared length of a cross product overflows single precision for triangles
+        // beyond about 1e9 units across (the loader accepts coordinates up to mesh.hpp kMaxCoordinate),
+        // which made the normal NaN.
+        const glm::dvec3 a = mesh.positions[mesh.indices[3 * t]];
+        const glm::dvec3 b = mesh.positions[mesh.indices[3 * t + 1]];
+        const glm::dvec3 c = mesh.positions[mesh.indices[3 * t + 2]];
+        const glm::dvec3 cross = glm::cross(b - a, c - a);
+        const double length = glm::length(cross);
+        const glm::vec3 normal = length > 0.0 ? glm::vec3(cross / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+        const glm::vec3 center = (glm::vec3((a + b + c) / 3.0) - box_min) * inverse_size;
         infos[t].center_xy = unorm16(center.x) | unorm16(center.y) << 16;
         infos[t].center_z_selection = unorm16(center.z) | uint32_t(selection_step(selection[t])) << 16;
         infos[t].normal = glm::packSnorm2x16(formulas::unit_to_octahedral(normal));
-        infos[t].area = 0.5f * length;
+        infos[t].area = float(0.5 * length);
     }
     return infos;
 }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "mesh/loader_util.hpp"
 #include "params/param_table.hpp"
 
@@ -151,8 +152,18 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
         if (!m.is_array() || m.size() != 16) r.error(w, "expected an array of 16 numbers (column-major)");
         glm::mat4 matrix;
         for (int i = 0; i < 16; ++i) matrix[i / 4][i % 4] = r.number(m[i], w + "[" + std::to_string(i) + "]");
-        float det = glm::determinant(glm::mat3(matrix));
-        if (!(std::abs(det) > 1e-12f) || !std::isfinite(det)) r.error(w, "the matrix is singular (it flattens the object)");
+        // Flatness judged relative to the axes' scales, in double (a scale of 1e20 was called singular: its
+        // determinant overflowed single precision); then each axis's scale in the same range as "scale".
+        const glm::dmat3 axes(matrix);
+        const glm::dvec3 lengths(glm::length(axes[0]), glm::length(axes[1]), glm::length(axes[2]));
+        if (!(std::abs(glm::determinant(axes)) > 1e-6 * lengths.x * lengths.y * lengths.z))
+            r.error(w, "the matrix is singular (it flattens the object)");
+        for (int c = 0; c < 3; ++c) {
+            if (!(lengths[c] >= 1e-6 && lengths[c] <= 1e6)) {
+                r.error(w, "column " + std::to_string(c) + " scales its axis by " + printf_string("%g", lengths[c]) +
+                               ": each axis must scale by 1e-6 to 1e6, as \"scale\" does");
+            }
+        }
         if (matrix[0][3] != 0.0f || matrix[1][3] != 0.0f || matrix[2][3] != 0.0f || matrix[3][3] != 1.0f)
             r.error(w, "the last row must be 0, 0, 0, 1 (an affine transform)");
         t.matrix = matrix;
