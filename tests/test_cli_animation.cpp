@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -41,6 +43,33 @@ std::vector<std::string> sparse(std::vector<std::string> args) {
 
 void write_text(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
+}
+
+// A shader missing from the build (a broken install, a wrong STIPPLE_SHADER_DIR) is one line naming it. The
+// passes made before it, whose constructors then threw, were left alive, and the validation layer
+// listed each at the device's destruction (the pipeline layouts of the renderer, of the polygon
+// pass, the skinning pass's texel views).
+TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
+    const std::string model = cylinder("cli_anim_missing_shader");
+    const fs::path shaders = test::temp_dir("cli_anim_missing_shader_dir");
+    const char* saved = std::getenv("STIPPLE_SHADER_DIR");
+    const std::string before = saved ? saved : "";
+    for (const char* missing : {"depth.vert.spv", "polygon_constants.comp.spv", "deform.comp.spv"}) {
+        fs::remove_all(shaders);
+        fs::create_directories(shaders);
+        for (const auto& entry : fs::directory_iterator(STIPPLE_SHADER_DIR))
+            if (entry.path().extension() == ".spv" && entry.path().filename() != missing)
+                fs::copy_file(entry.path(), shaders / entry.path().filename());
+        ::setenv("STIPPLE_SHADER_DIR", shaders.string().c_str(), 1);
+        const test::CommandResult r =
+            run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
+        if (saved) ::setenv("STIPPLE_SHADER_DIR", before.c_str(), 1);
+        else ::unsetenv("STIPPLE_SHADER_DIR");
+        EXPECT_EQ(r.exit_code, 1) << missing;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(std::string(missing) + ": shader not found"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(shaders / "never.png"));
+    }
 }
 
 size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }

@@ -92,47 +92,54 @@ GpuDeformer::GpuDeformer(const gpu::Context& context, const AnimatedModel& model
       vertex_count_(static_cast<uint32_t>(model.vertex_count())),
       palette_slots_(static_cast<uint32_t>(model.palette.size())),
       morph_weights_(model.morph_weight_count) {
-    // The vertices, the morph deltas and the palette are texel buffers: a software GPU fetches a texel's
-    // four words in one gather, where it loads a storage buffer's members one lane at a time (reading the
-    // vertices as texels took the bench cylinder's deformation from 6.2-6.4 to 3.4-5.1 ms on a busy
-    // machine; docs/animation.md).
-    const uint64_t vertex_texels = uint64_t(kDeformVertexTexels) * std::max(vertex_count_, 1u);
-    if (vertex_texels > context.properties.limits.maxTexelBufferElements)
-        fail("the model's " + std::to_string(vertex_count_) + " skinned vertices exceed the device's texel buffer limit of " +
-             std::to_string(context.properties.limits.maxTexelBufferElements / kDeformVertexTexels));
-    vertices_ = upload(context, pack_deform_vertices(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    vertices_view_ = gpu::create_texel_view(context, vertices_.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    if (2 * model.morph_deltas.size() > context.properties.limits.maxTexelBufferElements)
-        fail("the model's " + std::to_string(model.morph_deltas.size()) +
-             " morph deltas exceed the device's texel buffer limit of " +
-             std::to_string(context.properties.limits.maxTexelBufferElements / 2));
-    deltas_ = upload(context, pack_morph_deltas(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    deltas_view_ = gpu::create_texel_view(context, deltas_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
-    const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);
-    if (palette_texels > context.properties.limits.maxTexelBufferElements)
-        fail("the model's " + std::to_string(palette_slots_) + " palette matrices exceed the device's texel buffer limit of " +
-             std::to_string(context.properties.limits.maxTexelBufferElements / 3));
-    palette_ = gpu::Buffer(context, palette_texels * sizeof(glm::vec4),
-                           VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
-    palette_view_ = gpu::create_texel_view(context, palette_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
-    weights_ = gpu::Buffer(context, std::max(morph_weights_, 1u) * sizeof(float), per_frame, gpu::MemoryUse::DeviceLocal);
-    const VkDeviceSize output_bytes = std::max(vertex_count_, 1u) * 3 * sizeof(float);
-    positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
-    normals_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
+    try {
+        // The vertices, the morph deltas and the palette are texel buffers: a software GPU fetches a texel's
+        // four words in one gather, where it loads a storage buffer's members one lane at a time (reading the
+        // vertices as texels took the bench cylinder's deformation from 6.2-6.4 to 3.4-5.1 ms on a busy
+        // machine; docs/animation.md).
+        const uint64_t vertex_texels = uint64_t(kDeformVertexTexels) * std::max(vertex_count_, 1u);
+        if (vertex_texels > context.properties.limits.maxTexelBufferElements)
+            fail("the model's " + std::to_string(vertex_count_) + " skinned vertices exceed the device's texel buffer limit of " +
+                 std::to_string(context.properties.limits.maxTexelBufferElements / kDeformVertexTexels));
+        vertices_ = upload(context, pack_deform_vertices(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+        vertices_view_ = gpu::create_texel_view(context, vertices_.handle(), VK_FORMAT_R32G32B32A32_UINT);
+        if (2 * model.morph_deltas.size() > context.properties.limits.maxTexelBufferElements)
+            fail("the model's " + std::to_string(model.morph_deltas.size()) +
+                 " morph deltas exceed the device's texel buffer limit of " +
+                 std::to_string(context.properties.limits.maxTexelBufferElements / 2));
+        deltas_ = upload(context, pack_morph_deltas(model), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+        deltas_view_ = gpu::create_texel_view(context, deltas_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
+        const VkBufferUsageFlags per_frame = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        const uint64_t palette_texels = 3ull * std::max(palette_slots_, 1u);
+        if (palette_texels > context.properties.limits.maxTexelBufferElements)
+            fail("the model's " + std::to_string(palette_slots_) + " palette matrices exceed the device's texel buffer limit of " +
+                 std::to_string(context.properties.limits.maxTexelBufferElements / 3));
+        palette_ = gpu::Buffer(context, palette_texels * sizeof(glm::vec4),
+                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
+        palette_view_ = gpu::create_texel_view(context, palette_.handle(), VK_FORMAT_R32G32B32A32_SFLOAT);
+        weights_ = gpu::Buffer(context, std::max(morph_weights_, 1u) * sizeof(float), per_frame, gpu::MemoryUse::DeviceLocal);
+        const VkDeviceSize output_bytes = std::max(vertex_count_, 1u) * 3 * sizeof(float);
+        positions_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
+        normals_ = gpu::Buffer(context, output_bytes, kOutputUsage, gpu::MemoryUse::DeviceLocal);
 
-    set_layout_ = gpu::create_set_layout(context, kDeformBindings, VK_SHADER_STAGE_COMPUTE_BIT);
-    pipeline_layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::DeformPush));
-    gpu::Specialization influences;
-    influences.constants.push_back({gpu::kSpecDeformInfluences, most_used_influences(model)});
-    pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_, influences);
+        set_layout_ = gpu::create_set_layout(context, kDeformBindings, VK_SHADER_STAGE_COMPUTE_BIT);
+        pipeline_layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::DeformPush));
+        gpu::Specialization influences;
+        influences.constants.push_back({gpu::kSpecDeformInfluences, most_used_influences(model)});
+        pipeline_ = gpu::create_compute_pipeline(context, "deform.comp", pipeline_layout_, influences);
 
-    pool_ = gpu::create_pool(context, kDeformBindings, 1);
-    set_ = gpu::allocate_set(context, pool_, set_layout_);
-    write_descriptors(positions_.handle(), normals_.handle());
+        pool_ = gpu::create_pool(context, kDeformBindings, 1);
+        set_ = gpu::allocate_set(context, pool_, set_layout_);
+        write_descriptors(positions_.handle(), normals_.handle());
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-GpuDeformer::~GpuDeformer() {
+GpuDeformer::~GpuDeformer() { release(); }
+
+void GpuDeformer::release() {
     const VkDevice device = context_.device;
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
     if (palette_view_) vkDestroyBufferView(device, palette_view_, nullptr);

@@ -46,6 +46,8 @@ public:
     uint32_t vertex_count() const { return vertex_count_; }
 
 private:
+    // What the constructor made, destroyed; also when it throws midway (a destructor does not run then).
+    void release();
     void write_descriptors(VkBuffer positions, VkBuffer normals);
 
     const gpu::Context& context_;

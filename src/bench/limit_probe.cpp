@@ -25,29 +25,34 @@ struct ProbeConstants {  // shaders/limit_probe.vert's push constants
 
 LimitProbe::LimitProbe(const gpu::Context& context, VkExtent2D extent)
     : context_(context), extent_(extent), depth_format_(context.depth_format) {
-    color_ = gpu::Image(context, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    depth_ = gpu::Image(context, extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, depth_aspect());
-    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(ProbeConstants)};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &range;
-    VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout_));
-    gpu::GraphicsPipelineDesc desc;
-    desc.vertex_shader = "limit_probe.vert";
-    desc.fragment_shader = "limit_probe.frag";
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.depth_test = false;
-    desc.depth_write = false;
-    desc.color_format = kColorFormat;
-    pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
-    // The stipple pass's state (render/stipple_renderer.cpp): the depth test without writes, the
-    // coverage stencil, blending.
-    desc.depth_test = true;
-    desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
-    desc.stencil = gpu::CoverageStencil::Test;
-    desc.blend = true;
-    desc.depth_format = depth_format_;
-    state_pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
+    try {
+        color_ = gpu::Image(context, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+        depth_ = gpu::Image(context, extent, depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, depth_aspect());
+        VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(ProbeConstants)};
+        VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        layout_info.pushConstantRangeCount = 1;
+        layout_info.pPushConstantRanges = &range;
+        VK_CHECK(vkCreatePipelineLayout(context.device, &layout_info, nullptr, &layout_));
+        gpu::GraphicsPipelineDesc desc;
+        desc.vertex_shader = "limit_probe.vert";
+        desc.fragment_shader = "limit_probe.frag";
+        desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+        desc.depth_test = false;
+        desc.depth_write = false;
+        desc.color_format = kColorFormat;
+        pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
+        // The stipple pass's state (render/stipple_renderer.cpp): the depth test without writes, the
+        // coverage stencil, blending.
+        desc.depth_test = true;
+        desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+        desc.stencil = gpu::CoverageStencil::Test;
+        desc.blend = true;
+        desc.depth_format = depth_format_;
+        state_pipeline_ = gpu::create_graphics_pipeline(context, desc, layout_);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
 VkImageAspectFlags LimitProbe::depth_aspect() const {
@@ -55,7 +60,9 @@ VkImageAspectFlags LimitProbe::depth_aspect() const {
                                                   : VK_IMAGE_ASPECT_DEPTH_BIT;
 }
 
-LimitProbe::~LimitProbe() {
+LimitProbe::~LimitProbe() { release(); }
+
+void LimitProbe::release() {
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (state_pipeline_) vkDestroyPipeline(context_.device, state_pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);

@@ -34,6 +34,8 @@ public:
     double frame(uint64_t culled, uint64_t drawn, uint64_t footprint_pixels, float point_size, bool with_state = false);
 
 private:
+    // What the constructor made, destroyed; also when it throws midway (a destructor does not run then).
+    void release();
     VkImageAspectFlags depth_aspect() const;
     double frame_ms(uint32_t total, uint32_t drawn, float side, float point_size, bool with_state);
 

@@ -62,14 +62,21 @@ static_assert(gpu::kBindingPolygonPositions == 0 && gpu::kBindingPolygonIndices 
 }  // namespace
 
 DeformPass::DeformPass(const gpu::Context& context, bool vec3_texels) : context_(context), vec3_texels_(vec3_texels) {
-    set_layout_ = gpu::create_set_layout(context, kPolygonBindings, VK_SHADER_STAGE_COMPUTE_BIT);
-    layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
-    gpu::Specialization texels;
-    texels.constants.push_back({gpu::kSpecPolygonVec3Texels, vec3_texels_ ? 1u : 0u});
-    pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout_, texels);
+    try {
+        set_layout_ = gpu::create_set_layout(context, kPolygonBindings, VK_SHADER_STAGE_COMPUTE_BIT);
+        layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
+        gpu::Specialization texels;
+        texels.constants.push_back({gpu::kSpecPolygonVec3Texels, vec3_texels_ ? 1u : 0u});
+        pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout_, texels);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-DeformPass::~DeformPass() {
+DeformPass::~DeformPass() { release(); }
+
+void DeformPass::release() {
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(context_.device, set_layout_, nullptr);

@@ -84,6 +84,8 @@ public:
     void record_polygons(VkCommandBuffer cb, std::span<const std::unique_ptr<ObjectGpu>> objects) const;
 
 private:
+    // What the constructor made, destroyed; also when it throws midway (a destructor does not run then).
+    void release();
     void bind(ObjectGpu& object) const;
 
     const gpu::Context& context_;

@@ -24,13 +24,20 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       color_format_(color_format),
       depth_format_(depth_format),
       timer_(context) {
-    layouts_ = create_render_layouts(context);
-    create_pipelines(color_format, depth_format);
-    deform_pass_ = std::make_unique<DeformPass>(context, mesh_vec3_texels());
-    frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+    try {
+        layouts_ = create_render_layouts(context);
+        create_pipelines(color_format, depth_format);
+        deform_pass_ = std::make_unique<DeformPass>(context, mesh_vec3_texels());
+        frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-StippleRenderer::~StippleRenderer() {
+StippleRenderer::~StippleRenderer() { release(); }
+
+void StippleRenderer::release() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     deform_pass_.reset();
