@@ -152,20 +152,23 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
     }
 }
 
-// STIPPLE_VALIDATION is 1 or 0: "yes" or "off" read as on (anything but "0") and hid a typo.
-TEST(CliRender, TheValidationSettingIsOneOrZero) {
+// STIPPLE_VALIDATION and STIPPLE_NO_CACHE are 1 or 0: "yes" or "off" read as set (anything but "0") and
+// hid a typo.
+TEST(CliRender, OnOffSettingsAreOneOrZero) {
     const auto out = test::temp_dir("cli-validation-env") / "never.png";
-    const char* before = std::getenv("STIPPLE_VALIDATION");
-    const std::string saved = before ? before : "";
-    for (const char* bad : {"yes", "off", "2"}) {
-        ::setenv("STIPPLE_VALIDATION", bad, 1);
-        const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
-        EXPECT_EQ(e.exit_code, 1) << bad;
-        EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
-        EXPECT_NE(e.err.find(std::string("STIPPLE_VALIDATION=") + bad + " must be 1"), std::string::npos) << e.err;
+    for (const char* setting : {"STIPPLE_VALIDATION", "STIPPLE_NO_CACHE"}) {
+        const char* before = std::getenv(setting);
+        const std::string saved = before ? before : "";
+        for (const char* bad : {"yes", "off", "2"}) {
+            ::setenv(setting, bad, 1);
+            const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+            EXPECT_EQ(e.exit_code, 1) << setting << "=" << bad;
+            EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+            EXPECT_NE(e.err.find(std::string(setting) + "=" + bad + " must be 1"), std::string::npos) << e.err;
+        }
+        if (before) ::setenv(setting, saved.c_str(), 1);
+        else ::unsetenv(setting);
     }
-    if (before) ::setenv("STIPPLE_VALIDATION", saved.c_str(), 1);
-    else ::unsetenv("STIPPLE_VALIDATION");
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
@@ -259,6 +262,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", ""}, "the output is named by its extension"},
         {{"render", "-o", "same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "-o", "./same.png", "--mask", "same.png"}, "is the image's own path"},
+        {{"render", "-o", "fq/%d.png", "--mask", "fq/%01d.png", "--frames", "2"}, "is the image's own path"},
+        {{"render", "-o", "fq/%d.png", "--mask", "fq/%02d.png", "--frames", "11", "--orbit", "30"}, "names the same file as -o fq/%d.png for frame 10"},
         {{"render", "--mask", "m.svg"}, "--mask m.svg"},
         {{"tone", "--images", ""}, "--images needs a folder"},
         {{"tone", "--images", "/etc/passwd"}, "--images /etc/passwd is not a folder"},

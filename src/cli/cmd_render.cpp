@@ -54,6 +54,13 @@ void reject_object_options_with_scene(const Args& args, const std::string& scene
     if (!name.empty()) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
 }
 
+// The same file however it is named (relative, absolute, through a link).
+bool same_file(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(a), ec) ==
+           std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec);
+}
+
 // A single frame keeps -o as written unless it holds a frame number (a name may contain '%').
 std::string output_path(const std::string& pattern, size_t index, bool sequence) {
     if (sequence) return frame_path(pattern, index);
@@ -134,11 +141,10 @@ int run_render(const std::vector<std::string>& argv) {
     if (args.has("--mask")) {
         const std::string mask = args.get("--mask", "");
         if (!plot::is_png_path(mask)) fail("--mask " + mask + ": the coverage mask is a PNG (.png)");
-        // The same file however it is named (relative, absolute, through a link).
-        std::error_code ec;
-        const auto mask_file = std::filesystem::weakly_canonical(std::filesystem::absolute(mask), ec);
-        const auto image_file = std::filesystem::weakly_canonical(std::filesystem::absolute(output), ec);
-        if (mask_file == image_file) fail("--mask " + mask + " is the image's own path (-o): give it another");
+        // The same file however it is named (relative, absolute, through a link), and for frame sequences
+        // however the number is written (%d and %01d); the last frame is checked once the frames are known.
+        if (same_file(output_path(mask, 0, false), output_path(output, 0, false)))
+            fail("--mask " + mask + " is the image's own path (-o): give it another");
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
@@ -205,6 +211,12 @@ int run_render(const std::vector<std::string>& argv) {
              " frames: use a pattern such as frames/%04d.png");
     if (sequence && args.has("--mask") && !has_frame_number(args.get("--mask", "")))
         fail("--mask " + args.get("--mask", "") + " has no frame number: use a pattern such as masks/%04d.png");
+    // Two frame patterns that name the same file for some frame (%d and %02d from frame 10 on) do so for
+    // the last one too: a wider number only pads the smaller ones.
+    if (sequence && args.has("--mask") &&
+        same_file(output_path(args.get("--mask", ""), cameras.size() - 1, true), output_path(output, cameras.size() - 1, true)))
+        fail("--mask " + args.get("--mask", "") + " names the same file as -o " + output + " for frame " +
+             std::to_string(cameras.size() - 1) + ": give it another");
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 
     gpu::ContextOptions context_options;

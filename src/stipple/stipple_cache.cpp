@@ -84,8 +84,12 @@ std::filesystem::path default_stipple_cache_dir() {
 StippleCacheSettings& stipple_cache_settings() {
     static StippleCacheSettings settings = [] {
         StippleCacheSettings s;
-        const char* off = std::getenv("STIPPLE_NO_CACHE");
-        s.enabled = !(off && std::strcmp(off, "0") != 0);
+        // Strict, as STIPPLE_VALIDATION: "no" or "false" read as set (anything but "0") hid a typo.
+        if (const char* off = std::getenv("STIPPLE_NO_CACHE"); off && *off) {
+            if (std::strcmp(off, "1") != 0 && std::strcmp(off, "0") != 0)
+                fail(std::string("STIPPLE_NO_CACHE=") + off + " must be 1 (always generate) or 0 (use the cache)");
+            s.enabled = std::strcmp(off, "0") == 0;
+        }
         return s;
     }();
     return settings;
