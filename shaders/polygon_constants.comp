@@ -37,7 +37,14 @@ void main() {
     vec3 a = vertex_at(corners.x);
     vec3 b = vertex_at(corners.y);
     vec3 c = vertex_at(corners.z);
-    vec3 cross_product = cross(b - a, c - a);
+    // The CPU works in double; here the edges are divided by their largest component first, so neither
+    // the cross product nor its squared length overflows single precision (it did for edges beyond
+    // ~1e9 units: an infinite length, a zero normal). The area is that scale squared times half the
+    // scaled length, infinite only where the CPU's float area is too.
+    vec3 edge_ab = b - a, edge_ac = c - a;
+    vec3 largest = max(abs(edge_ab), abs(edge_ac));
+    float scale = max(largest.x, max(largest.y, largest.z));
+    vec3 cross_product = scale > 0.0 ? cross(edge_ab / scale, edge_ac / scale) : vec3(0.0);
     float len = length(cross_product);
     vec3 normal = len > 0.0 ? cross_product / len : vec3(0.0, 0.0, 1.0);
     vec3 center = (a + b + c) / 3.0;
@@ -48,6 +55,6 @@ void main() {
     info.center_xy = packUnorm2x16(unit.xy);
     info.center_z_selection = (packUnorm2x16(vec2(unit.z, 0.0)) & 0xFFFFu) | (infos[t].center_z_selection & 0xFFFF0000u);
     info.normal = packSnorm2x16(unit_to_octahedral(normal));
-    info.area = 0.5 * len;
+    info.area = (0.5 * len * scale) * scale;
     infos[t] = info;
 }

@@ -98,7 +98,7 @@ protected:
     std::unique_ptr<StippleRenderer> renderer(bool count_drawn = false) {
         return std::make_unique<StippleRenderer>(*context, kColorFormat, context->depth_format, RendererOptions{count_drawn});
     }
-    void check_polygon_constants(bool scalar_texels);
+    void check_polygon_constants(bool scalar_texels, float scale = 1.0f);
 };
 
 TEST_F(GpuAnimation, PolygonConstantsFollowThePose) {
@@ -111,8 +111,16 @@ TEST_F(GpuAnimation, PolygonConstantsFollowThePose) {
     }
 }
 
-void GpuAnimation::check_polygon_constants(bool scalar_texels) {
-    const std::string path = test::write_rig(anim::rigs::bending_cylinder(), "gpu_anim_constants", "cylinder");
+TEST_F(GpuAnimation, PolygonConstantsOfAHugeModel) {
+    // The root joint scaled by 1e12: edges of ~1e11 units, whose cross product's squared length overflows
+    // single precision (the pass gave an infinite area and a zero normal before it scaled the edges).
+    check_polygon_constants(false, 1e12f);
+}
+
+void GpuAnimation::check_polygon_constants(bool scalar_texels, float scale) {
+    anim::GltfBuilder rig = anim::rigs::bending_cylinder();
+    rig.doc["nodes"][1]["scale"] = {scale, scale, scale};
+    const std::string path = test::write_rig(rig, scale == 1.0f ? "gpu_anim_constants" : "gpu_anim_constants_huge", "cylinder");
     const Loaded loaded = load(path);
     ASSERT_TRUE(loaded.model.motion);
     const anim::AnimatedModel& model = *loaded.model.motion.model;
@@ -147,6 +155,7 @@ void GpuAnimation::check_polygon_constants(bool scalar_texels) {
             auto decode = [](uint32_t n) { return formulas::octahedral_to_unit(glm::unpackSnorm2x16(n)); };
             const float cosine = glm::dot(decode(gpu[i].normal), decode(cpu[i].normal));
             worst_angle = std::max(worst_angle, std::acos(std::clamp(double(cosine), -1.0, 1.0)));
+            ASSERT_TRUE(std::isfinite(gpu[i].area) && gpu[i].area > 0.0f) << "polygon " << i << " area " << gpu[i].area;
             worst_area = std::max(worst_area, std::abs(double(gpu[i].area) - cpu[i].area) / std::max(1e-12f, cpu[i].area));
             EXPECT_EQ(gpu[i].center_z_selection >> 16, created[i].center_z_selection >> 16) << "polygon " << i << " selection";
         }
