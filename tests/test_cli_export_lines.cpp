@@ -178,5 +178,26 @@ TEST(CliExportLines, ASpheresContourIsOneClosedPath) {
     EXPECT_NEAR(paths[0].length() / (M_PI * diameter), 1.0, 0.05) << "the path is not the outline's circle";
 }
 
+// The Raskar-Cohen silhouette (§3.1) is drawn in image space, wide back-face edges under the surface, so
+// it has no visible pieces of its own; vector output draws the outline it traces, the contour. Before,
+// `--silhouette-lines -o x.svg` gave an SVG without a line.
+TEST(CliExportLines, SilhouetteLinesExportAsTheOutline) {
+    const Mesh sphere = make_icosphere(4);
+    const std::vector<std::string> view = {"--yaw", "20", "--pitch", "10"};
+    auto with = [&](std::vector<std::string> options) {
+        options.insert(options.end(), view.begin(), view.end());
+        return options;
+    };
+    const std::vector<Path> contour = render_lines("sphere-contour", sphere, with({"--contours"}));
+    const std::vector<Path> silhouette = render_lines("sphere-silhouette", sphere, with({"--silhouette-lines"}));
+    const std::vector<Path> both = render_lines("sphere-both", sphere, with({"--silhouette-lines", "--contours"}));
+    ASSERT_EQ(contour.size(), 1u);
+    ASSERT_EQ(silhouette.size(), 1u) << "the silhouette is not the outline's one path";
+    EXPECT_TRUE(silhouette[0].closed);
+    EXPECT_NEAR(silhouette[0].length(), contour[0].length(), 1e-3 * contour[0].length());
+    ASSERT_EQ(both.size(), 1u) << "asked for both, the outline must still be drawn once";
+    EXPECT_LT(worst_overlap(both), 0.5);
+}
+
 }  // namespace
 }  // namespace stipple

@@ -76,7 +76,8 @@ Vector and print output (render):
   -o x.svg | x.pdf | x.csv
                           the stipples the frame draws (after density, hidden-stipple removal, toon
                           fade) as dots, and its visible lines, on a page in mm, ordered for pen
-                          plotters; layers per object and kind (see docs/plot-export.md)
+                          plotters; layers per object and kind (see docs/plot-export.md); the
+                          image-space --silhouette-lines become the outline they trace (the contours)
   --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
                           (WxHmm: 10 mm to 10 m a side; default A4)
   --margin MM             white border around the drawing (default 10)
