@@ -110,7 +110,8 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --verbose               print the device and every swapchain (re)creation
   --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
-                          scene key), screenshot PATH, quit
+                          scene key), screenshot PATH (.png), export PATH (.svg, .pdf or .csv, as
+                          render -o writes them), quit
   --frame-log FILE        write one line per presented frame: milliseconds since the start
                           and 1 while background work (new stipples, a model) runs, else 0
 
