@@ -4,6 +4,11 @@
 // list. For objects that draw lines (kFlagFacingBits) it also records which polygons face away, one bit each, so that the
 // line pass reads two bits per edge instead of evaluating both polygons again; the kFacingOnly variant
 // does only that (for objects whose densities come from the CPU).
+// The kGradientPass variant runs after it, over the polygons it listed as large on screen (their density
+// changes across them, stipple_density_here): it writes the bounds of that density and, with
+// kListDrawn, their work items. lavapipe runs both sides of a branch under a mask, so the bounds'
+// code in this pass cost every polygon (the 871k-triangle dragon's pass 36-52 ms, 21-30 without it),
+// where a few hundred need it.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -17,6 +22,7 @@ layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
 layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
 layout(constant_id = kSpecFacingBits) const bool kFacingBits = false;
+layout(constant_id = kSpecGradientPass) const bool kGradientPass = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -30,6 +36,10 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     uint drawn_polygons[];
 };
 layout(set = 0, binding = kBindingFacing, std430) buffer Facing { uint facing_away[]; };
+layout(set = 0, binding = kBindingGradientPolygons, std430) buffer GradientList {
+    DrawnPolygons gradient;  // its dispatch (groups of kDensityWorkgroupSize) and count
+    uint gradient_polygons[];
+};
 
 // The subgroup's facing bits from one ballot, or-ed into the words the renderer cleared before the pass:
 // an atomic per subgroup and word, and no barrier (a shader with barriers costs lavapipe a quarter of
@@ -45,16 +55,76 @@ void write_facing_bits(bool in_range, PolygonView p) {
         if (bits[k] != 0u) atomicOr(facing_away[(first >> 5u) + k], bits[k] << (first & 31u));
 }
 
+// How many workgroups of kDensityWorkgroupSize start in slots [base, base + n) of a list.
+uint groups_starting_in(uint base, uint n) {
+    const uint group = kDensityWorkgroupSize;
+    return (base + n + group - 1u) / group - (base + group - 1u) / group;
+}
+
 // n consecutive slots of the work list; the splat's dispatch gains the workgroups that start in them.
 uint claim_slots(uint n) {
-    const uint group = kDensityWorkgroupSize;
     uint base = atomicAdd(drawn.count, n);
-    uint starts = (base + n + group - 1u) / group - (base + group - 1u) / group;
+    uint starts = groups_starting_in(base, n);
     if (starts > 0u) atomicAdd(drawn.groups_x, starts);
     return base;
 }
 
+// Lists the subgroup's polygons that are large on screen for the gradient pass: one atomic add per
+// subgroup that has any. Called by every invocation of the subgroup.
+void list_gradient(bool large, uint t) {
+    uvec4 ballot = subgroupBallot(large);
+    uint listed = subgroupBallotBitCount(ballot);
+    if (listed == 0u) return;
+    uint base = 0u;
+    if (subgroupElect()) {
+        base = atomicAdd(gradient.count, listed);
+        uint starts = groups_starting_in(base, listed);
+        if (starts > 0u) atomicAdd(gradient.groups_x, starts);
+    }
+    base = subgroupBroadcastFirst(base);
+    if (large) gradient_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = t;
+}
+
+// The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons), up to the most
+// density any of its stipples sees. One atomic add per subgroup hands out the slots of all its polygons'
+// items, each polygon's consecutive (a prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each
+// range adds the workgroups of the splat's dispatch that start in it. Called by every invocation of the
+// subgroup (listing nothing where `listing` is false).
+void list_work_items(bool listing, uint first, float candidates, float density, float most) {
+    uint drawn_here = listing ? drawn_stipple_count(most, uint(candidates)) : 0u;
+    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
+    uint items = (drawn_here + run - 1u) / run;
+    uint listed_here = subgroupAdd(items);
+    if (listed_here == 0u) return;
+    uint base = 0u;
+    if (subgroupElect()) base = claim_slots(listed_here);
+    base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(items);
+    for (uint i = 0u; i < items; ++i) drawn_polygons[base + i] = first + i * run;
+}
+
+// The gradient pass: a polygon the density pass listed as large on screen gets the bounds of the density
+// across it (below the least every stipple is whole; lists and work items run to the most).
+void gradient_main() {
+    uint k = gl_GlobalInvocationID.x;
+    if (k >= gradient.count) return;
+    uint t = gradient_polygons[k];
+    TriangleDraw draw = triangle_draw(t);
+    float candidates = float(polygon_candidates(t, draw.first_stipple, object.flags));
+    DensityParams q = density_params(frame, object);
+    q.flags = object.flags[unfoldable_zero()];
+    vec3 a, b, c;
+    view_corners(t, object.model_view, a, b, c);
+    vec2 bounds = polygon_density_bounds(draw.density, a, b, c, q);
+    draws[t].least = bounds.x;
+    draws[t].most = bounds.y;
+    if (kListDrawn) list_work_items(true, draw.first_stipple, candidates, draw.density, bounds.y);
+}
+
 void main() {
+    if (kGradientPass) {
+        gradient_main();
+        return;
+    }
     uint t = gl_GlobalInvocationID.x;
     uint flags = object.flags[unfoldable_zero()];  // object.flags.x, see uniform_branch.h
     bool in_range = t < object.flags.y;
@@ -78,29 +148,12 @@ void main() {
     DensityParams q = density_params(frame, object);
     q.flags = flags;
     float density = polygon_density(p, q);
-    // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here): the
-    // bounds of that density over it. Only those read their corners.
-    vec2 bounds = vec2(density);
-    if (may_carry_gradient(p, q, density)) {
-        vec3 a, b, c;
-        view_corners(t, object.model_view, a, b, c);
-        bounds = polygon_density_bounds(density, a, b, c, q);
-    }
+    // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here):
+    // the gradient pass writes the bounds of that density over it, and lists its work items after them.
+    bool large = may_carry_gradient(p, q, density);
+    list_gradient(large, t);
     draws[t].density = density;
-    draws[t].least = bounds.x;
-    draws[t].most = bounds.y;
-    if (!kListDrawn) return;
-    // The polygon's work items: runs of splat_run_length drawn stipples (see DrawnPolygons). One atomic
-    // add per subgroup hands out the slots of all its polygons' items, each polygon's consecutive (a
-    // prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each range adds the workgroups of
-    // the splat's dispatch that start in it.
-    uint drawn_here = drawn_stipple_count(bounds.y, uint(candidates));
-    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
-    uint items = (drawn_here + run - 1u) / run;
-    uint listed_here = subgroupAdd(items);
-    if (listed_here == 0u) return;
-    uint base = 0u;
-    if (subgroupElect()) base = claim_slots(listed_here);
-    base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(items);
-    for (uint i = 0u; i < items; ++i) drawn_polygons[base + i] = first + i * run;
+    draws[t].least = density;
+    draws[t].most = density;
+    if (kListDrawn) list_work_items(!large, first, candidates, density, density);
 }

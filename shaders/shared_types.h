@@ -72,6 +72,9 @@ STIPPLE_CONST uint kSpecWholeDot = 5;
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 // density.comp: the variant that writes the facing bits (objects with lines); the others skip its ballot.
 STIPPLE_CONST uint kSpecFacingBits = 2;
+// density.comp: the gradient pass, over the polygons the density pass listed as large on screen
+// (kBindingGradientPolygons): the bounds of the density across each, and their work items.
+STIPPLE_CONST uint kSpecGradientPass = 4;
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -104,6 +107,9 @@ STIPPLE_CONST uint kBindingTriangleInfoTexels = 18;
 // DepthTriangles header + uint[] (storage, also the index and indirect buffer of the depth pass): the
 // triangles that can cover a pixel centre this frame (depth_triangles.comp), when the object culls them
 STIPPLE_CONST uint kBindingDepthTriangles = 19;
+// DrawnPolygons header (its dispatch and count) + uint[] (storage): the polygons the density pass found
+// large on screen this frame, for its gradient pass (density.comp, kSpecGradientPass)
+STIPPLE_CONST uint kBindingGradientPolygons = 20;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.

@@ -175,16 +175,20 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
         return s;
     };
     const VkDeviceSize placeholder = kPathBufferPlaceholderBytes;
+    // Every path that computes the densities on the GPU lists the polygons large on screen for the
+    // density's gradient pass: a header, then room for every polygon.
+    const VkDeviceSize gradient = 16 + 4 * VkDeviceSize(object.geometry.triangle_count);
     target.draw(renderer, view);
-    EXPECT_EQ(sizes(), std::vector<VkDeviceSize>(std::size(kPathBuffers), placeholder)) << "the vertex path needs none";
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{placeholder, placeholder, placeholder, gradient}))
+        << "the vertex path needs only the gradient pass's list";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
     // The work list: a header, then at most one item per polygon and one per kSplatShortRun candidates.
     const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatShortRun;
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder}));
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder, gradient}));
 
     // With the splat path, what the object costs on the GPU per candidate: 9 bytes per candidate
-    // (the stipple and its share of the work list) and 36 per polygon besides the mesh, so at most 19
+    // (the stipple and its share of the work list) and 40 per polygon besides the mesh, so at most 19
     // where candidates outnumber polygons ~4 to 1.
     VkDeviceSize bytes = object.geometry.positions.size() + object.geometry.normals.size() + object.geometry.indices.size() +
                          object.geometry.stipples.size() + object.polygons.gpu.size() + object.frame.triangle_draw.size() +
@@ -202,7 +206,7 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     renderer.params(0).density_path = DensityPath::Indirect;
     target.draw(renderer, view);
     const VkDeviceSize survivors = 16 + 4 * VkDeviceSize(object.geometry.stipple_count);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, survivors}));
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, survivors, gradient}));
 }
 
 // A 12-triangle box: a few thousand drawn stipples per polygon when framed, far more than one splat

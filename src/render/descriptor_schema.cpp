@@ -40,6 +40,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingTriangleDrawTexels, kTexels}, [](const O& o) { return o.frame.triangle_draw.handle(); },
      [](const O& o) { return o.frame.triangle_draw_texels; }},
     {{gpu::kBindingDepthTriangles, kStorage}, [](const O& o) { return o.frame.depth_triangles.handle(); }},
+    {{gpu::kBindingGradientPolygons, kStorage}, [](const O& o) { return o.frame.gradient_polygons.handle(); }},
     {{gpu::kBindingTriangleInfoTexels, kTexels}, [](const O& o) { return o.polygons.gpu.handle(); },
      [](const O& o) { return o.polygons.texels; }},
 };

@@ -75,6 +75,7 @@ struct ObjectFrame {
     gpu::Buffer drawn_polygons;    // splat paths: DrawnPolygons header + the work items drawing this frame
     gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU
     gpu::Buffer drawn_stipples;    // indirect and cpu paths: DrawCommand + the stipples drawing this frame
+    gpu::Buffer gradient_polygons;  // GPU density paths: DrawnPolygons header + the polygons large on screen
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
     // DepthTriangles header + the triangles the depth pass draws this frame (render/depth_triangles.hpp),
     // full size once the object first lists them

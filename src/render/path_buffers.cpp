@@ -12,6 +12,7 @@ const char* path_buffer_name(PathBuffer kind) {
     switch (kind) {
         case PathBuffer::DrawnPolygons: return "drawn_polygons";
         case PathBuffer::DrawStaging: return "draw_staging";
+        case PathBuffer::GradientPolygons: return "gradient_polygons";
         case PathBuffer::DrawnStipples: break;
     }
     return "drawn_stipples";
@@ -21,6 +22,7 @@ Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind) {
     switch (kind) {
         case PathBuffer::DrawnPolygons: return frame.drawn_polygons;
         case PathBuffer::DrawStaging: return frame.draw_staging;
+        case PathBuffer::GradientPolygons: return frame.gradient_polygons;
         case PathBuffer::DrawnStipples: break;
     }
     return frame.drawn_stipples;
@@ -45,6 +47,9 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
             if (path == DensityPath::Cpu) return staged_list_offset(object) + survivors;
             return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
         case PathBuffer::DrawnStipples: return lists_survivors ? survivors : 0;
+        // The density pass's list of polygons large on screen (every polygon at most) for its gradient pass.
+        case PathBuffer::GradientPolygons:
+            return density_on_cpu(path) ? 0 : sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;
     }
     return 0;
 }
@@ -56,7 +61,8 @@ Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSi
     switch (kind) {
         case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
         case PathBuffer::DrawnPolygons:
-        case PathBuffer::DrawnStipples: break;
+        case PathBuffer::DrawnStipples:
+        case PathBuffer::GradientPolygons: break;
     }
     // Written by a compute pass or copied from the staging buffer, read as indirect arguments.
     return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);

@@ -14,9 +14,9 @@ struct ObjectFrame;
 
 inline constexpr VkDeviceSize kPathBufferPlaceholderBytes = 32;
 
-enum class PathBuffer { DrawnPolygons, DrawStaging, DrawnStipples };
+enum class PathBuffer { DrawnPolygons, DrawStaging, DrawnStipples, GradientPolygons };
 inline constexpr PathBuffer kPathBuffers[] = {PathBuffer::DrawnPolygons, PathBuffer::DrawStaging,
-                                              PathBuffer::DrawnStipples};
+                                              PathBuffer::DrawnStipples, PathBuffer::GradientPolygons};
 
 const char* path_buffer_name(PathBuffer kind);
 gpu::Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind);

@@ -44,7 +44,8 @@ void StippleRenderer::release() {
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipelines_[0], stipple_pipelines_[1],
                          stipple_list_pipelines_[0], stipple_list_pipelines_[1],
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
-                         density_list_pipelines_[1], facing_pipeline_, drawn_stipples_pipeline_, toon_pipeline_,
+                         density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], facing_pipeline_,
+                         drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
                          line_pieces_pipeline_, depth_triangles_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
                          splat_pipelines_[2], splat_pipelines_[3]})
@@ -117,6 +118,10 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     }
+    for (uint32_t list : {0u, 1u})
+        gradient_pipelines_[list] = gpu::create_compute_pipeline(
+            context_, "density.comp", layouts_.pipeline,
+            {{{gpu::kSpecGradientPass, 1u}, {gpu::kSpecListDrawn, list}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                     {{{gpu::kSpecFacingOnly, 1u}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     create_line_pipelines(depth);
@@ -274,10 +279,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
             any_indirect = true;
         }
-        if (lists_work_items(*object)) {  // an empty list: no groups yet (y and z are 1)
-            const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};
+        const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};  // an empty list: no groups yet (y and z are 1)
+        if (lists_work_items(*object))
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
-        }
+        vkCmdUpdateBuffer(cb, object->frame.gradient_polygons.handle(), 0, sizeof empty, &empty);
     }
     if (any_pass || any_facing) {
         // After the copies and fills above, also for the facing-only variant: it binds the densities the
@@ -295,6 +300,21 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             }
             else if (draws_edge_lines(*object))
                 dispatch(*object, facing_pipeline_);  // the lines' facing bits
+        }
+    }
+    // The gradient pass over the polygons each density pass listed as large on screen (density.comp): the
+    // bounds of the density across them and, for the paths that list work items, theirs.
+    if (any_pass) {
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        for (auto& object : objects_) {
+            if (object->geometry.triangle_count == 0 || density_on_cpu(object->params.density_path)) continue;
+            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, gradient_pipelines_[lists_work_items(*object) ? 1 : 0]);
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
+                                    nullptr);
+            vkCmdDispatchIndirect(cb, object->frame.gradient_polygons.handle(), 0);
         }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written (read through

@@ -192,6 +192,8 @@ private:
     // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
     VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
+    // The density pass's gradient pass over the polygons large on screen: [1] also lists their work items.
+    VkPipeline gradient_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
