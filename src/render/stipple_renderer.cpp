@@ -241,11 +241,19 @@ bool StippleRenderer::draws_points(const ObjectGpu& object) const {
 
 void StippleRenderer::record_density(VkCommandBuffer cb) {
     const uint32_t group = gpu::kDensityWorkgroupSize;
-    auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
+    auto bind = [&](const ObjectGpu& object, VkPipeline pipeline) {
         vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object.set, 0,
                                 nullptr);
+    };
+    auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
+        bind(object, pipeline);
         vkCmdDispatch(cb, (object.geometry.triangle_count + group - 1) / group, 1, 1);
+    };
+    // Over a list a pass wrote, whose header is the dispatch (DrawnPolygons).
+    auto dispatch_over = [&](const ObjectGpu& object, VkPipeline pipeline, const gpu::Buffer& list) {
+        bind(object, pipeline);
+        vkCmdDispatchIndirect(cb, list.handle(), 0);
     };
     // Densities: the compute pass (vertex, indirect and splat paths) or the CPU's upload; clears first.
     bool any_indirect = false;
@@ -311,10 +319,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0 || density_on_cpu(object->params.density_path)) continue;
-            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, gradient_pipelines_[lists_work_items(*object) ? 1 : 0]);
-            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
-                                    nullptr);
-            vkCmdDispatchIndirect(cb, object->frame.gradient_polygons.handle(), 0);
+            dispatch_over(*object, gradient_pipelines_[lists_work_items(*object) ? 1 : 0], object->frame.gradient_polygons);
         }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written (read through
@@ -329,10 +334,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0 || object->params.density_path != DensityPath::Indirect) continue;
-            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, drawn_stipples_pipeline_);
-            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
-                                    nullptr);
-            vkCmdDispatchIndirect(cb, object->frame.drawn_polygons.handle(), 0);
+            dispatch_over(*object, drawn_stipples_pipeline_, object->frame.drawn_polygons);
         }
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
