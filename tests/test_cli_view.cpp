@@ -33,6 +33,10 @@
 #include "support/anim_files.hpp"
 #include "support/test_paths.hpp"
 
+// Last: X11's headers define None, Bool, Status...
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+
 namespace stipple {
 namespace {
 
@@ -192,6 +196,7 @@ public:
                !window_.empty();
     }
     const std::string& window() const { return window_; }
+    const std::string& display() const { return display_; }
 
     // Presses S and waits for the viewer to report the PNG it wrote.
     std::string screenshot() {
@@ -487,6 +492,76 @@ TEST(CliView, ExportsTheViewAsSvg) {
     EXPECT_EQ(width_view, "210mm");  // A4 portrait, the CLI's default page
     EXPECT_GT(view_dots, 500u);
     EXPECT_EQ(view_dots, render_dots) << "the viewer exported another frame than render draws";
+}
+
+// The pixels an X11 window shows now (what the server holds, not what the viewer drew), as RGBA, or an
+// empty image where the window cannot be read.
+Image grab_window(const std::string& display, const std::string& window, int width, int height) {
+    Image grabbed;
+    Display* x = XOpenDisplay(display.c_str());
+    if (!x) return grabbed;
+    XImage* image = XGetImage(x, ::Window(std::stoul(window)), 0, 0, unsigned(width), unsigned(height), AllPlanes, ZPixmap);
+    if (image) {
+        grabbed.width = width, grabbed.height = height, grabbed.channels = 4;
+        grabbed.pixels.resize(size_t(width) * height * 4);
+        for (int y = 0; y < height; ++y)
+            for (int x_ = 0; x_ < width; ++x_) {
+                const unsigned long p = XGetPixel(image, x_, y);  // 24-bit true colour: 0xRRGGBB
+                uint8_t* rgba = &grabbed.pixels[4 * (size_t(y) * width + x_)];
+                rgba[0] = uint8_t(p >> 16), rgba[1] = uint8_t(p >> 8), rgba[2] = uint8_t(p), rgba[3] = 255;
+            }
+        XDestroyImage(image);
+    }
+    XCloseDisplay(x);
+    return grabbed;
+}
+
+// Frames reach the window both ways: through X11 shared memory (the default on lavapipe, where Xvfb has
+// no DRI3 and the swapchain would write each frame into the X socket) and through Vulkan's swapchain. What
+// the X server shows is the frame the viewer drew (its screenshot), pixel for pixel: coloured paper and
+// ink (channels in the wrong order would show), and a width whose rows a linear image pads (the shared
+// images then have no words for the splat, and their rows are copied one by one).
+TEST(CliView, TheWindowShowsTheFrameThroughSharedMemoryAndTheSwapchain) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-present");
+    const std::string cache = (dir / "cache").string();
+    write_ply_binary((dir / "sphere.ply").string(), make_uv_sphere(4000));
+    std::ofstream(dir / "scene.json") << R"({"objects": [{"model": "sphere.ply"}], "paper": [1, 0.85, 0.6],
+                                             "ink": [0.1, 0.2, 0.7]})";
+    constexpr int kWidth = 333, kHeight = 256;
+    for (const std::string present : {"auto", "swapchain"}) {
+        SCOPED_TRACE("--present " + present);
+        const std::string shot = (dir / ("shot-" + present + ".png")).string();
+        std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot " + shot + "\nwait 5\nquit\n";
+        ViewerSession session(dir);
+        ASSERT_TRUE(session.start_x(140)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+        session.start_viewer({(dir / "scene.json").string(), "--width", std::to_string(kWidth), "--height",
+                              std::to_string(kHeight), "--no-panel", "--present", present, "--verbose", "--script",
+                              (dir / "script.txt").string(), "--cache-dir", cache});
+        ASSERT_TRUE(session.find_window()) << session.out() << session.err();
+        ASSERT_TRUE(wait_for([&] { return session.out().find("screenshot: " + shot) != std::string::npos; }, 120s))
+            << session.out() << session.err();
+        std::this_thread::sleep_for(1s);  // frames keep coming: the window shows one drawn after the screenshot
+        const Image shown = grab_window(session.display(), session.window(), kWidth, kHeight);
+        ASSERT_EQ(session.viewer().wait_exit(60s), 0) << session.out() << session.err();
+        // auto takes shared memory on lavapipe (the tests' device) under Xvfb; swapchain does not.
+        EXPECT_EQ(session.out().find("X11 shared memory") != std::string::npos, present == "auto") << session.out();
+        ASSERT_EQ(shown.width, kWidth) << "could not read the window back";
+        const Image drawn = read_png(shot);
+        ASSERT_EQ(drawn.width, kWidth);
+        ASSERT_GE(drawn.channels, 3);
+        EXPECT_EQ(int(drawn.pixels[0]), 255) << "the paper's red";
+        EXPECT_NEAR(int(drawn.pixels[2]), 153, 1) << "the paper's blue";
+        size_t differing = 0;
+        for (size_t p = 0; p < size_t(kWidth * kHeight); ++p)
+            for (int c = 0; c < 3; ++c)
+                differing += std::abs(int(shown.pixels[4 * p + c]) - int(drawn.pixels[drawn.channels * p + c])) > 2;
+        std::printf("--present %s: %zu ink pixels shown, %zu drawn, %zu channel values differ\n", present.c_str(),
+                    ink_pixels(shown), ink_pixels(drawn), differing);
+        EXPECT_GT(ink_pixels(shown), 200u) << "the window shows no stipples";
+        EXPECT_LE(double(differing), 0.001 * 3 * kWidth * kHeight) << "the window shows another image";
+    }
 }
 
 // A script's export line names a vector file; anything else is refused before the window opens, in

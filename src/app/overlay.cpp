@@ -20,7 +20,7 @@ void check_imgui_result(VkResult result) {
     if (result < 0) stipple::gpu::vk_check(result, "Dear ImGui Vulkan backend", __FILE__, __LINE__);
 }
 
-VkRenderPass create_overlay_pass(VkDevice device, VkFormat format) {
+VkRenderPass create_overlay_pass(VkDevice device, VkFormat format, VkImageLayout final_layout) {
     VkAttachmentDescription color{};
     color.format = format;
     color.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -29,7 +29,7 @@ VkRenderPass create_overlay_pass(VkDevice device, VkFormat format) {
     color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     color.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    color.finalLayout = final_layout;  // presented by the swapchain, or read by the host (Swapchain::present_layout)
     VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
@@ -58,7 +58,7 @@ VkRenderPass create_overlay_pass(VkDevice device, VkFormat format) {
 }  // namespace
 
 Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchain& swapchain) : context_(context) {
-    render_pass_ = create_overlay_pass(context.device, swapchain.format());
+    render_pass_ = create_overlay_pass(context.device, swapchain.format(), swapchain.present_layout());
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;

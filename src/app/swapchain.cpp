@@ -1,6 +1,7 @@
 #include "app/swapchain.hpp"
 
 #include <algorithm>
+#include <thread>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -21,7 +22,18 @@ VkSurfaceFormatKHR choose_format(const std::vector<VkSurfaceFormatKHR>& formats)
 
 }  // namespace
 
-Swapchain::Swapchain(const gpu::Context& context, VkSurfaceKHR surface) : context_(context), surface_(surface) {
+Swapchain::Swapchain(const gpu::Context& context, VkSurfaceKHR surface, std::unique_ptr<X11SharedMemory> shared_memory,
+                     double refresh_hz)
+    : context_(context), surface_(surface), shared_memory_(std::move(shared_memory)) {
+    if (shared_memory_) {
+        // The X server's pixels: 32-bit words, blue in the low byte (X11SharedMemory::open checked).
+        format_ = {VK_FORMAT_B8G8R8A8_UNORM, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
+        refresh_interval_ = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            std::chrono::duration<double>(1.0 / std::clamp(refresh_hz, 1.0, 1000.0)));
+        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(context.device, &fence, nullptr, &shared_shown_));
+        return;
+    }
     VkBool32 supported = VK_FALSE;
     VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(context.physical_device, context.queue_family, surface, &supported));
     if (!supported) fail("device '" + context.device_name + "' cannot present to this window");
@@ -41,21 +53,42 @@ Swapchain::~Swapchain() {
     destroy_views();
     if (swapchain_) vkDestroySwapchainKHR(context_.device, swapchain_, nullptr);
     for (VkSemaphore s : rendering_done_) vkDestroySemaphore(context_.device, s, nullptr);
+    if (shared_shown_) vkDestroyFence(context_.device, shared_shown_, nullptr);
+}
+
+std::string Swapchain::mode_name() const {
+    if (shared_memory_) return vsync_ ? "X11 shared memory, vsync" : "X11 shared memory";
+    switch (present_mode_) {
+        case VK_PRESENT_MODE_FIFO_KHR: return "fifo (vsync)";
+        case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
+        case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
+        case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "fifo relaxed";
+        default: return "other";
+    }
+}
+
+VkImageLayout Swapchain::present_layout() const {
+    return shared_memory_ ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
 }
 
 bool Swapchain::can_disable_vsync() const {
+    if (shared_memory_) return true;
     return std::find(modes_.begin(), modes_.end(), VK_PRESENT_MODE_MAILBOX_KHR) != modes_.end() ||
            std::find(modes_.begin(), modes_.end(), VK_PRESENT_MODE_IMMEDIATE_KHR) != modes_.end();
 }
 
 void Swapchain::destroy_views() {
-    for (VkImageView v : views_) vkDestroyImageView(context_.device, v, nullptr);
+    if (shared_images_.empty())
+        for (VkImageView v : views_) vkDestroyImageView(context_.device, v, nullptr);
     views_.clear();
     images_.clear();
+    shared_images_.clear();  // with their views
     depth_.reset();
 }
 
 bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
+    vsync_ = vsync;
+    if (shared_memory_) return recreate_shared(window_size);
     // Queried right before creation: the window may be resized at any moment, and the extent must be
     // the one the surface reports now.
     VkSurfaceCapabilitiesKHR caps{};
@@ -139,7 +172,74 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
     return true;
 }
 
+bool Swapchain::recreate_shared(VkExtent2D extent) {
+    destroy_views();
+    extent_ = {};
+    if (extent.width == 0 || extent.height == 0) return false;
+    // Two images: one the X server may still be copying from while the next is drawn.
+    constexpr uint32_t kImages = 2;
+    const VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    for (uint32_t i = 0; i < kImages; ++i) {
+        gpu::Image image = gpu::Image::linear_with_words(context_, extent, format_.format, usage, true);
+        if (!image.mapped())
+            fail("cannot show frames through X11 shared memory: the device has no host-visible linear " +
+                 std::string("colour image of ") + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
+                 " (use --present swapchain)");
+        images_.push_back(image.handle());
+        views_.push_back(image.view());
+        shared_images_.push_back(std::move(image));
+    }
+    shared_memory_->resize(extent, kImages);
+    min_image_count_ = kImages;
+    copyable_ = writable_ = true;
+    extent_ = extent;
+    next_shared_ = 0;
+    while (rendering_done_.size() < images_.size()) {
+        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        VkSemaphore s = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &s));
+        rendering_done_.push_back(s);
+    }
+    depth_ = gpu::Image(context_, extent, context_.depth_format,
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
+    return true;
+}
+
+VkResult Swapchain::present_shared(VkQueue queue, uint32_t image_index) {
+    // The frame finished (its semaphore waited on by an empty submission that signals a fence), then
+    // copied to the X server. The caller waits for its frame before the next anyway (one in flight).
+    VkSemaphore wait = rendering_done_.at(image_index);
+    const VkPipelineStageFlags stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &wait;
+    submit.pWaitDstStageMask = &stage;
+    VK_CHECK(vkResetFences(context_.device, 1, &shared_shown_));
+    VK_CHECK(vkQueueSubmit(queue, 1, &submit, shared_shown_));
+    VK_CHECK(vkWaitForFences(context_.device, 1, &shared_shown_, VK_TRUE, UINT64_MAX));
+    if (vsync_) {  // no faster than the monitor: what FIFO means to a swapchain
+        const auto due = last_shown_ + refresh_interval_;
+        if (std::chrono::steady_clock::now() < due) std::this_thread::sleep_until(due);
+    }
+    last_shown_ = std::chrono::steady_clock::now();
+    const gpu::Image& image = shared_images_.at(image_index);
+    shared_memory_->show(image_index, image.mapped(), size_t(image.row_pitch()));
+    return VK_SUCCESS;
+}
+
 VkResult Swapchain::acquire(VkSemaphore signal, uint32_t* image_index) {
+    if (shared_memory_) {
+        // Our own images: the next one, free since its frame was shown; the semaphore the frame's
+        // submission waits on signalled at once.
+        *image_index = next_shared_;
+        next_shared_ = (next_shared_ + 1) % uint32_t(shared_images_.size());
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.signalSemaphoreCount = 1;
+        submit.pSignalSemaphores = &signal;
+        VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, VK_NULL_HANDLE));
+        return VK_SUCCESS;
+    }
     // A bounded wait: a stalled presentation engine skips a frame instead of hanging the viewer.
     VkResult result = vkAcquireNextImageKHR(context_.device, swapchain_, 1'000'000'000ull, signal, VK_NULL_HANDLE,
                                             image_index);
@@ -151,6 +251,7 @@ VkResult Swapchain::acquire(VkSemaphore signal, uint32_t* image_index) {
 }
 
 VkResult Swapchain::present(VkQueue queue, uint32_t image_index) {
+    if (shared_memory_) return present_shared(queue, image_index);
     VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     info.waitSemaphoreCount = 1;
     VkSemaphore wait = rendering_done_.at(image_index);

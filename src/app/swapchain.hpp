@@ -2,10 +2,20 @@
 // The window's swapchain, its image views, a depth image of the same size, and one "rendering done"
 // semaphore per image. Recreated whenever the window's size changes or presentation reports it out
 // of date; vsync chooses FIFO, otherwise MAILBOX or IMMEDIATE where the surface offers them.
+//
+// Or, given X11 shared memory (x11_shared_memory.hpp), the same interface over images of our own:
+// linear and host-visible, the splat drawing in their pixels (unless their rows are padded), each frame handed to the X server from
+// them. Acquiring signals the semaphore with an empty submission; presenting waits for the frame,
+// copies it into a shared segment and asks the server to show it; vsync holds presents to the
+// monitor's refresh interval.
+#include <chrono>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "app/x11_shared_memory.hpp"
 #include "gpu/resources.hpp"
 
 namespace stipple::gpu {
@@ -18,7 +28,10 @@ class Swapchain {
 public:
     // Chooses the colour format once (the renderer's pipelines are built for it). Throws when the
     // device's queue cannot present to `surface`.
-    Swapchain(const gpu::Context& context, VkSurfaceKHR surface);
+    // With `shared_memory`, frames go through it (refresh_hz: what vsync holds them to) and no
+    // VkSwapchainKHR is made.
+    Swapchain(const gpu::Context& context, VkSurfaceKHR surface, std::unique_ptr<X11SharedMemory> shared_memory = nullptr,
+              double refresh_hz = 60.0);
     ~Swapchain();
     Swapchain(const Swapchain&) = delete;
     Swapchain& operator=(const Swapchain&) = delete;
@@ -26,12 +39,19 @@ public:
     // (Re)creates for the surface's current size (`window_size` where the surface leaves it to us).
     // The GPU must be idle. Returns false, with no swapchain, when the surface has no area (minimized).
     bool recreate(VkExtent2D window_size, bool vsync);
-    bool valid() const { return swapchain_ != VK_NULL_HANDLE; }
+    bool valid() const { return swapchain_ != VK_NULL_HANDLE || !shared_images_.empty(); }
 
-    VkSwapchainKHR handle() const { return swapchain_; }
     VkFormat format() const { return format_.format; }
     VkExtent2D extent() const { return extent_; }
-    VkPresentModeKHR present_mode() const { return present_mode_; }
+    // "fifo (vsync)", "mailbox", "immediate"; "X11 shared memory" with ", vsync" where it paces frames.
+    std::string mode_name() const;
+    // The layout the frame's last pass leaves the image in for presentation (PRESENT_SRC_KHR, or
+    // GENERAL where the host reads it), and whether the host reads it (a HOST_READ barrier then).
+    VkImageLayout present_layout() const;
+    bool host_reads() const { return shared_memory_ != nullptr; }
+    // The image's pixels as words for the splat (RenderTargets::color_words), or null.
+    VkBuffer words(uint32_t i) const { return shared_images_.empty() ? VK_NULL_HANDLE : shared_images_.at(i).words(); }
+    uint64_t words_serial(uint32_t i) const { return shared_images_.empty() ? 0 : shared_images_.at(i).words_serial(); }
     uint32_t image_count() const { return uint32_t(images_.size()); }
     uint32_t min_image_count() const { return min_image_count_; }
     VkImage image(uint32_t i) const { return images_.at(i); }
@@ -51,6 +71,8 @@ public:
 
 private:
     void destroy_views();
+    bool recreate_shared(VkExtent2D extent);
+    VkResult present_shared(VkQueue queue, uint32_t image_index);
 
     const gpu::Context& context_;
     VkSurfaceKHR surface_;
@@ -67,6 +89,14 @@ private:
     // Kept across recreation and only grown: a semaphore a presentation may still wait on is never destroyed early.
     std::vector<VkSemaphore> rendering_done_;
     gpu::Image depth_;
+
+    std::unique_ptr<X11SharedMemory> shared_memory_;
+    std::vector<gpu::Image> shared_images_;
+    uint32_t next_shared_ = 0;
+    VkFence shared_shown_ = VK_NULL_HANDLE;  // the frame to show is finished
+    bool vsync_ = true;
+    std::chrono::steady_clock::duration refresh_interval_{};
+    std::chrono::steady_clock::time_point last_shown_{};
 };
 
 }  // namespace stipple::app

@@ -44,14 +44,18 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-const char* present_mode_name(VkPresentModeKHR mode) {
-    switch (mode) {
-        case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
-        case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
-        case VK_PRESENT_MODE_FIFO_KHR: return "fifo (vsync)";
-        case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "fifo relaxed";
-        default: return "other";
-    }
+// Mesa's software swapchain sends each frame through the X socket unless the server has DRI3 (Xvfb,
+// Xvnc, X without a GPU driver do not): on a CPU device, X11 shared memory instead where it works.
+std::unique_ptr<X11SharedMemory> shared_memory_for(const ViewerOptions& options, const gpu::Context& context,
+                                                   const Window& window) {
+    if (options.present == PresentMethod::Swapchain) return nullptr;
+    if (options.present == PresentMethod::Auto && context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+        return nullptr;
+    std::string why;
+    std::unique_ptr<X11SharedMemory> shared = X11SharedMemory::open(window.handle(), &why);
+    if (!shared && options.present == PresentMethod::SharedMemory) fail("--present shm: " + why);
+    if (!shared && options.verbose) std::printf("stipple: presenting through the swapchain: %s\n", why.c_str());
+    return shared;
 }
 
 gpu::ContextOptions context_options(const ViewerOptions& options) {
@@ -85,7 +89,7 @@ public:
           window_(options.width, options.height, window_title(scene)),
           context_(context_options(options)),
           surface_(context_, window_),
-          swapchain_(context_, surface_.handle),
+          swapchain_(context_, surface_.handle, shared_memory_for(options, context_, window_), window_.refresh_rate()),
           renderer_(context_, swapchain_.format(), context_.depth_format, renderer_options(options)),
           live_(std::move(scene), std::move(content), renderer_),
           screenshot_(context_),
@@ -166,6 +170,7 @@ private:
     OrbitCamera camera_;
     bool vsync_;
     bool panel_visible_;
+    std::string present_mode_;  // what the panel shows (Figures::present_mode points into it)
     bool recreate_ = false;
     bool submitted_ = false;  // a frame is in flight (its fence is pending)
     bool paused_ = false;
@@ -238,7 +243,7 @@ int Viewer::run() {
         VkExtent2D e = swapchain_.extent();
         std::printf("benchmark: %lld frames at %ux%u, panel %s, %s: mean %.2f fps (%.2f ms per frame)\n",
                     options_.benchmark_frames, e.width, e.height, panel_visible_ ? "on" : "off",
-                    present_mode_name(swapchain_.present_mode()), 1000.0 / ms, ms);
+                    swapchain_.mode_name().c_str(), 1000.0 / ms, ms);
         const FrameStats& st = figures_.stats;
         std::printf("benchmark: %zu objects, %llu polygons, %llu candidate stipples, %lld drawn (last frame)\n",
                     live_.size(), (unsigned long long)st.triangles, (unsigned long long)st.candidate_stipples,
@@ -352,7 +357,7 @@ bool Viewer::ensure_swapchain() {
 
 void Viewer::print_swapchain() const {
     std::printf("stipple: swapchain %ux%u, %u images, %s\n", swapchain_.extent().width, swapchain_.extent().height,
-                swapchain_.image_count(), present_mode_name(swapchain_.present_mode()));
+                swapchain_.image_count(), swapchain_.mode_name().c_str());
     std::fflush(stdout);
 }
 
@@ -470,7 +475,8 @@ void Viewer::frame() {
         overlay_->new_frame();
         figures_.device = context_.device_name;
         figures_.extent = swapchain_.extent();
-        figures_.present_mode = present_mode_name(swapchain_.present_mode());
+        present_mode_ = swapchain_.mode_name();
+        figures_.present_mode = present_mode_.c_str();
         figures_.vsync = vsync_;
         figures_.can_disable_vsync = swapchain_.can_disable_vsync();
         figures_.max_point_size = context_.features.max_point_size;
@@ -525,8 +531,9 @@ void Viewer::record(uint32_t image) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(cb_, &begin));
-    RenderTargets targets{swapchain_.image(image), swapchain_.view(image), swapchain_.depth().handle(),
-                          swapchain_.depth().view(), swapchain_.extent(), swapchain_.writable()};
+    RenderTargets targets{swapchain_.image(image),  swapchain_.view(image),   swapchain_.depth().handle(),
+                          swapchain_.depth().view(), swapchain_.extent(), swapchain_.writable(),
+                          swapchain_.words(image),   swapchain_.words_serial(image)};
     renderer_.record(cb_, targets);
     if (screenshot_.requested()) {
         if (swapchain_.copyable())
@@ -537,13 +544,16 @@ void Viewer::record(uint32_t image) {
         }
     }
     if (panel_visible_) {
-        overlay_->record(cb_, image);  // its render pass ends in PRESENT_SRC_KHR
+        overlay_->record(cb_, image);  // its render pass ends in the swapchain's present_layout()
     } else {
         gpu::image_barrier(cb_, swapchain_.image(image), VK_IMAGE_ASPECT_COLOR_BIT,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, swapchain_.present_layout(),
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     }
+    if (swapchain_.host_reads())  // presenting copies the pixels on the host
+        gpu::memory_barrier(cb_, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     VK_CHECK(vkEndCommandBuffer(cb_));
 }
 

@@ -8,10 +8,15 @@
 
 namespace stipple::app {
 
+// How frames reach the window: Vulkan's swapchain, or X11 shared memory (app/x11_shared_memory.hpp);
+// Auto takes shared memory on a CPU device where the X server allows it.
+enum class PresentMethod { Auto, Swapchain, SharedMemory };
+
 struct ViewerOptions {
     int width = 1280;
     int height = 1024;
     bool vsync = true;
+    PresentMethod present = PresentMethod::Auto;
     bool panel = true;
     bool count_drawn = true;          // the panel's drawn-stipple count (a GPU atomic per drawn stipple)
     DepthCull depth_cull = DepthCull::Auto;  // the depth pass's triangle lists (render/depth_triangles.hpp)

@@ -73,6 +73,12 @@ VkExtent2D Window::framebuffer_size() const {
     return {uint32_t(std::max(w, 0)), uint32_t(std::max(h, 0))};
 }
 
+double Window::refresh_rate() const {
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    return mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
+}
+
 bool Window::hidden() const {
     VkExtent2D size = framebuffer_size();
     // On X11 a minimized window keeps its size: a window manager iconifies it (WM_STATE) and unmaps it.

@@ -39,6 +39,8 @@ public:
     VkSurfaceKHR create_surface(VkInstance instance) const;
 
     VkExtent2D framebuffer_size() const;
+    // The primary monitor's refresh rate in Hz (60 where it reports none, as Xvfb's may).
+    double refresh_rate() const;
     // Nothing can be seen: zero-sized, iconified by a window manager, or unmapped.
     bool hidden() const;
     bool should_close() const;

@@ -16,7 +16,7 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames", "--script", "--frame-log", "--animation", "--time", "--depth-cull"});
+                    "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log", "--animation", "--time", "--depth-cull"});
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -29,6 +29,11 @@ int run_view(const std::vector<std::string>& argv) {
     viewer.height = int(height);
     viewer.vsync = !args.flag("--no-vsync");
     viewer.panel = !args.flag("--no-panel");
+    const std::string present = args.get("--present", "auto");
+    if (present == "auto") viewer.present = app::PresentMethod::Auto;
+    else if (present == "swapchain") viewer.present = app::PresentMethod::Swapchain;
+    else if (present == "shm") viewer.present = app::PresentMethod::SharedMemory;
+    else fail("--present = " + present + " must be auto, swapchain or shm");
     viewer.count_drawn = !args.flag("--no-count-drawn");
     const std::string depth_cull = args.get("--depth-cull", "auto");
     if (!parse_depth_cull(depth_cull)) fail("--depth-cull = " + depth_cull + " must be auto, on or off");

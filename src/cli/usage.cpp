@@ -99,6 +99,11 @@ Vector and print output (render):
 View options (view also takes --yaw, --pitch, --distance, --light, --device and the stipple options):
   --width N, --height N   window size (default 1280 x 1024)
   --no-vsync              present without waiting for the display (MAILBOX or IMMEDIATE) from the start
+  --present MODE          auto, swapchain or shm: how frames reach the window. shm hands them to the
+                          X server through shared memory (MIT-SHM), where lavapipe's swapchain writes
+                          each frame into the X socket when the server lacks DRI3 (Xvfb, Xvnc);
+                          vsync then holds frames to the monitor's refresh rate. auto: shm on a CPU
+                          device where the server allows it, else swapchain (default auto)
   --no-panel              start with the panel hidden
   --no-count-drawn        do not count drawn stipples on the GPU (saves an atomic per stipple)
   --depth-cull MODE       auto, on or off, as for render (default auto)

@@ -1,6 +1,7 @@
 #include "gpu/resources.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -136,13 +137,15 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     view_ = create_view_2d(device_, image_, format, aspect);
 }
 
-Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
+Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                               bool host_mapped) {
+    // What the caller gets where this image cannot be: an ordinary one, or none (host_mapped).
+    auto instead = [&] { return host_mapped ? Image() : Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT); };
     VkFormatProperties properties;
     vkGetPhysicalDeviceFormatProperties(context.physical_device, format, &properties);
     const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
                                         VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
-    if ((properties.linearTilingFeatures & needed) != needed)
-        return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    if ((properties.linearTilingFeatures & needed) != needed) return instead();
 
     Image image;
     image.device_ = context.device;
@@ -154,26 +157,40 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
     VkSubresourceLayout layout;
     vkGetImageSubresourceLayout(image.device_, image.image_, &pixels, &layout);
     const VkDeviceSize row = VkDeviceSize(extent.width) * 4;
-    if (layout.offset != 0 || layout.rowPitch != row)  // rows padded: no words
-        return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    const bool words = layout.offset == 0 && layout.rowPitch == row;  // rows padded: no words
+    if (!words && !host_mapped) return instead();
+    image.row_pitch_ = layout.rowPitch;
+    image.pixels_offset_ = layout.offset;
 
-    VkBufferCreateInfo buffer_info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    buffer_info.size = row * extent.height;
-    buffer_info.usage =
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VK_CHECK(vkCreateBuffer(image.device_, &buffer_info, nullptr, &image.words_));
-    VkMemoryRequirements for_image, for_words;
+    VkMemoryRequirements for_image, for_words{};
     vkGetImageMemoryRequirements(image.device_, image.image_, &for_image);
-    vkGetBufferMemoryRequirements(image.device_, image.words_, &for_words);
-    const uint32_t types = for_image.memoryTypeBits & for_words.memoryTypeBits;
-    if (types == 0) return Image(context, extent, format, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    for_words.memoryTypeBits = ~0u;
+    if (words) {
+        VkBufferCreateInfo buffer_info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        buffer_info.size = row * extent.height;
+        buffer_info.usage =
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+        VK_CHECK(vkCreateBuffer(image.device_, &buffer_info, nullptr, &image.words_));
+        vkGetBufferMemoryRequirements(image.device_, image.words_, &for_words);
+    }
+    uint32_t types = for_image.memoryTypeBits & for_words.memoryTypeBits;
+    const VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    if (host_mapped)
+        for (uint32_t i = 0; i < context.memory_properties.memoryTypeCount; ++i)
+            if ((context.memory_properties.memoryTypes[i].propertyFlags & host) != host) types &= ~(1u << i);
+    if (types == 0) return instead();
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = std::max(for_image.size, for_words.size);
-    alloc.memoryTypeIndex = context.find_memory_type(types, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    alloc.memoryTypeIndex = context.find_memory_type(types, host_mapped ? host : 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkAllocateMemory(image.device_, &alloc, nullptr, &image.memory_));
     VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_, 0));
-    VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
+    if (words) {
+        VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
+        static std::atomic<uint64_t> next_serial{1};
+        image.words_serial_ = next_serial++;
+    }
+    if (host_mapped) VK_CHECK(vkMapMemory(image.device_, image.memory_, 0, VK_WHOLE_SIZE, 0, &image.mapped_));
     image.view_ = create_view_2d(image.device_, image.image_, format, VK_IMAGE_ASPECT_COLOR_BIT);
     return image;
 }
@@ -186,6 +203,10 @@ Image& Image::operator=(Image&& other) noexcept {
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
         words_ = std::exchange(other.words_, VK_NULL_HANDLE);
+        mapped_ = std::exchange(other.mapped_, nullptr);
+        row_pitch_ = other.row_pitch_;
+        words_serial_ = std::exchange(other.words_serial_, 0);
+        pixels_offset_ = other.pixels_offset_;
         format_ = other.format_;
         extent_ = other.extent_;
         aspect_ = other.aspect_;
@@ -198,9 +219,10 @@ void Image::reset() {
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (words_) vkDestroyBuffer(device_, words_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);
+    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
     view_ = VK_NULL_HANDLE;
     words_ = VK_NULL_HANDLE;
+    mapped_ = nullptr;
     image_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     device_ = VK_NULL_HANDLE;

@@ -62,12 +62,20 @@ public:
     // copy. Where the device cannot (the format is no linear colour attachment, or the rows are padded),
     // an ordinary image without words. Between writes through the words and uses of the image, the image
     // is in the GENERAL layout: a linear image's memory holds its pixels as laid out only there.
-    static Image linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
+    // host_mapped: in host-visible, coherent memory, mapped for the image's life (mapped(), row_pitch()),
+    // with words where its rows are not padded; where the device has no such image, an empty Image.
+    static Image linear_with_words(const Context& context, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                                   bool host_mapped = false);
 
     void reset();
     VkImage handle() const { return image_; }
     VkImageView view() const { return view_; }
     VkBuffer words() const { return words_; }
+    // Names words() for the image's life, process-wide (RenderTargets::color_words_serial); 0 without words.
+    uint64_t words_serial() const { return words_serial_; }
+    // linear_with_words(..., host_mapped): the pixels, rows row_pitch() bytes apart.
+    const void* mapped() const { return mapped_ ? static_cast<const char*>(mapped_) + pixels_offset_ : nullptr; }
+    VkDeviceSize row_pitch() const { return row_pitch_; }
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
     VkImageAspectFlags aspect() const { return aspect_; }
@@ -78,6 +86,9 @@ private:
     VkImageView view_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkBuffer words_ = VK_NULL_HANDLE;
+    void* mapped_ = nullptr;
+    VkDeviceSize row_pitch_ = 0, pixels_offset_ = 0;
+    uint64_t words_serial_ = 0;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
     VkImageAspectFlags aspect_ = 0;

@@ -1,6 +1,5 @@
 #include "render/offscreen.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cstring>
 
@@ -36,12 +35,10 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent,
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     color_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
     depth_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
-    static std::atomic<uint64_t> next_serial{1};
-    if (color_.words() != VK_NULL_HANDLE) words_serial_ = next_serial++;
 }
 
 RenderTargets OffscreenTarget::targets() const {
-    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true, color_.words(), words_serial_};
+    return {color_.handle(), color_.view(), depth_.handle(), depth_.view(), extent_, true, color_.words(), color_.words_serial()};
 }
 
 double OffscreenTarget::draw(StippleRenderer& renderer, const FrameView& view) { return draw_queued(renderer, view, 1); }

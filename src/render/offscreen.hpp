@@ -49,7 +49,6 @@ private:
     gpu::Image depth_;
     gpu::Buffer color_readback_;
     gpu::Buffer depth_readback_;
-    uint64_t words_serial_ = 0;  // RenderTargets::color_words_serial of color_'s words
 };
 
 }  // namespace stipple

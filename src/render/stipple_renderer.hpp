@@ -62,7 +62,7 @@ struct RenderTargets {
     // gpu::Image::linear_with_words), or null: the splat then draws in them instead of in a buffer of its
     // own that is copied into the image after.
     VkBuffer color_words = VK_NULL_HANDLE;
-    // Names color_words for the lifetime of its buffer (a process-wide serial; 0: unnamed). A buffer made
+    // Names color_words for the lifetime of its buffer (gpu::Image::words_serial; 0: unnamed). A buffer made
     // after another was destroyed may get its handle, so the handle alone cannot tell the splat that
     // the words it bound are still these; with a serial it rebinds only for new ones, and frames can
     // be recorded back to back into one command buffer (OffscreenTarget::draw_queued).
