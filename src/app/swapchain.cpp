@@ -161,6 +161,11 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
         VK_CHECK(vkCreateImageView(context_.device, &view, nullptr, &handle));
         views_.push_back(handle);
     }
+    add_semaphores_and_depth(extent);
+    return true;
+}
+
+void Swapchain::add_semaphores_and_depth(VkExtent2D extent) {
     while (rendering_done_.size() < images_.size()) {
         VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
         VkSemaphore s = VK_NULL_HANDLE;
@@ -169,7 +174,6 @@ bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
     }
     depth_ = gpu::Image(context_, extent, context_.depth_format,
                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
-    return true;
 }
 
 bool Swapchain::recreate_shared(VkExtent2D extent) {
@@ -195,14 +199,7 @@ bool Swapchain::recreate_shared(VkExtent2D extent) {
     copyable_ = writable_ = true;
     extent_ = extent;
     next_shared_ = 0;
-    while (rendering_done_.size() < images_.size()) {
-        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        VkSemaphore s = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &s));
-        rendering_done_.push_back(s);
-    }
-    depth_ = gpu::Image(context_, extent, context_.depth_format,
-                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
+    add_semaphores_and_depth(extent);
     return true;
 }
 

@@ -72,6 +72,7 @@ public:
 private:
     void destroy_views();
     bool recreate_shared(VkExtent2D extent);
+    void add_semaphores_and_depth(VkExtent2D extent);  // after the images: one semaphore each (kept), a new depth image
     VkResult present_shared(VkQueue queue, uint32_t image_index);
 
     const gpu::Context& context_;
