@@ -564,6 +564,47 @@ TEST(CliView, TheWindowShowsTheFrameThroughSharedMemoryAndTheSwapchain) {
     }
 }
 
+size_t lines_in(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return size_t(std::count(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), '\n'));
+}
+
+// The viewer draws on demand: with nothing moving and nothing touched it presents no frames (a software
+// GPU would otherwise keep both cores busy drawing the same picture), and input wakes it at once.
+TEST(CliView, SleepsWhileNothingChangesAndWakesOnInput) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-idle");
+    write_ply_binary((dir / "sphere.ply").string(), make_uv_sphere(4000));
+    const std::filesystem::path log = dir / "frames.log";
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x(170)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({(dir / "sphere.ply").string(), "--width", "320", "--height", "256", "--frame-log",
+                          log.string(), "--cache-dir", (dir / "cache").string()});
+    ASSERT_TRUE(session.find_window()) << session.out() << session.err();
+    ASSERT_TRUE(wait_for([&] { return lines_in(log) > 0; }, 60s)) << session.out() << session.err();
+    // Frames for a second after the start and after each event (the panel's hover effects), then none.
+    auto frames_in = [&](std::chrono::milliseconds span) {
+        const size_t before = lines_in(log);
+        std::this_thread::sleep_for(span);
+        return lines_in(log) - before;
+    };
+    std::this_thread::sleep_for(2500ms);
+    const size_t idle_before = frames_in(2000ms);
+    session.focus();
+    session.xdotool("key Left key Left key Left");  // orbits
+    const size_t after_input = frames_in(800ms);
+    std::this_thread::sleep_for(2500ms);
+    const size_t idle_after = frames_in(2000ms);
+    std::printf("frames in 2 s idle: %zu; in 0.8 s after three key presses: %zu; in 2 s idle again: %zu\n",
+                idle_before, after_input, idle_after);
+    EXPECT_LE(idle_before, 1u) << "the viewer keeps drawing an unchanged picture";
+    EXPECT_GE(after_input, 2u) << "input did not wake the viewer";
+    EXPECT_LE(idle_after, 1u) << "the viewer did not go back to sleep";
+    session.xdotool("key q");
+    EXPECT_EQ(session.viewer().wait_exit(30s), 0) << session.err();
+}
+
 // A script's export line names a vector file; anything else is refused before the window opens, in
 // one line naming the script and the line.
 TEST(CliView, ScriptExportNeedsAVectorPath) {

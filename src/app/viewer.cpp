@@ -31,6 +31,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// After an event, frames are drawn for this long before the viewer sleeps (Dear ImGui's hover effects and
+// tooltips take a few frames and a delay); while background work runs, one frame each kProgressInterval.
+constexpr std::chrono::milliseconds kSettle{1000};
+constexpr std::chrono::milliseconds kProgressInterval{100};
 constexpr long long kWarmupFrames = 10;  // --benchmark-frames: the first frames compile shaders, fault in memory
 
 RendererOptions renderer_options(const ViewerOptions& options) {
@@ -142,6 +146,8 @@ public:
 
 private:
     void frame();
+    bool wants_frame_now();     // something moves, was touched, or runs a script or a benchmark
+    bool progress_due() const;  // background work's progress bar is due a frame
     void finish_previous_frame();
     void handle_input(const Input& input, float aspect);
     void handle_requests(const PanelRequests& requests, float aspect);
@@ -196,13 +202,35 @@ private:
     int bench_samples_ = 0;
     Clock::time_point fps_start_ = Clock::now();
     int fps_frames_ = 0;
+    // Drawing on demand (wants_frame_now): the window's activity count last seen, the time until which
+    // frames are drawn (after an event, a message, finished work), the last frame drawn, whether the loop slept.
+    uint64_t seen_activity_ = 0;
+    Clock::time_point draw_until_ = Clock::now() + kSettle;
+    Clock::time_point last_drawn_{};
+    bool idled_ = false;
 };
+
+bool Viewer::wants_frame_now() {
+    const Clock::time_point now = Clock::now();
+    if (window_.activity() != seen_activity_) {  // and for a while after: ImGui's hover and tooltips want frames
+        seen_activity_ = window_.activity();
+        draw_until_ = std::max(draw_until_, now + kSettle);
+    }
+    const bool animating = timeline_.playing() && timeline_length(live_.scene(), live_.objects()) > 0.0;
+    const bool script_running = script_at_ < script_.size();
+    return options_.benchmark_frames > 0 || script_running || animating || recreate_ || now < draw_until_;
+}
+
+bool Viewer::progress_due() const {  // background work shows its progress bar (and is taken when done)
+    return !work_.idle() && Clock::now() - last_drawn_ >= kProgressInterval;
+}
 
 void Viewer::message(const std::string& text, bool error) {
     // Errors go to stderr too (the panel may be hidden); confirmations to stdout for scripts.
     std::fprintf(error ? stderr : stdout, "stipple: %s\n", text.c_str());
     std::fflush(error ? stderr : stdout);
     messages_.push_back(error ? "error: " + text : text);
+    draw_until_ = std::max(draw_until_, Clock::now() + kSettle);  // shown in the panel
     while (messages_.size() > 20) messages_.pop_front();
 }
 
@@ -229,7 +257,17 @@ int Viewer::run() {
             paused_ = false;
             recreate_ = true;
         }
-        window_.poll_events();
+        if (wants_frame_now()) {
+            window_.poll_events();
+        } else {
+            // Nothing moves and nothing was touched: the frame on screen stays right. Sleep until an event
+            // (input, a resize, an expose) or the next look at background work, instead of drawing the same
+            // frame again and again on cores that a software GPU and that work share.
+            finish_previous_frame();  // its screenshot written, its figures taken
+            window_.wait_events(work_.idle() ? 0.5 : std::chrono::duration<double>(kProgressInterval).count());
+            idled_ = true;
+            if (!wants_frame_now() && !progress_due()) continue;
+        }
         if (window_.should_close()) break;
         frame();
         if (options_.benchmark_frames > 0) {
@@ -434,6 +472,12 @@ bool Viewer::export_view(const std::string& path, const plot::ExportOptions& opt
 void Viewer::frame() {
     finish_previous_frame();
     Clock::time_point start = Clock::now();
+    last_drawn_ = start;
+    if (idled_) {  // the panel's fps counts frames drawn one after another, not the idle time between
+        idled_ = false;
+        fps_frames_ = 0;
+        fps_start_ = start;
+    }
     VkExtent2D size = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
     float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
 
@@ -510,7 +554,10 @@ void Viewer::frame() {
     VkResult presented = swapchain_.present(context_.queue, image);
     // The second column says whether background work (new stipples, a model) was under way, so that a
     // test can see frames keep coming while it runs, whatever the machine's load.
-    if (frame_log_) std::fprintf(frame_log_, "%.3f %d\n", ms_between(started_, Clock::now()), work_.idle() ? 0 : 1);
+    if (frame_log_) {  // flushed: a test (or tail -f) reads it while the viewer runs
+        std::fprintf(frame_log_, "%.3f %d\n", ms_between(started_, Clock::now()), work_.idle() ? 0 : 1);
+        std::fflush(frame_log_);
+    }
     if (presented != VK_SUCCESS) recreate_ = true;  // out of date or suboptimal: a new swapchain next frame
     ++frames_drawn_;
     ++fps_frames_;

@@ -46,6 +46,12 @@ Window::Window(int width, int height, const std::string& title) {
     glfwSetKeyCallback(window_, on_key);
     glfwSetCharCallback(window_, on_char);
     glfwSetDropCallback(window_, on_drop);
+    // The rest only wake the viewer (Dear ImGui's backend chains to the focus and enter ones).
+    glfwSetWindowRefreshCallback(window_, on_other);
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { on_other(w); });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { on_other(w); });
+    glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { on_other(w); });
+    glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { on_other(w); });
     glfwGetCursorPos(window_, &cursor_.x, &cursor_.y);
 }
 
@@ -105,6 +111,7 @@ void Window::set_capture_queries(std::function<bool(glm::dvec2)> wants_mouse, st
 
 void Window::on_cursor(GLFWwindow* w, double x, double y) {
     Window* me = self(w);
+    ++me->activity_;
     glm::dvec2 now(x, y), delta = now - me->cursor_;
     me->cursor_ = now;
     if (me->orbiting_) me->pending_.orbit_drag += delta;
@@ -113,6 +120,7 @@ void Window::on_cursor(GLFWwindow* w, double x, double y) {
 
 void Window::on_button(GLFWwindow* w, int button, int action, int) {
     Window* me = self(w);
+    ++me->activity_;
     // A drag belongs to whoever got its press: one starting over the panel is the panel's.
     bool press = action == GLFW_PRESS;
     if (press) glfwGetCursorPos(w, &me->cursor_.x, &me->cursor_.y);
@@ -123,11 +131,13 @@ void Window::on_button(GLFWwindow* w, int button, int action, int) {
 
 void Window::on_scroll(GLFWwindow* w, double, double dy) {
     Window* me = self(w);
+    ++me->activity_;
     if (!me->wants_mouse_(me->cursor_)) me->pending_.scroll += dy;
 }
 
 void Window::on_key(GLFWwindow* w, int key, int, int action, int mods) {
     Window* me = self(w);
+    ++me->activity_;
     if (action == GLFW_RELEASE || me->wants_keyboard_()) return;
     auto& out = me->pending_.commands;
     switch (key) {
@@ -146,6 +156,7 @@ void Window::on_key(GLFWwindow* w, int key, int, int action, int mods) {
 
 void Window::on_char(GLFWwindow* w, unsigned int c) {
     Window* me = self(w);
+    ++me->activity_;
     if (me->wants_keyboard_()) return;
     auto& out = me->pending_.commands;
     switch (c) {
@@ -163,8 +174,11 @@ void Window::on_char(GLFWwindow* w, unsigned int c) {
 
 void Window::on_drop(GLFWwindow* w, int count, const char** paths) {
     Window* me = self(w);
+    ++me->activity_;
     for (int i = 0; i < count; ++i)
         if (paths[i]) me->pending_.dropped.emplace_back(paths[i]);
 }
+
+void Window::on_other(GLFWwindow* w) { ++self(w)->activity_; }
 
 }  // namespace stipple::app

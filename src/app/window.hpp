@@ -48,7 +48,10 @@ public:
     void set_title(const std::string& title);
 
     void poll_events();
-    void wait_events(double timeout_seconds);  // sleeps until something happens (while hidden)
+    void wait_events(double timeout_seconds);  // sleeps until something happens (hidden, or nothing to draw)
+    // Counts every event that may change what the window should show: input (also input the panel takes),
+    // a resize, an expose (the server asks for the contents again), focus, the cursor entering or leaving.
+    uint64_t activity() const { return activity_; }
 
     // Input since the last take_input(); the queues are emptied.
     Input take_input();
@@ -63,12 +66,14 @@ private:
     static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
     static void on_char(GLFWwindow* w, unsigned int codepoint);
     static void on_drop(GLFWwindow* w, int count, const char** paths);
+    static void on_other(GLFWwindow* w);
 
     GLFWwindow* window_ = nullptr;
     Input pending_;
     glm::dvec2 cursor_{0.0};
     bool orbiting_ = false;
     bool panning_ = false;
+    uint64_t activity_ = 0;
     std::function<bool(glm::dvec2)> wants_mouse_ = [](glm::dvec2) { return false; };
     std::function<bool()> wants_keyboard_ = [] { return false; };
 };

@@ -129,7 +129,9 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   value cancels an older one; dropped models load in the background too), the light, paper and ink
   colours, and shows fps, CPU frame time, GPU time per pass and stipple counts. With an animated
   model a timeline window plays, pauses and scrubs the animation, sets its speed and loop, and
-  chooses each object's animation.
+  chooses each object's animation. The window is drawn on demand: while an animation plays, a script
+  or --benchmark-frames runs, and for a second after any input; otherwise the viewer sleeps (ten
+  frames a second while new stipples are made, for the progress bar).
 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
