@@ -218,7 +218,8 @@ bool Viewer::wants_frame_now() {
     }
     const bool animating = timeline_.playing() && timeline_length(live_.scene(), live_.objects()) > 0.0;
     const bool script_running = script_at_ < script_.size();
-    return options_.benchmark_frames > 0 || script_running || animating || recreate_ || now < draw_until_;
+    const bool typing = panel_visible_ && overlay_->wants_text();  // a text field's cursor blinks
+    return options_.benchmark_frames > 0 || script_running || animating || typing || recreate_ || now < draw_until_;
 }
 
 bool Viewer::progress_due() const {  // background work shows its progress bar (and is taken when done)
