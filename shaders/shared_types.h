@@ -51,6 +51,8 @@ STIPPLE_CONST uint kSplatShortRun = 4;
 // stipple_renderer.hpp): a surface is pushed back by this many times its depth change per pixel, which
 // leaves one- to two-pixel dots on their own surface (large_dot_depth_pull does the rest for larger ones).
 STIPPLE_CONST float kDepthBiasSlopeFactor = 1.5f;
+// Its constant factor, in units of the depth format's resolution (also vkCmdSetDepthBias's).
+STIPPLE_CONST float kDepthBiasConstant = 2.0f;
 STIPPLE_CONST uint kSplatIterationBudget = 32768;
 STIPPLE_CONST uint kSplatRingFactor = 32;
 STIPPLE_CONST uint kSplatRingCap = 2048;
@@ -226,6 +228,22 @@ using DepthTriangles = IndexList;
 #define SilhouetteLines IndexList
 #define DepthTriangles IndexList
 #endif
+
+// Depth by compute (shaders/depth_raster.comp, DepthRaster::Compute): the triangles its first pass
+// leaves to the second, each one's box wider or taller than kRasterSmallSpan pixels or crossing the
+// near plane. The header is a VkDispatchIndirectCommand (one workgroup per listed triangle, at most
+// kRasterMaxGroups: Vulkan's least maxComputeWorkGroupCount) and the count; the triangle indices
+// follow it (in the buffer of kBindingDepthTriangles, which the fixed-function pass's lists use).
+STIPPLE_CONST uint kSpecRasterLarge = 0;  // depth_raster.comp: the pass over the listed triangles
+STIPPLE_CONST uint kRasterSmallSpan = 32;
+STIPPLE_CONST uint kRasterMaxGroups = 65535;
+struct RasterTriangles {
+    uint groups_x;
+    uint groups_y;
+    uint groups_z;
+    uint count;
+    uint pad0, pad1, pad2, pad3;
+};
 
 // Object-space lines (beyond the paper): line_edges.comp walks each contour, border and crease edge
 // across the screen in pixel steps against the depth pass and appends the pieces it finds visible,

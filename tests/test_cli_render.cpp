@@ -352,7 +352,7 @@ TEST(CliRender, StatsPrintTheDepthPassTriangles) {
     const std::filesystem::path dir = test::temp_dir("cli-depth-cull");
     auto depth_line = [&](const std::string& mode) {
         auto r = run_stipple({"render", "-o", (dir / (mode + ".png")).string(), "--width", "320", "--height", "256",
-                              "--distance", "6", "--depth-cull", mode, "--stats"});
+                              "--distance", "6", "--depth-cull", mode, "--depth-raster", "fixed", "--stats"});
         EXPECT_EQ(r.exit_code, 0) << r.err;
         const size_t at = r.out.find("depth pass:");
         return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
@@ -363,6 +363,14 @@ TEST(CliRender, StatsPrintTheDepthPassTriangles) {
     const double percent = std::stod(on.substr(on.find('(') + 1));
     EXPECT_LT(percent, 60.0) << on;
     EXPECT_GT(percent, 0.0) << on;
+    // By compute (the default on a CPU device) there are no lists: --stats says which pass ran.
+    auto r = run_stipple({"render", "-o", (dir / "compute.png").string(), "--width", "320", "--height", "256",
+                          "--depth-raster", "compute", "--stats"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("depth pass:         by compute (--depth-raster compute)"), std::string::npos) << r.out;
+    auto bad = run_stipple({"render", "-o", (dir / "bad.png").string(), "--depth-raster", "gpu"});
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.err.find("--depth-raster = gpu must be auto, compute or fixed"), std::string::npos) << bad.err;
 }
 
 // --repeat N --queued K times N batches of K frames recorded back to back (on a GPU the default is 8, on a

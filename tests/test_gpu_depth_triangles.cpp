@@ -34,6 +34,7 @@ Drawn draw(gpu::Context& context, const test::Prepared& object, const ObjectPara
            DepthCull mode) {
     RendererOptions options;
     options.depth_cull = mode;
+    options.depth_raster = DepthRaster::Fixed;  // the lists are the fixed-function pass's
     StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
     renderer.add_object(object.mesh, object.stipples, object.model, params);
     OffscreenTarget target(context, view.extent);
@@ -123,6 +124,7 @@ TEST_F(DepthTriangles, TilesListAgainstTheirOwnViewport) {
     for (DepthCull mode : {DepthCull::Off, DepthCull::On}) {
         RendererOptions options;
         options.depth_cull = mode;
+        options.depth_raster = DepthRaster::Fixed;  // the lists are the fixed-function pass's
         StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
         renderer.add_object(sphere.mesh, sphere.stipples, sphere.model, params);
         tiled[mode == DepthCull::On] = render_tiled(*context, renderer, far, 96);
@@ -144,6 +146,7 @@ TEST_F(DepthTriangles, AnimatedObjectsListTheirPose) {
     for (DepthCull mode : {DepthCull::Off, DepthCull::On}) {
         RendererOptions options;
         options.depth_cull = mode;
+        options.depth_raster = DepthRaster::Fixed;  // the lists are the fixed-function pass's
         StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
         renderer.add_object(*model.mesh, *stipples, glm::mat4(1.0f), ObjectParams{}, model.motion);
         renderer.set_animation(0, 0, 1.0);  // bent by 90 degrees

@@ -173,7 +173,8 @@ void Swapchain::add_semaphores_and_depth(VkExtent2D extent) {
         rendering_done_.push_back(s);
     }
     depth_ = gpu::Image(context_, extent, context_.depth_format,
-                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                            VK_IMAGE_USAGE_TRANSFER_DST_BIT, gpu::kDepthStencilAspect);
 }
 
 bool Swapchain::recreate_shared(VkExtent2D extent) {

@@ -41,6 +41,7 @@ RendererOptions renderer_options(const ViewerOptions& options) {
     RendererOptions r;
     r.count_drawn = options.count_drawn;
     r.depth_cull = options.depth_cull;
+    r.depth_raster = options.depth_raster;
     return r;
 }
 

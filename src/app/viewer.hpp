@@ -2,6 +2,7 @@
 // `stipple view`: a window showing a scene, turned with the mouse and keyboard, tuned with the panel.
 #include <string>
 
+#include "render/depth_raster.hpp"
 #include "render/depth_triangles.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_content.hpp"
@@ -20,6 +21,7 @@ struct ViewerOptions {
     bool panel = true;
     bool count_drawn = true;          // the panel's drawn-stipple count (a GPU atomic per drawn stipple)
     DepthCull depth_cull = DepthCull::Auto;  // the depth pass's triangle lists (render/depth_triangles.hpp)
+    DepthRaster depth_raster = DepthRaster::Auto;  // the depth pass as compute (render/depth_raster.hpp)
     std::string screenshot_dir = ".";
     std::string scene_path = "stipple-scene.json";  // where "save scene" writes
     long long benchmark_frames = 0;   // > 0: draw this many frames after a warm-up, print the mean fps, exit

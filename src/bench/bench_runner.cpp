@@ -251,6 +251,7 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
 
         RendererOptions renderer_options;
         renderer_options.depth_cull = options.depth_cull;
+        renderer_options.depth_raster = options.depth_raster;
         StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
         start = Clock::now();
         renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);

@@ -16,6 +16,7 @@
 #include "bench/plot_order_row.hpp"
 #include "bench/table1.hpp"
 #include "params/object_params.hpp"
+#include "render/depth_raster.hpp"
 #include "render/depth_triangles.hpp"
 
 namespace stipple {
@@ -51,6 +52,7 @@ struct BenchOptions {
     uint32_t animated_triangles = 100'000;
     bool animated_only = false;  // the animated row alone (no Table 1 rows)
     DepthCull depth_cull = DepthCull::Auto;  // the depth pass's triangle lists (render/depth_triangles.hpp)
+    DepthRaster depth_raster = DepthRaster::Auto;  // the depth pass as compute (render/depth_raster.hpp)
     std::string command;              // the command line, recorded in the results
 };
 

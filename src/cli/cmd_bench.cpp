@@ -30,7 +30,7 @@ long long bounded(const Args& args, const std::string& name, long long fallback,
 int run_bench(const std::vector<std::string>& argv) {
     Args args(argv, {"--quick", "--list-devices", "--animated-only"},
               {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
-               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots", "--depth-cull", "--queued"});
+               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots", "--depth-cull", "--depth-raster", "--queued"});
     if (args.flag("--list-devices")) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
         return 0;
@@ -80,6 +80,9 @@ int run_bench(const std::vector<std::string>& argv) {
     const std::string depth_cull = args.get("--depth-cull", "auto");
     if (!parse_depth_cull(depth_cull)) fail("--depth-cull = " + depth_cull + " must be auto, on or off");
     options.depth_cull = *parse_depth_cull(depth_cull);
+    const std::string depth_raster = args.get("--depth-raster", "auto");
+    if (!parse_depth_raster(depth_raster)) fail("--depth-raster = " + depth_raster + " must be auto, compute or fixed");
+    options.depth_raster = *parse_depth_raster(depth_raster);
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
     const std::filesystem::path out = args.get("--out", "bench-results");

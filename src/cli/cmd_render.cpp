@@ -122,7 +122,7 @@ int run_render(const std::vector<std::string>& argv) {
     options.merge(cache_options());
     options.merge(vector_options());
     options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
-                    "--device", "--frames", "--orbit", "--depth-cull", "--queued"});
+                    "--device", "--frames", "--orbit", "--depth-cull", "--depth-raster", "--queued"});
     options.merge(animation_options());
     Args args(argv, flags, options);
     apply_cache_options(args);
@@ -179,6 +179,9 @@ int run_render(const std::vector<std::string>& argv) {
     const std::string depth_cull_arg = args.get("--depth-cull", "auto");
     const std::optional<DepthCull> depth_cull = parse_depth_cull(depth_cull_arg);
     if (!depth_cull) fail("--depth-cull = " + depth_cull_arg + " must be auto, on or off");
+    const std::string depth_raster_arg = args.get("--depth-raster", "auto");
+    const std::optional<DepthRaster> depth_raster = parse_depth_raster(depth_raster_arg);
+    if (!depth_raster) fail("--depth-raster = " + depth_raster_arg + " must be auto, compute or fixed");
     long long frames = args.integer("--frames", 0);
     if (frames < 0 || frames > 100000 || (args.has("--frames") && frames < 1))
         fail("--frames = " + std::to_string(frames) + " must be in 1..100000");
@@ -228,6 +231,7 @@ int run_render(const std::vector<std::string>& argv) {
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
     renderer_options.depth_cull = *depth_cull;
+    renderer_options.depth_raster = *depth_raster;
     // Larger than one render target holds on this device (the splat's pixel words are one storage buffer):
     // the image is drawn in tiles, as a print is.
     const bool tiled = !print && !fits_one_target(context, extent);
@@ -306,9 +310,12 @@ int run_render(const std::vector<std::string>& argv) {
         std::printf("triangles:          %llu\n", (unsigned long long)stats.triangles);
         uint64_t depth_triangles = 0;
         for (size_t i = 0; i < renderer.object_count(); ++i) depth_triangles += renderer.read_depth_triangles(i);
-        std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)\n", (unsigned long long)depth_triangles,
-                    stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
-                    depth_cull_name(*depth_cull));
+        if (renderer.depth_words())
+            std::printf("depth pass:         by compute (--depth-raster %s)\n", depth_raster_name(*depth_raster));
+        else
+            std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)\n", (unsigned long long)depth_triangles,
+                        stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
+                        depth_cull_name(*depth_cull));
         std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
         std::printf("drawn stipples:     %lld\n", (long long)stats.drawn_stipples);
         std::string paths;

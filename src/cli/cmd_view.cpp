@@ -16,7 +16,7 @@ int run_view(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log", "--animation", "--time", "--depth-cull"});
+                    "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log", "--animation", "--time", "--depth-cull", "--depth-raster"});
     Args args(argv, flags, options);
     apply_cache_options(args);
 
@@ -38,6 +38,9 @@ int run_view(const std::vector<std::string>& argv) {
     const std::string depth_cull = args.get("--depth-cull", "auto");
     if (!parse_depth_cull(depth_cull)) fail("--depth-cull = " + depth_cull + " must be auto, on or off");
     viewer.depth_cull = *parse_depth_cull(depth_cull);
+    const std::string depth_raster = args.get("--depth-raster", "auto");
+    if (!parse_depth_raster(depth_raster)) fail("--depth-raster = " + depth_raster + " must be auto, compute or fixed");
+    viewer.depth_raster = *parse_depth_raster(depth_raster);
     viewer.verbose = args.flag("--verbose");
     viewer.device_index = device_index(args);
     viewer.screenshot_dir = args.get("--screenshot-dir", ".");

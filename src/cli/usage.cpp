@@ -60,6 +60,9 @@ Render options:
                           pixel centre, listed by a compute pass (the same image). auto considers it
                           for models whose triangles average under 2 px on screen and keeps it where
                           the frames' GPU times show that it pays (default auto)
+  --depth-raster MODE     auto, compute or fixed: the depth pass as a compute pass over the triangles,
+                          spread over every core, or the fixed-function pass. auto: compute on a CPU
+                          device (lavapipe), fixed on a GPU; a frame with a toon object is fixed
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at
@@ -107,6 +110,7 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --no-panel              start with the panel hidden
   --no-count-drawn        do not count drawn stipples on the GPU (saves an atomic per stipple)
   --depth-cull MODE       auto, on or off, as for render (default auto)
+  --depth-raster MODE     auto, compute or fixed, as for render (default auto)
   --screenshot-dir DIR    where S writes screenshots, stipple-0001.png, ... (default: .)
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
@@ -202,6 +206,7 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
                           not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
   --depth-cull MODE       auto, on or off, as for render (default auto)
+  --depth-raster MODE     auto, compute or fixed, as for render (default auto)
   --queued N              queue N frames back to back per submission, each timed frame the batch's wall
                           time over N (default: 1 on a CPU device such as lavapipe, 8 on a GPU, which
                           waited on after every small frame idles and lowers its clocks)

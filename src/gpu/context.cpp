@@ -192,7 +192,8 @@ void Context::pick_physical_device(const ContextOptions& options) {
 // a stencil is stored in 8 bytes per pixel, which made every depth pass about 4 ms slower at 1280x1024.
 static VkFormat choose_depth_format(VkPhysicalDevice physical_device) {
     const VkFormatFeatureFlags needed =
-        VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+        VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+        VK_FORMAT_FEATURE_TRANSFER_DST_BIT;  // also copied in (the depth pass as compute)
     for (VkFormat format : {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT}) {
         VkFormatProperties properties{};
         vkGetPhysicalDeviceFormatProperties(physical_device, format, &properties);
@@ -231,6 +232,7 @@ void Context::create_device(const ContextOptions& options) {
     enabled.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
     enabled.multiDrawIndirect = supported.multiDrawIndirect;
     enabled.depthBiasClamp = supported.depthBiasClamp;
+    enabled.shaderInt64 = supported.shaderInt64;  // the depth pass as compute (shaders/depth_raster.comp)
     VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     enabled12.hostQueryReset = supported12.hostQueryReset;
     enabled12.shaderFloat16 = VK_FALSE;
@@ -241,6 +243,7 @@ void Context::create_device(const ContextOptions& options) {
 
     features.large_points = supported.largePoints;
     features.wide_lines = supported.wideLines;
+    features.int64 = supported.shaderInt64;
     features.pipeline_statistics = supported.pipelineStatisticsQuery;
     features.max_point_size = supported.largePoints ? properties.limits.pointSizeRange[1] : 1.0f;
     features.max_line_width = supported.wideLines ? properties.limits.lineWidthRange[1] : 1.0f;

@@ -26,6 +26,7 @@ struct ContextOptions {
 struct DeviceFeatures {
     bool large_points = false;
     bool wide_lines = false;
+    bool int64 = false;  // shaderInt64: the depth pass as compute (render/depth_raster.hpp)
     bool pipeline_statistics = false;
     bool timestamps = false;
     // The device reads RGB32F and RGB32UI uniform texel buffers (optional in Vulkan): a mesh's vertex or

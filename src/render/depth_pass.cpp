@@ -64,7 +64,7 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
                                    : (back_faces ? depth_two_sided_pipeline_ : depth_pipeline_);
         if (pipeline != bound) {
             vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-            vkCmdSetDepthBias(cb, kDepthBiasConstant, 0.0f, gpu::kDepthBiasSlopeFactor);
+            vkCmdSetDepthBias(cb, gpu::kDepthBiasConstant, 0.0f, gpu::kDepthBiasSlopeFactor);
             bound = pipeline;
         }
         VkBuffer buffers[] = {object->geometry.positions.handle(), object->geometry.normals.handle()};

@@ -31,7 +31,8 @@ OffscreenTarget::OffscreenTarget(const gpu::Context& context, VkExtent2D extent,
     color_ = color_words ? gpu::Image::linear_with_words(context, extent, kColorFormat, usage)
                          : gpu::Image(context, extent, kColorFormat, usage, VK_IMAGE_ASPECT_COLOR_BIT);
     depth_ = gpu::Image(context, extent, context.depth_format,
-                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, gpu::kDepthStencilAspect);
+                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                            VK_IMAGE_USAGE_TRANSFER_DST_BIT, gpu::kDepthStencilAspect);
     VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
     color_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
     depth_readback_ = gpu::Buffer(context, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback);
@@ -91,9 +92,14 @@ RenderedFrame OffscreenTarget::render(StippleRenderer& renderer, const FrameView
     region.imageExtent = {extent_.width, extent_.height, 1};
     vkCmdCopyImageToBuffer(cb, color_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, color_readback_.handle(), 1,
                            &region);
-    region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    vkCmdCopyImageToBuffer(cb, depth_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth_readback_.handle(), 1,
-                           &region);
+    if (const gpu::Buffer* words = renderer.depth_words()) {  // the depth pass ran as compute
+        const VkBufferCopy whole{0, 0, depth_readback_.size()};
+        vkCmdCopyBuffer(cb, words->handle(), depth_readback_.handle(), 1, &whole);
+    } else {
+        region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+        vkCmdCopyImageToBuffer(cb, depth_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, depth_readback_.handle(), 1,
+                               &region);
+    }
     gpu::buffer_barrier(cb, color_readback_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     gpu::buffer_barrier(cb, depth_readback_.handle(), VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,

@@ -28,6 +28,8 @@ static_assert(offsetof(DrawnPolygons, count) == 12);
 static_assert(sizeof(SilhouetteEdge) == 16);
 static_assert(offsetof(SilhouetteEdge, second_polygon) == 12);
 static_assert(sizeof(IndexList) == kIndexListHeaderBytes);
+static_assert(sizeof(RasterTriangles) == kIndexListHeaderBytes);  // shares the depth list's buffer
+static_assert(offsetof(RasterTriangles, count) == 12);
 static_assert(offsetof(IndexList, first_instance) == 16);
 static_assert(kIndexListFirstIndex * sizeof(uint32_t) == sizeof(IndexList));  // indices right after it
 

@@ -53,7 +53,9 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
                                         gpu::MemoryUse::DeviceLocal);
         splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal);
-        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage, gpu::MemoryUse::DeviceLocal);
+        // Also copied out: into the depth image or read back, when the depth pass ran as compute.
+        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                   gpu::MemoryUse::DeviceLocal);
         splat_extent_ = extent;
     }
     if (cover_changed) splat_cover_ = gpu::Buffer(context_, cover_bytes, usage, gpu::MemoryUse::DeviceLocal);

@@ -47,7 +47,8 @@ void StippleRenderer::release() {
                          density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
-                         line_pieces_pipeline_, depth_triangles_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
+                         line_pieces_pipeline_, depth_triangles_pipeline_, depth_raster_pipelines_[0],
+                         depth_raster_pipelines_[1], depth_coverage_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
                          splat_pipelines_[2], splat_pipelines_[3]})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -138,6 +139,14 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
     depth_triangles_pipeline_ = gpu::create_compute_pipeline(context_, "depth_triangles.comp", layouts_.pipeline,
                                                              {{{gpu::kSpecMeshVec3Texels, vec3_texels}}});
+    if (context_.features.int64) {  // the depth pass as compute (render/depth_raster.hpp)
+        for (uint32_t large = 0; large < 2; ++large)
+            depth_raster_pipelines_[large] = gpu::create_compute_pipeline(
+                context_, "depth_raster.comp", layouts_.splat_pipeline,
+                {{{gpu::kSpecDepthUnorm24, unorm24}, {gpu::kSpecMeshVec3Texels, vec3_texels}, {gpu::kSpecRasterLarge, large}}});
+        depth_coverage_pipeline_ = gpu::create_compute_pipeline(context_, "depth_coverage.comp", layouts_.splat_pipeline,
+                                                                {{{gpu::kSpecDepthUnorm24, unorm24}}});
+    }
 }
 
 bool StippleRenderer::mesh_vec3_texels() const { return context_.features.vec3_texels && !options_.scalar_texels; }
@@ -220,6 +229,11 @@ void StippleRenderer::prepare(const FrameView& view) {
     }
     stats_.cpu_density_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start).count();
     choose_depth_lists(view);
+    // The depth pass as compute lists its large triangles in the depth lists' buffers: made here, before
+    // a frame binds the objects' sets (record decides by the targets, which it alone sees).
+    if (depth_raster_by_compute(options_.depth_raster, context_))
+        for (auto& object : objects_)
+            if (object->geometry.index_count > 0) ensure_depth_triangles(*object);
     DeformPass::evaluate(objects_);
 }
 
@@ -381,6 +395,9 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     }
     record_density(cb);
     timer_.mark(cb, "density");
+    depth_by_compute_ = depth_by_compute_this_frame(targets);
+    if (depth_by_compute_)  // no fixed-function pass to list triangles for (the lists' buffers are reused)
+        for (auto& object : objects_) object->frame.depth_listed = false;
     if (std::any_of(objects_.begin(), objects_.end(), [](const auto& o) { return o->frame.depth_listed; })) {
         record_depth_triangles(cb);
         timer_.mark(cb, "depth_list");
@@ -412,16 +429,33 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     // When the splat writes every pixel afterwards (its image holds the paper wherever no ink falls),
     // the colour need not be cleared first: 0.35 ms of a software GPU's frame at 1280x1024.
     const bool splat_covers_image = any_splat && paper_under_splat();
-    begin_rendering(cb, targets, true, !splat_covers_image);
-    record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
-    vkCmdEndRendering(cb);
-    timer_.mark(cb, "depth");
-    if (any_splat || any_object_space_lines) {  // the depth as words in a buffer, for compute passes to test against
-        copy_scene_depth(cb, targets);
-        timer_.mark(cb, "depth_copy");
-    }
     const bool any_points =
         std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_points(*o); });
+    if (depth_by_compute_) {
+        // §2.1 by compute, into the words; the depth image gets them where a pass tests against it.
+        record_depth_raster(cb, targets);
+        timer_.mark(cb, "depth");
+        const bool raskar_lines = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
+            return draws_edge_lines(*o) && o->params.silhouette_lines;
+        });
+        if (!splat_covers_image || any_points || raskar_lines) {  // clears the colour (and the depth)
+            begin_rendering(cb, targets, true, !splat_covers_image);
+            vkCmdEndRendering(cb);
+        }
+        if (any_points || raskar_lines) {
+            copy_depth_words_to_image(cb, targets, any_points);  // the points test the coverage stencil too
+            timer_.mark(cb, "depth_copy");
+        }
+    } else {
+        begin_rendering(cb, targets, true, !splat_covers_image);
+        record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
+        vkCmdEndRendering(cb);
+        timer_.mark(cb, "depth");
+        if (any_splat || any_object_space_lines) {  // the depth as words in a buffer, for compute passes to test against
+            copy_scene_depth(cb, targets);
+            timer_.mark(cb, "depth_copy");
+        }
+    }
     if (any_points) {
         begin_rendering(cb, targets, false);
         record_stipples(cb);
@@ -491,7 +525,7 @@ void StippleRenderer::collect() {
     double depth_ms = 0.0;  // what the depth lists change: the depth pass and the lists' own
     for (const auto& [pass, ms] : stats_.gpu_ms)
         if (pass == "depth" || pass == "depth_list") depth_ms += ms;
-    if (depth_ms > 0.0) depth_cull_.frame_done(depth_ms);
+    if (depth_ms > 0.0 && !depth_by_compute_) depth_cull_.frame_done(depth_ms);
     if (!options_.count_drawn) return;
     stats_.drawn_stipples = 0;
     for (const auto& object : objects_) {

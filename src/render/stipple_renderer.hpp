@@ -19,6 +19,7 @@
 #include "mesh/mesh.hpp"
 #include "render/camera.hpp"
 #include "render/deform_pass.hpp"
+#include "render/depth_raster.hpp"
 #include "render/depth_triangles.hpp"
 #include "render/descriptor_schema.hpp"
 #include "render/object_gpu.hpp"
@@ -80,6 +81,8 @@ struct RendererOptions {
     // Whether an object's depth pass draws only the triangles that may cover a pixel centre (listed by a
     // compute pass, render/depth_triangles.hpp): the same image, less work where triangles are small.
     DepthCull depth_cull = DepthCull::Auto;
+    // How the depth pass is rasterised (render/depth_raster.hpp): auto is by compute on a CPU device.
+    DepthRaster depth_raster = DepthRaster::Auto;
 };
 
 struct FrameStats {
@@ -129,6 +132,10 @@ public:
     // The triangles the last frame's depth pass drew of an object: those its list kept, or all of them
     // when it drew the whole mesh (render/depth_triangles.hpp). Read back: call after the frame completed.
     uint32_t read_depth_triangles(size_t object) const;
+    // The last frame's depth as words (X8_D24 or float bits, one per pixel, top row first) when the depth
+    // pass ran as compute (render/depth_raster.hpp); else null, and the depth image holds it. The depth
+    // image is then filled only where a pass tests against it: read the depth back from here.
+    const gpu::Buffer* depth_words() const { return depth_by_compute_ ? &splat_depth_ : nullptr; }
     // The stipples the last frame drew of an object and that inked a pixel (record_visible only; the
     // object must have been drawn by the splat). Throws stipple::Error otherwise.
     std::vector<gpu::VisibleStipple> read_visible_stipples(size_t object) const;
@@ -169,6 +176,10 @@ private:
     void record_depth_triangles(VkCommandBuffer cb);  // the depth pass's lists (objects that draw one)
     void record_depth(VkCommandBuffer cb);
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
+    // depth_raster.cpp
+    bool depth_by_compute_this_frame(const RenderTargets& targets) const;
+    void record_depth_raster(VkCommandBuffer cb, const RenderTargets& targets);
+    void copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets, bool with_stencil);
     // splat_pass.cpp
     void ensure_frame_buffers(const RenderTargets& targets);
     bool splat_composes_dots() const;
@@ -196,6 +207,10 @@ private:
     VkPipeline gradient_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
+    // The depth pass as compute: [0] every triangle, the small ones drawn; [1] the listed ones (kSpecRasterLarge).
+    VkPipeline depth_raster_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    VkPipeline depth_coverage_pipeline_ = VK_NULL_HANDLE;  // the coverage stencil from its words
+    bool depth_by_compute_ = false;  // this frame's depth pass ran as compute
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
@@ -227,9 +242,5 @@ private:
     FrameView view_;
     FrameStats stats_;
 };
-
-// Polygon offset of the depth pass, in the units of vkCmdSetDepthBias (the slope factor,
-// kDepthBiasSlopeFactor, is in shaders/shared_types.h: the large dots read it too).
-inline constexpr float kDepthBiasConstant = 2.0f;
 
 }  // namespace stipple
