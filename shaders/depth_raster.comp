@@ -116,12 +116,11 @@ bool one_sided_depth() {  // object.flags.x, read where lavapipe cannot fold it 
     return (object.flags[unfoldable_zero()] & kFlagDepthOneSided) != 0u;
 }
 
-// Floor of a / b for b > 0 (integer division in shaders rounds toward zero).
-int64_t floor_div64(int64_t a, int64_t b) { return a >= 0 ? a / b : -((b - 1 - a) / b); }
-
-// The pixels of row `row` (edge values at the box's first column) inside all three edges: offsets
-// [lo, hi] from the box's first column, empty when hi < lo. Each row costs three divisions and then
-// only the pixels it covers, so a sliver costs its pixels, not its box.
+// The pixels of a row inside all three edges: offsets [lo, hi] from the box's first column (empty when
+// hi < lo), from the row's edge values at that column and their steps per pixel. Each bound comes
+// from a float quotient (a software GPU divides integers lane by lane, several times slower, and 64-bit
+// ones slower still), clamped to just beyond the row, then made exact by one integer step either way:
+// the quotient is off by far less than one.
 ivec2 row_span(ivec3 row, ivec3 step, vec3 inverse_step, int width) {
     int lo = 0, hi = width - 1;
     for (int i = 0; i < 3; ++i) {
@@ -129,31 +128,43 @@ ivec2 row_span(ivec3 row, ivec3 step, vec3 inverse_step, int width) {
             if (row[i] < 0) hi = -1;
             continue;
         }
-        // The bound from a float quotient (a software GPU divides integers lane by lane), then made exact:
-        // the quotient is off by far less than one, so one step either way settles it.
-        int k = int(floor(-float(row[i]) * inverse_step[i]));
+        float q = clamp(-float(row[i]) * inverse_step[i], -2.0f, float(width) + 1.0f);
         if (step[i] > 0) {  // the first k with row + step * k >= 0
+            int k = int(ceil(q));
             if (row[i] + step[i] * k < 0) ++k;
-            if (row[i] + step[i] * (k - 1) >= 0) --k;
+            else if (row[i] + step[i] * (k - 1) >= 0) --k;
             lo = max(lo, k);
         } else {  // the last such k
-            k = int(floor(float(row[i]) * -inverse_step[i]));
+            int k = int(floor(q));
             if (row[i] + step[i] * k < 0) --k;
-            if (row[i] + step[i] * (k + 1) >= 0) ++k;
+            else if (row[i] + step[i] * (k + 1) >= 0) ++k;
             hi = min(hi, k);
         }
     }
     return ivec2(lo, hi);
 }
 
-ivec2 row_span64(i64vec3 row, i64vec3 step, int width) {
-    int64_t lo = 0, hi = width - 1;
+ivec2 row_span64(i64vec3 row, i64vec3 step, vec3 inverse_step, int width) {
+    int lo = 0, hi = width - 1;
     for (int i = 0; i < 3; ++i) {
-        if (step[i] > 0) lo = max(lo, -floor_div64(row[i], step[i]));  // the first k with row + step * k >= 0
-        else if (step[i] < 0) hi = min(hi, floor_div64(row[i], -step[i]));
-        else if (row[i] < 0) hi = -1;
+        if (step[i] == 0) {
+            if (row[i] < 0) hi = -1;
+            continue;
+        }
+        float q = clamp(-float(row[i]) * inverse_step[i], -2.0f, float(width) + 1.0f);
+        if (step[i] > 0) {
+            int k = int(ceil(q));
+            if (row[i] + step[i] * k < 0) ++k;
+            else if (row[i] + step[i] * (k - 1) >= 0) --k;
+            lo = max(lo, k);
+        } else {
+            int k = int(floor(q));
+            if (row[i] + step[i] * k < 0) --k;
+            else if (row[i] + step[i] * (k + 1) >= 0) ++k;
+            hi = min(hi, k);
+        }
     }
-    return ivec2(int(lo), int(max(hi, int64_t(-1))));
+    return ivec2(lo, hi);
 }
 
 float depth_at(Setup s, int x, int y) { return s.depth.x * float(x) + s.depth.y * float(y) + s.depth.z; }
@@ -180,9 +191,11 @@ void rasterise_small(Setup s) {
 // pixels an iteration let a triangle cover a 4096-pixel-wide frame's 4096 rows.)
 void rasterise_share(Setup s) {
     int width = s.last.x - s.first.x + 1;
+    i64vec3 step_x = s.edge_x * 256;
+    vec3 inverse_step = 1.0f / vec3(step_x);
     for (int y = s.first.y + int(gl_LocalInvocationID.x); y <= s.last.y; y += int(kDensityWorkgroupSize)) {
         i64vec3 row = s.edge_at + s.edge_y * (int64_t(y - s.first.y) * 256);
-        ivec2 span = row_span64(row, s.edge_x * 256, width);
+        ivec2 span = row_span64(row, step_x, inverse_step, width);
         for (int k = span.x; k <= span.y; k += 4) {
             for (int j = 0; j < 4; ++j) {  // unrolled: not a loop of its own
                 if (k + j > span.y) break;
@@ -204,20 +217,16 @@ float plane_distance(vec4 c, int plane, vec2 guard) {
     return guard.y * c.w + c.y;
 }
 
-void rasterise_large(uint triangle) {
-    uvec3 corners = mesh_triangle(triangle);
-    // Clipped against the near plane and the guard band (Sutherland-Hodgman): at most 8 corners.
+// A listed triangle that crosses the near plane or the guard band: clipped to them in clip space
+// (Sutherland-Hodgman, at most 8 corners), then drawn as a fan. Apart from the unclipped ones, whose
+// path stays free of its arrays (on a software GPU they cost every workgroup, used or not).
+void rasterise_clipped(vec4 c0, vec4 c1, vec4 c2, vec2 guard, bool one_sided) {
     vec4 polygon[8];
-    polygon[0] = corner_clip(corners.x);
-    polygon[1] = corner_clip(corners.y);
-    polygon[2] = corner_clip(corners.z);
+    polygon[0] = c0;
+    polygon[1] = c1;
+    polygon[2] = c2;
     int count = 3;
-    // The guard band in NDC: kGuardPixels from the origin, less a pixel for rounding.
-    vec2 guard = (kGuardPixels - 1.0f) / (0.5f * frame.viewport.xy) - 1.0f;
-    bool inside = true;  // most listed triangles are only large: no clipping
-    for (int i = 0; i < 3; ++i)
-        for (int plane = 0; plane < 5; ++plane) inside = inside && plane_distance(polygon[i], plane, guard) >= 0.0f;
-    for (int plane = 0; plane < 5 && count >= 3 && !inside; ++plane) {
+    for (int plane = 0; plane < 5 && count >= 3; ++plane) {
         vec4 clipped[8];
         int kept = 0;
         for (int i = 0; i < count; ++i) {
@@ -229,7 +238,6 @@ void rasterise_large(uint triangle) {
         for (int i = 0; i < kept; ++i) polygon[i] = clipped[i];
         count = kept;
     }
-    bool one_sided = one_sided_depth();
     for (int i = 1; i + 1 < count; ++i) {  // a fan over the clipped polygon
         vec4 c[3] = vec4[3](polygon[0], polygon[i], polygon[i + 1]);
         if (c[0].w <= 0.0f || c[1].w <= 0.0f || c[2].w <= 0.0f) continue;
@@ -238,6 +246,25 @@ void rasterise_large(uint triangle) {
         if (setup_triangle(window, vec3(c[0].z / c[0].w, c[1].z / c[1].w, c[2].z / c[2].w), one_sided, s))
             rasterise_share(s);
     }
+}
+
+void rasterise_large(uint triangle) {
+    uvec3 corners = mesh_triangle(triangle);
+    vec4 c0 = corner_clip(corners.x), c1 = corner_clip(corners.y), c2 = corner_clip(corners.z);
+    // The guard band in NDC: kGuardPixels from the origin, less a pixel for rounding.
+    vec2 guard = (kGuardPixels - 1.0f) / (0.5f * frame.viewport.xy) - 1.0f;
+    bool inside = true;
+    for (int plane = 0; plane < 5; ++plane)
+        inside = inside && plane_distance(c0, plane, guard) >= 0.0f && plane_distance(c1, plane, guard) >= 0.0f &&
+                 plane_distance(c2, plane, guard) >= 0.0f;
+    bool one_sided = one_sided_depth();
+    if (!inside) {
+        rasterise_clipped(c0, c1, c2, guard, one_sided);
+        return;
+    }
+    vec2 window[3] = vec2[3](window_xy(c0), window_xy(c1), window_xy(c2));
+    Setup s;
+    if (setup_triangle(window, vec3(c0.z / c0.w, c1.z / c1.w, c2.z / c2.w), one_sided, s)) rasterise_share(s);
 }
 
 void large_pass() {  // at most kRasterMaxGroups workgroups: each takes every that-many-th listed triangle
@@ -257,9 +284,11 @@ void triangle_pass() {
         } else {
             vec2 window[3] = vec2[3](window_xy(c0), window_xy(c1), window_xy(c2));
             vec2 lo = min(window[0], min(window[1], window[2])), hi = max(window[0], max(window[1], window[2]));
-            if (any(greaterThan(hi - lo, vec2(float(kRasterSmallSpan) - 1.0f)))) {
+            // Beyond the guard band (or not finite, w near 0): clipped by the large pass too.
+            bool guarded = all(lessThan(abs(lo), vec2(kGuardPixels))) && all(lessThan(abs(hi), vec2(kGuardPixels)));
+            if (!guarded || any(greaterThan(hi - lo, vec2(float(kRasterSmallSpan) - 1.0f)))) {
                 // Larger than the small loop takes; one wholly beside the frame needs no pass.
-                large = all(lessThan(lo, frame.viewport.xy + 1.0f)) && all(greaterThan(hi, vec2(-1.0f)));
+                large = !guarded || (all(lessThan(lo, frame.viewport.xy + 1.0f)) && all(greaterThan(hi, vec2(-1.0f))));
             } else {
                 Setup s;
                 if (setup_triangle(window, vec3(c0.z / c0.w, c1.z / c1.w, c2.z / c2.w), one_sided_depth(), s))

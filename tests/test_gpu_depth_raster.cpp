@@ -104,6 +104,16 @@ TEST_F(DepthRasterTest, ClipsTrianglesAtTheNearPlane) {
         const FrameView near = test::framed_view(bounds, kExtent, distance);
         expect_same_coverage(*context, coarse, params, near, "coarse sphere at " + std::to_string(distance));
     }
+    // A near plane through the sphere's centre: half of it is cut away, its rim triangles clipped.
+    FrameView cut = test::framed_view(bounds, kExtent, 0.8f);
+    const float centre_distance = glm::length(cut.camera.eye - bounds.center);
+    const float aspect = float(kExtent.width) / float(kExtent.height);
+    cut.camera.near_plane = centre_distance;
+    cut.camera.proj = glm::perspective(2.0f * std::atan(1.0f / cut.camera.proj[1][1]), aspect, centre_distance,
+                                       cut.camera.far_plane);
+    ObjectParams two_sided = params;
+    two_sided.two_sided = true;  // the inside shows where the near half is cut away
+    expect_same_coverage(*context, coarse, two_sided, cut, "coarse sphere cut by the near plane");
 }
 
 // Faces facing away seen through an opening (a two-sided bowl keeps them), and the paths and lines that
@@ -126,19 +136,23 @@ TEST_F(DepthRasterTest, EveryPathAndLineKindDrawsWithIt) {
     }
 }
 
-// A toon object's shading is drawn by the depth pass: such frames keep the fixed-function pass.
-TEST_F(DepthRasterTest, ToonFramesKeepTheFixedFunctionPass) {
+// A toon object's shading is drawn by the depth pass: such frames keep the fixed-function pass. auto
+// rasterises by compute on a CPU device, for triangles small on screen (kDepthComputeBelowPx) only.
+TEST_F(DepthRasterTest, AutoAndToonChooseThePass) {
     ObjectParams params;
-    params.toon = true;
-    const test::Prepared sphere = test::prepare(make_uv_sphere(2000), params);
-    const FrameView framed = test::framed_view(compute_bounding_sphere(sphere.mesh), kExtent);
-    EXPECT_FALSE(draw(*context, sphere, params, framed, DepthRaster::Compute).by_compute);
-    params.toon = false;
-    EXPECT_TRUE(draw(*context, sphere, params, framed, DepthRaster::Compute).by_compute);
+    const test::Prepared fine = test::prepare(make_uv_sphere(40000), params);  // ~2 px a triangle framed
+    const test::Prepared coarse = test::prepare(make_uv_sphere(800), params);  // ~100 px
+    const FrameView framed = test::framed_view(compute_bounding_sphere(fine.mesh), kExtent);
+    EXPECT_TRUE(draw(*context, coarse, params, framed, DepthRaster::Compute).by_compute);
+    EXPECT_FALSE(draw(*context, fine, params, framed, DepthRaster::Fixed).by_compute);
     const bool cpu_device = context->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    EXPECT_EQ(draw(*context, sphere, params, framed, DepthRaster::Auto).by_compute, cpu_device)
-        << "auto rasterises by compute on a CPU device only";
-    EXPECT_FALSE(draw(*context, sphere, params, framed, DepthRaster::Fixed).by_compute);
+    EXPECT_EQ(draw(*context, fine, params, framed, DepthRaster::Auto).by_compute, cpu_device)
+        << "auto rasterises small triangles by compute on a CPU device only";
+    EXPECT_FALSE(draw(*context, coarse, params, framed, DepthRaster::Auto).by_compute) << "large triangles: fixed";
+    const FrameView far = test::framed_view(compute_bounding_sphere(fine.mesh), kExtent, 4.0f);
+    EXPECT_EQ(draw(*context, coarse, params, far, DepthRaster::Auto).by_compute, cpu_device) << "small again far away";
+    params.toon = true;
+    EXPECT_FALSE(draw(*context, fine, params, framed, DepthRaster::Compute).by_compute);
 }
 
 TEST(DepthRasterNames, ParseAndName) {

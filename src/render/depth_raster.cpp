@@ -33,7 +33,20 @@ bool depth_raster_by_compute(DepthRaster mode, const gpu::Context& context) {
 
 bool StippleRenderer::depth_by_compute_this_frame(const RenderTargets& targets) const {
     if (!depth_raster_by_compute(options_.depth_raster, context_) || !targets.splat_transfers) return false;
+    if (options_.depth_raster == DepthRaster::Auto && !depth_triangles_small_) return false;
     return std::none_of(objects_.begin(), objects_.end(), [](const auto& o) { return o->params.toon; });
+}
+
+bool StippleRenderer::triangles_small_for_compute(const FrameView& view) const {
+    double area = 0.0, triangles = 0.0;
+    for (const auto& object : objects_) {
+        if (object->geometry.index_count == 0) continue;
+        const float px = mean_front_triangle_px(*object, object->frame.uniforms, view);
+        if (px <= 0.0f) return false;  // the eye within its bounds: triangles large on screen
+        area += double(px) * object->geometry.triangle_count;
+        triangles += object->geometry.triangle_count;
+    }
+    return triangles > 0.0 && area / triangles < kDepthComputeBelowPx;
 }
 
 void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTargets& targets) {

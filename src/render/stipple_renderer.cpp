@@ -231,6 +231,7 @@ void StippleRenderer::prepare(const FrameView& view) {
     choose_depth_lists(view);
     // The depth pass as compute lists its large triangles in the depth lists' buffers: made here, before
     // a frame binds the objects' sets (record decides by the targets, which it alone sees).
+    depth_triangles_small_ = triangles_small_for_compute(view);
     if (depth_raster_by_compute(options_.depth_raster, context_))
         for (auto& object : objects_)
             if (object->geometry.index_count > 0) ensure_depth_triangles(*object);

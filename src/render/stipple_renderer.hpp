@@ -49,7 +49,9 @@ struct FrameView {
 // Images the frame is drawn into. Layouts on entry are ignored (contents are cleared); on exit the
 // colour image is in COLOR_ATTACHMENT_OPTIMAL and the depth image in DEPTH_STENCIL_ATTACHMENT_OPTIMAL
 // (or DEPTH_ATTACHMENT_OPTIMAL for a depth format without stencil). The depth image needs
-// TRANSFER_SRC usage: the splat and the object-space lines read a copy of it.
+// TRANSFER_SRC usage (the splat and the object-space lines read a copy of it) and TRANSFER_DST (the depth
+// pass as compute copies its words into it). After a frame whose depth pass ran as compute
+// (StippleRenderer::depth_words), the image holds the depth only if a pass tested against it.
 struct RenderTargets {
     VkImage color = VK_NULL_HANDLE;
     VkImageView color_view = VK_NULL_HANDLE;
@@ -178,6 +180,7 @@ private:
     void copy_scene_depth(VkCommandBuffer cb, const RenderTargets& targets);
     // depth_raster.cpp
     bool depth_by_compute_this_frame(const RenderTargets& targets) const;
+    bool triangles_small_for_compute(const FrameView& view) const;  // DepthRaster::Auto's test
     void record_depth_raster(VkCommandBuffer cb, const RenderTargets& targets);
     void copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets, bool with_stencil);
     // splat_pass.cpp
@@ -211,6 +214,7 @@ private:
     VkPipeline depth_raster_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline depth_coverage_pipeline_ = VK_NULL_HANDLE;  // the coverage stencil from its words
     bool depth_by_compute_ = false;  // this frame's depth pass ran as compute
+    bool depth_triangles_small_ = false;  // the prepared view's triangles are small enough for it (auto)
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
