@@ -3,9 +3,9 @@
 // words the splat and the object-space lines test against, by a compute pass over the triangles spread
 // over every core, instead of the fixed-function depth pass and its copy into words. On a software
 // GPU the fixed-function pass sets up every triangle on one thread (docs/architecture.md, "Depth by
-// compute"). Where a frame needs the depth image itself (stipples drawn by the points pipeline, the
-// Raskar-Cohen lines), the words are copied into it, with the coverage stencil made from them, so every
-// path tests against the same depth.
+// compute"). Where a frame needs the depth image itself (stipples drawn by the points pipeline), the
+// words are copied into it, with the coverage stencil made from them, so every path tests against the
+// same depth; the Raskar-Cohen lines test the words in their fragment shader (silhouette_words.frag).
 #include <optional>
 #include <string>
 

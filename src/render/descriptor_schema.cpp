@@ -66,7 +66,10 @@ std::span<const gpu::DescriptorBinding> splat_frame_bindings() { return kSplatFr
 RenderLayouts create_render_layouts(const gpu::Context& context) {
     RenderLayouts layouts;
     layouts.object_set = gpu::create_set_layout(context, object_descriptor_bindings(), kAllStages);
-    layouts.splat_frame_set = gpu::create_set_layout(context, kSplatFrameBindings, VK_SHADER_STAGE_COMPUTE_BIT);
+    // Also the fragment stage: the Raskar-Cohen lines test the depth words when the depth pass ran as
+    // compute (shaders/silhouette_words.frag).
+    layouts.splat_frame_set = gpu::create_set_layout(context, kSplatFrameBindings,
+                                                     VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
     layouts.pipeline = gpu::create_pipeline_layout(context, std::span(&layouts.object_set, 1), kPushConstantBytes);
     const VkDescriptorSetLayout splat_sets[] = {layouts.object_set, layouts.splat_frame_set};
     layouts.splat_pipeline = gpu::create_pipeline_layout(context, splat_sets, kPushConstantBytes);

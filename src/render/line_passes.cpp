@@ -3,7 +3,8 @@
 //     Raskar-Cohen index list and the list of contours, borders and creases (shaders/line_edges.comp);
 //     then per listed edge, its visible pieces, found by walking it against the depth pass
 //     (shaders/line_walk.comp);
-//   lines (one rendering scope): Raskar-Cohen wide lines behind the front faces' depth, and the
+//   lines (one rendering scope): Raskar-Cohen wide lines behind the front faces' depth (the depth
+//     image, or the depth words when the depth pass ran as compute: silhouette_words.frag), and the
 //     object-space pieces as capsules (shaders/line_pieces.*), which need no depth test: the pieces
 //     are already the visible parts, so a line is never nibbled by the surface it lies on.
 #include <algorithm>
@@ -32,6 +33,12 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     lines.color_format = color_format_;
     lines.depth_format = depth_format_;
     silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layouts_.pipeline);
+    // The same against the depth words, when the depth pass ran as compute (no depth image then).
+    gpu::GraphicsPipelineDesc lines_on_words = lines;
+    lines_on_words.fragment_shader = "silhouette_words.frag";
+    lines_on_words.depth_test = false;
+    lines_on_words.specialization = {{{gpu::kSpecDepthUnorm24, depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u}}};
+    silhouette_words_pipeline_ = gpu::create_graphics_pipeline(context_, lines_on_words, layouts_.splat_pipeline);
 
     gpu::GraphicsPipelineDesc pieces;
     pieces.vertex_shader = "line_pieces.vert";
@@ -101,8 +108,14 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         if (object->params.silhouette_lines) {
-            if (bound != silhouette_pipeline_) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, silhouette_pipeline_);
-            bound = silhouette_pipeline_;
+            const VkPipeline pipeline = depth_by_compute_ ? silhouette_words_pipeline_ : silhouette_pipeline_;
+            if (bound != pipeline) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            bound = pipeline;
+            if (depth_by_compute_) {  // the depth words too (set 1)
+                VkDescriptorSet sets[] = {object->set, image_set_};
+                vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.splat_pipeline, 0, 2, sets, 0,
+                                        nullptr);
+            }
             VkDeviceSize offset = 0;
             VkBuffer vb = object->geometry.positions.handle();
             vkCmdSetLineWidth(cb, object->frame.line_width);

@@ -46,7 +46,7 @@ void StippleRenderer::release() {
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
                          density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
-                         toon_two_sided_pipeline_, silhouette_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
+                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
                          line_pieces_pipeline_, depth_triangles_pipeline_, depth_raster_pipelines_[0],
                          depth_raster_pipelines_[1], depth_coverage_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
                          splat_pipelines_[2], splat_pipelines_[3]})
@@ -436,15 +436,12 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
         // §2.1 by compute, into the words; the depth image gets them where a pass tests against it.
         record_depth_raster(cb, targets);
         timer_.mark(cb, "depth");
-        const bool raskar_lines = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
-            return draws_edge_lines(*o) && o->params.silhouette_lines;
-        });
-        if (!splat_covers_image || any_points || raskar_lines) {  // clears the colour (and the depth)
+        if (!splat_covers_image || any_points) {  // clears the colour (and the depth)
             begin_rendering(cb, targets, true, !splat_covers_image);
             vkCmdEndRendering(cb);
         }
-        if (any_points || raskar_lines) {
-            copy_depth_words_to_image(cb, targets, any_points);  // the points test the coverage stencil too
+        if (any_points) {  // the points test the depth image and its coverage stencil (the lines, the words)
+            copy_depth_words_to_image(cb, targets, true);
             timer_.mark(cb, "depth_copy");
         }
     } else {
