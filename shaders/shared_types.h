@@ -235,7 +235,9 @@ using DepthTriangles = IndexList;
 // kRasterMaxGroups: Vulkan's least maxComputeWorkGroupCount) and the count; the triangle indices
 // follow it (in the buffer of kBindingDepthTriangles, which the fixed-function pass's lists use).
 STIPPLE_CONST uint kSpecRasterLarge = 0;  // depth_raster.comp: the pass over the listed triangles
-STIPPLE_CONST uint kRasterSmallSpan = 32;
+// 96: the first pass's 32-bit edge values stay under 2^31 (2 * (97 * 256) * (96 * 256)); a lane per
+// triangle up to this size beat a workgroup per triangle (docs/architecture.md, "Depth by compute").
+STIPPLE_CONST uint kRasterSmallSpan = 96;
 STIPPLE_CONST uint kRasterMaxGroups = 65535;
 struct RasterTriangles {
     uint groups_x;

@@ -62,8 +62,9 @@ Render options:
                           the frames' GPU times show that it pays (default auto)
   --depth-raster MODE     auto, compute or fixed: the depth pass as a compute pass over the triangles,
                           spread over every core, or the fixed-function pass. auto: compute on a CPU
-                          device (lavapipe) while triangles average under 24 px on screen, else
-                          fixed; a frame with a toon object is fixed (default auto)
+                          device (lavapipe) while triangles average under 24 px on screen or the
+                          models' facing surface is under 0.6 of the frame, else fixed; a frame
+                          with a toon object is fixed (default auto)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at

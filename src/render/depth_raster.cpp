@@ -46,7 +46,9 @@ bool StippleRenderer::triangles_small_for_compute(const FrameView& view) const {
         area += double(px) * object->geometry.triangle_count;
         triangles += object->geometry.triangle_count;
     }
-    return triangles > 0.0 && area / triangles < kDepthComputeBelowPx;
+    if (triangles == 0.0) return false;
+    const double frame_px = double(view.extent.width) * double(view.extent.height);
+    return area / triangles < kDepthComputeBelowPx || area < kDepthComputeBelowFrame * frame_px;
 }
 
 void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTargets& targets) {
@@ -89,10 +91,9 @@ void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTarget
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
-void StippleRenderer::copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets, bool with_stencil) {
+void StippleRenderer::copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets) {
     const bool stencil = gpu::format_has_stencil(depth_format_);
-    with_stencil = with_stencil && stencil;
-    if (with_stencil) {  // the coverage stencil (CoverageStencil::Write) from the words, four pixels a word
+    if (stencil) {  // the coverage stencil (CoverageStencil::Write) from the words, four pixels a word
         vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_coverage_pipeline_);
         VkDescriptorSet sets[] = {objects_.front()->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0, nullptr);
@@ -112,7 +113,7 @@ void StippleRenderer::copy_depth_words_to_image(VkCommandBuffer cb, const Render
     regions[0].imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
     regions[0].imageExtent = {targets.extent.width, targets.extent.height, 1};
     vkCmdCopyBufferToImage(cb, splat_depth_.handle(), targets.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &regions[0]);
-    if (with_stencil) {
+    if (stencil) {
         regions[1] = regions[0];
         regions[1].imageSubresource.aspectMask = VK_IMAGE_ASPECT_STENCIL_BIT;
         vkCmdCopyBufferToImage(cb, splat_background_.handle(), targets.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,

@@ -16,16 +16,23 @@ class Context;
 }
 
 // auto: compute on a CPU device (lavapipe) for frames whose triangles are small on screen (their mean
-// projected area under kDepthComputeBelowPx), fixed-function otherwise and on a GPU; compute: wherever
+// projected area under kDepthComputeBelowPx) or whose objects cover little of it (kDepthComputeBelowFrame),
+// fixed-function otherwise and on a GPU; compute: wherever
 // the device can (64-bit integers in shaders); fixed: the fixed-function pass. A frame with a toon
 // object (§3.1: its shading is drawn by the depth pass) uses the fixed-function pass whatever the choice.
 enum class DepthRaster { Auto, Compute, Fixed };
-// auto's bound, in square pixels per triangle facing the eye over the frame's objects. The compute pass
-// gives large triangles a workgroup each, which a software rasteriser's tiles beat: on the bunny at
-// 1280x1024 (lavapipe, 2 cores) compute took 8.7 ms against 17.4 for the pass and its copy at 8.6 px a
-// triangle, and broke even at about 40 px (the bunny at 0.45 of its framing distance); at 320 px (the
-// fox) it took 9.6 ms against 3.1.
+// auto's bounds. The compute pass saves the fixed-function pass's per-triangle work on one thread and
+// the copy into words, and pays more per pixel covered (a software rasteriser fills 4x4 blocks at once).
+// So it wins where triangles are many for the pixels they cover, and loses where a close view covers
+// the frame with mid-sized ones. Measured at 1280x1024 (lavapipe, 2 cores; depth pass + copy against
+// compute, ms, docs/architecture.md): the bunny framed (8.6 px a triangle) 12.5-14.7 against 7.0-7.9;
+// at 0.45 of its framing distance (43 px, the frame covered) 11.1-13.2 against 13.7-16.1; the fox
+// (320 px a triangle, its surface 0.4 of the frame) 2.5-2.9 against 1.4-2.2; spot (112 px, 0.5)
+// 5.8-6.3 against 4.9-5.0; a 12-triangle box (0.75) 4.0-5.4 against 4.8-5.4.
+// Mean projected area of a triangle facing the eye, square pixels, under which compute is used:
 inline constexpr float kDepthComputeBelowPx = 24.0f;
+// ... or the objects' facing surface (triangles times that mean) under this share of the frame.
+inline constexpr double kDepthComputeBelowFrame = 0.6;
 const char* depth_raster_name(DepthRaster mode);
 std::optional<DepthRaster> parse_depth_raster(const std::string& name);
 // Whether `mode` rasterises by compute on this device (before the per-frame toon exception).

@@ -46,9 +46,10 @@ void StippleRenderer::release() {
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
                          density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
-                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_, line_edges_pipeline_, line_walk_pipeline_,
-                         line_pieces_pipeline_, depth_triangles_pipeline_, depth_raster_pipelines_[0],
-                         depth_raster_pipelines_[1], depth_coverage_pipeline_, splat_pipelines_[0], splat_pipelines_[1],
+                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_,
+                         line_edges_pipeline_, line_walk_pipeline_, line_pieces_pipeline_, depth_triangles_pipeline_,
+                         depth_raster_pipelines_[0], depth_raster_pipelines_[1], depth_coverage_pipeline_,
+                         splat_pipelines_[0], splat_pipelines_[1],
                          splat_pipelines_[2], splat_pipelines_[3]})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -441,7 +442,7 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
             vkCmdEndRendering(cb);
         }
         if (any_points) {  // the points test the depth image and its coverage stencil (the lines, the words)
-            copy_depth_words_to_image(cb, targets, true);
+            copy_depth_words_to_image(cb, targets);
             timer_.mark(cb, "depth_copy");
         }
     } else {

@@ -182,7 +182,7 @@ private:
     bool depth_by_compute_this_frame(const RenderTargets& targets) const;
     bool triangles_small_for_compute(const FrameView& view) const;  // DepthRaster::Auto's test
     void record_depth_raster(VkCommandBuffer cb, const RenderTargets& targets);
-    void copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets, bool with_stencil);
+    void copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets);  // with the coverage stencil
     // splat_pass.cpp
     void ensure_frame_buffers(const RenderTargets& targets);
     bool splat_composes_dots() const;
