@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "render/shared_types.hpp"
 #include "render/stipple_renderer.hpp"
