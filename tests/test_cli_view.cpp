@@ -152,8 +152,10 @@ public:
         return false;
     }
 
-    void start_viewer(const std::vector<std::string>& args) {
+    void start_viewer(const std::vector<std::string>& args,
+                      const std::vector<std::pair<std::string, std::string>>& extra_env = {}) {
         std::vector<std::pair<std::string, std::string>> env{{"DISPLAY", display_}, {"STIPPLE_VALIDATION", "1"}};
+        env.insert(env.end(), extra_env.begin(), extra_env.end());
         if (!std::getenv("XDG_RUNTIME_DIR")) {
             std::filesystem::create_directories(dir_ / "xdg");
             chmod((dir_ / "xdg").c_str(), 0700);
@@ -562,6 +564,87 @@ TEST(CliView, TheWindowShowsTheFrameThroughSharedMemoryAndTheSwapchain) {
         EXPECT_GT(ink_pixels(shown), 200u) << "the window shows no stipples";
         EXPECT_LE(double(differing), 0.001 * 3 * kWidth * kHeight) << "the window shows another image";
     }
+}
+
+// On lavapipe under Xvfb the panel is drawn into a layer of its own only when it changes, and laid over
+// each frame as the frame is copied to the X server; a window that changes every frame (the timeline
+// while an animation plays) is drawn into each frame instead (app/panel_layer.hpp). The window shows what
+// drawing it all straight into the frame shows (STIPPLE_PANEL_LAYER=off), but for the figures that change
+// from run to run (fps, GPU times, the scene clock), and most frames reuse the layer.
+TEST(CliView, ThePanelLaidOverTheFrameLooksAsIfDrawnIntoIt) {
+    for (const char* tool : {"Xvfb", "xdotool"})
+        if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (apt-get install xvfb xdotool); viewer not tested";
+    auto dir = test::temp_dir("cli-view-panel-layer");
+    const std::string cache = (dir / "cache").string();
+    // Animated at speed 0: the timeline's clock runs (its window changes every frame), the drawing stays.
+    const std::string model = test::write_rig(anim::rigs::bending_cylinder(), "cli-view-panel-layer-model", "cylinder");
+    std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << model << R"(", "params": {"dmax": 0.05},
+                                             "animation": {"speed": 0, "start": 0.4}}],
+                                             "paper": [1, 0.85, 0.6], "ink": [0.1, 0.2, 0.7]})";
+    constexpr int kWidth = 962, kHeight = 600;  // rows a linear image may pad: the layer keeps its own pitch
+    Image shown[2];
+    for (int layer = 1; layer >= 0; --layer) {
+        SCOPED_TRACE(layer ? "the panel's layer" : "the panel drawn into each frame");
+        const std::string shot = (dir / ("shot-" + std::to_string(layer) + ".png")).string();
+        std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot " + shot + "\nwait 4\nquit\n";
+        ViewerSession session(dir);
+        ASSERT_TRUE(session.start_x(160)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+        session.start_viewer({(dir / "scene.json").string(), "--width", std::to_string(kWidth),
+                              "--height", std::to_string(kHeight), "--verbose", "--script",
+                              (dir / "script.txt").string(), "--cache-dir", cache},
+                             {{"STIPPLE_PANEL_LAYER", layer ? "auto" : "off"}});
+        ASSERT_TRUE(session.find_window()) << session.out() << session.err();
+        ASSERT_TRUE(wait_for([&] { return session.out().find("screenshot: " + shot) != std::string::npos; }, 120s))
+            << session.out() << session.err();
+        std::this_thread::sleep_for(1500ms);
+        shown[layer] = grab_window(session.display(), session.window(), kWidth, kHeight);
+        ASSERT_EQ(session.viewer().wait_exit(60s), 0) << session.out() << session.err();
+        ASSERT_EQ(shown[layer].width, kWidth) << "could not read the window back";
+        ASSERT_NE(session.out().find("X11 shared memory"), std::string::npos) << session.out();
+        const std::string out = session.out();
+        const size_t at = out.find("the panel's layer drawn in ");
+        if (!layer) {
+            EXPECT_EQ(at, std::string::npos) << out;
+        } else {
+            ASSERT_NE(at, std::string::npos) << out;
+            unsigned long long draws = 0, direct = 0;
+            long long frames = 0;
+            ASSERT_EQ(std::sscanf(out.c_str() + at,
+                                  "the panel's layer drawn in %llu of %lld frames (the others laid the layer drawn "
+                                  "before over the frame); windows that change every frame drawn into %llu frames",
+                                  &draws, &frames, &direct),
+                      3)
+                << out;
+            std::printf("the panel's layer drawn in %llu of %lld frames, the timeline into %llu\n", draws, frames,
+                        direct);
+            EXPECT_GT(draws, 0u);
+            EXPECT_LT(draws, (unsigned long long)frames) << "every frame drew the panel again";
+            EXPECT_GT(direct, (unsigned long long)frames / 2) << "the timeline went into the layer";
+        }
+        // The screenshot is the frame without the panel: the window shows the panel over it.
+        const Image frame = read_png(shot);
+        ASSERT_EQ(frame.width, kWidth);
+        size_t under_panel = 0;
+        for (size_t p = 0; p < size_t(kWidth * kHeight); ++p)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(shown[layer].pixels[4 * p + c]) - int(frame.pixels[frame.channels * p + c])) > 8) {
+                    ++under_panel;
+                    break;
+                }
+        std::printf("%s: %zu of %d pixels differ from the frame without it\n", layer ? "layer" : "drawn into the frame",
+                    under_panel, kWidth * kHeight);
+        EXPECT_GT(double(under_panel), 0.15 * kWidth * kHeight) << "no panel in the window";
+    }
+    size_t differing = 0;
+    for (size_t p = 0; p < size_t(kWidth * kHeight); ++p)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(shown[1].pixels[4 * p + c]) - int(shown[0].pixels[4 * p + c])) > 8) {
+                ++differing;
+                break;
+            }
+    std::printf("the layer against the panel drawn into the frame: %zu of %d pixels differ\n", differing,
+                kWidth * kHeight);
+    EXPECT_LE(double(differing), 0.01 * kWidth * kHeight) << "the layer shows another panel";
 }
 
 size_t lines_in(const std::filesystem::path& path) {

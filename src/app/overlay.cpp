@@ -1,14 +1,18 @@
 #include "app/overlay.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
+#include "app/panel_layer.hpp"
 #include "app/swapchain.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "gpu/resources.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace stipple::app {
@@ -20,45 +24,11 @@ void check_imgui_result(VkResult result) {
     if (result < 0) stipple::gpu::vk_check(result, "Dear ImGui Vulkan backend", __FILE__, __LINE__);
 }
 
-VkRenderPass create_overlay_pass(VkDevice device, VkFormat format, VkImageLayout final_layout) {
-    VkAttachmentDescription color{};
-    color.format = format;
-    color.samples = VK_SAMPLE_COUNT_1_BIT;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // the stipple drawing is already there
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    color.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.finalLayout = final_layout;  // presented by the swapchain, or read by the host (Swapchain::present_layout)
-    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &ref;
-    // The stipple pass (or a screenshot copy) wrote the image before; the panel blends over it.
-    VkSubpassDependency before{};
-    before.srcSubpass = VK_SUBPASS_EXTERNAL;
-    before.dstSubpass = 0;
-    before.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
-    before.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-    before.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    before.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &color;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &before;
-    VkRenderPass pass = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &pass));
-    return pass;
-}
-
 }  // namespace
 
 Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchain& swapchain) : context_(context) {
-    render_pass_ = create_overlay_pass(context.device, swapchain.format(), swapchain.present_layout());
+    render_pass_ = create_panel_pass(context.device, swapchain.format(), PanelTarget::Frame, swapchain.present_layout());
+    layer_ = std::make_unique<PanelLayer>(context, swapchain.format());
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
@@ -98,6 +68,7 @@ Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchai
 
 Overlay::~Overlay() {
     vkDeviceWaitIdle(context_.device);
+    layer_.reset();
     if (in_frame_) ImGui::EndFrame();
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -115,19 +86,13 @@ void Overlay::destroy_framebuffers() {
 void Overlay::rebuild(const Swapchain& swapchain) {
     destroy_framebuffers();
     extent_ = swapchain.extent();
+    present_layout_ = swapchain.present_layout();
+    images_.clear();
+    if (layer_enabled()) layer_->rebuild(swapchain);  // without images where the swapchain has none
     if (!swapchain.valid()) return;
     for (uint32_t i = 0; i < swapchain.image_count(); ++i) {
-        VkImageView view = swapchain.view(i);
-        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        info.renderPass = render_pass_;
-        info.attachmentCount = 1;
-        info.pAttachments = &view;
-        info.width = extent_.width;
-        info.height = extent_.height;
-        info.layers = 1;
-        VkFramebuffer framebuffer = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateFramebuffer(context_.device, &info, nullptr, &framebuffer));
-        framebuffers_.push_back(framebuffer);
+        images_.push_back(swapchain.image(i));
+        framebuffers_.push_back(create_panel_framebuffer(context_.device, render_pass_, swapchain.view(i), extent_));
     }
     ImGui_ImplVulkan_SetMinImageCount(std::max(swapchain.min_image_count(), 2u));
 }
@@ -143,13 +108,42 @@ void Overlay::record(VkCommandBuffer cb, uint32_t image_index) {
     STIPPLE_CHECK(in_frame_, "Overlay::record without new_frame");
     ImGui::Render();
     in_frame_ = false;
+    ImDrawData* data = ImGui::GetDrawData();
+    if (layer_->active()) {  // the window's copy lays the layer over the frame (panel_pixels)
+        const PanelPlan plan = layer_->plan(*data);
+        if (plan.draw_layer) {
+            layer_->begin_layer(cb);
+            ImGui_ImplVulkan_RenderDrawData(plan.layer, cb);
+            layer_->end_layer(cb);
+        }
+        data = plan.direct;  // windows that change every frame: into the frame, under the layer
+        if (data->CmdListsCount == 0) {
+            gpu::image_barrier(cb, images_.at(image_index), VK_IMAGE_ASPECT_COLOR_BIT,
+                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, present_layout_,
+                               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
+            return;
+        }
+    }
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = render_pass_;
     begin.framebuffer = framebuffers_.at(image_index);
     begin.renderArea = {{0, 0}, extent_};
     vkCmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cb);
+    ImGui_ImplVulkan_RenderDrawData(data, cb);
     vkCmdEndRenderPass(cb);
+}
+
+uint64_t Overlay::panel_draws() const { return layer_->draws(); }
+uint64_t Overlay::panel_direct_frames() const { return layer_->direct_frames(); }
+
+PixelsOver Overlay::panel_pixels() const { return layer_->pixels(); }
+
+bool Overlay::layer_enabled() {
+    // STIPPLE_PANEL_LAYER=off draws the panel straight into every frame, as on a swapchain's own images
+    // (a check of the layer: tests/test_cli_view.cpp compares the two).
+    const char* setting = std::getenv("STIPPLE_PANEL_LAYER");
+    return !(setting && std::string(setting) == "off");
 }
 
 bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }

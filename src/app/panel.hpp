@@ -16,9 +16,10 @@
 namespace stipple::app {
 
 struct PanelFigures {
+    // Refreshed twice a second: times averaged over the frames since, counts of the last frame.
     double fps = 0.0;
     double cpu_frame_ms = 0.0;  // CPU time of a frame: input, panel, prepare, record, submit
-    FrameStats stats;           // the last completed frame's (GPU times per pass, drawn stipples)
+    FrameStats stats;           // GPU times per pass, drawn stipples
     std::string device;
     VkExtent2D extent{};
     const char* present_mode = "";

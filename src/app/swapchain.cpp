@@ -204,7 +204,7 @@ bool Swapchain::recreate_shared(VkExtent2D extent) {
     return true;
 }
 
-VkResult Swapchain::present_shared(VkQueue queue, uint32_t image_index) {
+VkResult Swapchain::present_shared(VkQueue queue, uint32_t image_index, const PixelsOver& over) {
     // The frame finished (its semaphore waited on by an empty submission that signals a fence), then
     // copied to the X server. The caller waits for its frame before the next anyway (one in flight).
     VkSemaphore wait = rendering_done_.at(image_index);
@@ -222,7 +222,7 @@ VkResult Swapchain::present_shared(VkQueue queue, uint32_t image_index) {
     }
     last_shown_ = std::chrono::steady_clock::now();
     const gpu::Image& image = shared_images_.at(image_index);
-    shared_memory_->show(image_index, image.mapped(), size_t(image.row_pitch()));
+    shared_memory_->show(image_index, image.mapped(), size_t(image.row_pitch()), over);
     return VK_SUCCESS;
 }
 
@@ -248,8 +248,8 @@ VkResult Swapchain::acquire(VkSemaphore signal, uint32_t* image_index) {
     return result;
 }
 
-VkResult Swapchain::present(VkQueue queue, uint32_t image_index) {
-    if (shared_memory_) return present_shared(queue, image_index);
+VkResult Swapchain::present(VkQueue queue, uint32_t image_index, const PixelsOver& over) {
+    if (shared_memory_) return present_shared(queue, image_index, over);
     VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     info.waitSemaphoreCount = 1;
     VkSemaphore wait = rendering_done_.at(image_index);

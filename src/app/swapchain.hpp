@@ -15,6 +15,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "app/pixel_over.hpp"
+
 #include "app/x11_shared_memory.hpp"
 #include "gpu/resources.hpp"
 
@@ -65,15 +67,16 @@ public:
     bool can_disable_vsync() const;
 
     // Acquire and present; VK_ERROR_OUT_OF_DATE_KHR and VK_SUBOPTIMAL_KHR are returned for the caller
-    // to recreate, every other failure throws.
+    // to recreate, every other failure throws. `over`: pixels laid over the frame as the host copies it
+    // to the window (the panel's layer; only where host_reads()).
     VkResult acquire(VkSemaphore signal, uint32_t* image_index);
-    VkResult present(VkQueue queue, uint32_t image_index);
+    VkResult present(VkQueue queue, uint32_t image_index, const PixelsOver& over = {});
 
 private:
     void destroy_views();
     bool recreate_shared(VkExtent2D extent);
     void add_semaphores_and_depth(VkExtent2D extent);  // after the images: one semaphore each (kept), a new depth image
-    VkResult present_shared(VkQueue queue, uint32_t image_index);
+    VkResult present_shared(VkQueue queue, uint32_t image_index, const PixelsOver& over);
 
     const gpu::Context& context_;
     VkSurfaceKHR surface_;

@@ -159,6 +159,7 @@ private:
     void print_swapchain() const;
     void apply_finished_work();
     void run_script();
+    void print_panel_draws(const char* prefix) const;
     bool export_view(const std::string& path, const plot::ExportOptions& options);
 
     ViewerOptions options_;
@@ -203,6 +204,12 @@ private:
     int bench_samples_ = 0;
     Clock::time_point fps_start_ = Clock::now();
     int fps_frames_ = 0;
+    // The panel's figures change twice a second, with the fps: GPU and CPU times averaged over the frames
+    // collected since (a panel that changes every frame would be drawn again every frame, app/panel_layer.hpp).
+    FrameStats collected_;  // the last frame collected (finish_previous_frame)
+    std::vector<std::pair<std::string, double>> gpu_ms_sums_;
+    int gpu_ms_frames_ = 0;
+    double cpu_ms_sum_ = 0.0;
     // Drawing on demand (wants_frame_now): the window's activity count last seen, the time until which
     // frames are drawn (after an event, a message, finished work), the last frame drawn, whether the loop slept.
     uint64_t seen_activity_ = 0;
@@ -245,6 +252,15 @@ void Viewer::save_scene() {
     }
 }
 
+// Where the panel is drawn into a layer of its own (app/panel_layer.hpp): how often it was drawn.
+void Viewer::print_panel_draws(const char* prefix) const {
+    if (overlay_->panel_draws() == 0) return;
+    std::printf("%s: the panel's layer drawn in %llu of %lld frames (the others laid the layer drawn before "
+                "over the frame); windows that change every frame drawn into %llu frames\n",
+                prefix, (unsigned long long)overlay_->panel_draws(), frames_drawn_,
+                (unsigned long long)overlay_->panel_direct_frames());
+}
+
 int Viewer::run() {
     Clock::time_point bench_start;
     while (!window_.should_close()) {
@@ -284,13 +300,15 @@ int Viewer::run() {
         std::printf("benchmark: %lld frames at %ux%u, panel %s, %s: mean %.2f fps (%.2f ms per frame)\n",
                     options_.benchmark_frames, e.width, e.height, panel_visible_ ? "on" : "off",
                     swapchain_.mode_name().c_str(), 1000.0 / ms, ms);
-        const FrameStats& st = figures_.stats;
+        const FrameStats& st = collected_;
+        if (panel_visible_) print_panel_draws("benchmark");
         std::printf("benchmark: %zu objects, %llu polygons, %llu candidate stipples, %lld drawn (last frame)\n",
                     live_.size(), (unsigned long long)st.triangles, (unsigned long long)st.candidate_stipples,
                     (long long)st.drawn_stipples);
         for (const auto& [pass, total] : bench_gpu_ms_)
             std::printf("benchmark: gpu %-12s mean %.3f ms\n", pass.c_str(), total / std::max(bench_samples_, 1));
     }
+    if (options_.verbose) print_panel_draws("stipple");
     if (uint32_t n = context_.validation_message_count()) {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s)\n", n);
         return 2;
@@ -369,9 +387,17 @@ void Viewer::finish_previous_frame() {
     VK_CHECK(vkWaitForFences(context_.device, 1, &frame_done_, VK_TRUE, UINT64_MAX));
     submitted_ = false;
     renderer_.collect();
-    figures_.stats = renderer_.stats();
+    collected_ = renderer_.stats();  // until the next frame's prepare() starts its own
+    const FrameStats& latest = collected_;
+    if (figures_.stats.gpu_ms.empty()) figures_.stats = latest;  // the first frame's, until the first average
+    for (const auto& [pass, ms] : latest.gpu_ms) {
+        auto sum = std::find_if(gpu_ms_sums_.begin(), gpu_ms_sums_.end(), [&](const auto& p) { return p.first == pass; });
+        if (sum == gpu_ms_sums_.end()) gpu_ms_sums_.emplace_back(pass, ms);
+        else sum->second += ms;
+    }
+    ++gpu_ms_frames_;
     if (options_.benchmark_frames > 0 && frames_drawn_ > kWarmupFrames) {
-        for (const auto& [pass, ms] : figures_.stats.gpu_ms) bench_gpu_ms_[pass] += ms;
+        for (const auto& [pass, ms] : latest.gpu_ms) bench_gpu_ms_[pass] += ms;
         ++bench_samples_;
     }
     try {
@@ -479,6 +505,7 @@ void Viewer::frame() {
         idled_ = false;
         fps_frames_ = 0;
         fps_start_ = start;
+        cpu_ms_sum_ = 0.0;
     }
     VkExtent2D size = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
     float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
@@ -551,9 +578,9 @@ void Viewer::frame() {
     VK_CHECK(vkResetFences(context_.device, 1, &frame_done_));
     VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, frame_done_));
     submitted_ = true;
-    figures_.cpu_frame_ms = ms_between(start, Clock::now());
+    cpu_ms_sum_ += ms_between(start, Clock::now());
 
-    VkResult presented = swapchain_.present(context_.queue, image);
+    VkResult presented = swapchain_.present(context_.queue, image, panel_visible_ ? overlay_->panel_pixels() : PixelsOver{});
     // The second column says whether background work (new stipples, a model) was under way, so that a
     // test can see frames keep coming while it runs, whatever the machine's load.
     if (frame_log_) {  // flushed: a test (or tail -f) reads it while the viewer runs
@@ -566,6 +593,15 @@ void Viewer::frame() {
     double elapsed = ms_between(fps_start_, Clock::now());
     if (elapsed >= 500.0) {
         figures_.fps = 1000.0 * fps_frames_ / elapsed;
+        figures_.cpu_frame_ms = cpu_ms_sum_ / fps_frames_;
+        if (gpu_ms_frames_ > 0) {  // the counts of the last frame collected, the times averaged
+            figures_.stats = collected_;
+            figures_.stats.gpu_ms = gpu_ms_sums_;
+            for (auto& [pass, ms] : figures_.stats.gpu_ms) ms /= gpu_ms_frames_;
+        }
+        gpu_ms_sums_.clear();
+        gpu_ms_frames_ = 0;
+        cpu_ms_sum_ = 0.0;
         fps_frames_ = 0;
         fps_start_ = Clock::now();
     }
@@ -594,14 +630,16 @@ void Viewer::record(uint32_t image) {
     }
     if (panel_visible_) {
         overlay_->record(cb_, image);  // its render pass ends in the swapchain's present_layout()
+        renderer_.mark_pass(cb_, "panel");
     } else {
         gpu::image_barrier(cb_, swapchain_.image(image), VK_IMAGE_ASPECT_COLOR_BIT,
                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, swapchain_.present_layout(),
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
     }
-    if (swapchain_.host_reads())  // presenting copies the pixels on the host
-        gpu::memory_barrier(cb_, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+    if (swapchain_.host_reads())  // presenting copies the pixels on the host (the panel's layer blended by compute)
+        gpu::memory_barrier(cb_, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     VK_CHECK(vkEndCommandBuffer(cb_));
 }

@@ -1,5 +1,6 @@
 #include "app/x11_shared_memory.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -176,7 +177,7 @@ void X11SharedMemory::resize(VkExtent2D extent, uint32_t count) {
     }
 }
 
-void X11SharedMemory::show(uint32_t index, const void* pixels, size_t row_pitch) {
+void X11SharedMemory::show(uint32_t index, const void* pixels, size_t row_pitch, const PixelsOver& over) {
     Segment& segment = state_->segments.at(index);
     // The server copies from the segment when it handles the request: a later frame written into it
     // before then would tear the earlier one. With two segments it has had a whole frame's time.
@@ -188,6 +189,18 @@ void X11SharedMemory::show(uint32_t index, const void* pixels, size_t row_pitch)
     } else {
         for (uint32_t y = 0; y < state_->extent.height; ++y)
             std::memcpy(segment.image->data + y * row, static_cast<const char*>(pixels) + y * row_pitch, row);
+    }
+    // The layer over the rows and columns it may cover, in the copy just made (the frame's own memory is
+    // left as drawn: screenshots and exports never show the panel).
+    const uint32_t width = state_->extent.width, height = state_->extent.height;
+    if (over.pixels && over.x < width && over.y < height) {
+        const uint32_t columns = std::min(over.width, width - over.x), rows = std::min(over.height, height - over.y);
+        for (uint32_t y = over.y; y < over.y + rows; ++y) {
+            auto* out = reinterpret_cast<uint32_t*>(segment.image->data + y * row) + over.x;
+            const auto* layer = reinterpret_cast<const uint32_t*>(static_cast<const char*>(over.pixels) +
+                                                                  y * over.row_pitch) + over.x;
+            pixels_over(out, layer, columns);
+        }
     }
     segment.shown_request = NextRequest(state_->display);
     XShmPutImage(state_->display, state_->window, state_->gc, segment.image, 0, 0, 0, 0, state_->extent.width,

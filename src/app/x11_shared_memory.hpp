@@ -13,6 +13,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "app/pixel_over.hpp"
+
 struct GLFWwindow;
 
 namespace stipple::app {
@@ -30,9 +32,10 @@ public:
     // `count` segments of `extent` (the old ones detached); throws when the server refuses them.
     void resize(VkExtent2D extent, uint32_t count);
     // Copies `pixels` (extent.height rows of extent.width B8G8R8A8 words, `row_pitch` bytes apart) into
-    // segment `index` and asks the server to show it in the window. Waits first, if need be, until the
-    // server has finished with the segment's previous frame.
-    void show(uint32_t index, const void* pixels, size_t row_pitch);
+    // segment `index`, with `over` laid over them (the viewer's panel: app/pixel_over.hpp), and asks the
+    // server to show it in the window. Waits first, if need be, until the server has finished with the
+    // segment's previous frame.
+    void show(uint32_t index, const void* pixels, size_t row_pitch, const PixelsOver& over = {});
 
 private:
     struct State;

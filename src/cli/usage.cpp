@@ -133,7 +133,8 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   sets every per-object parameter (generation parameters take effect on release or Enter: new
   stipples are made in the background with a progress bar while the old ones are drawn, and a newer
   value cancels an older one; dropped models load in the background too), the light, paper and ink
-  colours, and shows fps, CPU frame time, GPU time per pass and stipple counts. With an animated
+  colours, and shows fps, CPU frame time, GPU time per pass (the panel's own included) and stipple
+  counts, refreshed twice a second, times averaged over the half second. With an animated
   model a timeline window plays, pauses and scrubs the animation, sets its speed and loop, and
   chooses each object's animation. The window is drawn on demand: while an animation plays, a script
   or --benchmark-frames runs, and for a second after any input; otherwise the viewer sleeps (ten

@@ -123,6 +123,9 @@ public:
     // CPU part of a frame (uniforms, CPU-path densities). The GPU must have finished the previous frame.
     void prepare(const FrameView& view);
     void record(VkCommandBuffer cb, const RenderTargets& targets);
+    // The end of a pass the caller recorded after record() into the same command buffer (the viewer's
+    // panel), timed with the renderer's passes and listed in stats().gpu_ms under `pass`.
+    void mark_pass(VkCommandBuffer cb, const char* pass) { timer_.mark(cb, pass); }
     // After the frame's submission has completed: GPU pass times and drawn counts into stats().
     void collect();
     const FrameStats& stats() const { return stats_; }
