@@ -137,7 +137,8 @@ TEST_F(DepthRasterTest, EveryPathAndLineKindDrawsWithIt) {
 }
 
 // A toon object's shading is drawn by the depth pass: such frames keep the fixed-function pass. auto
-// rasterises by compute on a CPU device, for triangles small on screen (kDepthComputeBelowPx) only.
+// rasterises by compute on a CPU device, for triangles small on screen (kDepthComputeBelowPx) only, and
+// not for the points pipeline's paths, which test the depth image (a copy of the words would cost more).
 TEST_F(DepthRasterTest, AutoAndToonChooseThePass) {
     ObjectParams params;
     const test::Prepared fine = test::prepare(make_uv_sphere(40000), params);  // ~2 px a triangle framed
@@ -151,6 +152,12 @@ TEST_F(DepthRasterTest, AutoAndToonChooseThePass) {
     EXPECT_FALSE(draw(*context, coarse, params, framed, DepthRaster::Auto).by_compute) << "large triangles: fixed";
     const FrameView far = test::framed_view(compute_bounding_sphere(fine.mesh), kExtent, 4.0f);
     EXPECT_EQ(draw(*context, coarse, params, far, DepthRaster::Auto).by_compute, cpu_device) << "small again far away";
+    for (DensityPath points : {DensityPath::Vertex, DensityPath::Indirect, DensityPath::Cpu}) {
+        ObjectParams p = params;
+        p.density_path = points;  // they test the depth image: auto keeps the fixed-function pass
+        EXPECT_FALSE(draw(*context, fine, p, framed, DepthRaster::Auto).by_compute) << density_path_name(points);
+        EXPECT_TRUE(draw(*context, fine, p, framed, DepthRaster::Compute).by_compute) << density_path_name(points);
+    }
     params.toon = true;
     EXPECT_FALSE(draw(*context, fine, params, framed, DepthRaster::Compute).by_compute);
 }

@@ -64,7 +64,8 @@ Render options:
                           spread over every core, or the fixed-function pass. auto: compute on a CPU
                           device (lavapipe) while triangles average under 24 px on screen or the
                           models' facing surface is under 0.6 of the frame, else fixed; a frame
-                          with a toon object is fixed (default auto)
+                          with a toon object, or an object on the vertex, indirect or cpu path, is
+                          fixed (default auto)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at

@@ -17,9 +17,11 @@ class Context;
 
 // auto: compute on a CPU device (lavapipe) for frames whose triangles are small on screen (their mean
 // projected area under kDepthComputeBelowPx) or whose objects cover little of it (kDepthComputeBelowFrame),
-// fixed-function otherwise and on a GPU; compute: wherever
-// the device can (64-bit integers in shaders); fixed: the fixed-function pass. A frame with a toon
-// object (§3.1: its shading is drawn by the depth pass) uses the fixed-function pass whatever the choice.
+// fixed-function otherwise, on a GPU, and where an object is drawn by the points pipeline (the vertex,
+// indirect and cpu paths test the depth image, and copying the words into it costs more than compute
+// saves); compute: wherever the device can (64-bit integers in shaders); fixed: the fixed-function pass.
+// A frame with a toon object (§3.1: its shading is drawn by the depth pass) uses the fixed-function pass
+// whatever the choice.
 enum class DepthRaster { Auto, Compute, Fixed };
 // auto's bounds. The compute pass saves the fixed-function pass's per-triangle work on one thread and
 // the copy into words, and pays more per pixel covered (a software rasteriser fills 4x4 blocks at once).
