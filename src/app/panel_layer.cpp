@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/panel_windows.hpp"
 #include "app/swapchain.hpp"
 #include "gpu/context.hpp"
 #include "gpu/vk_check.hpp"
@@ -139,10 +140,6 @@ void describe(const ImDrawList& list, std::vector<std::byte>& bytes, float box[4
     }
 }
 
-bool overlap(const float a[4], const float b[4]) {
-    return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
-}
-
 ImDrawData subset(const ImDrawData& all, std::vector<ImDrawList*>& lists) {
     ImDrawData part = all;  // the placement: position, size, scale
     part.CmdLists = lists.data();
@@ -167,13 +164,12 @@ PanelPlan PanelLayer::plan(const ImDrawData& data) {
         const bool changed = before == seen_.end() || before->bytes != window.bytes;
         window.changed_frames = changed ? (before == seen_.end() ? 1 : before->changed_frames + 1) : 0;
     }
-    // Windows that change frame after frame are drawn into the frame, unless one lies in front of a
-    // window the layer holds and overlaps it: then the layer holds them all.
-    auto changing = [&](size_t i) { return now[i].changed_frames >= 2; };
-    bool split = true;
-    for (size_t i = 0; i < now.size() && split; ++i)
-        for (size_t j = 0; j < i && split; ++j)
-            if (changing(i) && !changing(j) && overlap(now[i].box, now[j].box)) split = false;
+    std::vector<PanelWindow> windows(now.size());
+    for (size_t i = 0; i < now.size(); ++i) {
+        std::copy(now[i].box, now[i].box + 4, windows[i].box);
+        windows[i].changed_frames = now[i].changed_frames;
+    }
+    const std::vector<bool> direct = windows_drawn_into_frame(windows);
     layer_lists_.clear();
     direct_lists_.clear();
     std::vector<std::byte> held;
@@ -182,7 +178,7 @@ PanelPlan PanelLayer::plan(const ImDrawData& data) {
     append(held, placement, 6);
     float box[4] = {1e30f, 1e30f, -1e30f, -1e30f};
     for (size_t i = 0; i < now.size(); ++i) {
-        if (split && changing(i)) {
+        if (direct[i]) {
             direct_lists_.push_back(data.CmdLists[i]);
             continue;
         }

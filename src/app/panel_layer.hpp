@@ -37,7 +37,7 @@ VkFramebuffer create_panel_framebuffer(VkDevice device, VkRenderPass pass, VkIma
 // What a frame draws of the panel: into the layer (when what it should hold changed) and straight into
 // the frame. ImGui makes a draw list per window, back to front. A window that changed in each of the
 // last two frames (the timeline while an animation plays) is drawn into each frame instead, unless it
-// lies in front of a window the layer holds and overlaps it (the layer is laid over the frame last).
+// lies in front of a window the layer holds and overlaps it (app/panel_windows.hpp).
 struct PanelPlan {
     bool draw_layer = false;
     ImDrawData* layer = nullptr;   // the windows the layer holds

@@ -390,10 +390,11 @@ void Viewer::finish_previous_frame() {
     collected_ = renderer_.stats();  // until the next frame's prepare() starts its own
     const FrameStats& latest = collected_;
     if (figures_.stats.gpu_ms.empty()) figures_.stats = latest;  // the first frame's, until the first average
-    for (const auto& [pass, ms] : latest.gpu_ms) {
-        auto sum = std::find_if(gpu_ms_sums_.begin(), gpu_ms_sums_.end(), [&](const auto& p) { return p.first == pass; });
-        if (sum == gpu_ms_sums_.end()) gpu_ms_sums_.emplace_back(pass, ms);
-        else sum->second += ms;
+    for (const auto& pass : latest.gpu_ms) {  // a pair, not a structured binding: clang 15 cannot capture one
+        auto sum = std::find_if(gpu_ms_sums_.begin(), gpu_ms_sums_.end(),
+                                [&](const auto& p) { return p.first == pass.first; });
+        if (sum == gpu_ms_sums_.end()) gpu_ms_sums_.push_back(pass);
+        else sum->second += pass.second;
     }
     ++gpu_ms_frames_;
     if (options_.benchmark_frames > 0 && frames_drawn_ > kWarmupFrames) {
