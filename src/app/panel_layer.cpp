@@ -5,7 +5,6 @@
 
 #include <imgui.h>
 
-#include "app/panel_windows.hpp"
 #include "app/swapchain.hpp"
 #include "gpu/context.hpp"
 #include "gpu/vk_check.hpp"
@@ -164,12 +163,7 @@ PanelPlan PanelLayer::plan(const ImDrawData& data) {
         const bool changed = before == seen_.end() || before->bytes != window.bytes;
         window.changed_frames = changed ? (before == seen_.end() ? 1 : before->changed_frames + 1) : 0;
     }
-    std::vector<PanelWindow> windows(now.size());
-    for (size_t i = 0; i < now.size(); ++i) {
-        std::copy(now[i].box, now[i].box + 4, windows[i].box);
-        windows[i].changed_frames = now[i].changed_frames;
-    }
-    const std::vector<bool> direct = windows_drawn_into_frame(windows);
+    const std::vector<bool> direct = windows_drawn_into_frame(std::vector<PanelWindow>(now.begin(), now.end()));
     layer_lists_.clear();
     direct_lists_.clear();
     std::vector<std::byte> held;

@@ -10,12 +10,12 @@
 #include <cstdint>
 #include <vector>
 
+#include <imgui.h>
 #include <vulkan/vulkan.h>
 
+#include "app/panel_windows.hpp"
 #include "app/pixel_over.hpp"
 #include "gpu/resources.hpp"
-
-#include <imgui.h>
 
 namespace stipple::gpu {
 class Context;
@@ -70,11 +70,9 @@ public:
     uint64_t direct_frames() const { return direct_frames_; }
 
 private:
-    struct Window {  // a window's draw list as last seen
+    struct Window : PanelWindow {  // a window's draw list as last seen (box in ImGui's coordinates)
         const ImDrawList* list = nullptr;
         std::vector<std::byte> bytes;  // what ImGui_ImplVulkan_RenderDrawData draws from
-        float box[4] = {};             // what its commands may touch, in ImGui's coordinates
-        int changed_frames = 0;        // frames in a row in which it changed
     };
     void release_images();
 
