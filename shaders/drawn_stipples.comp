@@ -14,11 +14,11 @@
 #include "shared_types.h"
 #include "stipple_formulas.h"
 #include "triangle_draws.h"
+#include "stipple_position.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
@@ -34,7 +34,7 @@ void main() {
     uint count = 0u;
     if (slot < drawn.count) {
         uint item = drawn_polygons[slot];  // the run's first stipple
-        uint t = stipples[item].triangle;
+        uint t = stipple_vertex(item).triangle;
         TriangleDraw polygon = triangle_draw(t);  // as texels: one gather instead of four loads
         // Up to the most density any of its stipples sees: the vertex shader culls those of a large polygon
         // that the density where they lie does not reach (stipple_density_here).

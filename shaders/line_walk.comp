@@ -22,7 +22,9 @@ layout(set = 0, binding = kBindingLinePieces, std430) buffer Pieces {
     LinePiecesHeader pieces;
     LinePiece piece[];
 };
-layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
+// The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
+// storage buffer lane by lane.
+layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
 
 // A sample of a line may lie this far behind the depth pass's surface and still count as visible, on
 // top of the depth pass's own polygon offset (which already covers the surface's slope across the
@@ -39,7 +41,7 @@ bool sample_visible(vec2 px, float z) {
     ivec2 p = ivec2(floor(px));
     ivec2 size = ivec2(frame.viewport.xy);
     if (p.x < 0 || p.y < 0 || p.x >= size.x || p.y >= size.y) return false;  // off the image: not drawn
-    uint word = scene_depth[uint(p.y) * uint(size.x) + uint(p.x)];
+    uint word = texelFetch(scene_depth_texels, int(uint(p.y) * uint(size.x) + uint(p.x))).x;
     if (kDepthUnorm24) {
         uint surface = word & 0xFFFFFFu;
         return surface == 0xFFFFFFu || uint(z * 16777215.0 + 0.5) <= surface + kDepthToleranceUnorm24;

@@ -112,6 +112,10 @@ STIPPLE_CONST uint kBindingDepthTriangles = 19;
 // DrawnPolygons header (its dispatch and count) + uint[] (storage): the polygons the density pass found
 // large on screen this frame, for its gradient pass (density.comp, kSpecGradientPass)
 STIPPLE_CONST uint kBindingGradientPolygons = 20;
+// RG32UI texel view of kBindingStipples (a StippleVertex a texel), for the passes that read candidates at
+// scattered places (the splat, the drawn list): one gather on a software GPU, where a storage buffer is
+// loaded member by member, lane by lane
+STIPPLE_CONST uint kBindingStippleTexels = 21;
 
 // The compute splat's frame data (set 1). Plain buffers, one uint per pixel (row-major, top row
 // first): a software rasteriser's image stores and image atomics cost several times its buffer ones.
@@ -121,6 +125,9 @@ STIPPLE_CONST uint kBindingColorBuffer = 2;      // uint[]: the frame's colour, 
 // uint[]: per pixel, the summed optical depth -log2(1 - intensity) of the large fractional stipples
 // inked there this frame, in units of 1/kSplatOpticalDepthScale (zeroed before the splat; splat.comp)
 STIPPLE_CONST uint kBindingSplatCover = 3;
+// R32_UINT texel view of kBindingSceneDepth's words: a software GPU gathers texels, where it loads a storage
+// buffer lane by lane
+STIPPLE_CONST uint kBindingSceneDepthTexels = 4;
 STIPPLE_CONST float kSplatOpticalDepthScale = 65536.0;
 // A fractional stipple's optical depth is capped here: 2^-9 of paper left is under half a level of 8 bits.
 STIPPLE_CONST float kSplatMaxOpticalDepth = 9.0;

@@ -11,11 +11,13 @@ layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 layout(location = 0) out vec4 out_color;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
-layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
+// The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
+// storage buffer lane by lane.
+layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
 
 void main() {
     // Row-major from the top row, as gl_FragCoord counts with the depth pass's flipped viewport.
-    uint word = scene_depth[uint(gl_FragCoord.y) * uint(frame.viewport.x) + uint(gl_FragCoord.x)];
+    uint word = texelFetch(scene_depth_texels, int(uint(gl_FragCoord.y) * uint(frame.viewport.x) + uint(gl_FragCoord.x))).x;
     bool behind = kDepthUnorm24 ? uint(gl_FragCoord.z * 16777215.0 + 0.5) > (word & 0xFFFFFFu)
                                 : gl_FragCoord.z > uintBitsToFloat(word);
     if (behind) discard;

@@ -39,7 +39,6 @@ layout(constant_id = kSpecWholeDot) const bool kWholeDot = false;  // print deta
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
@@ -53,7 +52,10 @@ layout(set = 0, binding = kBindingVisibleStipples, std430) buffer Visible {
     VisibleStipple visible_stipples[];
 };
 layout(set = 1, binding = kBindingSplatBackground, std430) readonly buffer Background { uint background[]; };
-layout(set = 1, binding = kBindingSceneDepth, std430) readonly buffer SceneDepth { uint scene_depth[]; };
+// The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
+// storage buffer lane by lane.
+layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
+uint scene_depth_at(uint at) { return texelFetch(scene_depth_texels, int(at)).x; }
 layout(set = 1, binding = kBindingColorBuffer, std430) buffer ColorBuffer { uint color[]; };
 layout(set = 1, binding = kBindingSplatCover, std430) buffer SplatCover { uint optical_depth[]; };
 layout(push_constant) uniform Push {
@@ -129,7 +131,7 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
     }
-    vec4 clip = model_view_proj * vec4(stipple_position(polygon, unpackUnorm2x16(stipples[index].barycentric)), 1.0);
+    vec4 clip = model_view_proj * vec4(stipple_position(polygon, unpackUnorm2x16(stipple_vertex(index).barycentric)), 1.0);
     if (clip.w <= 0.0) return;
     vec3 ndc = clip.xyz / clip.w;
     if (ndc.z < 0.0 || ndc.z > 1.0) return;  // the rasteriser clips these too
@@ -146,7 +148,7 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
     const bool whole_dot = kWholeDot;
     if (whole_dot) {
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
-        if (hidden_or_uncovered(ndc.z, scene_depth[uint(centre.y) * uint(size.x) + uint(centre.x)])) return;
+        if (hidden_or_uncovered(ndc.z, scene_depth_at(uint(centre.y) * uint(size.x) + uint(centre.x)))) return;
     }
     uint depth_units = kRoundPoints && !full ? optical_depth_units(intensity) : 0u;
     uint lost = 0u;  // pixels of the dot beyond the outline
@@ -158,7 +160,7 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
                 if (dot(d, d) > 0.25) continue;
             }
             uint at = uint(y) * uint(size.x) + uint(x);
-            uint word = scene_depth[at];
+            uint word = scene_depth_at(at);
             if (hidden_or_uncovered(whole_dot ? 0.0 : ndc.z - depth_pull, word)) {
                 if (uncovered(word)) ++lost;
                 continue;
@@ -197,7 +199,7 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
                 uint at = uint(y) * uint(isize.x) + uint(x);
                 if (distance < last_distance || (distance == last_distance && at <= last_at)) continue;
                 if (distance > best_distance || (distance == best_distance && at >= best_at)) continue;
-                if (hidden_or_uncovered(ndc.z - depth_pull, scene_depth[at])) continue;
+                if (hidden_or_uncovered(ndc.z - depth_pull, scene_depth_at(at))) continue;
                 best_distance = distance;
                 best_at = at;
             }
@@ -212,7 +214,7 @@ void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= drawn.count) return;
     uint item = drawn_polygons[slot];  // the run's first stipple
-    uint t = stipples[item].triangle;
+    uint t = stipple_vertex(item).triangle;
     TriangleDraw draw = triangle_draw(t);
     float density = draw.density;
     if (density <= 0.0f) return;
@@ -250,7 +252,7 @@ void main() {
     for (uint k = whole_end; k < end; ++k) {
         float here = density;
         if (varies) {  // where it lies (stipple_density_here)
-            vec2 uv = unpackUnorm2x16(stipples[first + k].barycentric);
+            vec2 uv = unpackUnorm2x16(stipple_vertex(first + k).barycentric);
             here = stipple_density_here(density, corner_a + uv.x * (corner_b - corner_a) + uv.y * (corner_c - corner_a),
                                         corner_a, corner_b, corner_c, q);
         }

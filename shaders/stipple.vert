@@ -20,7 +20,6 @@ layout(location = 1) in uint in_triangle;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
-layout(set = 0, binding = kBindingStipples, std430) readonly buffer Stipples { StippleVertex stipples[]; };
 layout(set = 0, binding = kBindingDrawnStipples, std430) readonly buffer DrawnStipples {
     DrawCommand draw;
     uint drawn_stipples[];
@@ -50,8 +49,9 @@ void main() {
     vec2 barycentric = in_barycentric;
     if (kDrawnList) {
         stipple = drawn_stipples[gl_VertexIndex];
-        triangle = stipples[stipple].triangle;
-        barycentric = unpackUnorm2x16(stipples[stipple].barycentric);
+        StippleVertex listed = stipple_vertex(stipple);
+        triangle = listed.triangle;
+        barycentric = unpackUnorm2x16(listed.barycentric);
     }
     TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);

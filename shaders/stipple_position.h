@@ -10,6 +10,8 @@
 
 layout(set = 0, binding = kBindingMeshPositions) uniform samplerBuffer mesh_positions;
 layout(set = 0, binding = kBindingMeshIndices) uniform usamplerBuffer mesh_indices;
+// The candidates (StippleVertex), a texel each, for passes that read them at scattered places.
+layout(set = 0, binding = kBindingStippleTexels) uniform usamplerBuffer stipple_texels;
 // Three-component texel buffers are optional in Vulkan: without them each texel holds one float (index).
 layout(constant_id = kSpecMeshVec3Texels) const bool kMeshVec3Texels = true;
 
@@ -23,6 +25,11 @@ uvec3 mesh_triangle(uint triangle) {
     if (kMeshVec3Texels) return texelFetch(mesh_indices, int(triangle)).xyz;
     return uvec3(texelFetch(mesh_indices, int(3u * triangle)).x, texelFetch(mesh_indices, int(3u * triangle + 1u)).x,
                  texelFetch(mesh_indices, int(3u * triangle + 2u)).x);
+}
+
+StippleVertex stipple_vertex(uint index) {
+    uvec2 texel = texelFetch(stipple_texels, int(index)).xy;
+    return StippleVertex(texel.x, texel.y);
 }
 
 // The polygon's corner a and its edges b - a, c - a.

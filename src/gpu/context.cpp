@@ -356,6 +356,10 @@ uint64_t Context::max_storage_buffer_bytes() const {
     return limit ? std::min(device, limit) : device;
 }
 
+uint64_t Context::max_pixel_words() const {
+    return std::min<uint64_t>(max_storage_buffer_bytes() / 4u, properties.limits.maxTexelBufferElements);
+}
+
 uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                                    VkMemoryPropertyFlags preferred) const {
     for (int pass = 0; pass < 2; ++pass) {

@@ -91,6 +91,9 @@ public:
     // The largest storage buffer a shader may read (maxStorageBufferRange). Lowered by
     // STIPPLE_MAX_STORAGE_BUFFER (e.g. 16M: how a device with a smaller limit draws large images in tiles).
     uint64_t max_storage_buffer_bytes() const;
+    // The most pixels a frame's word buffers may hold: a word each, in a storage buffer that the compute
+    // passes also read as texels (the lesser of max_storage_buffer_bytes / 4 and maxTexelBufferElements).
+    uint64_t max_pixel_words() const;
 
     // Lists the devices Vulkan sees, "index: name (type)", for --help-style output and errors.
     static std::vector<std::string> list_devices();

@@ -43,6 +43,8 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingGradientPolygons, kStorage}, [](const O& o) { return o.frame.gradient_polygons.handle(); }},
     {{gpu::kBindingTriangleInfoTexels, kTexels}, [](const O& o) { return o.polygons.gpu.handle(); },
      [](const O& o) { return o.polygons.texels; }},
+    {{gpu::kBindingStippleTexels, kTexels}, [](const O& o) { return o.geometry.stipples.handle(); },
+     [](const O& o) { return o.geometry.stipple_texels; }},
 };
 
 const gpu::DescriptorBinding kSplatFrameBindings[] = {
@@ -50,6 +52,7 @@ const gpu::DescriptorBinding kSplatFrameBindings[] = {
     {gpu::kBindingSceneDepth, kStorage},
     {gpu::kBindingColorBuffer, kStorage},
     {gpu::kBindingSplatCover, kStorage},
+    {gpu::kBindingSceneDepthTexels, kTexels},
 };
 
 std::vector<gpu::DescriptorBinding> object_descriptor_bindings() {

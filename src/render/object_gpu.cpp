@@ -56,13 +56,14 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need a " +
              mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(context.max_storage_buffer_bytes()) +
              lower);
-    // The stipple shaders read the mesh and the polygons as texels (a vertex or triangle a texel, or a
-    // float or index a texel where three-component texel buffers are not read).
-    const uint64_t texels = (context.features.vec3_texels ? 1 : 3) * std::max(v, t);
+    // The stipple shaders read the mesh, the polygons and the candidates as texels (a vertex, triangle or
+    // stipple a texel, or a float or index a texel where three-component texel buffers are not read).
+    const uint64_t texels = std::max((context.features.vec3_texels ? 1 : 3) * std::max(v, t), s);
     if (texels > context.properties.limits.maxTexelBufferElements)
-        fail(what + ": its " + std::to_string(v) + " vertices and " + std::to_string(t) +
-             " polygons exceed this device's texel buffer limit (" +
-             std::to_string(context.properties.limits.maxTexelBufferElements) + " texels): use a simplified model");
+        fail(what + ": its " + std::to_string(v) + " vertices, " + std::to_string(t) + " polygons and " +
+             std::to_string(s) + " stipples exceed this device's texel buffer limit (" +
+             std::to_string(context.properties.limits.maxTexelBufferElements) +
+             " texels): lower --dmax or --max-stipples, or use a simplified model");
     const uint64_t available = context.device_memory_available();
     if (needed > available)
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
@@ -133,7 +134,7 @@ Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes) {
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
     for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels, polygons.texels,
-                              geometry.silhouette_edge_texels})
+                              geometry.silhouette_edge_texels, geometry.stipple_texels})
         if (view) vkDestroyBufferView(context->device, view, nullptr);
 }
 
@@ -163,7 +164,7 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     // Storage too: an animated object's deformation pass writes them.
     upload.staged[kNormals] = gpu::stage_buffer(context, std::span(mesh.normals), vertex | storage);
     upload.staged[kIndices] = gpu::stage_buffer(context, std::span(mesh.indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | storage | texels);
-    upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage);
+    upload.staged[kStipples] = gpu::stage_buffer(context, std::span(vertices), vertex | storage | texels);
     upload.staged[kPolygons] =
         gpu::stage_buffer(context, std::span<const gpu::TriangleInfo>(upload.polygons.cpu), storage | texels);
     upload.staged[kDensities] = gpu::stage_buffer(context, std::span<const gpu::TriangleDraw>(draws), storage | texels);
@@ -199,6 +200,8 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
         gpu::create_texel_view(context, object->frame.triangle_draw.handle(), VK_FORMAT_R32G32B32A32_UINT);
     static_assert(sizeof(gpu::TriangleInfo) == 16, "TriangleInfo is read as one RGBA32UI texel");
     object->polygons.texels = gpu::create_texel_view(context, object->polygons.gpu.handle(), VK_FORMAT_R32G32B32A32_UINT);
+    static_assert(sizeof(gpu::StippleVertex) == 8, "StippleVertex is read as one RG32UI texel");
+    geometry.stipple_texels = gpu::create_texel_view(context, geometry.stipples.handle(), VK_FORMAT_R32G32_UINT);
     if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);
     check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);

@@ -42,6 +42,7 @@ struct ObjectGeometry {
     VkBufferView position_texels = VK_NULL_HANDLE;
     VkBufferView index_texels = VK_NULL_HANDLE;
     gpu::Buffer stipples;   // StippleVertex per candidate: (u, v) in its polygon, so it follows the surface
+    VkBufferView stipple_texels = VK_NULL_HANDLE;  // the same as RG32UI texels (kBindingStippleTexels)
     // Every edge of the mesh once with its polygons (§3.1 and object-space lines), built the first time
     // lines are drawn.
     gpu::Buffer silhouette_edges;

@@ -36,13 +36,13 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     const bool same_words = words && targets.color_words_serial != 0 && targets.color_words_serial == splat_words_serial_;
     const bool resized = splat_extent_.width != extent.width || splat_extent_.height != extent.height;
     const VkDeviceSize pixels = VkDeviceSize(extent.width) * extent.height;
-    if (pixels * 4 > context_.max_storage_buffer_bytes())
+    if (pixels > context_.max_pixel_words())
         fail(printf_string("a %ux%u frame needs %.0f MiB of pixel words for the compute splat and the object-space "
-                           "lines, more than this device's largest storage buffer (%.0f MiB): draw it in tiles "
+                           "lines, more than this device's largest storage buffer or texel buffer holds (%.0f MiB): draw it in tiles "
                            "(stipple render does so itself), smaller, or with a points path (--density-path "
                            "vertex, indirect or cpu) and no object-space lines",
                            extent.width, extent.height, double(pixels * 4) / 1048576.0,
-                           double(context_.max_storage_buffer_bytes()) / 1048576.0));
+                           double(context_.max_pixel_words() * 4) / 1048576.0));
     // The large dots' cover sums, full size only while some object draws them (else a placeholder).
     const VkDeviceSize cover_bytes = splat_composes_dots() ? pixels * 4 : 4;
     const bool cover_changed = splat_cover_.size() != cover_bytes;
@@ -54,8 +54,11 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
         splat_color_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal);
         // Also copied out: into the depth image or read back, when the depth pass ran as compute.
-        splat_depth_ = gpu::Buffer(context_, pixels * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+        splat_depth_ = gpu::Buffer(context_, pixels * 4,
+                                   usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                                    gpu::MemoryUse::DeviceLocal);
+        if (splat_depth_texels_) vkDestroyBufferView(context_.device, splat_depth_texels_, nullptr);
+        splat_depth_texels_ = gpu::create_texel_view(context_, splat_depth_.handle(), VK_FORMAT_R32_UINT);
         splat_extent_ = extent;
     }
     if (cover_changed) splat_cover_ = gpu::Buffer(context_, cover_bytes, usage, gpu::MemoryUse::DeviceLocal);
@@ -64,8 +67,10 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     // In the order of splat_frame_bindings(): background, scene depth, colour, cover. The previous frame
     // has completed.
     const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(),
-                                      words ? targets.color_words : splat_color_.handle(), splat_cover_.handle()};
-    gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers);
+                                      words ? targets.color_words : splat_color_.handle(), splat_cover_.handle(),
+                                      splat_depth_.handle()};
+    const VkBufferView frame_views[] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, splat_depth_texels_};
+    gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers, frame_views);
 }
 
 // Whether a splat object draws large (round) dots, whose overlapping fractional ones compose (splat.comp).

@@ -53,6 +53,8 @@ void StippleRenderer::release() {
                          splat_pipelines_[2], splat_pipelines_[3]})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
+    if (splat_depth_texels_) vkDestroyBufferView(context_.device, splat_depth_texels_, nullptr);
+    splat_depth_texels_ = VK_NULL_HANDLE;
     destroy_render_layouts(context_, layouts_);
 }
 

@@ -238,6 +238,7 @@ private:
     gpu::Buffer splat_color_;       // the frame's colour while the splat draws into it (targets without words)
     gpu::Buffer splat_cover_;       // large fractional dots' summed optical depth per pixel (splat.comp), or 4 bytes
     gpu::Buffer splat_depth_;       // the depth pass's depth, for the splat's and the object-space lines' tests
+    VkBufferView splat_depth_texels_ = VK_NULL_HANDLE;  // its words as R32_UINT texels (kBindingSceneDepthTexels)
     VkExtent2D splat_extent_{};
     uint64_t splat_words_serial_ = 0;  // RenderTargets::color_words_serial of the words bound (0: none or unnamed)
     bool splat_in_words_ = false;  // the splat's colour binding holds a target's words (RenderTargets::color_words)

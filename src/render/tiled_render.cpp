@@ -26,13 +26,13 @@ glm::mat4 tile_projection(const glm::mat4& proj, VkExtent2D full, VkOffset2D ori
 }
 
 bool fits_one_target(const gpu::Context& context, VkExtent2D extent) {
-    return uint64_t(extent.width) * extent.height * 4u <= context.max_storage_buffer_bytes() &&
+    return uint64_t(extent.width) * extent.height <= context.max_pixel_words() &&
            extent.width <= context.properties.limits.maxImageDimension2D &&
            extent.height <= context.properties.limits.maxImageDimension2D;
 }
 
 uint32_t largest_tile_side(const gpu::Context& context) {
-    uint32_t side = uint32_t(std::sqrt(double(context.max_storage_buffer_bytes() / 4u)));
+    uint32_t side = uint32_t(std::sqrt(double(context.max_pixel_words())));
     while (side > 16 && !fits_one_target(context, {side, side})) --side;
     return std::min(side, context.properties.limits.maxImageDimension2D);
 }
