@@ -23,6 +23,7 @@ layout(constant_id = kSpecListDrawn) const bool kListDrawn = false;
 layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
 layout(constant_id = kSpecFacingBits) const bool kFacingBits = false;
 layout(constant_id = kSpecGradientPass) const bool kGradientPass = false;
+layout(constant_id = kSpecListGradientChunks) const bool kListGradientChunks = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -36,6 +37,10 @@ layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     uint drawn_polygons[];
 };
 layout(set = 0, binding = kBindingFacing, std430) buffer Facing { uint facing_away[]; };
+layout(set = 0, binding = kBindingDrawnStipples, std430) buffer GradientChunks {
+    DrawCommand chunk_draw;  // kGradientChunk vertices, an instance per chunk
+    uint chunk_first[];
+};
 layout(set = 0, binding = kBindingGradientPolygons, std430) buffer GradientList {
     DrawnPolygons gradient;  // its dispatch (groups of kDensityWorkgroupSize) and count
     uint gradient_polygons[];
@@ -102,6 +107,20 @@ void list_work_items(bool listing, uint first, float candidates, float density, 
     for (uint i = 0u; i < items; ++i) drawn_polygons[base + i] = first + i * run;
 }
 
+// The vertex path's chunks of a polygon whose density changes across it (GradientChunks): its candidates
+// up to the most density any of them sees, kGradientChunk a chunk. One atomic add per subgroup, as above.
+// Called by every invocation of the subgroup.
+void list_gradient_chunks(bool listing, uint first, float candidates, float most) {
+    uint drawn_here = listing ? drawn_stipple_count(most, uint(candidates)) : 0u;
+    uint chunks = (drawn_here + kGradientChunk - 1u) / kGradientChunk;
+    uint listed_here = subgroupAdd(chunks);
+    if (listed_here == 0u) return;
+    uint base = 0u;
+    if (subgroupElect()) base = atomicAdd(chunk_draw.instance_count, listed_here);
+    base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(chunks);
+    for (uint i = 0u; i < chunks; ++i) chunk_first[base + i] = first + i * kGradientChunk;
+}
+
 // The gradient pass: a polygon the density pass listed as large on screen gets the bounds of the density
 // across it (below the least every stipple is whole; lists and work items run to the most).
 void gradient_main() {
@@ -118,6 +137,7 @@ void gradient_main() {
     draws[t].least = bounds.x;
     draws[t].most = bounds.y;
     if (kListDrawn) list_work_items(true, draw.first_stipple, candidates, draw.density, bounds.y);
+    if (kListGradientChunks) list_gradient_chunks(bounds.x != bounds.y, draw.first_stipple, candidates, bounds.y);
 }
 
 void main() {

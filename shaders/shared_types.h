@@ -71,12 +71,23 @@ STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (tr
 // 3.9-4.9 without).
 STIPPLE_CONST uint kSpecRoundPoints = 4;
 STIPPLE_CONST uint kSpecWholeDot = 5;
+// stipple.vert, vertex path: the draw of every candidate culls those of the polygons whose density changes
+// across them (draw.least < draw.most, stipple_density_here), and a second, instanced draw takes them in
+// chunks of kGradientChunk candidates (GradientChunks), one instance a chunk. lavapipe runs the code of a
+// branch for every lane, taken or not: the density across a polygon (its corners and terms) cost every
+// candidate, about a third of the pass, where a few hundred polygons need it.
+STIPPLE_CONST uint kSpecGradientListed = 5;  // the draw of every candidate, without that code
+STIPPLE_CONST uint kSpecGradientChunks = 6;  // the second draw
+STIPPLE_CONST uint kGradientChunk = 8;
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 // density.comp: the variant that writes the facing bits (objects with lines); the others skip its ballot.
 STIPPLE_CONST uint kSpecFacingBits = 2;
 // density.comp: the gradient pass, over the polygons the density pass listed as large on screen
 // (kBindingGradientPolygons): the bounds of the density across each, and their work items.
 STIPPLE_CONST uint kSpecGradientPass = 4;
+// density.comp, the gradient pass for the vertex path: lists the chunks of the polygons whose density
+// changes across them (GradientChunks in kBindingDrawnStipples), which its draw of every candidate leaves out.
+STIPPLE_CONST uint kSpecListGradientChunks = 5;
 
 // Descriptor bindings of the one set every stipple pipeline uses (set 0).
 STIPPLE_CONST uint kBindingFrame = 0;          // FrameUniforms (uniform)
@@ -320,6 +331,10 @@ struct DrawCommand {
     uint first_vertex;
     uint first_instance;
 };
+// The vertex path's list in the same binding (kBindingDrawnStipples): a DrawCommand of kGradientChunk
+// vertices and one instance per chunk (instance_count, counted by the gradient pass), then each chunk's
+// first candidate: chunk k covers candidates [first, first + kGradientChunk) of its polygon, up to the most
+// density any of them sees. At most one chunk per polygon plus one per kGradientChunk candidates.
 
 struct FrameUniforms {
     mat4 view_proj;      // world -> clip

@@ -3,8 +3,10 @@
 // index within its polygon is beyond the density is pushed beyond the far plane and clipped.
 // The last one gets the fractional part of the density as its intensity (§2.1).
 // The kDrawnList variant draws the survivors' list instead (indirect and cpu paths, DrawCommand in
-// shared_types.h): vertex i is the candidate the list names, read from the stipple buffer; nothing
-// is culled. The kCountDrawn variant also records every surviving stipple (tests and statistics).
+// shared_types.h): vertex i is the candidate the list names, read from the stipple buffer; only those
+// that the density where they lie does not reach are culled. The vertex path draws every candidate but
+// those of the polygons whose density changes across them (kGradientListed), then those in chunks
+// (kGradientChunks, GradientChunks in shared_types.h). The kCountDrawn variant also records every surviving stipple (tests and statistics).
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
@@ -14,6 +16,8 @@
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
 layout(constant_id = kSpecDrawnList) const bool kDrawnList = false;
 layout(constant_id = kSpecRoundPoints) const bool kRoundPoints = false;  // dots above 2.5 px
+layout(constant_id = kSpecGradientListed) const bool kGradientListed = false;
+layout(constant_id = kSpecGradientChunks) const bool kGradientChunks = false;
 
 layout(location = 0) in vec2 in_barycentric;  // (u, v) in the polygon, R16G16_UNORM
 layout(location = 1) in uint in_triangle;
@@ -47,6 +51,15 @@ void main() {
     uint stipple = uint(gl_VertexIndex);
     uint triangle = in_triangle;
     vec2 barycentric = in_barycentric;
+    bool in_chunk = true;
+    if (kGradientChunks) {  // candidate gl_VertexIndex of chunk gl_InstanceIndex, if still its polygon's
+        uint first = drawn_stipples[gl_InstanceIndex];
+        stipple = first + uint(gl_VertexIndex);
+        StippleVertex chunk = stipple_vertex(first), here = stipple_vertex(stipple);
+        triangle = chunk.triangle;
+        barycentric = unpackUnorm2x16(here.barycentric);
+        in_chunk = here.triangle == triangle && stipple < object.flags.w;  // flags.w: the candidates in all
+    }
     if (kDrawnList) {
         stipple = drawn_stipples[gl_VertexIndex];
         StippleVertex listed = stipple_vertex(stipple);
@@ -55,7 +68,11 @@ void main() {
     }
     TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);
-    float intensity = stipple_intensity(density_where_it_lies(draw, triangle, index, barycentric), index);
+    // Without the density across a polygon: its candidates are drawn from the list (kSpecGradientListed).
+    float intensity = kGradientListed && !kDrawnList && !kGradientChunks
+                          ? (draw.least == draw.most ? stipple_intensity(draw.density, index) : 0.0f)
+                          : stipple_intensity(density_where_it_lies(draw, triangle, index, barycentric), index);
+    if (!in_chunk) intensity = 0.0f;
     out_intensity = intensity;
     if (intensity <= 0.0f) {
         gl_PointSize = object.shading.y;

@@ -178,14 +178,18 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     // Every path that computes the densities on the GPU lists the polygons large on screen for the
     // density's gradient pass: a header, then room for every polygon.
     const VkDeviceSize gradient = 16 + 4 * VkDeviceSize(object.geometry.triangle_count);
+    // The vertex path's chunks of the polygons whose density changes across them (GradientChunks): a draw
+    // command, then at most one per polygon and one per kGradientChunk candidates.
+    const VkDeviceSize chunks =
+        16 + 4 * (VkDeviceSize(object.geometry.triangle_count) + object.geometry.stipple_count / gpu::kGradientChunk);
     target.draw(renderer, view);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{placeholder, placeholder, placeholder, gradient}))
-        << "the vertex path needs only the gradient pass's list";
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{placeholder, placeholder, chunks, gradient}))
+        << "the vertex path needs only the gradient pass's lists";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
     // The work list: a header, then at most one item per polygon and one per kSplatShortRun candidates.
     const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatShortRun;
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, placeholder, gradient}));
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, chunks, gradient}));  // kept
 
     // With the splat path, what the object costs on the GPU per candidate: 9 bytes per candidate
     // (the stipple and its share of the work list) and 40 per polygon besides the mesh, so at most 19
@@ -250,7 +254,33 @@ struct PathFrames {
     std::vector<std::vector<uint32_t>> masks;
     uint32_t cpu_listed = 0, gpu_listed = 0;  // the survivors' lists of the cpu and indirect paths
     uint32_t band = 0;  // stipples of polygons large on screen whose index lies between their least and most density
+    uint32_t chunks = 0;  // the vertex path's chunks of the polygons whose density changes across them
 };
+
+// The vertex path's second draw (GradientChunks): an instance of kGradientChunk candidates for each chunk of
+// each drawing polygon whose density changes across it, up to the most density any of them sees, and
+// nothing else (the first draw culls those polygons' candidates).
+uint32_t expect_gradient_chunks(const gpu::Context& context, StippleRenderer& renderer, const StippleSet& stipples) {
+    const std::vector<std::byte> bytes = gpu::read_buffer(context, renderer.object(0).frame.drawn_stipples);
+    gpu::DrawCommand draw;
+    std::memcpy(&draw, bytes.data(), sizeof draw);
+    EXPECT_EQ(draw.vertex_count, gpu::kGradientChunk);
+    EXPECT_EQ(draw.first_vertex, 0u);
+    EXPECT_EQ(draw.first_instance, 0u);
+    std::vector<uint32_t> listed(draw.instance_count);
+    std::memcpy(listed.data(), bytes.data() + sizeof draw, sizeof(uint32_t) * listed.size());
+    std::sort(listed.begin(), listed.end());
+    const std::vector<float> densities = renderer.read_densities(0);
+    const std::vector<glm::vec2> bounds = renderer.read_density_bounds(0);
+    std::vector<uint32_t> expected;
+    for (uint32_t t = 0; t < densities.size(); ++t) {
+        if (!(densities[t] > 0.0f) || bounds[t].x == bounds[t].y) continue;
+        const uint32_t drawn = formulas::drawn_stipple_count(bounds[t].y, stipples.first[t + 1] - stipples.first[t]);
+        for (uint32_t k = 0; k < drawn; k += gpu::kGradientChunk) expected.push_back(stipples.first[t] + k);
+    }
+    EXPECT_EQ(listed, expected) << "the vertex path's chunks are not those of the polygons whose density varies";
+    return draw.instance_count;
+}
 
 // Every density path draws the subject; the masks and images must agree (checked by the caller).
 PathFrames draw_with_every_path(const gpu::Context& context, const test::Prepared& subject, const ObjectParams& params,
@@ -293,6 +323,7 @@ PathFrames draw_with_every_path(const gpu::Context& context, const test::Prepare
             out.band = std::max(out.band, band);
         }
         if (draws_by_splat(path)) expect_splat_work_list(context, renderer, subject.stipples, path);
+        if (path == DensityPath::Vertex) out.chunks = expect_gradient_chunks(context, renderer, subject.stipples);
         std::printf("%-8s path: %lld stipples drawn\n", density_path_name(path),
                     (long long)renderer.stats().drawn_stipples);
         EXPECT_EQ(size_t(renderer.stats().drawn_stipples), test::popcount(out.masks.back()));
@@ -319,8 +350,9 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     Prepared blob = test::prepare(load_mesh(blobby_path()), params);
     PathFrames out = draw_with_every_path(*context, blob, params, 1.5f);
     std::printf("survivors listed: %u by the CPU path, %u by the indirect path; %u drawn (%u in the band where a "
-                "large polygon's density decides per stipple)\n",
-                out.cpu_listed, out.gpu_listed, uint32_t(test::popcount(out.masks[0])), out.band);
+                "large polygon's density decides per stipple); %u chunks of such polygons drawn by the vertex path's "
+                "second draw\n",
+                out.cpu_listed, out.gpu_listed, uint32_t(test::popcount(out.masks[0])), out.band, out.chunks);
     // Every drawn stipple, and besides them only stipples of the band (culled by the vertex shader).
     for (uint32_t listed : {out.cpu_listed, out.gpu_listed}) {
         EXPECT_GE(listed, test::popcount(out.masks[0]));
@@ -435,6 +467,8 @@ TEST_F(DensityPaths, AllPathsDrawEveryStippleOfLargePolygons) {
     const size_t most = most_drawn_by_one_polygon(box.stipples, out.masks[0]);
     std::printf("box: %zu stipples drawn, at most %zu by one polygon\n", test::popcount(out.masks[0]), most);
     EXPECT_GT(most, 20 * size_t(gpu::kSplatChunk)) << "the box should draw many work items per polygon";
+    // Its faces' density changes across them: the vertex path draws them by its second, chunked draw.
+    EXPECT_GT(out.chunks, 20u);
     expect_same_stipples_and_images(out);
     EXPECT_NEAR(test::mean_ink(out.frames.back()), test::mean_ink(out.frames[0]), 0.02 * test::mean_ink(out.frames[0]));
 }

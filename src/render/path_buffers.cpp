@@ -40,13 +40,15 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
     // Every candidate may draw (a close-up), each listed once.
     const VkDeviceSize survivors = sizeof(gpu::DrawCommand) + sizeof(uint32_t) * VkDeviceSize(object.geometry.stipple_count);
     const bool lists_survivors = path == DensityPath::Cpu || path == DensityPath::Indirect;
+    // The vertex path's chunks of the polygons whose density changes across them (GradientChunks).
+    const VkDeviceSize chunks = sizeof(gpu::DrawCommand) + sizeof(uint32_t) * (n + object.geometry.stipple_count / gpu::kGradientChunk);
     switch (kind) {
         // The indirect path lists its stipples from the same work items.
         case PathBuffer::DrawnPolygons: return draws_by_splat(path) || path == DensityPath::Indirect ? list : 0;
         case PathBuffer::DrawStaging:
             if (path == DensityPath::Cpu) return staged_list_offset(object) + survivors;
             return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
-        case PathBuffer::DrawnStipples: return lists_survivors ? survivors : 0;
+        case PathBuffer::DrawnStipples: return lists_survivors ? survivors : path == DensityPath::Vertex ? chunks : 0;
         // The density pass's list of polygons large on screen (every polygon at most) for its gradient pass.
         case PathBuffer::GradientPolygons:
             return density_on_cpu(path) ? 0 : sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;

@@ -43,8 +43,11 @@ void StippleRenderer::release() {
     deform_pass_.reset();
     for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipelines_[0], stipple_pipelines_[1],
                          stipple_list_pipelines_[0], stipple_list_pipelines_[1],
+                         stipple_gradient_listed_pipelines_[0], stipple_gradient_listed_pipelines_[1],
+                         stipple_chunk_pipelines_[0], stipple_chunk_pipelines_[1],
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
-                         density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], facing_pipeline_,
+                         density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], gradient_pipelines_[2],
+                         facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_,
                          line_edges_pipeline_, line_walk_pipeline_, line_pieces_pipeline_, depth_triangles_pipeline_,
@@ -99,6 +102,11 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
         gpu::GraphicsPipelineDesc variant = stipple;
         variant.specialization.constants.push_back({gpu::kSpecRoundPoints, round});
         stipple_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
+        gpu::GraphicsPipelineDesc vertex_path = variant;  // the vertex path's two draws
+        vertex_path.specialization.constants.push_back({gpu::kSpecGradientListed, 1u});
+        stipple_gradient_listed_pipelines_[round] = gpu::create_graphics_pipeline(context_, vertex_path, layouts_.pipeline);
+        vertex_path.specialization.constants.push_back({gpu::kSpecGradientChunks, 1u});
+        stipple_chunk_pipelines_[round] = gpu::create_graphics_pipeline(context_, vertex_path, layouts_.pipeline);
         variant.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
         stipple_list_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
     }
@@ -122,10 +130,13 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     }
-    for (uint32_t list : {0u, 1u})
+    for (uint32_t list : {0u, 1u, 2u})  // [2]: the vertex path's chunks
         gradient_pipelines_[list] = gpu::create_compute_pipeline(
             context_, "density.comp", layouts_.pipeline,
-            {{{gpu::kSpecGradientPass, 1u}, {gpu::kSpecListDrawn, list}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
+            {{{gpu::kSpecGradientPass, 1u},
+              {gpu::kSpecListDrawn, list == 1 ? 1u : 0u},
+              {gpu::kSpecListGradientChunks, list == 2 ? 1u : 0u},
+              {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                     {{{gpu::kSpecFacingOnly, 1u}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     create_line_pipelines(depth);
@@ -249,6 +260,10 @@ bool StippleRenderer::lists_work_items(const ObjectGpu& object) const {
     return uses_splat(object) || object.params.density_path == DensityPath::Indirect;
 }
 
+bool StippleRenderer::lists_gradient_chunks(const ObjectGpu& object) const {
+    return object.params.density_path == DensityPath::Vertex;
+}
+
 bool StippleRenderer::paper_under_splat() const {
     return std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) { return o->params.toon || draws_points(*o); });
 }
@@ -305,6 +320,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
             any_indirect = true;
         }
+        if (lists_gradient_chunks(*object)) {  // no chunks yet: kGradientChunk vertices, no instance
+            const gpu::DrawCommand no_chunks{gpu::kGradientChunk, 0u, 0u, 0u};
+            vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof no_chunks, &no_chunks);
+        }
         const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};  // an empty list: no groups yet (y and z are 1)
         if (lists_work_items(*object))
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
@@ -337,7 +356,8 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0 || density_on_cpu(object->params.density_path)) continue;
-            dispatch_over(*object, gradient_pipelines_[lists_work_items(*object) ? 1 : 0], object->frame.gradient_polygons);
+            const size_t gradient = lists_work_items(*object) ? 1 : lists_gradient_chunks(*object) ? 2 : 0;
+            dispatch_over(*object, gradient_pipelines_[gradient], object->frame.gradient_polygons);
         }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written (read through
@@ -372,18 +392,29 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         const bool listed = object->params.density_path == DensityPath::Indirect ||
                             object->params.density_path == DensityPath::Cpu;
         const size_t round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u ? 1 : 0;
-        const VkPipeline pipeline = listed ? stipple_list_pipelines_[round] : stipple_pipelines_[round];
-        if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        bound = pipeline;
+        const bool gradient_listed = lists_gradient_chunks(*object);
+        const VkPipeline pipeline = listed            ? stipple_list_pipelines_[round]
+                                    : gradient_listed ? stipple_gradient_listed_pipelines_[round]
+                                                      : stipple_pipelines_[round];
+        auto use = [&](VkPipeline p) {
+            if (p != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
+            bound = p;
+        };
+        use(pipeline);
         VkDeviceSize offset = 0;
         VkBuffer vb = object->geometry.stipples.handle();
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
-        if (listed)
+        if (listed) {
             vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
-        else  // vertex; splat and cpu-splat on targets without the splat's transfers
+        } else {  // vertex; splat and cpu-splat on targets without the splat's transfers
             vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
+            if (gradient_listed) {  // the polygons whose density changes across them, a chunk an instance
+                use(stipple_chunk_pipelines_[round]);
+                vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
+            }
+        }
     }
 }
 

@@ -174,6 +174,10 @@ private:
     // Whether the density pass cuts the object's drawn stipples into work items: the splat draws them, and
     // the indirect path lists its stipples from them.
     bool lists_work_items(const ObjectGpu& object) const;
+    // Whether the gradient pass lists the chunks of the object's polygons whose density changes across
+    // them (GradientChunks): the vertex path, whose draw of every candidate leaves those polygons to a
+    // second, instanced draw (kSpecGradientListed, kSpecGradientChunks).
+    bool lists_gradient_chunks(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
     bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
     // depth_pass.cpp
@@ -206,11 +210,16 @@ private:
     // [1]: the variants for large dots (kSpecRoundPoints).
     VkPipeline stipple_pipelines_[2] = {};       // every candidate; the vertex shader culls (§3.2)
     VkPipeline stipple_list_pipelines_[2] = {};  // the survivors' list (indirect and cpu paths)
+    // The vertex path's: every candidate but those of the polygons whose density changes across them,
+    // then those, a chunk an instance.
+    VkPipeline stipple_gradient_listed_pipelines_[2] = {};
+    VkPipeline stipple_chunk_pipelines_[2] = {};
     // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
     VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
-    // The density pass's gradient pass over the polygons large on screen: [1] also lists their work items.
-    VkPipeline gradient_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    // The density pass's gradient pass over the polygons large on screen: [1] also lists their work items,
+    // [2] the chunks of those whose density changes across them (the vertex path's second draw).
+    VkPipeline gradient_pipelines_[3] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
     // The depth pass as compute: [0] every triangle, the small ones drawn; [1] the listed ones (kSpecRasterLarge).
