@@ -53,7 +53,7 @@ Render options:
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), ink
                           coverage, and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
-                          frame time and GPU time per pass
+                          frame time and GPU time per pass, and the least
   --queued K              with --repeat: each timed frame is K frames queued back to back in one
                           submission, over K (default: 1 on a CPU device, 8 on a GPU, as for bench)
   --depth-cull MODE        auto, on or off: the depth pass draws only the triangles that may cover a
