@@ -6,7 +6,8 @@
 // shared_types.h): vertex i is the candidate the list names, read from the stipple buffer; only those
 // that the density where they lie does not reach are culled. The vertex path draws every candidate but
 // those of the polygons whose density changes across them (kGradientListed), then those in chunks
-// (kGradientChunks, GradientChunks in shared_types.h). The kCountDrawn variant also records every surviving stipple (tests and statistics).
+// (kGradientChunks, GradientChunks in shared_types.h). The kCountDrawn variant also records every
+// surviving stipple (tests and statistics).
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "stipple_formulas.h"
@@ -68,7 +69,7 @@ void main() {
     }
     TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);
-    // Without the density across a polygon: its candidates are drawn from the list (kSpecGradientListed).
+    // Without the density across a polygon: its candidates are drawn in chunks (kSpecGradientListed).
     float intensity = kGradientListed && !kDrawnList && !kGradientChunks
                           ? (draw.least == draw.most ? stipple_intensity(draw.density, index) : 0.0f)
                           : stipple_intensity(density_where_it_lies(draw, triangle, index, barycentric), index);
