@@ -96,7 +96,7 @@ STIPPLE_CONST uint kBindingTriangleDraw = 2;   // TriangleDraw[] (storage), per 
 STIPPLE_CONST uint kBindingTriangleInfo = 3;   // TriangleInfo[] (storage), constant
 STIPPLE_CONST uint kBindingDrawnStipples = 4;  // DrawCommand + uint[] (storage): the survivors' list (indirect, cpu)
 STIPPLE_CONST uint kBindingDebug = 5;          // DebugCounters (storage): drawn count + drawn bit mask
-STIPPLE_CONST uint kBindingStipples = 6;       // StippleVertex[] (storage): the candidates, for the splat pass
+// 6: unused (the candidates were a storage buffer; they are read as texels, kBindingStippleTexels)
 STIPPLE_CONST uint kBindingDrawnPolygons = 7;  // DrawnPolygons header + uint[] (storage): the splat's work list (the indirect path lists from it too)
 STIPPLE_CONST uint kBindingMeshPositions = 8;  // texel buffer: the mesh's vertices (RGB32F, or R32F: kSpecMeshVec3Texels)
 STIPPLE_CONST uint kBindingMeshIndices = 9;    // texel buffer: the mesh's triangles (RGB32UI, or R32UI)
@@ -123,7 +123,7 @@ STIPPLE_CONST uint kBindingDepthTriangles = 19;
 // DrawnPolygons header (its dispatch and count) + uint[] (storage): the polygons the density pass found
 // large on screen this frame, for its gradient pass (density.comp, kSpecGradientPass)
 STIPPLE_CONST uint kBindingGradientPolygons = 20;
-// RG32UI texel view of kBindingStipples (a StippleVertex a texel), for the passes that read candidates at
+// RG32UI texel view of the candidates (StippleVertex[], a candidate a texel), for the passes that read them at
 // scattered places (the splat, the drawn list): one gather on a software GPU, where a storage buffer is
 // loaded member by member, lane by lane
 STIPPLE_CONST uint kBindingStippleTexels = 21;

@@ -23,7 +23,6 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingTriangleInfo, kStorage}, [](const O& o) { return o.polygons.gpu.handle(); }},
     {{gpu::kBindingDrawnStipples, kStorage}, [](const O& o) { return o.frame.drawn_stipples.handle(); }},
     {{gpu::kBindingDebug, kStorage}, [](const O& o) { return o.frame.debug.handle(); }},
-    {{gpu::kBindingStipples, kStorage}, [](const O& o) { return o.geometry.stipples.handle(); }},
     {{gpu::kBindingDrawnPolygons, kStorage}, [](const O& o) { return o.frame.drawn_polygons.handle(); }},
     {{gpu::kBindingMeshPositions, kTexels}, [](const O& o) { return o.geometry.positions.handle(); },
      [](const O& o) { return o.geometry.position_texels; }},
