@@ -106,6 +106,46 @@ TEST(CliPrint, TilesJoinWithoutSeams) {
     EXPECT_LE(double(differing), 0.001 * double(inked));
 }
 
+// The count `render --stats` prints after `label`; -1 without one.
+long printed_count(const test::CommandResult& r, const std::string& label) {
+    const size_t at = r.out.find(label);
+    return at == std::string::npos ? -1 : std::stol(r.out.substr(at + label.size()));
+}
+
+// A print is drawn by a renderer of its own: --stats reports that renderer's figures (until 2026-12-02 it
+// printed the unused screen renderer's: 0 triangles, 0 candidates, -1 drawn). Its drawn stipples are
+// the screen image's at the same aspect and --height, since the print enlarges that image.
+TEST(CliPrint, StatsAreThePrintsOwn) {
+    const auto dir = test::temp_dir("cli-print-stats");
+    // An A6 page (105 x 148 mm) at 100 dpi, 10 mm margins: a drawing of 85 x 128 mm, 335 x 505 px; the screen image at its aspect.
+    const test::CommandResult page = test::run_stipple(
+        {"render", "--page", "105x148mm", "--dpi", "100", "--height", "640", "--stats", "-o", (dir / "page.png").string()});
+    ASSERT_EQ(page.exit_code, 0) << page.err;
+    const test::CommandResult screen = test::run_stipple(
+        {"render", "--width", "425", "--height", "640", "--stats", "-o", (dir / "screen.png").string()});
+    ASSERT_EQ(screen.exit_code, 0) << screen.err;
+    std::printf("print: %ld triangles, %ld candidates, %ld drawn; screen: %ld drawn\n",
+                printed_count(page, "triangles:"), printed_count(page, "candidate stipples:"),
+                printed_count(page, "drawn stipples:"), printed_count(screen, "drawn stipples:"));
+    EXPECT_EQ(printed_count(page, "triangles:"), printed_count(screen, "triangles:"));
+    EXPECT_GT(printed_count(page, "triangles:"), 1000);
+    EXPECT_EQ(printed_count(page, "candidate stipples:"), printed_count(screen, "candidate stipples:"));
+    const long drawn = printed_count(page, "drawn stipples:"), drawn_screen = printed_count(screen, "drawn stipples:");
+    ASSERT_GT(drawn_screen, 10000);
+    EXPECT_NEAR(double(drawn) / double(drawn_screen), 1.0, 0.02);
+    EXPECT_NE(page.out.find("covered pixels:     not measured (drawn in tiles)"), std::string::npos) << page.out;
+}
+
+// A sequence of prints says what each file is: the page's pixels (it said the screen's 1280x1024).
+TEST(CliPrint, ASequenceNamesItsPages) {
+    const auto dir = test::temp_dir("cli-print-frames");
+    const test::CommandResult r = test::run_stipple({"render", "--page", "A5", "--dpi", "50", "--frames", "2", "--orbit", "90",
+                                                     "-o", (dir / "page%02d.png").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("(291x413, A5 at 50 dpi)"), std::string::npos) << r.out;
+    EXPECT_EQ(read_png((dir / "page01.png").string()).width, 291);
+}
+
 TEST(CliPrint, OptionsOutOfRangeAreNamed) {
     for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
              {{"--dpi", "30", "--page", "A4"}, "--dpi = 30"},

@@ -68,14 +68,17 @@ PrintLayout print_layout(const PrintOptions& options) {
 }
 
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                   const FrameView& view, const PrintOptions& options, double scene_seconds) {
+                   const FrameView& view, const PrintOptions& options, double scene_seconds, FrameStats* stats) {
     const PrintLayout layout = print_layout(options);
-    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+    RendererOptions renderer_options;
+    renderer_options.count_drawn = stats != nullptr;
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     add_splat_objects(renderer, scene, objects, scene_seconds);
     FrameView print = view;
     print.extent = layout.drawing_px;
     print.detail_scale = layout.detail_scale;
     const Image drawing = render_tiled(context, renderer, print, options.max_tile);
+    if (stats) *stats = renderer.stats();
     Image page;
     page.width = int(layout.page_px.width);
     page.height = int(layout.page_px.height);

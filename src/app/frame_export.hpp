@@ -47,8 +47,12 @@ struct PrintLayout {
 // beyond 65536 pixels a side.
 PrintLayout print_layout(const PrintOptions& options);
 // `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
+// `stats`, when given, receives the figures of the renderer that drew the print (render --stats), with
+// the drawn stipples counted: every tile draws the whole drawing's densities, so the counts are the
+// print's, and the GPU times are the last tile's.
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                   const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0);
+                   const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0,
+                   FrameStats* stats = nullptr);
 
 // Captures, lays out on the page, orders for the plotter and writes `path` (.svg, .pdf or .csv).
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,

@@ -246,23 +246,27 @@ int run_render(const std::vector<std::string>& argv) {
         if (repeat > 0) fail("--repeat times one frame, and " + why);
     }
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
-    add_scene_objects(renderer, scene, content.objects);
+    // A print is drawn by a renderer of its own (app::render_print): this one would only hold a second
+    // copy of every object's buffers.
+    if (!print) add_scene_objects(renderer, scene, content.objects);
     std::optional<OffscreenTarget> target;
-    if (!tiled) target.emplace(context, extent);
+    if (!tiled && !print) target.emplace(context, extent);
 
     // Frames are written as they are drawn (a long orbit needs no more memory than one frame).
     ProgressBar bar("Rendering frames", sequence);
     RenderedFrame frame;
     plot::PlotStats last_plot;  // vector output: the last frame's
+    FrameStats print_stats;     // a print's, from the renderer that draws it (app::render_print)
     FrameView view;
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
         // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
         view = scene_frame_view(scene, cameras[i], bounds, print ? app::print_layout(*print).drawing_px : extent);
-        if (animated) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
+        if (animated && !print) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
         auto render_start = std::chrono::steady_clock::now();
         if (print) {
-            const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0);
+            const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0,
+                                                 args.flag("--stats") ? &print_stats : nullptr);
             render_seconds = seconds_since(render_start);
             write_png(output_path(output, i, sequence), page);
             bar.update(double(i + 1) / double(cameras.size()));
@@ -299,7 +303,9 @@ int run_render(const std::vector<std::string>& argv) {
     }
 
     if (args.flag("--stats")) {
-        const FrameStats& stats = renderer.stats();
+        // A print is drawn by a renderer of its own (the splat, in tiles); `renderer` drew nothing then.
+        const FrameStats& stats = print ? print_stats : renderer.stats();
+        const bool in_tiles = tiled || print.has_value();
         size_t covered = 0;
         double ink = ink_fraction_inside(frame, &covered);
         if (scene.source.empty())
@@ -310,7 +316,9 @@ int run_render(const std::vector<std::string>& argv) {
         std::printf("triangles:          %llu\n", (unsigned long long)stats.triangles);
         uint64_t depth_triangles = 0;
         for (size_t i = 0; i < renderer.object_count(); ++i) depth_triangles += renderer.read_depth_triangles(i);
-        if (renderer.depth_words())
+        if (print)
+            std::printf("depth pass:         per tile of the print\n");
+        else if (renderer.depth_words())
             std::printf("depth pass:         by compute (--depth-raster %s)\n", depth_raster_name(*depth_raster));
         else
             std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)\n", (unsigned long long)depth_triangles,
@@ -322,7 +330,7 @@ int run_render(const std::vector<std::string>& argv) {
         for (const SceneObject& o : scene.objects)
             if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
                 paths += std::string(paths.empty() ? "" : ", ") + density_path_name(o.params.density_path);
-        std::printf("density path:       %s\n", paths.c_str());
+        std::printf("density path:       %s%s\n", paths.c_str(), print ? " (a print is drawn by the splat)" : "");
         for (size_t i = 0; i < content.objects.size(); ++i) {
             const ObjectData& o = content.objects[i];
             if (!o.motion) continue;
@@ -332,10 +340,10 @@ int run_render(const std::vector<std::string>& argv) {
                         sequence ? " (last frame)" : "");
         }
         for (const auto& [pass, ms] : stats.gpu_ms)
-            std::printf("gpu %-16s%.3f ms%s\n", (pass + ":").c_str(), ms, tiled ? " (the last tile)" : "");
+            std::printf("gpu %-16s%.3f ms%s\n", (pass + ":").c_str(), ms, in_tiles ? " (the last tile)" : "");
         if (paths.find("cpu") != std::string::npos)
             std::printf("cpu density:        %.3f ms\n", stats.cpu_density_ms);
-        if (tiled) {
+        if (in_tiles) {
             std::printf("covered pixels:     not measured (drawn in tiles)\n");
         } else {
             std::printf("covered pixels:     %zu\n", covered);
@@ -356,21 +364,21 @@ int run_render(const std::vector<std::string>& argv) {
             std::printf("gpu %-16s median %.3f ms, min %.3f\n", (pass + ":").c_str(), median(values),
                         *std::min_element(values.begin(), values.end()));
     }
-    if (sequence)
-        std::printf("wrote %zu frames %s .. %s (%lldx%lld)\n", cameras.size(), frame_path(output, 0).c_str(),
-                    frame_path(output, cameras.size() - 1).c_str(), width, height);
-    else if (print) {
+    // What each file holds: a print's page, a vector page, or the image's pixels.
+    std::string holds = printf_string("%lldx%lld", width, height);
+    if (print) {
         const VkExtent2D page = app::print_layout(*print).page_px;
-        std::printf("wrote %s (%ux%u, %s at %g dpi)\n", output_path(output, 0, false).c_str(), page.width, page.height,
-                    args.get("--page", "").c_str(), print->dpi);
+        holds = printf_string("%ux%u, %s at %g dpi", page.width, page.height, args.get("--page", "").c_str(), print->dpi);
     } else if (vector) {
-        std::printf("wrote %s (%s mm page: %zu dots, %zu polylines; the frame's view at %lldx%lld)\n",
-                    output_path(output, 0, false).c_str(),
-                    (plot::format_number(vector_options.page.width_mm, 0) + "x" +
-                     plot::format_number(vector_options.page.height_mm, 0)).c_str(),
-                    last_plot.dots, last_plot.polylines, width, height);
-    } else
-        std::printf("wrote %s (%lldx%lld)\n", output_path(output, 0, false).c_str(), width, height);
+        holds = plot::format_number(vector_options.page.width_mm, 0) + "x" + plot::format_number(vector_options.page.height_mm, 0) +
+                printf_string(" mm page: %zu dots, %zu polylines%s; the frame's view at %lldx%lld", last_plot.dots,
+                              last_plot.polylines, sequence ? " in the last frame" : "", width, height);
+    }
+    if (sequence)
+        std::printf("wrote %zu frames %s .. %s (%s)\n", cameras.size(), frame_path(output, 0).c_str(),
+                    frame_path(output, cameras.size() - 1).c_str(), holds.c_str());
+    else
+        std::printf("wrote %s (%s)\n", output_path(output, 0, false).c_str(), holds.c_str());
 
     if (uint32_t messages = context.validation_message_count()) {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s): the render is not trustworthy\n", messages);
