@@ -24,6 +24,7 @@ layout(constant_id = kSpecFacingOnly) const bool kFacingOnly = false;
 layout(constant_id = kSpecFacingBits) const bool kFacingBits = false;
 layout(constant_id = kSpecGradientPass) const bool kGradientPass = false;
 layout(constant_id = kSpecListGradientChunks) const bool kListGradientChunks = false;
+layout(constant_id = kSpecListVaryingApart) const bool kListVaryingApart = false;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
@@ -40,6 +41,12 @@ layout(set = 0, binding = kBindingFacing, std430) buffer Facing { uint facing_aw
 layout(set = 0, binding = kBindingDrawnStipples, std430) buffer GradientChunks {
     DrawCommand chunk_draw;  // kGradientChunk vertices, an instance per chunk
     uint chunk_first[];
+};
+// The same binding for the splat with GPU densities (kSpecListVaryingApart): the work items of the polygons
+// whose density varies across them, which the splat draws in a dispatch of their own (splat.comp).
+layout(set = 0, binding = kBindingDrawnStipples, std430) buffer VaryingList {
+    DrawnPolygons varied;
+    uint varied_items[];
 };
 layout(set = 0, binding = kBindingGradientPolygons, std430) buffer GradientList {
     DrawnPolygons gradient;  // its dispatch (groups of kDensityWorkgroupSize) and count
@@ -66,11 +73,17 @@ uint groups_starting_in(uint base, uint n) {
     return (base + n + group - 1u) / group - (base + group - 1u) / group;
 }
 
-// n consecutive slots of the work list; the splat's dispatch gains the workgroups that start in them.
-uint claim_slots(uint n) {
-    uint base = atomicAdd(drawn.count, n);
+// n consecutive slots of the work list (or of the varying polygons' list, VaryingList); the splat's dispatch
+// gains the workgroups that start in them.
+uint claim_slots(uint n, bool to_varied) {
+    uint base = to_varied ? atomicAdd(varied.count, n) : atomicAdd(drawn.count, n);
     uint starts = groups_starting_in(base, n);
-    if (starts > 0u) atomicAdd(drawn.groups_x, starts);
+    if (starts > 0u) {
+        if (to_varied)
+            atomicAdd(varied.groups_x, starts);
+        else
+            atomicAdd(drawn.groups_x, starts);
+    }
     return base;
 }
 
@@ -94,17 +107,22 @@ void list_gradient(bool large, uint t) {
 // density any of its stipples sees. One atomic add per subgroup hands out the slots of all its polygons'
 // items, each polygon's consecutive (a prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each
 // range adds the workgroups of the splat's dispatch that start in it. Called by every invocation of the
-// subgroup (listing nothing where `listing` is false).
-void list_work_items(bool listing, uint first, float candidates, float density, float most) {
+// subgroup (listing nothing where `listing` is false), with the same `to_varied` (the list: VaryingList).
+void list_work_items(bool listing, bool to_varied, uint first, float candidates, float density, float most) {
     uint drawn_here = listing ? drawn_stipple_count(most, uint(candidates)) : 0u;
     uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
     uint items = (drawn_here + run - 1u) / run;
     uint listed_here = subgroupAdd(items);
     if (listed_here == 0u) return;
     uint base = 0u;
-    if (subgroupElect()) base = claim_slots(listed_here);
+    if (subgroupElect()) base = claim_slots(listed_here, to_varied);
     base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(items);
-    for (uint i = 0u; i < items; ++i) drawn_polygons[base + i] = first + i * run;
+    for (uint i = 0u; i < items; ++i) {
+        if (to_varied)
+            varied_items[base + i] = first + i * run;
+        else
+            drawn_polygons[base + i] = first + i * run;
+    }
 }
 
 // The vertex path's chunks of a polygon whose density changes across it (GradientChunks): its candidates
@@ -136,7 +154,11 @@ void gradient_main() {
     vec2 bounds = polygon_density_bounds(draw.density, a, b, c, q);
     draws[t].least = bounds.x;
     draws[t].most = bounds.y;
-    if (kListDrawn) list_work_items(true, draw.first_stipple, candidates, draw.density, bounds.y);
+    // With kListVaryingApart the work items of a polygon whose density does vary go to their own list; the
+    // others (listed as large by the cheap test, yet flat) join the work list.
+    bool apart = kListVaryingApart && bounds.x != bounds.y;
+    if (kListDrawn) list_work_items(!apart, false, draw.first_stipple, candidates, draw.density, bounds.y);
+    if (kListDrawn && kListVaryingApart) list_work_items(apart, true, draw.first_stipple, candidates, draw.density, bounds.y);
     if (kListGradientChunks) list_gradient_chunks(bounds.x != bounds.y, draw.first_stipple, candidates, bounds.y);
 }
 
@@ -175,5 +197,5 @@ void main() {
     draws[t].density = density;
     draws[t].least = density;
     draws[t].most = density;
-    if (kListDrawn) list_work_items(!large, first, candidates, density, density);
+    if (kListDrawn) list_work_items(!large, false, first, candidates, density, density);
 }

@@ -9,6 +9,12 @@
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
 //
+// Three dispatches per object (kSpecSplatList): the work list; with GPU densities, the work items of the
+// polygons whose density varies across them (the only variant, with the CPU's list, that has that code:
+// kVaryingDensity); and the ring pass over the items with a dot astride the outline, which inks only the
+// pixels such a dot gives to the visible pixels nearest it (see splat). lavapipe runs the code of a branch
+// for every lane, taken or not: kept out of the first dispatch, that code no longer costs most dots.
+//
 // One pass, in any order, with the same result. A pixel's word is its colour with 255 * (1 - coverage)
 // in the alpha byte, the top byte of the word; its colour is the background (read from a separate,
 // unchanging copy) mixed with the ink by that coverage. A full stipple stores alpha 0 and the ink:
@@ -36,12 +42,25 @@ layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 layout(constant_id = kSpecRecordVisible) const bool kRecordVisible = false;
 layout(constant_id = kSpecRoundPoints) const bool kRoundPoints = false;  // discs, not squares
 layout(constant_id = kSpecWholeDot) const bool kWholeDot = false;  // print detail (see splat)
+// The list this dispatch walks (kSplatList*, shared_types.h) and whether it has the density across a polygon.
+layout(constant_id = kSpecSplatList) const uint kList = kSplatListDrawn;
+layout(constant_id = kSpecVaryingDensity) const bool kVaryingDensity = true;
+// The ring pass inks only the lost pixels of the dots astride the outline (see splat).
+const bool kRingPass = kList == kSplatListRing;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) readonly buffer DrawnList {
     DrawnPolygons drawn;
     uint drawn_polygons[];
+};
+layout(set = 0, binding = kBindingDrawnStipples, std430) readonly buffer VaryingList {
+    DrawnPolygons varied;  // the gradient pass's list of the polygons whose density varies (GPU densities)
+    uint varied_items[];
+};
+layout(set = 0, binding = kBindingSplatRing, std430) buffer RingList {
+    DrawnPolygons ring;  // work items with a dot astride the outline, for the ring pass
+    uint ring_items[];
 };
 layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
     DebugCounters counters;
@@ -124,17 +143,18 @@ uint optical_depth_units(float intensity) {
 
 // `fraction`: the stipple's intensity as the paper has it (stipple_intensity), which the visible list
 // records for vector output; `intensity` and `side`: the dot drawn (a round fractional one is smaller and
-// of full ink, fractional_round_dot).
-void splat(uint index, float fraction, float intensity, bool full, float side, mat4 model_view_proj,
+// of full ink, fractional_round_dot). Returns whether the dot lies astride the outline (some of its pixels
+// have no surface): outside the ring pass its lost pixels are left to that pass, which inks only them.
+bool splat(uint index, float fraction, float intensity, bool full, float side, mat4 model_view_proj,
            PolygonFrame polygon, SplatConstants c, float depth_pull) {
-    if (kCountDrawn) {  // drawn = survived the density cut, as the vertex path counts it
+    if (kCountDrawn && !kRingPass) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
         atomicOr(drawn_mask[index >> 5u], 1u << (index & 31u));
     }
     vec4 clip = model_view_proj * vec4(stipple_position(polygon, unpackUnorm2x16(stipple_vertex(index).barycentric)), 1.0);
-    if (clip.w <= 0.0) return;
+    if (clip.w <= 0.0) return false;
     vec3 ndc = clip.xyz / clip.w;
-    if (ndc.z < 0.0 || ndc.z > 1.0) return;  // the rasteriser clips these too
+    if (ndc.z < 0.0 || ndc.z > 1.0) return false;  // the rasteriser clips these too
     // Window coordinates with the renderer's negative-height viewport (y up in NDC, top row first).
     vec2 size = c.size;
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
@@ -148,7 +168,7 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
     const bool whole_dot = kWholeDot;
     if (whole_dot) {
         ivec2 centre = clamp(ivec2(floor(window)), ivec2(0), ivec2(size) - 1);
-        if (hidden_or_uncovered(ndc.z, scene_depth_at(uint(centre.y) * uint(size.x) + uint(centre.x)))) return;
+        if (hidden_or_uncovered(ndc.z, scene_depth_at(uint(centre.y) * uint(size.x) + uint(centre.x)))) return false;
     }
     uint depth_units = kRoundPoints && !full ? optical_depth_units(intensity) : 0u;
     uint lost = 0u;  // pixels of the dot beyond the outline
@@ -166,14 +186,15 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
                 continue;
             }
             inked = true;
-            ink_pixel(at, intensity, depth_units, c, full);
+            if (!kRingPass) ink_pixel(at, intensity, depth_units, c, full);
         }
-    if (kRecordVisible && inked) {
+    if (kRecordVisible && inked && !kRingPass) {
         uint slot = atomicAdd(visible.count, 1u);
         visible_stipples[slot] = VisibleStipple(window.x, window.y, fraction, index);
     }
     // At print detail the dot is enlarged as a whole and its outline band is the screen's, enlarged.
-    if (lost == 0u || whole_dot) return;
+    if (lost == 0u || whole_dot) return false;
+    if (!kRingPass) return true;
     // Astride the outline: the pixels beyond it have no surface to ink, and no stipple lies beyond the
     // outline to ink the pixels just inside it, so the outline band would read lighter, and its share of
     // the footprint grows as the object shrinks. The lost pixels are inked on the visible pixels nearest
@@ -203,17 +224,20 @@ void splat(uint index, float fraction, float intensity, bool full, float side, m
                 best_distance = distance;
                 best_at = at;
             }
-        if (best_at == 0xFFFFFFFFu) return;
+        if (best_at == 0xFFFFFFFFu) return true;
         ink_pixel(best_at, intensity, depth_units, c, full);
         last_distance = best_distance;
         last_at = best_at;
     }
+    return true;
 }
 
 void main() {
     uint slot = gl_GlobalInvocationID.x;
-    if (slot >= drawn.count) return;
-    uint item = drawn_polygons[slot];  // the run's first stipple
+    uint listed = kList == kSplatListDrawn ? drawn.count : kList == kSplatListVarying ? varied.count : ring.count;
+    if (slot >= listed) return;
+    // The run's first stipple.
+    uint item = kList == kSplatListDrawn ? drawn_polygons[slot] : kList == kSplatListVarying ? varied_items[slot] : ring_items[slot];
     uint t = stipple_vertex(item).triangle;
     TriangleDraw draw = triangle_draw(t);
     float density = draw.density;
@@ -239,10 +263,12 @@ void main() {
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     // Below the least density any stipple of the polygon sees, they are whole wherever they lie.
     uint whole_end = clamp(uint(floor(draw.least)), begin, end);
+    bool astride = false;  // a dot of the run lies astride the outline (see splat)
     for (uint k = begin; k < whole_end; ++k)
-        splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull);
-    // A polygon whose density changes across it: its corners and terms once for all of its stipples.
-    bool varies = draw.least != draw.most;
+        if (splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull)) astride = true;
+    // A polygon whose density changes across it: its corners and terms once for all of its stipples (only
+    // in the variants that draw such polygons: kVaryingDensity).
+    bool varies = kVaryingDensity && draw.least != draw.most;
     vec3 corner_a = vec3(0.0), corner_b = vec3(0.0), corner_c = vec3(0.0);
     DensityParams q = density_params(frame, object);
     if (varies) {
@@ -258,12 +284,20 @@ void main() {
         }
         float fraction = stipple_intensity(here, float(k));
         if (fraction <= 0.0f) continue;  // where it lies, the density does not reach it
+        bool lost;
         if (kRoundPoints) {  // a smaller dot, of full ink where it is large enough to show its area
             vec2 dot_now = fractional_round_dot(fraction, side);
-            splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, model_view_proj, polygon, c,
-                  large_dot_depth_pull(depth_slope, dot_now.x));
+            lost = splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, model_view_proj, polygon, c,
+                         large_dot_depth_pull(depth_slope, dot_now.x));
         } else {
-            splat(first + k, fraction, fraction, false, side, model_view_proj, polygon, c, depth_pull);
+            lost = splat(first + k, fraction, fraction, false, side, model_view_proj, polygon, c, depth_pull);
         }
+        if (lost) astride = true;
+    }
+    // The run goes to the ring pass, which walks it again and inks only its dots' lost pixels.
+    if (!kRingPass && astride) {
+        uint at = atomicAdd(ring.count, 1u);
+        if (at % kDensityWorkgroupSize == 0u) atomicAdd(ring.groups_x, 1u);  // a workgroup starts there
+        ring_items[at] = item;
     }
 }

@@ -183,17 +183,22 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     const VkDeviceSize chunks =
         16 + 4 * (VkDeviceSize(object.geometry.triangle_count) + object.geometry.stipple_count / gpu::kGradientChunk);
     target.draw(renderer, view);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{placeholder, placeholder, chunks, gradient}))
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{placeholder, placeholder, chunks, gradient, placeholder}))
         << "the vertex path needs only the gradient pass's lists";
     renderer.params(0).density_path = DensityPath::Splat;
     target.draw(renderer, view);
-    // The work list: a header, then at most one item per polygon and one per kSplatShortRun candidates.
+    // The work list: a header, then at most one item per polygon and one per kSplatShortRun candidates; as
+    // large, the varying polygons' items (every polygon may vary) in the binding of the vertex path's chunks
+    // (grown), and the items astride the outline (the ring pass).
     const VkDeviceSize items = object.geometry.triangle_count + object.geometry.stipple_count / gpu::kSplatShortRun;
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, chunks, gradient}));  // kept
+    const VkDeviceSize list = 16 + 4 * items;
+    ASSERT_GT(list, chunks);
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{list, placeholder, list, gradient, list}));
 
-    // With the splat path, what the object costs on the GPU per candidate: 9 bytes per candidate
-    // (the stipple and its share of the work list) and 40 per polygon besides the mesh, so at most 19
-    // where candidates outnumber polygons ~4 to 1.
+    // With the splat path, what the object costs on the GPU per candidate: 11 bytes per candidate (the
+    // stipple and its share of the three lists: the work list, the varying polygons' and the ring pass's)
+    // and 48 per polygon besides the mesh, so at most 23 where candidates outnumber polygons ~4 to 1; the
+    // blobby surface has ~18 candidates a polygon.
     VkDeviceSize bytes = object.geometry.positions.size() + object.geometry.normals.size() + object.geometry.indices.size() +
                          object.geometry.stipples.size() + object.polygons.gpu.size() + object.frame.triangle_draw.size() +
                          object.frame.debug.size() + object.frame.object_uniforms.size();
@@ -210,7 +215,7 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
     renderer.params(0).density_path = DensityPath::Indirect;
     target.draw(renderer, view);
     const VkDeviceSize survivors = 16 + 4 * VkDeviceSize(object.geometry.stipple_count);
-    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{16 + 4 * items, placeholder, survivors, gradient}));
+    EXPECT_EQ(sizes(), (std::vector<VkDeviceSize>{list, placeholder, survivors, gradient, list}));
 }
 
 // A 12-triangle box: a few thousand drawn stipples per polygon when framed, far more than one splat
@@ -223,30 +228,54 @@ Mesh make_box() {
     return mesh;
 }
 
-// The splat's work list holds, for each polygon that draws, its runs of splat_run_length stipples up to
-// the most density any of them sees (TriangleDraw::most; the density, but on polygons large on screen),
-// named by their first stipple, and nothing else.
-void expect_splat_work_list(const gpu::Context& context, StippleRenderer& renderer, const StippleSet& stipples,
-                            DensityPath path) {
-    std::vector<std::byte> list = gpu::read_buffer(context, renderer.object(0).frame.drawn_polygons);
+// A list of the splat's (DrawnPolygons header, then the items), its items sorted; checks its dispatch.
+std::vector<uint32_t> read_splat_list(const gpu::Context& context, const gpu::Buffer& buffer, const char* what) {
+    std::vector<std::byte> list = gpu::read_buffer(context, buffer);
     gpu::DrawnPolygons header;
     std::memcpy(&header, list.data(), sizeof header);
+    std::vector<uint32_t> items(header.count);
+    if (header.count > 0) std::memcpy(items.data(), list.data() + sizeof header, sizeof(uint32_t) * header.count);
+    std::sort(items.begin(), items.end());
+    EXPECT_EQ(header.groups_x, (header.count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize) << what;
+    EXPECT_EQ(header.groups_y, 1u) << what;
+    EXPECT_EQ(header.groups_z, 1u) << what;
+    return items;
+}
+
+// The splat's work list holds, for each polygon that draws, its runs of splat_run_length stipples up to
+// the most density any of them sees (TriangleDraw::most; the density, but on polygons large on screen),
+// named by their first stipple, and nothing else. With GPU densities the runs of the polygons whose density
+// varies across them (least < most) are listed apart (kSplatListVarying), and the others in the work list.
+// The ring pass's list holds work items (those with a dot astride the outline), each once.
+void expect_splat_work_list(const gpu::Context& context, StippleRenderer& renderer, const StippleSet& stipples,
+                            DensityPath path) {
+    const ObjectGpu& object = renderer.object(0);
+    const std::vector<uint32_t> listed = read_splat_list(context, object.frame.drawn_polygons, "work list");
+    const bool apart = path == DensityPath::Splat;
+    const std::vector<uint32_t> varied =
+        apart ? read_splat_list(context, object.frame.drawn_stipples, "varying polygons' list") : std::vector<uint32_t>{};
     std::vector<float> densities = renderer.read_densities(0);
     const std::vector<glm::vec2> bounds = renderer.read_density_bounds(0);
-    std::vector<uint32_t> listed(header.count);
-    std::memcpy(listed.data(), list.data() + sizeof header, sizeof(uint32_t) * header.count);
-    std::sort(listed.begin(), listed.end());
-    std::vector<uint32_t> expected;
+    std::vector<uint32_t> expected, expected_varied;
     for (uint32_t t = 0; t < densities.size(); ++t) {
         if (!(densities[t] > 0.0f)) continue;
         const uint32_t candidates = stipples.first[t + 1] - stipples.first[t];
         uint32_t drawn = formulas::drawn_stipple_count(bounds[t].y, candidates);
         const float side = formulas::splat_dot_side(renderer.params(0).point_size, densities[t], float(candidates));
         const uint32_t run = formulas::splat_run_length(drawn, side);
-        for (uint32_t k = 0; k < drawn; k += run) expected.push_back(stipples.first[t] + k);
+        std::vector<uint32_t>& into = apart && bounds[t].x != bounds[t].y ? expected_varied : expected;
+        for (uint32_t k = 0; k < drawn; k += run) into.push_back(stipples.first[t] + k);
     }
     EXPECT_EQ(listed, expected) << density_path_name(path) << ": the work list is not the drawing polygons' runs";
-    EXPECT_EQ(header.groups_x, (header.count + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize);
+    EXPECT_EQ(varied, expected_varied) << density_path_name(path) << ": the varying polygons' list is not their runs";
+    const std::vector<uint32_t> ring = read_splat_list(context, object.frame.splat_ring, "ring list");
+    std::vector<uint32_t> all = listed;
+    all.insert(all.end(), varied.begin(), varied.end());
+    std::sort(all.begin(), all.end());
+    EXPECT_TRUE(std::includes(all.begin(), all.end(), ring.begin(), ring.end())) << "the ring list holds other items";
+    EXPECT_EQ(std::adjacent_find(ring.begin(), ring.end()), ring.end()) << "an item is in the ring list twice";
+    std::printf("%s: %zu work items, %zu of polygons whose density varies, %zu astride the outline\n",
+                density_path_name(path), listed.size(), varied.size(), ring.size());
 }
 
 struct PathFrames {

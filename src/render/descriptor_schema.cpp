@@ -24,6 +24,7 @@ const ObjectBinding kObjectBindings[] = {
     {{gpu::kBindingDrawnStipples, kStorage}, [](const O& o) { return o.frame.drawn_stipples.handle(); }},
     {{gpu::kBindingDebug, kStorage}, [](const O& o) { return o.frame.debug.handle(); }},
     {{gpu::kBindingDrawnPolygons, kStorage}, [](const O& o) { return o.frame.drawn_polygons.handle(); }},
+    {{gpu::kBindingSplatRing, kStorage}, [](const O& o) { return o.frame.splat_ring.handle(); }},
     {{gpu::kBindingMeshPositions, kTexels}, [](const O& o) { return o.geometry.positions.handle(); },
      [](const O& o) { return o.geometry.position_texels; }},
     {{gpu::kBindingMeshIndices, kTexels}, [](const O& o) { return o.geometry.indices.handle(); },

@@ -77,6 +77,7 @@ struct ObjectFrame {
     gpu::Buffer draw_staging;      // CPU paths: densities (and the CPU's list) on their way to the GPU
     gpu::Buffer drawn_stipples;    // indirect and cpu paths: DrawCommand + the stipples drawing this frame
     gpu::Buffer gradient_polygons;  // GPU density paths: DrawnPolygons header + the polygons large on screen
+    gpu::Buffer splat_ring;        // splat paths: DrawnPolygons header + the work items astride the outline
     gpu::Buffer silhouette_lines;  // SilhouetteLines header + this frame's line indices (2 per edge at most)
     // DepthTriangles header + the triangles the depth pass draws this frame (render/depth_triangles.hpp),
     // full size once the object first lists them

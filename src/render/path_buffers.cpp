@@ -13,6 +13,7 @@ const char* path_buffer_name(PathBuffer kind) {
         case PathBuffer::DrawnPolygons: return "drawn_polygons";
         case PathBuffer::DrawStaging: return "draw_staging";
         case PathBuffer::GradientPolygons: return "gradient_polygons";
+        case PathBuffer::SplatRing: return "splat_ring";
         case PathBuffer::DrawnStipples: break;
     }
     return "drawn_stipples";
@@ -23,6 +24,7 @@ Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind) {
         case PathBuffer::DrawnPolygons: return frame.drawn_polygons;
         case PathBuffer::DrawStaging: return frame.draw_staging;
         case PathBuffer::GradientPolygons: return frame.gradient_polygons;
+        case PathBuffer::SplatRing: return frame.splat_ring;
         case PathBuffer::DrawnStipples: break;
     }
     return frame.drawn_stipples;
@@ -48,7 +50,12 @@ VkDeviceSize path_buffer_bytes(const ObjectGpu& object, DensityPath path, PathBu
         case PathBuffer::DrawStaging:
             if (path == DensityPath::Cpu) return staged_list_offset(object) + survivors;
             return path == DensityPath::CpuSplat ? staged_list_offset(object) + list : 0;
-        case PathBuffer::DrawnStipples: return lists_survivors ? survivors : path == DensityPath::Vertex ? chunks : 0;
+        // The splat with GPU densities: the work items of the polygons whose density varies across them,
+        // listed apart (splat.comp kSplatListVarying; every polygon's, at most).
+        case PathBuffer::DrawnStipples:
+            return lists_survivors ? survivors : path == DensityPath::Vertex ? chunks : path == DensityPath::Splat ? list : 0;
+        // The work items with a dot astride the outline, for the splat's ring pass: one per item at most.
+        case PathBuffer::SplatRing: return draws_by_splat(path) ? list : 0;
         // The density pass's list of polygons large on screen (every polygon at most) for its gradient pass.
         case PathBuffer::GradientPolygons:
             return density_on_cpu(path) ? 0 : sizeof(gpu::DrawnPolygons) + sizeof(uint32_t) * n;
@@ -64,7 +71,8 @@ Buffer make_path_buffer(const gpu::Context& context, PathBuffer kind, VkDeviceSi
         case PathBuffer::DrawStaging: return Buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
         case PathBuffer::DrawnPolygons:
         case PathBuffer::DrawnStipples:
-        case PathBuffer::GradientPolygons: break;
+        case PathBuffer::GradientPolygons:
+        case PathBuffer::SplatRing: break;
     }
     // Written by a compute pass or copied from the staging buffer, read as indirect arguments.
     return Buffer(context, bytes, storage | indirect | destination, MemoryUse::DeviceLocal);

@@ -14,9 +14,10 @@ struct ObjectFrame;
 
 inline constexpr VkDeviceSize kPathBufferPlaceholderBytes = 32;
 
-enum class PathBuffer { DrawnPolygons, DrawStaging, DrawnStipples, GradientPolygons };
+enum class PathBuffer { DrawnPolygons, DrawStaging, DrawnStipples, GradientPolygons, SplatRing };
 inline constexpr PathBuffer kPathBuffers[] = {PathBuffer::DrawnPolygons, PathBuffer::DrawStaging,
-                                              PathBuffer::DrawnStipples, PathBuffer::GradientPolygons};
+                                              PathBuffer::DrawnStipples, PathBuffer::GradientPolygons,
+                                              PathBuffer::SplatRing};
 
 const char* path_buffer_name(PathBuffer kind);
 gpu::Buffer& path_buffer(ObjectFrame& frame, PathBuffer kind);

@@ -17,13 +17,17 @@
 
 namespace stipple {
 
-VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots) {
-    // Made the first time a frame needs it: most runs use one of the four.
-    VkPipeline& pipeline = splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0)];
+VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots, uint32_t list, bool varying_density) {
+    // Made the first time a frame needs it: most runs use three (the work list, the varying polygons', the ring).
+    STIPPLE_CHECK(list <= gpu::kSplatListRing, "a splat list is kSplatListDrawn, kSplatListVarying or kSplatListRing");
+    VkPipeline& pipeline =
+        splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0) + 4 * list + (varying_density ? 12 : 0)];
     if (pipeline) return pipeline;
     gpu::Specialization specialization = splat_specialization_;
     specialization.constants.push_back({gpu::kSpecRoundPoints, round_points ? 1u : 0u});
     specialization.constants.push_back({gpu::kSpecWholeDot, whole_dots ? 1u : 0u});
+    specialization.constants.push_back({gpu::kSpecSplatList, list});
+    specialization.constants.push_back({gpu::kSpecVaryingDensity, varying_density ? 1u : 0u});
     pipeline = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline, specialization);
     return pipeline;
 }
@@ -136,16 +140,37 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const uint32_t push[2] = {blue_first, paper_only ? 1u : 0u};
     vkCmdPushConstants(cb, layouts_.splat_pipeline, gpu::kPushConstantStages, 0, sizeof push, push);
     VkPipeline bound = VK_NULL_HANDLE;
-    for (const auto& object : objects_) {  // objects in one pass, in any order: the same image
-        if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
-        const bool round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
-        const VkPipeline pipeline = splat_pipeline(round, view_.detail_scale > 1.0f);
+    const bool whole_dots = view_.detail_scale > 1.0f;
+    // Over one of the object's lists (kSplatList*), whose header is the dispatch.
+    auto dispatch_over = [&](const ObjectGpu& object, uint32_t list, bool varying_density, const gpu::Buffer& items) {
+        const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
+        const VkPipeline pipeline = splat_pipeline(round, whole_dots, list, varying_density);
         if (pipeline != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         bound = pipeline;
-        VkDescriptorSet sets[] = {object->set, image_set_};
+        VkDescriptorSet sets[] = {object.set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0,
                                 nullptr);
-        vkCmdDispatchIndirect(cb, object->frame.drawn_polygons.handle(), 0);  // the polygons that draw
+        vkCmdDispatchIndirect(cb, items.handle(), 0);
+    };
+    // Objects in one pass, in any order: the same image. The polygons that draw; with GPU densities those
+    // whose density varies across them apart, so that the others' dispatch has none of that code. (The CPU's
+    // list holds both: its dispatch has it.)
+    for (const auto& object : objects_) {
+        if (!uses_splat(*object) || object->geometry.triangle_count == 0) continue;
+        const bool apart = lists_varying_apart(*object);
+        dispatch_over(*object, gpu::kSplatListDrawn, !apart, object->frame.drawn_polygons);
+        if (apart) dispatch_over(*object, gpu::kSplatListVarying, true, object->frame.drawn_stipples);
+    }
+    // The ring pass: the work items those dispatches listed with a dot astride the outline (none at print
+    // detail, whose whole dots stop at the outline). It inks pixels they may have inked: ordered after them.
+    if (!whole_dots) {
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+        for (const auto& object : objects_)
+            if (uses_splat(*object) && object->geometry.triangle_count != 0)
+                dispatch_over(*object, gpu::kSplatListRing, true, object->frame.splat_ring);
     }
     timer_.mark(cb, "splat");
 

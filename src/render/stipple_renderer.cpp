@@ -47,13 +47,14 @@ void StippleRenderer::release() {
                          stipple_chunk_pipelines_[0], stipple_chunk_pipelines_[1],
                          density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
                          density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], gradient_pipelines_[2],
+                         gradient_pipelines_[3],
                          facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
                          toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_,
                          line_edges_pipeline_, line_walk_pipeline_, line_pieces_pipeline_, depth_triangles_pipeline_,
-                         depth_raster_pipelines_[0], depth_raster_pipelines_[1], depth_coverage_pipeline_,
-                         splat_pipelines_[0], splat_pipelines_[1],
-                         splat_pipelines_[2], splat_pipelines_[3]})
+                         depth_raster_pipelines_[0], depth_raster_pipelines_[1], depth_coverage_pipeline_})
+        if (p) vkDestroyPipeline(context_.device, p, nullptr);
+    for (VkPipeline p : splat_pipelines_)
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     if (splat_depth_texels_) vkDestroyBufferView(context_.device, splat_depth_texels_, nullptr);
@@ -130,12 +131,13 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     }
-    for (uint32_t list : {0u, 1u, 2u})  // [2]: the vertex path's chunks
+    for (uint32_t list : {0u, 1u, 2u, 3u})  // [2]: the vertex path's chunks; [3]: the splat's varying polygons apart
         gradient_pipelines_[list] = gpu::create_compute_pipeline(
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecGradientPass, 1u},
-              {gpu::kSpecListDrawn, list == 1 ? 1u : 0u},
+              {gpu::kSpecListDrawn, list == 1 || list == 3 ? 1u : 0u},
               {gpu::kSpecListGradientChunks, list == 2 ? 1u : 0u},
+              {gpu::kSpecListVaryingApart, list == 3 ? 1u : 0u},
               {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
                                                     {{{gpu::kSpecFacingOnly, 1u}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
@@ -264,6 +266,10 @@ bool StippleRenderer::lists_gradient_chunks(const ObjectGpu& object) const {
     return object.params.density_path == DensityPath::Vertex;
 }
 
+bool StippleRenderer::lists_varying_apart(const ObjectGpu& object) const {
+    return uses_splat(object) && !density_on_cpu(object.params.density_path);
+}
+
 bool StippleRenderer::paper_under_splat() const {
     return std::none_of(objects_.begin(), objects_.end(), [&](const auto& o) { return o->params.toon || draws_points(*o); });
 }
@@ -311,6 +317,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_stipples.handle(), 1, &regions[1]);
             else if (splat)
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
+            if (splat) {  // no dot astride the outline yet (the splat's ring pass)
+                const gpu::DrawnPolygons no_items{0u, 1u, 1u, 0u};
+                vkCmdUpdateBuffer(cb, object->frame.splat_ring.handle(), 0, sizeof no_items, &no_items);
+            }
             any_facing = any_facing || draws_edge_lines(*object);
             continue;
         }
@@ -327,6 +337,9 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
         const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};  // an empty list: no groups yet (y and z are 1)
         if (lists_work_items(*object))
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
+        if (lists_varying_apart(*object))  // the varying polygons' work items, and those astride the outline
+            vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
+        if (splat) vkCmdUpdateBuffer(cb, object->frame.splat_ring.handle(), 0, sizeof empty, &empty);
         vkCmdUpdateBuffer(cb, object->frame.gradient_polygons.handle(), 0, sizeof empty, &empty);
     }
     if (any_pass || any_facing) {
@@ -356,7 +369,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0 || density_on_cpu(object->params.density_path)) continue;
-            const size_t gradient = lists_work_items(*object) ? 1 : lists_gradient_chunks(*object) ? 2 : 0;
+            const size_t gradient = lists_varying_apart(*object) ? 3
+                                    : lists_work_items(*object)  ? 1
+                                    : lists_gradient_chunks(*object) ? 2
+                                                                     : 0;
             dispatch_over(*object, gradient_pipelines_[gradient], object->frame.gradient_polygons);
         }
     }

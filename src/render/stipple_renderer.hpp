@@ -178,6 +178,9 @@ private:
     // them (GradientChunks): the vertex path, whose draw of every candidate leaves those polygons to a
     // second, instanced draw (kSpecGradientListed, kSpecGradientChunks).
     bool lists_gradient_chunks(const ObjectGpu& object) const;
+    // Whether the gradient pass lists the work items of the object's polygons whose density varies apart
+    // (the splat with GPU densities, which draws them in a dispatch of their own: kSpecListVaryingApart).
+    bool lists_varying_apart(const ObjectGpu& object) const;
     bool draws_points(const ObjectGpu& object) const;  // has stipples drawn by the points pipeline
     bool paper_under_splat() const;  // no toon surface and no points under the splat: it paints the paper itself
     // depth_pass.cpp
@@ -194,7 +197,8 @@ private:
     void ensure_frame_buffers(const RenderTargets& targets);
     bool splat_composes_dots() const;
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
-    VkPipeline splat_pipeline(bool round_points, bool whole_dots);
+    // list: kSplatList*; varying_density: the variant with the density across a polygon (kSpecVaryingDensity).
+    VkPipeline splat_pipeline(bool round_points, bool whole_dots, uint32_t list, bool varying_density);
     void ensure_visible_list(ObjectGpu& object);  // record_visible: room for every candidate
     // line_passes.cpp
     void record_line_edges(VkCommandBuffer cb);
@@ -218,8 +222,9 @@ private:
     VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
     // The density pass's gradient pass over the polygons large on screen: [1] also lists their work items,
-    // [2] the chunks of those whose density changes across them (the vertex path's second draw).
-    VkPipeline gradient_pipelines_[3] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
+    // [2] the chunks of those whose density changes across them (the vertex path's second draw), [3] their
+    // work items apart from the work list (the splat's varying dispatch).
+    VkPipeline gradient_pipelines_[4] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
     VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
     // The depth pass as compute: [0] every triangle, the small ones drawn; [1] the listed ones (kSpecRasterLarge).
@@ -237,10 +242,11 @@ private:
     VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
     VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
-    // Draws the densities of the GPU's pass or the CPU's: [round dots + 2 * print detail's whole dots]
-    // (kSpecRoundPoints, kSpecWholeDot), each made when a frame first needs it (splat_pipeline).
-    VkPipeline splat_pipelines_[4] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
-    gpu::Specialization splat_specialization_;  // the constants the four share
+    // Draws the densities of the GPU's pass or the CPU's: [round dots + 2 * print detail's whole dots
+    // + 4 * the list + 12 * the density across polygons] (kSpecRoundPoints, kSpecWholeDot, kSpecSplatList,
+    // kSpecVaryingDensity), each made when a frame first needs it (splat_pipeline).
+    VkPipeline splat_pipelines_[24] = {};
+    gpu::Specialization splat_specialization_;  // the constants they share
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
