@@ -137,9 +137,10 @@ void model_table(std::ostringstream& md, const BenchResults& r) {
           "come from the standard frame with the default parameters (as in the README image); ink is the share "
           "of the covered pixels with red < 128. GPU memory: all the object's buffers when it draws with the "
           "default path (splat; results.json has every path), per candidate, and without the mesh (positions, "
-          "normals, indices); a candidate costs 8 bytes and the splat's work list 1 more (a slot per 4 "
-          "candidates), a polygon 40 (TriangleInfo 16, TriangleDraw 16, its slot in the splat's work list 4 and in the "
-          "list of polygons large on screen 4) besides its mesh.\n\n";
+          "normals, indices); a candidate costs 8 bytes and the splat's three lists 3 more (the work list, the "
+          "varying polygons' and the ring pass's: a slot per 4 candidates in each), a polygon 48 (TriangleInfo 16, "
+          "TriangleDraw 16, its slot in each of the splat's lists 12 and in the list of polygons large on screen 4) "
+          "besides its mesh.\n\n";
     md << "| model | source | triangles | load s | preprocessing s | candidates | drawn | ink | GPU MiB | "
           "bytes / candidate (without mesh) |\n";
     md << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
