@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "export/plot_file.hpp"
 #include "gpu/context.hpp"
 #include "io/png_io.hpp"
@@ -45,7 +46,7 @@ std::vector<plot::Segment> visible_line_segments(const StippleRenderer& renderer
 
 PrintLayout print_layout(const PrintOptions& options) {
     if (!(options.dpi >= 50.0 && options.dpi <= 2400.0))
-        fail("--dpi = " + std::to_string(options.dpi) + " must be in 50..2400");
+        fail(printf_string("--dpi = %g must be in 50..2400", options.dpi));
     const double px_per_mm = options.dpi / 25.4;
     const double inner_w = options.page.width_mm - 2.0 * options.margin_mm, inner_h = options.page.height_mm - 2.0 * options.margin_mm;
     if (!(options.margin_mm >= 0.0) || inner_w < 1.0 || inner_h < 1.0)

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "gpu/context.hpp"
 #include "render/tone_survey.hpp"
 #include "stipple/object_data.hpp"
@@ -195,10 +196,10 @@ int run_tone(const std::vector<std::string>& argv) {
     options.frames = int(frames);
     if (args.has("--arc") && frames < 2) fail("--arc turns the object over the frames of a view: give --frames N (2..64)");
     double arc = args.number("--arc", frames > 1 ? 40.0 : 0.0);
-    if (!(arc >= 0.0 && arc <= 360.0)) fail("--arc = " + std::to_string(arc) + " must be in [0, 360] degrees");
+    if (!(arc >= 0.0 && arc <= 360.0)) fail(printf_string("--arc = %g must be in [0, 360] degrees", arc));
     options.arc_deg = float(arc);
     double fov = args.number("--fov", options.fov_y_deg);
-    if (!(fov >= 0.5 && fov <= 120.0)) fail("--fov = " + std::to_string(fov) + " must be in [0.5, 120] degrees");
+    if (!(fov >= 0.5 && fov <= 120.0)) fail(printf_string("--fov = %g must be in [0.5, 120] degrees", fov));
     options.fov_y_deg = float(fov);
     options.regimes = args.flag("--regimes");
     options.image_dir = args.get("--images", "");
