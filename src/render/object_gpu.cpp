@@ -48,8 +48,12 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
     const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
     const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
     // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
-    // buffers (the splat's list, the indirect draws), beside the drawn-stipple mask.
-    const uint64_t needed = 24 * v + 12 * t + 8 * s + 16 * t + 8 * t + 16 * t + s / 8;
+    // buffers, beside the drawn-stipple mask. The path buffers: the gradient pass's list of polygons, and the
+    // splat's three lists the size of its work list (a slot per polygon and per kSplatShortRun candidates)
+    // or the indirect path's work list and survivors (a slot per candidate).
+    const uint64_t work_list = 4 * t + 4 * s / gpu::kSplatShortRun;
+    const uint64_t path_buffers = 4 * t + std::max(3 * work_list, work_list + 4 * s);
+    const uint64_t needed = 24 * v + 12 * t + 8 * s + 16 * t + 16 * t + s / 8 + path_buffers;
     const std::string what = mesh.source.empty() ? std::string("the object") : mesh.source;
     const std::string lower = ": lower --dmax or --max-stipples, or use a simplified model";
     if (largest > context.max_storage_buffer_bytes())
