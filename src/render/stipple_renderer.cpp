@@ -305,8 +305,11 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             vkCmdFillBuffer(cb, object->frame.visible_stipples.handle(), 0, sizeof(gpu::VisibleStipplesHeader), 0);
         if (draws_edge_lines(*object))  // the density pass or-s each subgroup's facing bits into it
             vkCmdFillBuffer(cb, object->frame.facing.handle(), 0, VK_WHOLE_SIZE, 0);
-        object->frame.splatted = uses_splat(*object);
         const bool splat = uses_splat(*object);
+        object->frame.splatted = splat;
+        const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};  // an empty list: no groups yet (y and z are 1)
+        // No dot astride the outline yet (the splat's ring pass), whoever computes the densities.
+        if (splat) vkCmdUpdateBuffer(cb, object->frame.splat_ring.handle(), 0, sizeof empty, &empty);
         if (density_on_cpu(object->params.density_path)) {  // the densities, then the list the CPU wrote
             const bool points = object->params.density_path == DensityPath::Cpu;
             const VkDeviceSize header = points ? sizeof(gpu::DrawCommand) : sizeof(gpu::DrawnPolygons);
@@ -317,29 +320,23 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_stipples.handle(), 1, &regions[1]);
             else if (splat)
                 vkCmdCopyBuffer(cb, object->frame.draw_staging.handle(), object->frame.drawn_polygons.handle(), 1, &regions[1]);
-            if (splat) {  // no dot astride the outline yet (the splat's ring pass)
-                const gpu::DrawnPolygons no_items{0u, 1u, 1u, 0u};
-                vkCmdUpdateBuffer(cb, object->frame.splat_ring.handle(), 0, sizeof no_items, &no_items);
-            }
             any_facing = any_facing || draws_edge_lines(*object);
             continue;
         }
         any_pass = true;
         if (object->params.density_path == DensityPath::Indirect) {  // an empty list: no points yet
-            const gpu::DrawCommand empty{0u, 1u, 0u, 0u};
-            vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
+            const gpu::DrawCommand no_points{0u, 1u, 0u, 0u};
+            vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof no_points, &no_points);
             any_indirect = true;
         }
         if (lists_gradient_chunks(*object)) {  // no chunks yet: kGradientChunk vertices, no instance
             const gpu::DrawCommand no_chunks{gpu::kGradientChunk, 0u, 0u, 0u};
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof no_chunks, &no_chunks);
         }
-        const gpu::DrawnPolygons empty{0u, 1u, 1u, 0u};  // an empty list: no groups yet (y and z are 1)
         if (lists_work_items(*object))
             vkCmdUpdateBuffer(cb, object->frame.drawn_polygons.handle(), 0, sizeof empty, &empty);
-        if (lists_varying_apart(*object))  // the varying polygons' work items, and those astride the outline
+        if (lists_varying_apart(*object))  // the varying polygons' work items
             vkCmdUpdateBuffer(cb, object->frame.drawn_stipples.handle(), 0, sizeof empty, &empty);
-        if (splat) vkCmdUpdateBuffer(cb, object->frame.splat_ring.handle(), 0, sizeof empty, &empty);
         vkCmdUpdateBuffer(cb, object->frame.gradient_polygons.handle(), 0, sizeof empty, &empty);
     }
     if (any_pass || any_facing) {
