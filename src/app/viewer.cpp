@@ -1,26 +1,14 @@
+// `stipple view` (app/viewer.hpp): the viewer opened, its loop (drawing on demand), the script, the
+// input and the panel's requests. One frame is viewer_frame.cpp's.
 #include "app/viewer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <algorithm>
-#include <deque>
-#include <map>
-#include <memory>
-#include <optional>
 
-#include "app/background_work.hpp"
-#include "app/camera_control.hpp"
 #include "app/frame_export.hpp"
-#include "app/live_scene.hpp"
-#include "app/overlay.hpp"
-#include "app/panel.hpp"
-#include "app/screenshot.hpp"
-#include "app/swapchain.hpp"
-#include "app/viewer_script.hpp"
-#include "app/timeline.hpp"
-#include "app/window.hpp"
+#include "app/viewer_session.hpp"
 #include "core/error.hpp"
-#include "gpu/context.hpp"
 #include "gpu/vk_check.hpp"
 #include "params/param_table.hpp"
 #include "render/offscreen.hpp"
@@ -29,24 +17,12 @@ namespace stipple::app {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// After an event, frames are drawn for this long before the viewer sleeps (Dear ImGui's hover effects and
-// tooltips take a few frames and a delay); while background work runs, one frame each kProgressInterval.
-constexpr std::chrono::milliseconds kSettle{1000};
-constexpr std::chrono::milliseconds kProgressInterval{100};
-constexpr long long kWarmupFrames = 10;  // --benchmark-frames: the first frames compile shaders, fault in memory
-
 RendererOptions renderer_options(const ViewerOptions& options) {
     RendererOptions r;
     r.count_drawn = options.count_drawn;
     r.depth_cull = options.depth_cull;
     r.depth_raster = options.depth_raster;
     return r;
-}
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
 // Mesa's software swapchain sends each frame through the X socket unless the server has DRI3 (Xvfb,
@@ -72,151 +48,69 @@ gpu::ContextOptions context_options(const ViewerOptions& options) {
     return o;
 }
 
-// Owns the surface so that it is destroyed after the swapchain and before the instance.
-struct Surface {
-    Surface(const gpu::Context& context, const Window& window)
-        : instance(context.instance), handle(window.create_surface(context.instance)) {}
-    ~Surface() { vkDestroySurfaceKHR(instance, handle, nullptr); }
-    VkInstance instance;
-    VkSurfaceKHR handle;
-};
-
 std::string window_title(const Scene& scene) {
     std::string name = scene.source.empty() ? std::filesystem::path(scene.objects.at(0).model).filename().string()
                                             : std::filesystem::path(scene.source).filename().string();
     return "stipple - " + name;
 }
 
-class Viewer {
-public:
-    Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
-        : options_(options),
-          window_(options.width, options.height, window_title(scene)),
-          context_(context_options(options)),
-          surface_(context_, window_),
-          swapchain_(context_, surface_.handle, shared_memory_for(options, context_, window_), window_.refresh_rate()),
-          renderer_(context_, swapchain_.format(), context_.depth_format, renderer_options(options)),
-          live_(std::move(scene), std::move(content), renderer_),
-          screenshot_(context_),
-          vsync_(options.vsync),
-          panel_visible_(options.panel) {
-        if (!options.script.empty()) script_ = read_viewer_script(options.script);
-        if (!options.frame_log.empty()) {
-            frame_log_ = std::fopen(options.frame_log.c_str(), "w");
-            if (!frame_log_) fail_file(options.frame_log, "cannot write the frame log");
-        }
-        swapchain_.recreate(window_.framebuffer_size(), vsync_);
-        if (options.verbose) print_swapchain();
-        overlay_ = std::make_unique<Overlay>(context_, window_.handle(), swapchain_);
-        // ImGui 1.86 updates its capture flags once per frame; the panel's rectangle makes a press on the
-        // panel the panel's even when it comes before the frame that would have noticed the cursor there.
-        window_.set_capture_queries(
-            [this](glm::dvec2 cursor) {
-                auto over = [&](const glm::vec4& r) {
-                    return cursor.x >= r.x && cursor.y >= r.y && cursor.x < r.x + r.z && cursor.y < r.y + r.w;
-                };
-                return panel_visible_ && (over(panel_rect_) || over(timeline_rect_) || overlay_->wants_mouse());
-            },
-            [this] { return panel_visible_ && overlay_->wants_text(); });
-        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        alloc.commandPool = context_.command_pool;
-        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        alloc.commandBufferCount = 1;
-        VK_CHECK(vkAllocateCommandBuffers(context_.device, &alloc, &cb_));
-        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first frame has nothing to wait for
-        VK_CHECK(vkCreateFence(context_.device, &fence, nullptr, &frame_done_));
-        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &acquired_));
+}  // namespace
 
-        VkExtent2D size = window_.framebuffer_size();
-        float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
-        camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
-        timeline_.set_time(options.start_time);
+Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
+    : options_(options),
+      window_(options.width, options.height, window_title(scene)),
+      context_(context_options(options)),
+      surface_(context_, window_),
+      swapchain_(context_, surface_.handle, shared_memory_for(options, context_, window_), window_.refresh_rate()),
+      renderer_(context_, swapchain_.format(), context_.depth_format, renderer_options(options)),
+      live_(std::move(scene), std::move(content), renderer_),
+      screenshot_(context_),
+      vsync_(options.vsync),
+      panel_visible_(options.panel) {
+    if (!options.script.empty()) script_ = read_viewer_script(options.script);
+    if (!options.frame_log.empty()) {
+        frame_log_ = std::fopen(options.frame_log.c_str(), "w");
+        if (!frame_log_) fail_file(options.frame_log, "cannot write the frame log");
     }
+    swapchain_.recreate(window_.framebuffer_size(), vsync_);
+    if (options.verbose) print_swapchain();
+    overlay_ = std::make_unique<Overlay>(context_, window_.handle(), swapchain_);
+    // ImGui 1.86 updates its capture flags once per frame; the panel's rectangle makes a press on the
+    // panel the panel's even when it comes before the frame that would have noticed the cursor there.
+    window_.set_capture_queries(
+        [this](glm::dvec2 cursor) {
+            auto over = [&](const glm::vec4& r) {
+                return cursor.x >= r.x && cursor.y >= r.y && cursor.x < r.x + r.z && cursor.y < r.y + r.w;
+            };
+            return panel_visible_ && (over(panel_rect_) || over(timeline_rect_) || overlay_->wants_mouse());
+        },
+        [this] { return panel_visible_ && overlay_->wants_text(); });
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = context_.command_pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(context_.device, &alloc, &cb_));
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // the first frame has nothing to wait for
+    VK_CHECK(vkCreateFence(context_.device, &fence, nullptr, &frame_done_));
+    VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VK_CHECK(vkCreateSemaphore(context_.device, &semaphore, nullptr, &acquired_));
 
-    ~Viewer() {
-        if (frame_log_) std::fclose(frame_log_);
-        vkDeviceWaitIdle(context_.device);
-        vkDestroySemaphore(context_.device, acquired_, nullptr);
-        vkDestroyFence(context_.device, frame_done_, nullptr);
-        vkFreeCommandBuffers(context_.device, context_.command_pool, 1, &cb_);
-    }
+    VkExtent2D size = window_.framebuffer_size();
+    float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
+    camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
+    timeline_.set_time(options.start_time);
+}
 
-    int run();
 
-private:
-    void frame();
-    bool wants_frame_now();     // something moves, was touched, or runs a script or a benchmark
-    bool progress_due() const;  // background work's progress bar is due a frame
-    void finish_previous_frame();
-    void handle_input(const Input& input, float aspect);
-    void handle_requests(const PanelRequests& requests, float aspect);
-    bool ensure_swapchain();
-    void record(uint32_t image_index);
-    void message(const std::string& text, bool error = false);
-    void save_scene();
-    void print_swapchain() const;
-    void apply_finished_work();
-    void run_script();
-    void print_panel_draws(const char* prefix) const;
-    bool export_view(const std::string& path, const plot::ExportOptions& options);
+Viewer::~Viewer() {
+    if (frame_log_) std::fclose(frame_log_);
+    vkDeviceWaitIdle(context_.device);
+    vkDestroySemaphore(context_.device, acquired_, nullptr);
+    vkDestroyFence(context_.device, frame_done_, nullptr);
+    vkFreeCommandBuffers(context_.device, context_.command_pool, 1, &cb_);
+}
 
-    ViewerOptions options_;
-    Window window_;
-    gpu::Context context_;
-    Surface surface_;
-    Swapchain swapchain_;
-    StippleRenderer renderer_;
-    LiveScene live_;
-    ScreenshotCapture screenshot_;
-    std::unique_ptr<Overlay> overlay_;
-    VkCommandBuffer cb_ = VK_NULL_HANDLE;
-    VkFence frame_done_ = VK_NULL_HANDLE;
-    VkSemaphore acquired_ = VK_NULL_HANDLE;
-
-    OrbitCamera camera_;
-    bool vsync_;
-    bool panel_visible_;
-    std::string present_mode_;  // what the panel shows (Figures::present_mode points into it)
-    bool recreate_ = false;
-    bool submitted_ = false;  // a frame is in flight (its fence is pending)
-    bool paused_ = false;
-    PanelFigures figures_;
-    glm::vec4 panel_rect_{0.0f};
-    Timeline timeline_;
-    glm::vec4 timeline_rect_{0.0f};
-    std::optional<Clock::time_point> last_frame_;  // when the timeline last moved on
-    std::deque<std::string> messages_;
-    std::vector<size_t> pending_regeneration_;
-    BackgroundWork work_{context_};  // after live_ and context_; destroyed first (joins its worker)
-    std::vector<ScriptAction> script_;
-    size_t script_at_ = 0;
-    std::optional<Clock::time_point> script_wait_until_;
-    bool script_failed_ = false;
-    FILE* frame_log_ = nullptr;
-    Clock::time_point started_ = Clock::now();
-    std::optional<size_t> pending_removal_;
-    ExportPanelState export_state_;
-    std::optional<ExportRequest> pending_export_;  // from the panel; done between frames
-    long long frames_drawn_ = 0;
-    std::map<std::string, double> bench_gpu_ms_;  // summed over the benchmark's frames
-    int bench_samples_ = 0;
-    Clock::time_point fps_start_ = Clock::now();
-    int fps_frames_ = 0;
-    // The panel's figures change twice a second, with the fps: GPU and CPU times averaged over the frames
-    // collected since (a panel that changes every frame would be drawn again every frame, app/panel_layer.hpp).
-    FrameStats collected_;  // the last frame collected (finish_previous_frame)
-    std::vector<std::pair<std::string, double>> gpu_ms_sums_;
-    int gpu_ms_frames_ = 0;
-    double cpu_ms_sum_ = 0.0;
-    // Drawing on demand (wants_frame_now): the window's activity count last seen, the time until which
-    // frames are drawn (after an event, a message, finished work), the last frame drawn, whether the loop slept.
-    uint64_t seen_activity_ = 0;
-    Clock::time_point draw_until_ = Clock::now() + kSettle;
-    Clock::time_point last_drawn_{};
-    bool idled_ = false;
-};
 
 bool Viewer::wants_frame_now() {
     const Clock::time_point now = Clock::now();
@@ -382,52 +276,6 @@ void Viewer::run_script() {
     }
 }
 
-void Viewer::finish_previous_frame() {
-    if (!submitted_) return;
-    VK_CHECK(vkWaitForFences(context_.device, 1, &frame_done_, VK_TRUE, UINT64_MAX));
-    submitted_ = false;
-    renderer_.collect();
-    collected_ = renderer_.stats();  // until the next frame's prepare() starts its own
-    const FrameStats& latest = collected_;
-    if (figures_.stats.gpu_ms.empty()) figures_.stats = latest;  // the first frame's, until the first average
-    for (const auto& pass : latest.gpu_ms) {  // a pair, not a structured binding: clang 15 cannot capture one
-        auto sum = std::find_if(gpu_ms_sums_.begin(), gpu_ms_sums_.end(),
-                                [&](const auto& p) { return p.first == pass.first; });
-        if (sum == gpu_ms_sums_.end()) gpu_ms_sums_.push_back(pass);
-        else sum->second += pass.second;
-    }
-    ++gpu_ms_frames_;
-    if (options_.benchmark_frames > 0 && frames_drawn_ > kWarmupFrames) {
-        for (const auto& [pass, ms] : latest.gpu_ms) bench_gpu_ms_[pass] += ms;
-        ++bench_samples_;
-    }
-    try {
-        std::string path = screenshot_.write_pending(options_.screenshot_dir);
-        if (!path.empty()) message("screenshot: " + path);
-    } catch (const Error& e) {
-        message(e.what(), true);
-        if (!options_.script.empty()) script_failed_ = true;  // a script's screenshot not written: exit code 1
-    }
-}
-
-bool Viewer::ensure_swapchain() {
-    VkExtent2D size = window_.framebuffer_size();
-    VkExtent2D have = swapchain_.extent();
-    if (!recreate_ && swapchain_.valid() && size.width == have.width && size.height == have.height) return true;
-    VK_CHECK(vkDeviceWaitIdle(context_.device));
-    recreate_ = false;
-    bool ok = swapchain_.recreate(size, vsync_);
-    overlay_->rebuild(swapchain_);
-    if (ok && options_.verbose) print_swapchain();
-    return ok;
-}
-
-void Viewer::print_swapchain() const {
-    std::printf("stipple: swapchain %ux%u, %u images, %s\n", swapchain_.extent().width, swapchain_.extent().height,
-                swapchain_.image_count(), swapchain_.mode_name().c_str());
-    std::fflush(stdout);
-}
-
 void Viewer::handle_input(const Input& input, float aspect) {
     Sphere bounds = live_.bounds();
     if (input.orbit_drag != glm::dvec2(0.0)) orbit(camera_, glm::vec2(input.orbit_drag));
@@ -497,154 +345,6 @@ bool Viewer::export_view(const std::string& path, const plot::ExportOptions& opt
         return false;
     }
 }
-
-void Viewer::frame() {
-    finish_previous_frame();
-    Clock::time_point start = Clock::now();
-    last_drawn_ = start;
-    if (idled_) {  // the panel's fps counts frames drawn one after another, not the idle time between
-        idled_ = false;
-        fps_frames_ = 0;
-        fps_start_ = start;
-        cpu_ms_sum_ = 0.0;
-    }
-    VkExtent2D size = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
-    float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.0f;
-
-    // New stipples are made in the background; the old ones are drawn until they are ready.
-    for (size_t object : pending_regeneration_)
-        if (object < live_.size() && live_.generation_changed(object))
-            work_.regenerate(live_.id(object), live_.model(object), live_.scene().objects[object].params);
-    pending_regeneration_.clear();
-    apply_finished_work();
-    run_script();
-    if (pending_export_) {
-        try {
-            export_view(next_screenshot_path(options_.screenshot_dir, pending_export_->extension).string(),
-                        pending_export_->options);
-        } catch (const Error& e) {
-            message(e.what(), true);  // no free name left
-        }
-        pending_export_.reset();
-    }
-    if (pending_removal_) live_.remove(*pending_removal_);
-    pending_removal_.reset();
-    handle_input(window_.take_input(), aspect);
-    // The clock moves with real time, whatever the frame rate.
-    const Clock::time_point now = Clock::now();
-    if (last_frame_) timeline_.advance(std::chrono::duration<double>(now - *last_frame_).count(), live_.scene(), live_.objects());
-    last_frame_ = now;
-    if (window_.should_close() || !ensure_swapchain()) return;
-
-    uint32_t image = 0;
-    VkResult acquired = swapchain_.acquire(acquired_, &image);
-    if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
-        recreate_ = true;
-        return;
-    }
-    if (acquired == VK_TIMEOUT || acquired == VK_NOT_READY) return;
-    if (acquired == VK_SUBOPTIMAL_KHR) recreate_ = true;  // the image is ours and signalled: draw it, then recreate
-
-    if (panel_visible_) {
-        overlay_->new_frame();
-        figures_.device = context_.device_name;
-        figures_.extent = swapchain_.extent();
-        present_mode_ = swapchain_.mode_name();
-        figures_.present_mode = present_mode_.c_str();
-        figures_.vsync = vsync_;
-        figures_.can_disable_vsync = swapchain_.can_disable_vsync();
-        figures_.max_point_size = context_.features.max_point_size;
-        figures_.scene_path = options_.scene_path;
-        figures_.screenshot_dir = options_.screenshot_dir;
-        figures_.messages.assign(messages_.begin(), messages_.end());
-        const auto status = work_.status();
-        figures_.work_label = status ? status->label : "";
-        figures_.work_fraction = status ? status->fraction : 0.0;
-        figures_.work_queued = status ? status->queued : 0;
-        handle_requests(draw_panel(live_.scene(), live_.names(), figures_, export_state_), aspect);
-        timeline_rect_ = timeline_.draw(live_.scene(), live_.objects(), live_.names(), float(figures_.extent.height));
-    }
-    record(image);
-
-    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    VkSemaphore done = swapchain_.rendering_done(image);
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.waitSemaphoreCount = 1;
-    submit.pWaitSemaphores = &acquired_;
-    submit.pWaitDstStageMask = &wait_stage;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cb_;
-    submit.signalSemaphoreCount = 1;
-    submit.pSignalSemaphores = &done;
-    VK_CHECK(vkResetFences(context_.device, 1, &frame_done_));
-    VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, frame_done_));
-    submitted_ = true;
-    cpu_ms_sum_ += ms_between(start, Clock::now());
-
-    VkResult presented = swapchain_.present(context_.queue, image, panel_visible_ ? overlay_->panel_pixels() : PixelsOver{});
-    // The second column says whether background work (new stipples, a model) was under way, so that a
-    // test can see frames keep coming while it runs, whatever the machine's load.
-    if (frame_log_) {  // flushed: a test (or tail -f) reads it while the viewer runs
-        std::fprintf(frame_log_, "%.3f %d\n", ms_between(started_, Clock::now()), work_.idle() ? 0 : 1);
-        std::fflush(frame_log_);
-    }
-    if (presented != VK_SUCCESS) recreate_ = true;  // out of date or suboptimal: a new swapchain next frame
-    ++frames_drawn_;
-    ++fps_frames_;
-    double elapsed = ms_between(fps_start_, Clock::now());
-    if (elapsed >= 500.0) {
-        figures_.fps = 1000.0 * fps_frames_ / elapsed;
-        figures_.cpu_frame_ms = cpu_ms_sum_ / fps_frames_;
-        if (gpu_ms_frames_ > 0) {  // the counts of the last frame collected, the times averaged
-            figures_.stats = collected_;
-            figures_.stats.gpu_ms = gpu_ms_sums_;
-            for (auto& [pass, ms] : figures_.stats.gpu_ms) ms /= gpu_ms_frames_;
-        }
-        gpu_ms_sums_.clear();
-        gpu_ms_frames_ = 0;
-        cpu_ms_sum_ = 0.0;
-        fps_frames_ = 0;
-        fps_start_ = Clock::now();
-    }
-}
-
-void Viewer::record(uint32_t image) {
-    for (const std::string& refused : live_.sync(timeline_.time())) message(refused, true);
-    FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), swapchain_.extent());
-    renderer_.prepare(view);
-
-    VK_CHECK(vkResetCommandBuffer(cb_, 0));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(cb_, &begin));
-    RenderTargets targets{swapchain_.image(image),  swapchain_.view(image),   swapchain_.depth().handle(),
-                          swapchain_.depth().view(), swapchain_.extent(), swapchain_.writable(),
-                          swapchain_.words(image),   swapchain_.words_serial(image)};
-    renderer_.record(cb_, targets);
-    if (screenshot_.requested()) {
-        if (swapchain_.copyable())
-            screenshot_.record_copy(cb_, swapchain_.image(image), swapchain_.format(), swapchain_.extent());
-        else {
-            screenshot_.cancel();
-            message("screenshots are not possible: this window's images cannot be copied", true);
-        }
-    }
-    if (panel_visible_) {
-        overlay_->record(cb_, image);  // its render pass ends in the swapchain's present_layout()
-        renderer_.mark_pass(cb_, "panel");
-    } else {
-        gpu::image_barrier(cb_, swapchain_.image(image), VK_IMAGE_ASPECT_COLOR_BIT,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, swapchain_.present_layout(),
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE);
-    }
-    if (swapchain_.host_reads())  // presenting copies the pixels on the host
-        gpu::memory_barrier(cb_, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    VK_CHECK(vkEndCommandBuffer(cb_));
-}
-
-}  // namespace
 
 int run_viewer(Scene scene, SceneContent content, const ViewerOptions& options) {
     Viewer viewer(std::move(scene), std::move(content), options);
