@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "support/anim_files.hpp"
+#include "support/test_paths.hpp"
 
 namespace stipple::anim {
 namespace {
@@ -50,7 +51,7 @@ TEST(AnimLoading, RestMeshIsTheStaticDrawingMesh) {
 
 TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {
     // The project's default scene: a static glTF; every vertex follows its (unanimated) node.
-    const std::string blobby = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    const std::string blobby = test::source_path("assets/blobby.glb");
     expect_rest_is_drawing_mesh(blobby);
     const AnimatedModel model = load_animated_model(blobby);
     EXPECT_FALSE(model.is_animated());
@@ -212,7 +213,7 @@ TEST(AnimLoading, ProbeTellsAnimatedFilesBeforeLoading) {
     // What decides whether a model is loaded by the animated loader or only by the static one.
     EXPECT_TRUE(gltf_declares_animations(test::write_rig(rigs::bending_cylinder(), "anim_probe", "cylinder")));
     EXPECT_TRUE(gltf_declares_animations(test::write_rig(rigs::morphed_quad(), "anim_probe_quad", "quad")));
-    EXPECT_FALSE(gltf_declares_animations(std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb"));
+    EXPECT_FALSE(gltf_declares_animations(test::source_path("assets/blobby.glb")));
     const auto dir = test::temp_dir("anim_probe_text");
     auto write = [&](const std::string& name, const std::string& text) {
         const std::string path = (dir / name).string();

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kAsset = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+const std::string kAsset = stipple::test::source_path("assets/blobby.glb");
 
 std::string read_bytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);

@@ -167,7 +167,7 @@ TEST(CliExport, TheBunnyAsSvgAndPdfIsItsPng) {
 // hidden-stipple removal), so it gets no dot, while the outer object gets thousands.
 TEST(CliExport, AHiddenObjectContributesNoDot) {
     const auto dir = test::temp_dir("cli-export-hidden");
-    const std::string blobby = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    const std::string blobby = test::source_path("assets/blobby.glb");
     std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << blobby << R"("},
         {"model": ")" << blobby << R"(", "transform": {"scale": 0.3}}]})";
     const std::string csv = (dir / "dots.csv").string();

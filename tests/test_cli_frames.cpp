@@ -70,7 +70,7 @@ TEST(CliFrames, OrbitWritesEveryFrameEachANewViewAndRepeatsExactly) {
 
 TEST(CliFrames, CameraPathFromTheSceneFile) {
     auto dir = test::temp_dir("frames-path");
-    std::string model = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    std::string model = test::source_path("assets/blobby.glb");
     std::ofstream(dir / "scene.json") << "{\"objects\": [{\"model\": \"" << model << "\"}],\n"
                                       << " \"camera_path\": [{\"yaw\": 0, \"pitch\": 10}, {\"yaw\": 60, \"pitch\": 10,"
                                       << " \"distance\": 1.5}]}";

@@ -15,7 +15,7 @@
 namespace stipple {
 namespace {
 
-const std::string kGoldenDir = std::string(STIPPLE_SOURCE_DIR) + "/tests/data/golden/";
+const std::string kGoldenDir = test::source_path("tests/data/golden/");
 
 // Renders `args` to a PNG and counts the pixels that differ from the reference image `name`.
 void expect_identical(const std::string& name, std::vector<std::string> args) {

@@ -146,7 +146,7 @@ TEST(ParamTable, HelpReadmeAndParamsCommandListTheTablesText) {
     const test::CommandResult markdown = test::run_stipple({"params", "--markdown"});
     EXPECT_EQ(markdown.exit_code, 0);
     EXPECT_EQ(markdown.out, param_markdown_table());
-    std::ifstream readme(std::string(STIPPLE_SOURCE_DIR) + "/README.md");
+    std::ifstream readme(test::source_path("README.md"));
     std::stringstream text;
     text << readme.rdbuf();
     EXPECT_NE(text.str().find(param_markdown_table()), std::string::npos)

@@ -23,7 +23,7 @@ namespace {
 class DensityPaths : public test::GpuTest {};
 using test::Prepared;
 
-std::string blobby_path() { return std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb"; }
+std::string blobby_path() { return test::source_path("assets/blobby.glb"); }
 
 // Disjoint random triangles with random stipple counts: a stress set for the formulas.
 Prepared random_polygons(size_t count, std::mt19937& rng) {

@@ -44,7 +44,7 @@ std::vector<std::pair<std::string, std::string>> model_files() {
         else
             files.emplace_back(name, path);
     }
-    files.emplace_back("blobby.glb", std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb");
+    files.emplace_back("blobby.glb", test::source_path("assets/blobby.glb"));
     files.emplace_back("open-bowl", "");
     return files;
 }

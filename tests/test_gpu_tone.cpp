@@ -59,7 +59,7 @@ Subject load_subject(const std::string& name, const GenerationParams& generation
         return s;
     }
     const std::string path =
-        name == "blobby.glb" ? std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb" : test::shared_model(name);
+        name == "blobby.glb" ? test::source_path("assets/blobby.glb") : test::shared_model(name);
     if (path.empty()) return s;
     ObjectData data = load_object_data(path, generation);
     s.mesh = data.mesh;

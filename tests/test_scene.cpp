@@ -390,7 +390,7 @@ TEST(Scene, ASceneOfOneModelRendersLikeTheModel) {
     // `render SCENE.json` and `render MODEL` share one path: a scene holding the default model with
     // default parameters and camera draws exactly the image of `render` with that model.
     auto dir = test::temp_dir("scene-vs-model");
-    std::string model = std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
+    std::string model = test::source_path("assets/blobby.glb");
     write_text(dir / "scene.json", "{\"objects\": [{\"model\": \"" + model + "\"}]}");
     auto a = test::run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "scene.png").string(),
                                 "--width", "480", "--height", "360", "--yaw", "25"});

@@ -13,6 +13,7 @@
 #include "mesh/primitives.hpp"
 #include "stipple/selection_order.hpp"
 #include "stipple/stipple_set.hpp"
+#include "support/test_paths.hpp"
 
 namespace stipple {
 namespace {
@@ -99,7 +100,7 @@ TEST(SelectionValues, UniformForPolygonsOfEveryCandidateCount) {
     // class alone gave, on this mesh, those with two 1.04-1.06 p below p = 0.3-0.5 and those with one
     // 0.96-0.98 p (6-7 standard deviations), and the probabilistic regime drew more than it owed.
     // Within each count, the share below p is p.
-    const Mesh mesh = load_mesh_for_drawing(std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb");
+    const Mesh mesh = load_mesh_for_drawing(test::source_path("assets/blobby.glb"));
     GenerationParams params;
     params.dmax = 0.02f;  // about 1.4 candidates a triangle
     const StippleSet stipples = generate_stipples(mesh, params);

@@ -11,6 +11,8 @@ std::string shared_model(const std::string& name) {
     return std::filesystem::is_regular_file(path) ? path.string() : std::string();
 }
 
+std::string source_path(const std::string& relative) { return std::string(STIPPLE_SOURCE_DIR) + "/" + relative; }
+
 std::filesystem::path output_path(const std::string& name) {
     std::filesystem::path dir = STIPPLE_TEST_OUTPUT_DIR;
     std::filesystem::create_directories(dir);

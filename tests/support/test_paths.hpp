@@ -7,6 +7,8 @@ namespace stipple::test {
 
 // ../shared/models/<name>, or "" when absent (the caller then GTEST_SKIPs with a message).
 std::string shared_model(const std::string& name);
+// <source>/<relative>: the project's own files (assets, golden images, the README).
+std::string source_path(const std::string& relative);
 // <build>/test-output/<name>, creating the folder.
 std::filesystem::path output_path(const std::string& name);
 // A fresh empty temporary folder for files a test writes itself: <build>/test-output/tmp/<test_name>.
