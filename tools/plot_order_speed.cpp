@@ -20,11 +20,15 @@
 
 #include <glm/geometric.hpp>
 // nanoflann's dynamic index (used here only for the comparison) trips GCC 12's
-// maybe-uninitialized analysis inside the library's own header.
+// maybe-uninitialized analysis inside the library's own header (clang has no such warning).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <nanoflann.hpp>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include "core/error.hpp"
 #include "export/blue_noise.hpp"
