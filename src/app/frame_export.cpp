@@ -19,7 +19,7 @@ namespace stipple::app {
 namespace {
 
 // The scene's objects in `renderer`, each drawn by the splat (its CPU-density variant for the CPU paths):
-// all density paths draw the same stipples (tests/test_gpu_density.cpp), and the splat has no point-size
+// all density paths draw the same stipples (tests/test_gpu_density_paths.cpp), and the splat has no point-size
 // limit and records what it inks.
 // `outline_as_contours`: vector output, which has no image-space lines (below).
 void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects,

@@ -17,7 +17,7 @@
 namespace stipple::app {
 
 // The scene's frame as the export reads it. Every object is drawn by the splat (its CPU-density
-// variant for the CPU paths): all density paths draw the same stipples (tests/test_gpu_density.cpp).
+// variant for the CPU paths): all density paths draw the same stipples (tests/test_gpu_density_paths.cpp).
 // `scene_seconds`: where animated objects are in their animations (set_scene_time).
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                               const FrameView& view, double scene_seconds = 0.0);
