@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "io/png_io.hpp"
+#include "support/image_checks.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
@@ -26,13 +27,6 @@ std::string frame_name(int i) {
     char name[32];
     std::snprintf(name, sizeof(name), "%04d.png", i);
     return name;
-}
-
-size_t ink_pixels(const Image& image) {
-    size_t n = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) n += luminance(image, x, y) < 128;
-    return n;
 }
 
 // 8 frames of a 90-degree orbit of the default scene, small so that the test stays quick.
@@ -59,7 +53,7 @@ TEST(CliFrames, OrbitWritesEveryFrameEachANewViewAndRepeatsExactly) {
         frames.push_back(read_png(path.string()));
         EXPECT_EQ(frames.back().width, 320);
         EXPECT_EQ(frames.back().height, 256);
-        EXPECT_GT(ink_pixels(frames.back()), 1000u) << "frame " << i << " has no stipples";
+        EXPECT_GT(test::ink_pixels(frames.back()), 1000u) << "frame " << i << " has no stipples";
         EXPECT_EQ(read_bytes(path), read_bytes(second / "frames" / frame_name(i)))
             << "frame " << i << " differs between two runs of the same command";
     }

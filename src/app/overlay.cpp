@@ -141,7 +141,7 @@ PixelsOver Overlay::panel_pixels() const { return layer_->pixels(); }
 
 bool Overlay::layer_enabled() {
     // STIPPLE_PANEL_LAYER=off draws the panel straight into every frame, as on a swapchain's own images
-    // (a check of the layer: tests/test_cli_view.cpp compares the two).
+    // (a check of the layer: tests/test_cli_view_output.cpp compares the two).
     const char* setting = std::getenv("STIPPLE_PANEL_LAYER");
     return !(setting && std::string(setting) == "off");
 }
