@@ -1,6 +1,8 @@
 #include "support/test_paths.hpp"
 
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 namespace stipple::test {
 
@@ -12,6 +14,13 @@ std::string shared_model(const std::string& name) {
 }
 
 std::string source_path(const std::string& relative) { return std::string(STIPPLE_SOURCE_DIR) + "/" + relative; }
+
+std::string slurp(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 
 std::filesystem::path output_path(const std::string& name) {
     std::filesystem::path dir = STIPPLE_TEST_OUTPUT_DIR;

@@ -9,6 +9,8 @@ namespace stipple::test {
 std::string shared_model(const std::string& name);
 // <source>/<relative>: the project's own files (assets, golden images, the README).
 std::string source_path(const std::string& relative);
+// The whole text of a file ("" when it cannot be read).
+std::string slurp(const std::filesystem::path& path);
 // <build>/test-output/<name>, creating the folder.
 std::filesystem::path output_path(const std::string& name);
 // A fresh empty temporary folder for files a test writes itself: <build>/test-output/tmp/<test_name>.

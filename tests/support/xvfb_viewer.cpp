@@ -8,8 +8,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 namespace stipple::test {
@@ -27,13 +25,6 @@ std::string missing_viewer_tools() {
         if (!have_tool(tool))
             return std::string(tool) + " is not installed (apt-get install xvfb xdotool); viewer not tested";
     return "";
-}
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 bool wait_for(const std::function<bool()>& condition, std::chrono::milliseconds timeout) {

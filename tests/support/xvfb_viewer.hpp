@@ -11,13 +11,12 @@
 #include <utility>
 #include <vector>
 
+#include "support/test_paths.hpp"
+
 namespace stipple::test {
 
 // "" when Xvfb and xdotool are installed; otherwise what the test says when it skips.
 std::string missing_viewer_tools();
-
-// The whole text of a file ("" when it cannot be read).
-std::string slurp(const std::filesystem::path& path);
 
 // Polls `condition` every 100 ms until it holds or `timeout` passes; its last answer.
 bool wait_for(const std::function<bool()>& condition, std::chrono::milliseconds timeout);
