@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/hash.hpp"
+#include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 
 namespace stipple {
@@ -33,10 +34,18 @@ public:
         last_[bucket] = uint32_t(entries_.size() - 1);
     }
 
+    // Empties the grid, touching only the buckets its centroids went to.
+    void clear() {
+        for (const Entry& e : entries_) last_[hash_.bucket(hash_.cell_of(e.point))] = kNone;
+        entries_.clear();
+    }
+
     // The bucket of p's own cell into the cache ahead of a query there (the queries come in random
     // order, each a wait for memory otherwise; prefetching all nine rows, or their first centroids too,
     // measured no better).
     void prefetch(const glm::vec3& p) const { __builtin_prefetch(&last_[hash_.bucket(hash_.cell_of(p))]); }
+
+    size_t size() const { return entries_.size(); }
 
     bool any_within(const glm::vec3& p) const {
         const glm::ivec3 c = hash_.cell_of(p);
@@ -95,25 +104,32 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
     constexpr double kClassRatio = 1.19;  // 2^(1/4): p varies by under 10% across a class
     constexpr uint32_t kExactCounts = 8;
     const size_t count = areas.size();
-    auto count_class = [&](uint32_t t) { return std::min(counts[t], kExactCounts); };
-    std::vector<uint32_t> by_area(count);
-    std::iota(by_area.begin(), by_area.end(), 0u);
-    std::sort(by_area.begin(), by_area.end(), [&](uint32_t a, uint32_t b) {
-        if (count_class(a) != count_class(b)) return count_class(a) < count_class(b);
-        return areas[a] < areas[b] || (areas[a] == areas[b] && a < b);
+    // The sort keys beside their triangles: sorting indices that compare through the arrays read one
+    // random cache line per comparison (most of this function's time on the 871k-triangle dragon).
+    struct Keyed {
+        uint32_t count_class;
+        uint32_t triangle;
+        double key;  // the area, then the blue-noise rank scaled by it
+    };
+    std::vector<Keyed> by_area(count);
+    for (size_t t = 0; t < count; ++t) by_area[t] = {std::min(counts[t], kExactCounts), uint32_t(t), areas[t]};
+    std::sort(by_area.begin(), by_area.end(), [](const Keyed& a, const Keyed& b) {
+        if (a.count_class != b.count_class) return a.count_class < b.count_class;
+        return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
     });
     const uint64_t key = mix64(seed ^ 0x53454C4543540001ull);
     size_t begin = 0;
     while (begin < count) {
         size_t end = begin;
-        const uint32_t class_count = count_class(by_area[begin]);
-        const double limit = areas[by_area[begin]] * kClassRatio;
-        while (end < count && count_class(by_area[end]) == class_count && areas[by_area[end]] <= limit) ++end;
+        const uint32_t class_count = by_area[begin].count_class;
+        const double limit = by_area[begin].key * kClassRatio;
+        while (end < count && by_area[end].count_class == class_count && by_area[end].key <= limit) ++end;
+        for (size_t k = begin; k < end; ++k) by_area[k].key = scaled[by_area[k].triangle];
         std::sort(by_area.begin() + std::ptrdiff_t(begin), by_area.begin() + std::ptrdiff_t(end),
-                  [&](uint32_t a, uint32_t b) { return scaled[a] < scaled[b] || (scaled[a] == scaled[b] && a < b); });
+                  [](const Keyed& a, const Keyed& b) { return a.key < b.key || (a.key == b.key && a.triangle < b.triangle); });
         const double n = double(end - begin);
         for (size_t k = begin; k < end; ++k) {
-            const uint32_t t = by_area[k];
+            const uint32_t t = by_area[k].triangle;
             const double within = double(mix64(key ^ t) >> 11) * 0x1p-53;
             const double value = std::min((double(k - begin) + within) / n, 1.0 - 1.0 / 16777216.0);
             values[t] = float(std::floor(value * 16777216.0)) * (1.0f / 16777216.0f);  // a multiple of 2^-24
@@ -145,6 +161,9 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
 
     std::vector<uint32_t> ranked;
     ranked.reserve(count);
+    // Sites tested against the level's ranked centroids at once, and per chunk of that test.
+    constexpr size_t kBlock = 16384, kQueryChunk = 2048;
+    std::vector<uint8_t> near_ranked(kBlock);
     // Level L aims at 2^L ranked sites: Poisson-disc radius 0.75 x the hexagonal spacing of that
     // many points. Each level examines at most 8x its target, so the whole order costs O(count).
     for (size_t target = 1; target < count && !remaining.empty(); target *= 2) {
@@ -152,18 +171,33 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         size_t budget = std::min(remaining.size(), 8 * target);
         RankedGrid grid(lowest, radius, ranked.size() + budget);
         for (uint32_t t : ranked) grid.insert(sites[t]);
+        RankedGrid block_grid(lowest, radius, kBlock);
         std::vector<uint32_t> rejected;
-        constexpr size_t kAhead = 8;  // queries whose memory is fetched while this one runs
-        for (size_t i = 0; i < budget; ++i) {
-            if (i + 2 * kAhead < budget) __builtin_prefetch(&sites[remaining[i + 2 * kAhead]]);
-            if (i + kAhead < budget) grid.prefetch(sites[remaining[i + kAhead]]);
-            uint32_t t = remaining[i];
-            if (grid.any_within(sites[t])) {
-                rejected.push_back(t);
-            } else {
-                ranked.push_back(t);
-                grid.insert(sites[t]);
+        // Dart throwing in blocks, with the same result as one site after the other: a site near a centroid
+        // ranked before its block is rejected whatever its block does, so those tests (nearly all of the
+        // time, each a wait for memory) run on every core; then, in order, each remaining site is tested
+        // against the centroids its own block has ranked so far, a small grid that stays in the cache.
+        for (size_t block = 0; block < budget; block += kBlock) {
+            const size_t block_end = std::min(budget, block + kBlock);
+            parallel_for_chunks(block_end - block, kQueryChunk, [&](size_t, size_t begin, size_t end) {
+                constexpr size_t kAhead = 8;  // queries whose memory is fetched while this one runs
+                for (size_t i = block + begin; i < block + end; ++i) {
+                    if (i + 2 * kAhead < block + end) __builtin_prefetch(&sites[remaining[i + 2 * kAhead]]);
+                    if (i + kAhead < block + end) grid.prefetch(sites[remaining[i + kAhead]]);
+                    near_ranked[i - block] = grid.any_within(sites[remaining[i]]);
+                }
+            });
+            for (size_t i = block; i < block_end; ++i) {
+                const uint32_t t = remaining[i];
+                if (near_ranked[i - block] || block_grid.any_within(sites[t])) {
+                    rejected.push_back(t);
+                } else {
+                    ranked.push_back(t);
+                    block_grid.insert(sites[t]);
+                }
             }
+            for (size_t r = ranked.size() - block_grid.size(); r < ranked.size(); ++r) grid.insert(sites[ranked[r]]);
+            block_grid.clear();
         }
         // Unexamined sites go first at the next level, then the rejected ones.
         std::vector<uint32_t> next(remaining.begin() + budget, remaining.end());
@@ -180,10 +214,10 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // uniform where it matters, among triangles of about the same area and count (calibrate_per_class).
     const double mean_area = area / double(count);
     std::vector<double> areas(count);
+    for (size_t t = 0; t < count; ++t) areas[t] = triangle_area(mesh, t);  // in the mesh's order: its memory in order
     std::vector<double> scaled(count);
     for (size_t rank = 0; rank < count; ++rank) {
         uint32_t t = ranked[rank];
-        areas[t] = triangle_area(mesh, t);
         scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
     }
     calibrate_per_class(areas, counts, scaled, seed, values);
