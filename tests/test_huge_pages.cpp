@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/huge_pages.hpp"
+
 namespace {
 
 struct Mapping {
@@ -37,12 +39,14 @@ bool mapping_at(const void* address, Mapping& found) {
 }
 
 bool huge_pages_available() {
+    if (!stipple::kHugePageNew) return false;
     std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
     std::string text;
     return std::getline(mode, text) && text.find("[never]") == std::string::npos;
 }
 
 TEST(HugePages, ALargeBlockIsAdvisedAndOnlyItsAlignedInterior) {
+    if (!stipple::kHugePageNew) GTEST_SKIP() << "a sanitizer's operator new is in charge in this build";
     if (!huge_pages_available()) GTEST_SKIP() << "the kernel has no transparent huge pages (or they are off)";
     constexpr std::size_t kBytes = std::size_t(64) << 20;
     std::vector<char> block(kBytes);  // operator new, as every std::vector

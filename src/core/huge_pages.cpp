@@ -10,7 +10,10 @@
 // touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior of a block is marked, so no
 // page outside it changes. Smaller blocks, and what C libraries (the Vulkan driver) allocate with malloc,
 // are left as they were. Blocks are still malloc's: operator delete frees them as before (and a sanitizer
-// sees malloc and free pair up).
+// sees malloc and free pair up). Left out under a sanitizer (huge_pages.hpp).
+#include "core/huge_pages.hpp"
+
+#if !defined(STIPPLE_SANITIZER_ALLOCATOR)
 #include <cstdint>
 #include <cstdlib>
 #include <new>
@@ -68,3 +71,5 @@ void operator delete(void* block, std::size_t) noexcept { std::free(block); }
 void operator delete[](void* block, std::size_t) noexcept { std::free(block); }
 void operator delete(void* block, const std::nothrow_t&) noexcept { std::free(block); }
 void operator delete[](void* block, const std::nothrow_t&) noexcept { std::free(block); }
+
+#endif  // !STIPPLE_SANITIZER_ALLOCATOR
