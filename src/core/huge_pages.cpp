@@ -3,14 +3,15 @@
 // Generation allocates and frees arrays of tens to hundreds of MiB (positions, grids, slots, the
 // relaxation's spatial copies), and glibc hands each one back to the system when it is freed, so every
 // new one is faulted in again, 4 KiB at a time: the 8M-stipple dragon (`STIPPLE_NO_CACHE=1 stipple info
-// dragon.ply --dmax 4`) took 293,000-301,000 page faults, a quarter of its time in the kernel's fault path
-// on a virtual machine. The system's transparent huge pages are usually granted only where a program asks
-// (`/sys/kernel/mm/transparent_hugepage/enabled` = madvise, Debian's default), so the blocks this program
-// allocates through `operator new` at kHugeAdviceBytes or more are marked MADV_HUGEPAGE before anything
-// touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior of a block is marked, so no
+// dragon.ply --dmax 4`) took 292,000-301,000 page faults, at about 4 us each on a virtual machine (`perf`:
+// a ninth of its samples in the kernel's fault path and in memset); it now takes 67,000-70,000, and
+// generates 15% faster (docs/performance.md). The system's transparent huge pages are usually granted
+// only where a program asks (`/sys/kernel/mm/transparent_hugepage/enabled` = madvise, Debian's default),
+// so the blocks this program allocates through `operator new` at kHugeAdviceBytes or more are marked
+// MADV_HUGEPAGE before anything touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior of a block is marked, so no
 // page outside it changes. Smaller blocks, and what C libraries (the Vulkan driver) allocate with malloc,
-// are left as they were. Blocks are still malloc's: operator delete frees them as before (and a sanitizer
-// sees malloc and free pair up). Left out under a sanitizer (huge_pages.hpp).
+// are left as they were. Blocks are still malloc's: operator delete frees them as before. Left out under
+// a sanitizer (huge_pages.hpp).
 #include "core/huge_pages.hpp"
 
 #if !defined(STIPPLE_SANITIZER_ALLOCATOR)
