@@ -8,9 +8,9 @@
 // generates 15% faster (docs/performance.md). The system's transparent huge pages are usually granted
 // only where a program asks (`/sys/kernel/mm/transparent_hugepage/enabled` = madvise, Debian's default),
 // so the blocks this program allocates through `operator new` at kHugeAdviceBytes or more are marked
-// MADV_HUGEPAGE before anything touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior of a block is marked, so no
-// page outside it changes. Smaller blocks, and what C libraries (the Vulkan driver) allocate with malloc,
-// are left as they were. Blocks are still malloc's: operator delete frees them as before. Left out under
+// MADV_HUGEPAGE before anything touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior
+// of a block is marked, so no page outside it changes. Smaller blocks, and what C libraries (the Vulkan
+// driver) allocate with malloc, are left as they were. Blocks are still malloc's: operator delete frees them as before. Left out under
 // a sanitizer (huge_pages.hpp).
 #include "core/huge_pages.hpp"
 

@@ -126,7 +126,9 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
         while (end < count && by_area[end].count_class == class_count && by_area[end].key <= limit) ++end;
         for (size_t k = begin; k < end; ++k) by_area[k].key = scaled[by_area[k].triangle];
         std::sort(by_area.begin() + std::ptrdiff_t(begin), by_area.begin() + std::ptrdiff_t(end),
-                  [](const Keyed& a, const Keyed& b) { return a.key < b.key || (a.key == b.key && a.triangle < b.triangle); });
+                  [](const Keyed& a, const Keyed& b) {
+                      return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
+                  });
         const double n = double(end - begin);
         for (size_t k = begin; k < end; ++k) {
             const uint32_t t = by_area[k].triangle;
