@@ -10,8 +10,8 @@
 // so the blocks this program allocates through `operator new` at kHugeAdviceBytes or more are marked
 // MADV_HUGEPAGE before anything touches them: one fault then maps 2 MiB. Only the 2-MiB-aligned interior
 // of a block is marked, so no page outside it changes. Smaller blocks, and what C libraries (the Vulkan
-// driver) allocate with malloc, are left as they were. Blocks are still malloc's: operator delete frees them as before. Left out under
-// a sanitizer (huge_pages.hpp).
+// driver) allocate with malloc, are left as they were. Blocks are still malloc's: operator delete frees
+// them as before. Left out under a sanitizer (huge_pages.hpp).
 #include "core/huge_pages.hpp"
 
 #if !defined(STIPPLE_SANITIZER_ALLOCATOR)
