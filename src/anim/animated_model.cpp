@@ -36,6 +36,7 @@ DrawingOrder reorder_for_drawing(const Mesh& file_order) {
     DrawingOrder order;
     order.origin.resize(tagged.positions.size());
     order.mesh.source = file_order.source;
+    order.mesh.winding = file_order.winding;
     order.mesh.normals.resize(tagged.positions.size());
     for (size_t i = 0; i < tagged.positions.size(); ++i) {
         const uint32_t o = static_cast<uint32_t>(tagged.normals[i].x) | static_cast<uint32_t>(tagged.normals[i].y) << 16;
@@ -104,7 +105,6 @@ AnimatedModel load_animated_model(const std::string& path, const LoadOptions& op
     std::vector<glm::vec3> bind_normals(n);
     const Bounds bounds = compute_bounds(file_order);
     const double tolerance = 1e-5 * std::max(1e-30, double(glm::length(bounds.max - bounds.min)));
-    double agreement = 0.0;
     for (const VertexRange& range : streams.ranges) {
         const glm::dmat3 transpose = glm::transpose(glm::dmat3(range.static_world));
         for (size_t v = range.first; v < range.first + range.count; ++v) {
@@ -114,12 +114,15 @@ AnimatedModel load_animated_model(const std::string& path, const LoadOptions& op
             const glm::dvec3 normal = transpose * glm::dvec3(file_order.normals[v]);
             const double length = glm::length(normal);
             bind_normals[v] = length > 0.0 ? glm::vec3(normal / length) : glm::vec3(0.0f, 0.0f, 1.0f);
-            agreement += glm::dot(glm::dvec3(bind_normals[v]), glm::dvec3(streams.file_normals[v]));
+            // Loading turns a file normal that disagrees with its faces around (turn_normals_to_faces);
+            // the vertex's morph normal deltas turn with it.
+            if (glm::dot(glm::dvec3(bind_normals[v]), glm::dvec3(streams.file_normals[v])) < 0.0) {
+                const MorphRef& ref = streams.morph_refs[v];
+                for (uint32_t k = 0; k < ref.count; ++k)
+                    streams.morph_deltas[ref.first_delta + k].normal = -streams.morph_deltas[ref.first_delta + k].normal;
+            }
         }
     }
-    // orient_outward may have turned the file's normals around; the morph targets' normal deltas turn with them.
-    if (agreement < 0.0)
-        for (MorphDelta& d : streams.morph_deltas) d.normal = -d.normal;
 
     DrawingOrder order = reorder_for_drawing(file_order);
     model.rest = std::move(order.mesh);

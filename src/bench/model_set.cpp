@@ -12,6 +12,7 @@
 
 #include "bench/bench_output.hpp"
 #include "mesh/mesh_ops.hpp"
+#include "mesh/orientation.hpp"
 #include "mesh/ply_writer.hpp"
 #include "core/timing.hpp"
 #include "bench/table1.hpp"

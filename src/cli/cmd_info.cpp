@@ -27,6 +27,24 @@ std::string json_string(const std::string& text) {
     return out + "\"";
 }
 
+// What loading did to the file's winding (Mesh::winding), in words.
+std::string describe_winding(const WindingRepair& w) {
+    std::string out;
+    auto add = [&](const std::string& clause) { out += (out.empty() ? "" : "; ") + clause; };
+    const std::string parts = std::to_string(w.parts) + (w.parts == 1 ? " part" : " parts");
+    if (w.triangles_turned > 0) {
+        std::string why;
+        if (w.wound_against > 0) why = std::to_string(w.wound_against) + " wound against their neighbours";
+        if (w.parts_turned_outward > 0)
+            why += (why.empty() ? "" : ", ") + std::to_string(w.parts_turned_outward) + " of " + parts + " inside out";
+        add(std::to_string(w.triangles_turned) + " triangles turned (" + why + ")");
+    }
+    if (w.normals_turned > 0) add(std::to_string(w.normals_turned) + " file normals turned to agree with their faces");
+    if (w.conflicting_edges > 0)
+        add(std::to_string(w.conflicting_edges) + " edges join triangles no winding can make agree");
+    return out.empty() ? "as in the file (" + parts + ")" : out;
+}
+
 // The animation fields of --json (an empty "animations" list for a static model).
 std::string animation_json(const ObjectData& object) {
     std::string out = "\"animations\": [";
@@ -82,19 +100,22 @@ int run_info(const std::vector<std::string>& argv) {
             "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
-            "\"from_cache\": %s, %s}\n",
+            "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, \"parts_turned_outward\": %zu, "
+            "\"normals_turned\": %zu, \"conflicting_edges\": %zu}, %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
             object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
             stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
             stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
-            animation_json(object).c_str());
+            mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against, mesh.winding.parts_turned_outward,
+            mesh.winding.normals_turned, mesh.winding.conflicting_edges, animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());
         std::printf("triangles:           %zu\n", mesh.triangle_count());
         std::printf("vertices:            %zu\n", mesh.vertex_count());
         std::printf("stipple candidates:  %zu\n", stipples.size());
         std::printf("surface area:        %.6g\n", area);
+        std::printf("winding:             %s\n", describe_winding(mesh.winding).c_str());
         std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,
                     bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
         std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g%s\n", object.bounds.center.x,

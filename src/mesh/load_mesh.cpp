@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "mesh/loader_util.hpp"
+#include "mesh/orientation.hpp"
 
 namespace stipple {
 
@@ -53,11 +54,12 @@ Mesh parse(Format format, const std::string& name, std::string_view bytes, const
     fail_file(name, "unknown model format");
 }
 
-// What every format shares once its parser is done: normals, validation, outward winding.
+// What every format shares once its parser is done: normals, validation, one winding per part.
 Mesh finish(Mesh mesh, const std::string& name) {
     mesh.source = name;
     if (mesh.indices.empty()) fail_file(name, "the model has no triangles");
-    if (normals_usable(mesh)) {
+    const bool file_normals = normals_usable(mesh);
+    if (file_normals) {
         for (glm::vec3& n : mesh.normals) n = glm::vec3(glm::normalize(glm::dvec3(n)));
     } else {
         compute_vertex_normals(mesh);  // tolerates bad indices; validate_mesh reports them
@@ -69,7 +71,10 @@ Mesh finish(Mesh mesh, const std::string& name) {
     if (!has_area)
         fail_file(name, "no triangle with non-zero area (all " + std::to_string(mesh.triangle_count()) +
                             " triangles are degenerate)");
-    orient_outward(mesh);
+    mesh.winding = orient_consistently(mesh);
+    // Computed normals followed the file's winding: where it was mixed they cancelled out.
+    if (!file_normals && mesh.winding.triangles_turned > 0) compute_vertex_normals(mesh);
+    if (file_normals) mesh.winding.normals_turned = turn_normals_to_faces(mesh);
     return mesh;
 }
 

@@ -172,35 +172,6 @@ void append_mesh(Mesh& a, const Mesh& b) {
     for (uint32_t i : b.indices) a.indices.push_back(i + offset);
 }
 
-double signed_volume(const Mesh& mesh) {
-    const glm::dvec3 origin = glm::dvec3(compute_bounds(mesh).center());
-    double volume = 0.0;
-    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-        glm::dvec3 a = glm::dvec3(mesh.positions[mesh.indices[3 * t]]) - origin;
-        glm::dvec3 b = glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - origin;
-        glm::dvec3 c = glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - origin;
-        volume += glm::dot(a, glm::cross(b, c)) / 6.0;
-    }
-    return volume;
-}
-
-bool orient_outward(Mesh& mesh) {
-    const Bounds bounds = compute_bounds(mesh);
-    const glm::dvec3 extent = glm::dvec3(bounds.max - bounds.min);
-    // "Clearly": more than 1% of the bounding box's volume, so open sheets and shells stay as they are.
-    if (signed_volume(mesh) >= -0.01 * extent.x * extent.y * extent.z) return false;
-    for (size_t t = 0; t < mesh.triangle_count(); ++t) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
-    double agreement = 0.0;
-    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-        const uint32_t i = mesh.indices[3 * t], j = mesh.indices[3 * t + 1], k = mesh.indices[3 * t + 2];
-        glm::vec3 face = glm::cross(mesh.positions[j] - mesh.positions[i], mesh.positions[k] - mesh.positions[i]);
-        agreement += glm::dot(face, mesh.normals[i] + mesh.normals[j] + mesh.normals[k]);
-    }
-    if (agreement < 0.0)
-        for (glm::vec3& n : mesh.normals) n = -n;
-    return true;
-}
-
 void optimize_draw_order(Mesh& mesh) {
     if (mesh.indices.empty()) return;
     std::vector<uint32_t> reordered(mesh.indices.size());

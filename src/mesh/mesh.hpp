@@ -1,5 +1,6 @@
 #pragma once
 // The one in-memory form of every model: an indexed triangle list in object space.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,11 +22,23 @@ struct Sphere {
     float radius = 0.0f;
 };
 
+// What loading did to the file's winding (orient_consistently, mesh/orientation.hpp), for `stipple info`.
+struct WindingRepair {
+    size_t parts = 0;                 // sets of triangles joined through manifold edges
+    size_t triangles_turned = 0;      // triangles whose corner order was reversed, for either reason:
+    size_t wound_against = 0;         // triangles wound against their part's majority
+    size_t parts_turned_outward = 0;  // parts that were clearly inside out once wound alike
+    size_t conflicting_edges = 0;     // manifold edges still joining two triangles wound the same way
+                                      // (a part that has no consistent winding, such as a Möbius strip)
+    size_t normals_turned = 0;        // file normals turned to agree with their faces
+};
+
 struct Mesh {
     std::string source;                // path it was loaded from (for messages), or a generator name
     std::vector<glm::vec3> positions;  // one per vertex, finite
     std::vector<glm::vec3> normals;    // one per vertex, unit length (computed when the file has none)
     std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
+    WindingRepair winding;             // set by load_mesh
 
     size_t triangle_count() const { return indices.size() / 3; }
     size_t vertex_count() const { return positions.size(); }
@@ -56,15 +69,6 @@ Bounds compute_bounds(const Mesh& mesh);
 Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains every vertex
 double triangle_area(const Mesh& mesh, size_t triangle);
 double total_area(const Mesh& mesh);
-
-// Signed volume enclosed by the triangles (positive when they are wound counter-clockwise seen from
-// outside); about zero for an open sheet.
-double signed_volume(const Mesh& mesh);
-
-// Scanned models are sometimes wound inside out (the Cyberware horse is): their faces would count as
-// back faces and get no stipples. When the signed volume is clearly negative, flips every triangle's
-// winding, and the vertex normals too if they then disagree with the faces. Returns true if it flipped.
-bool orient_outward(Mesh& mesh);
 
 // Reorders triangles for vertex reuse and vertices for fetch locality (meshoptimizer). The same
 // surface, drawn in an order that suits a rasteriser's vertex cache; on lavapipe it also groups

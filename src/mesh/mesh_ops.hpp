@@ -2,7 +2,10 @@
 // Mesh operations: welding, midpoint subdivision, simplification to a triangle count (meshoptimizer).
 // The benchmark derives its model set from the scans with them (src/bench/model_set.cpp).
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -11,6 +14,12 @@ namespace stipple {
 // Merges vertices at identical positions (meshopt_generateVertexRemap) and drops unused ones; normals
 // are recomputed. Triangles are kept as they are (degenerate ones included).
 Mesh weld_positions(const Mesh& mesh);
+
+// Each vertex's representative: the first vertex at exactly the same position. A mesh whose corners are
+// split (a triangle soup, a glTF primitive without indices, per-face normals or texture seams) would
+// otherwise make every split edge a border; edge tables and the winding repair (mesh/orientation.hpp)
+// are built on the representatives, which lie where the split corners do.
+std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 
 // Each triangle into four by its edge midpoints; a midpoint shared by two triangles is one vertex.
 // The mesh should be welded first (otherwise seams get duplicate midpoints). Normals are recomputed.

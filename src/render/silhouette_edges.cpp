@@ -1,33 +1,8 @@
 #include "render/silhouette_edges.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <unordered_map>
 
 namespace stipple {
-
-std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
-    struct Key {
-        uint32_t bits[3];
-        bool operator==(const Key& other) const { return std::memcmp(bits, other.bits, sizeof bits) == 0; }
-    };
-    struct Hash {
-        size_t operator()(const Key& k) const {
-            return (size_t(k.bits[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.bits[1]) * 0xC2B2AE3D27D4EB4Full) ^
-                   (size_t(k.bits[2]) * 0x165667B19E3779F9ull);
-        }
-    };
-    std::unordered_map<Key, uint32_t, Hash> first;
-    first.reserve(positions.size());
-    std::vector<uint32_t> representative(positions.size());
-    for (size_t v = 0; v < positions.size(); ++v) {
-        glm::vec3 p = positions[v] + glm::vec3(0.0f);  // -0 and +0 are one position
-        Key key;
-        std::memcpy(key.bits, &p, sizeof key.bits);
-        representative[v] = first.emplace(key, uint32_t(v)).first->second;
-    }
-    return representative;
-}
 
 std::vector<gpu::SilhouetteEdge> build_silhouette_edges(std::span<const uint32_t> indices) {
     struct HalfEdge {

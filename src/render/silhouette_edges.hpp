@@ -9,15 +9,10 @@
 
 #include <glm/glm.hpp>
 
+#include "mesh/mesh_ops.hpp"  // weld_by_position: the table is built on welded corners
 #include "shared_types.h"
 
 namespace stipple {
-
-// Each vertex's representative: the first vertex at exactly the same position. A mesh whose corners are
-// split (a triangle soup, a glTF primitive without indices, per-face normals or texture seams) would
-// otherwise make every split edge a border; the edge table is built on the representatives, which
-// lie where the split corners do.
-std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 
 // The edges of a triangle list (3 indices per triangle), each undirected vertex pair once with the
 // polygons that share it; a boundary edge has second_polygon == kNoPolygon. An edge shared by more than

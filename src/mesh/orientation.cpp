@@ -1,0 +1,260 @@
+#include "mesh/orientation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "mesh/mesh_ops.hpp"
+
+namespace stipple {
+
+namespace {
+
+constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
+
+bool indices_in_range(const Mesh& mesh, size_t t) {
+    const size_t n = mesh.positions.size();
+    return mesh.indices[3 * t] < n && mesh.indices[3 * t + 1] < n && mesh.indices[3 * t + 2] < n;
+}
+
+// Each triangle's neighbours across its manifold edges, as (neighbour << 1 | same): `same` when both
+// walk the shared edge in the same direction, i.e. when exactly one of them must be turned.
+struct Adjacency {
+    std::vector<uint32_t> first;  // triangle t's entries are [first[t], first[t + 1])
+    std::vector<uint32_t> entries;
+    std::vector<uint8_t> on_border;  // the triangle has an edge that joins it to no neighbour (a border, a
+                                     // non-manifold or folded edge): its part is not closed
+};
+
+glm::dvec3 corner_position(const Mesh& mesh, size_t t, int k) {
+    return glm::dvec3(mesh.positions[mesh.indices[3 * t + k]]);
+}
+
+// Two triangles on one side of their shared edge (a, b), within 10 degrees of each other: faces laid over
+// each other (a duplicate, a polygon drawn twice over) rather than a surface going on across the edge.
+// Which way they should be wound says nothing about the other: the edge is no constraint.
+bool folded_onto_each_other(const Mesh& mesh, const std::vector<uint32_t>& corner, uint32_t a, uint32_t b, uint32_t s,
+                            uint32_t t) {
+    const glm::dvec3 pa(mesh.positions[a]), edge = glm::dvec3(mesh.positions[b]) - pa;
+    const double length2 = glm::dot(edge, edge);
+    if (!(length2 > 0.0)) return false;
+    auto across = [&](uint32_t triangle) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t c = corner[mesh.indices[3 * triangle + k]];
+            if (c == a || c == b) continue;
+            const glm::dvec3 d = corner_position(mesh, triangle, k) - pa;
+            return d - glm::dot(d, edge) / length2 * edge;
+        }
+        return glm::dvec3(0.0);
+    };
+    const glm::dvec3 u = across(s), w = across(t);
+    const double lengths = glm::length(u) * glm::length(w);
+    return lengths > 0.0 && glm::dot(u, w) > 0.985 * lengths;  // cos 10 degrees
+}
+
+Adjacency manifold_adjacency(const Mesh& mesh) {
+    const std::vector<uint32_t> corner = weld_by_position(mesh.positions);
+    const size_t triangles = mesh.triangle_count();
+    // Half-edges bucketed by their smaller corner (a counting sort: a comparison sort of the 2.6M half-edges
+    // of an 871k-triangle scan took most of the repair's time), then matched within each small bucket.
+    struct HalfEdge {
+        uint32_t larger;  // the other corner
+        uint32_t walked;  // triangle << 1 | 1 when the triangle walks from the smaller corner to the larger
+    };
+    std::vector<uint32_t> bucket_first(mesh.positions.size() + 1, 0);
+    auto for_each_half_edge = [&](auto&& visit) {
+        for (size_t t = 0; t < triangles; ++t) {
+            if (!indices_in_range(mesh, t)) continue;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = corner[mesh.indices[3 * t + k]], b = corner[mesh.indices[3 * t + (k + 1) % 3]];
+                if (a == b) continue;  // a collapsed side joins nothing
+                visit(std::min(a, b), HalfEdge{std::max(a, b), uint32_t(t << 1) | uint32_t(a < b)});
+            }
+        }
+    };
+    for_each_half_edge([&](uint32_t smaller, HalfEdge) { ++bucket_first[smaller + 1]; });
+    for (size_t v = 0; v < mesh.positions.size(); ++v) bucket_first[v + 1] += bucket_first[v];
+    std::vector<HalfEdge> half_edges(bucket_first.back());
+    {
+        std::vector<uint32_t> fill(bucket_first.begin(), bucket_first.end() - 1);
+        for_each_half_edge([&](uint32_t smaller, HalfEdge h) { half_edges[fill[smaller]++] = h; });
+    }
+
+    // The manifold edges as pairs of half-edges, then counted into each triangle's range.
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    pairs.reserve(half_edges.size() / 2);
+    std::vector<uint32_t> unpaired;  // triangles with an edge that joins them to no neighbour
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const auto begin = half_edges.begin() + bucket_first[v], end = half_edges.begin() + bucket_first[v + 1];
+        std::sort(begin, end, [](const HalfEdge& x, const HalfEdge& y) {
+            return x.larger != y.larger ? x.larger < y.larger : x.walked < y.walked;
+        });
+        for (auto run = begin; run != end;) {
+            auto run_end = run + 1;
+            while (run_end != end && run_end->larger == run->larger) ++run_end;
+            if (run_end - run == 2 && (run[0].walked >> 1) != (run[1].walked >> 1) &&
+                !folded_onto_each_other(mesh, corner, uint32_t(v), run->larger, run[0].walked >> 1, run[1].walked >> 1))
+                pairs.emplace_back(run[0].walked, run[1].walked);
+            else
+                for (auto h = run; h != run_end; ++h) unpaired.push_back(h->walked >> 1);
+            run = run_end;
+        }
+    }
+    Adjacency adjacency;
+    adjacency.on_border.assign(triangles, 0);
+    for (uint32_t t : unpaired) adjacency.on_border[t] = 1;
+    adjacency.first.assign(triangles + 1, 0);
+    for (auto [x, y] : pairs) ++adjacency.first[(x >> 1) + 1], ++adjacency.first[(y >> 1) + 1];
+    for (size_t t = 0; t < triangles; ++t) adjacency.first[t + 1] += adjacency.first[t];
+    adjacency.entries.resize(adjacency.first[triangles]);
+    std::vector<uint32_t> fill(adjacency.first.begin(), adjacency.first.end() - 1);
+    for (auto [x, y] : pairs) {
+        const uint32_t same = (x ^ y) & 1u ? 0u : 1u;
+        adjacency.entries[fill[x >> 1]++] = (y >> 1) << 1 | same;
+        adjacency.entries[fill[y >> 1]++] = (x >> 1) << 1 | same;
+    }
+    return adjacency;
+}
+
+
+}  // namespace
+
+double signed_volume(const Mesh& mesh) {
+    const glm::dvec3 origin = glm::dvec3(compute_bounds(mesh).center());
+    double volume = 0.0;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const glm::dvec3 a = corner_position(mesh, t, 0) - origin;
+        const glm::dvec3 b = corner_position(mesh, t, 1) - origin;
+        const glm::dvec3 c = corner_position(mesh, t, 2) - origin;
+        volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+    return volume;
+}
+
+WindingRepair orient_consistently(Mesh& mesh) {
+    const size_t triangles = mesh.triangle_count();
+    const Adjacency adjacency = manifold_adjacency(mesh);
+    WindingRepair repair;
+
+    // 1. Parts and a winding for each, breadth first from the lowest triangle of each part.
+    std::vector<uint32_t> part(triangles, kUnassigned);
+    std::vector<uint8_t> turn(triangles, 0);
+    std::vector<uint32_t> queue;
+    for (size_t seed = 0; seed < triangles; ++seed) {
+        if (part[seed] != kUnassigned || !indices_in_range(mesh, seed)) continue;
+        const uint32_t p = uint32_t(repair.parts++);
+        part[seed] = p;
+        queue.assign(1, uint32_t(seed));
+        for (size_t head = 0; head < queue.size(); ++head) {
+            const uint32_t t = queue[head];
+            for (uint32_t e = adjacency.first[t]; e < adjacency.first[t + 1]; ++e) {
+                const uint32_t other = adjacency.entries[e] >> 1;
+                const uint8_t wanted = turn[t] ^ uint8_t(adjacency.entries[e] & 1u);
+                if (part[other] == kUnassigned) {
+                    part[other] = p;
+                    turn[other] = wanted;
+                    queue.push_back(other);
+                } else if (turn[other] != wanted && t < other) {
+                    ++repair.conflicting_edges;
+                }
+            }
+        }
+    }
+
+    // 2. Of a part's two windings, the one that turns less of its area.
+    struct PartFigures {
+        double area = 0.0, turned_area = 0.0;
+        glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
+        bool closed = true;  // every edge joins two of its triangles: its signed volume does not depend on the origin
+        double volume = 0.0;
+    };
+    std::vector<PartFigures> figures(repair.parts);
+    for (size_t t = 0; t < triangles; ++t) {
+        if (part[t] == kUnassigned) continue;
+        PartFigures& f = figures[part[t]];
+        if (adjacency.on_border[t]) f.closed = false;
+        const double area = triangle_area(mesh, t);
+        if (!std::isfinite(area)) continue;
+        f.area += area;
+        if (turn[t]) f.turned_area += area;
+        for (int k = 0; k < 3; ++k) {
+            f.lo = glm::min(f.lo, corner_position(mesh, t, k));
+            f.hi = glm::max(f.hi, corner_position(mesh, t, k));
+        }
+    }
+    std::vector<uint8_t> invert(repair.parts, 0);
+    for (size_t p = 0; p < repair.parts; ++p) invert[p] = figures[p].turned_area > 0.5 * figures[p].area;
+    for (size_t t = 0; t < triangles; ++t) repair.wound_against += part[t] != kUnassigned && turn[t] != invert[part[t]];
+
+    // 3. Outward. A closed part by its own signed volume; the open parts (sheets, scans with holes, whose
+    // volume depends on where it is taken from) together, by the whole model's volume about its box's
+    // centre, closed parts included: an open part on its own may rightly have a negative volume (a patch
+    // of a concave region, seen from its own box), a whole model rarely does.
+    auto signed_volume_about = [&](size_t t, glm::dvec3 centre) {
+        const glm::dvec3 a = corner_position(mesh, t, 0) - centre;
+        glm::dvec3 b = corner_position(mesh, t, 1) - centre, c = corner_position(mesh, t, 2) - centre;
+        if (turn[t] != invert[part[t]]) std::swap(b, c);
+        const double volume = glm::dot(a, glm::cross(b, c)) / 6.0;
+        return std::isfinite(volume) ? volume : 0.0;
+    };
+    // "Clearly" negative: beyond 1% of the box's volume, and beyond what rounding leaves of a flat sheet's zero.
+    auto clearly_inside_out = [](double volume, glm::dvec3 lo, glm::dvec3 hi, double area) {
+        const glm::dvec3 extent = hi - lo;
+        return volume < -std::max(0.01 * extent.x * extent.y * extent.z, 1e-9 * area * glm::length(extent));
+    };
+    for (size_t t = 0; t < triangles; ++t) {
+        if (part[t] == kUnassigned || !figures[part[t]].closed) continue;
+        PartFigures& f = figures[part[t]];
+        f.volume += signed_volume_about(t, 0.5 * (f.lo + f.hi));
+    }
+    bool any_open = false;
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
+    double area = 0.0;
+    for (size_t p = 0; p < repair.parts; ++p) {
+        const PartFigures& f = figures[p];
+        lo = glm::min(lo, f.lo), hi = glm::max(hi, f.hi), area += f.area;
+        any_open |= !f.closed;
+        if (f.closed && clearly_inside_out(f.volume, f.lo, f.hi, f.area)) {
+            invert[p] ^= 1;
+            ++repair.parts_turned_outward;
+        }
+    }
+    if (any_open) {
+        double volume = 0.0;
+        for (size_t t = 0; t < triangles; ++t)
+            if (part[t] != kUnassigned) volume += signed_volume_about(t, 0.5 * (lo + hi));
+        if (clearly_inside_out(volume, lo, hi, area))
+            for (size_t p = 0; p < repair.parts; ++p)
+                if (!figures[p].closed) invert[p] ^= 1, ++repair.parts_turned_outward;
+    }
+
+    for (size_t t = 0; t < triangles; ++t) {
+        if (part[t] == kUnassigned || turn[t] == invert[part[t]]) continue;
+        std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+        ++repair.triangles_turned;
+    }
+    return repair;
+}
+
+size_t turn_normals_to_faces(Mesh& mesh) {
+    if (mesh.normals.size() != mesh.positions.size()) return 0;
+    std::vector<double> agreement(mesh.positions.size(), 0.0);
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        if (!indices_in_range(mesh, t)) continue;
+        const glm::dvec3 a = corner_position(mesh, t, 0);
+        const glm::dvec3 face = glm::cross(corner_position(mesh, t, 1) - a, corner_position(mesh, t, 2) - a);
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = mesh.indices[3 * t + k];
+            agreement[v] += glm::dot(face, glm::dvec3(mesh.normals[v]));
+        }
+    }
+    size_t turned = 0;
+    for (size_t v = 0; v < agreement.size(); ++v)
+        if (agreement[v] < 0.0) mesh.normals[v] = -mesh.normals[v], ++turned;
+    return turned;
+}
+
+}  // namespace stipple

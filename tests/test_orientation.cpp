@@ -1,0 +1,264 @@
+// The winding repair (mesh/orientation.hpp): a model whose triangles are wound inconsistently, or one of
+// whose parts is inside out, loads with every triangle of each part wound alike and outward; open sheets
+// keep their majority's winding; what cannot be made consistent (a Möbius strip, non-manifold fins) is
+// counted and left.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mesh/load_mesh.hpp"
+#include "mesh/mesh_ops.hpp"
+#include "mesh/orientation.hpp"
+#include "mesh/primitives.hpp"
+#include "support/test_paths.hpp"
+#include "support/test_shapes.hpp"
+
+namespace stipple {
+namespace {
+
+glm::dvec3 face_normal(const Mesh& mesh, size_t t) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
+        c(mesh.positions[mesh.indices[3 * t + 2]]);
+    return glm::cross(b - a, c - a);
+}
+
+glm::dvec3 centroid(const Mesh& mesh, size_t t) {
+    return (glm::dvec3(mesh.positions[mesh.indices[3 * t]]) + glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) +
+            glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]])) /
+           3.0;
+}
+
+void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Triangles of `mesh` in [first, last) facing away from `centre` (a sphere's outward).
+size_t facing_inward(const Mesh& mesh, glm::dvec3 centre, size_t first = 0, size_t last = SIZE_MAX) {
+    size_t inward = 0;
+    for (size_t t = first; t < std::min(last, mesh.triangle_count()); ++t)
+        inward += glm::dot(face_normal(mesh, t), centroid(mesh, t) - centre) < 0.0;
+    return inward;
+}
+
+// Reverses about `fraction` of the triangles (seeded), returning how many.
+size_t reverse_some(Mesh& mesh, double fraction, uint32_t seed, size_t first = 0, size_t last = SIZE_MAX) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    size_t reversed = 0;
+    for (size_t t = first; t < std::min(last, mesh.triangle_count()); ++t)
+        if (u(rng) < fraction) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]), ++reversed;
+    return reversed;
+}
+
+// Every triangle its own three corners, as a glTF primitive without indices or an OBJ with per-face
+// normals is read: the parts are joined only through positions.
+Mesh unwelded(const Mesh& mesh) {
+    Mesh soup;
+    soup.source = mesh.source;
+    for (uint32_t i : mesh.indices) {
+        soup.indices.push_back(uint32_t(soup.positions.size()));
+        soup.positions.push_back(mesh.positions[i]);
+        soup.normals.push_back(mesh.normals[i]);
+    }
+    return soup;
+}
+
+TEST(Winding, MixedTrianglesOfAClosedMeshAgreeAndFaceOutward) {
+    for (bool soup : {false, true}) {
+        Mesh sphere = make_icosphere(4);
+        if (soup) sphere = unwelded(sphere);
+        ASSERT_EQ(facing_inward(sphere, glm::dvec3(0.0)), 0u);
+        const size_t reversed = reverse_some(sphere, 0.3, 7);
+        ASSERT_GT(reversed, sphere.triangle_count() / 4);
+        const WindingRepair repair = orient_consistently(sphere);
+        std::printf("%s sphere: %zu of %zu triangles reversed, %zu turned in %zu part(s)\n", soup ? "unwelded" : "welded",
+                    reversed, sphere.triangle_count(), repair.triangles_turned, repair.parts);
+        EXPECT_EQ(repair.parts, 1u);
+        EXPECT_EQ(repair.triangles_turned, reversed);
+        EXPECT_EQ(repair.wound_against, reversed);
+        EXPECT_EQ(repair.parts_turned_outward, 0u);
+        EXPECT_EQ(repair.conflicting_edges, 0u);
+        EXPECT_EQ(facing_inward(sphere, glm::dvec3(0.0)), 0u);
+        // Mostly reversed: the part's majority is then inward, and it is turned outward as a whole.
+        reverse_some(sphere, 0.8, 11);
+        const WindingRepair again = orient_consistently(sphere);
+        EXPECT_EQ(facing_inward(sphere, glm::dvec3(0.0)), 0u);
+        EXPECT_EQ(again.parts_turned_outward, 1u);
+    }
+}
+
+TEST(Winding, EachPartIsTurnedOutwardOnItsOwn) {
+    // Two spheres side by side; the second inside out. A whole-mesh volume (what loading tested before)
+    // is zero here and would turn neither.
+    Mesh pair = make_icosphere(3, 1.0f, glm::vec3(-2.0f, 0.0f, 0.0f));
+    const size_t first = pair.triangle_count();
+    append_mesh(pair, make_icosphere(3, 1.0f, glm::vec3(2.0f, 0.0f, 0.0f)));
+    for (size_t t = first; t < pair.triangle_count(); ++t) std::swap(pair.indices[3 * t + 1], pair.indices[3 * t + 2]);
+    EXPECT_NEAR(signed_volume(pair), 0.0, 1e-3);
+    const WindingRepair repair = orient_consistently(pair);
+    EXPECT_EQ(repair.parts, 2u);
+    EXPECT_EQ(repair.parts_turned_outward, 1u);
+    EXPECT_EQ(repair.triangles_turned, pair.triangle_count() - first);
+    EXPECT_EQ(facing_inward(pair, glm::dvec3(-2.0, 0.0, 0.0), 0, first), 0u);
+    EXPECT_EQ(facing_inward(pair, glm::dvec3(2.0, 0.0, 0.0), first), 0u);
+}
+
+TEST(Winding, AnOpenPartIsTurnedOnlyWithTheWholeModel) {
+    // A bowl wound to face its hollow (its concave side) beside a closed sphere: seen from its own box the
+    // bowl's volume is negative, but an open part's volume says nothing alone; the model's is positive.
+    Mesh bowl = test::make_open_hemisphere(48, 12);
+    for (size_t t = 0; t < bowl.triangle_count(); ++t) std::swap(bowl.indices[3 * t + 1], bowl.indices[3 * t + 2]);
+    EXPECT_LT(signed_volume(bowl), 0.0);
+    Mesh scene = make_icosphere(3, 1.0f, glm::vec3(3.0f, 0.0f, 0.0f));
+    const size_t sphere_triangles = scene.triangle_count();
+    append_mesh(scene, bowl);
+    const std::vector<uint32_t> before = scene.indices;
+    const WindingRepair kept = orient_consistently(scene);
+    EXPECT_EQ(kept.parts, 2u);
+    EXPECT_EQ(kept.triangles_turned, 0u);
+    EXPECT_EQ(scene.indices, before);
+    // Everything reversed: the sphere is turned back by its own volume; the bowl, now facing its convex
+    // side, keeps that.
+    for (size_t t = 0; t < scene.triangle_count(); ++t) std::swap(scene.indices[3 * t + 1], scene.indices[3 * t + 2]);
+    const std::vector<uint32_t> reversed = scene.indices;
+    const WindingRepair sphere_turned = orient_consistently(scene);
+    EXPECT_EQ(sphere_turned.parts_turned_outward, 1u);
+    EXPECT_EQ(facing_inward(scene, glm::dvec3(3.0, 0.0, 0.0), 0, sphere_triangles), 0u);
+    EXPECT_TRUE(std::equal(scene.indices.begin() + 3 * sphere_triangles, scene.indices.end(),
+                           reversed.begin() + 3 * sphere_triangles));
+    // The bowl alone facing its hollow, as a scan with holes wound inward would: the model is open parts
+    // only, its volume negative, and it is turned.
+    const WindingRepair alone = orient_consistently(bowl);
+    EXPECT_EQ(alone.parts_turned_outward, 1u);
+    EXPECT_GT(signed_volume(bowl), 0.0);
+}
+
+TEST(Winding, AnOpenSheetKeepsItsMajoritysWinding) {
+    // A flat disc facing +z: no volume to tell outward by, so the winding most of its area has decides.
+    for (double fraction : {0.2, 0.8}) {
+        Mesh disc = test::make_disc(48, 12);
+        const size_t reversed = reverse_some(disc, fraction, 3);
+        const WindingRepair repair = orient_consistently(disc);
+        size_t up = 0;
+        for (size_t t = 0; t < disc.triangle_count(); ++t) up += face_normal(disc, t).z > 0.0;
+        std::printf("disc, %.0f%% reversed: %zu of %zu face +z after the repair\n", 100 * fraction, up, disc.triangle_count());
+        EXPECT_EQ(repair.parts_turned_outward, 0u);
+        if (fraction < 0.5) {
+            EXPECT_EQ(up, disc.triangle_count());
+            EXPECT_EQ(repair.triangles_turned, reversed);
+        } else {
+            EXPECT_EQ(up, 0u);
+            EXPECT_EQ(repair.triangles_turned, disc.triangle_count() - reversed);
+        }
+    }
+}
+
+TEST(Winding, WhatNoWindingCanFixIsCountedAndLeft) {
+    // A Möbius strip: 2 * n triangles around a half-twisted band. One edge must stay in conflict.
+    Mesh strip;
+    const int n = 24;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n, half = a / 2.0;
+        const glm::dvec3 centre(std::cos(a), std::sin(a), 0.0);
+        const glm::dvec3 across = 0.3 * (std::cos(half) * glm::dvec3(std::cos(a), std::sin(a), 0.0) +
+                                         std::sin(half) * glm::dvec3(0.0, 0.0, 1.0));
+        strip.positions.push_back(glm::vec3(centre - across));
+        strip.positions.push_back(glm::vec3(centre + across));
+    }
+    for (int i = 0; i < n; ++i) {
+        // The last quad joins the band's end to its start with the sides exchanged: the half twist.
+        const uint32_t a = 2 * i, b = 2 * i + 1;
+        const uint32_t c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+        strip.indices.insert(strip.indices.end(), {a, c, b, b, c, d});
+    }
+    compute_vertex_normals(strip);
+    const WindingRepair repair = orient_consistently(strip);
+    EXPECT_EQ(repair.parts, 1u);
+    EXPECT_EQ(repair.conflicting_edges, 1u);
+
+    // A fin: a third triangle on one edge of a box makes that edge non-manifold; the box is still
+    // repaired through its other edges, and the fin (joined only there) is a part of its own.
+    Mesh box = test::make_box(glm::vec3(1.0f));
+    const uint32_t tip = uint32_t(box.positions.size());
+    box.positions.push_back(glm::vec3(1.5f, 1.5f, 0.0f));
+    box.normals.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+    box.indices.insert(box.indices.end(), {box.indices[0], box.indices[1], tip});
+    std::swap(box.indices[3 * 5 + 1], box.indices[3 * 5 + 2]);
+    const WindingRepair boxed = orient_consistently(box);
+    EXPECT_EQ(boxed.parts, 2u);
+    EXPECT_EQ(boxed.triangles_turned, 1u);
+    EXPECT_EQ(facing_inward(box, glm::dvec3(0.0), 0, 12), 0u);
+}
+
+TEST(Winding, LoadingRepairsTheWindingAndTheNormalsFollow) {
+    const auto dir = test::temp_dir("winding");
+    Mesh sphere = make_icosphere(3);
+    reverse_some(sphere, 0.3, 5);
+
+    // Without normals in the file, the computed ones follow the repaired winding: all outward. (From the
+    // mixed winding they cancel, and many point inward.)
+    const std::string computed_path = (dir / "mixed.obj").string();
+    write_file(computed_path, test::obj_text(sphere));
+    const Mesh computed = load_mesh(computed_path);
+    EXPECT_GT(computed.winding.triangles_turned, 0u);
+    EXPECT_EQ(facing_inward(computed, glm::dvec3(0.0)), 0u);
+    size_t inward_normals = 0;
+    for (size_t v = 0; v < computed.vertex_count(); ++v)
+        inward_normals += glm::dot(computed.normals[v], computed.positions[v]) <= 0.5f;
+    EXPECT_EQ(inward_normals, 0u);
+
+    // A file whose whole sphere is inside out, normals included (faces as v//vn so that they are used):
+    // winding and normals turn outward.
+    Mesh inside_out = make_icosphere(3);
+    std::string text;
+    for (const glm::vec3& p : inside_out.positions) {
+        const glm::vec3 n = -glm::normalize(p);
+        text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+        text += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+    }
+    for (size_t t = 0; t < inside_out.triangle_count(); ++t) {
+        text += "f";
+        for (int k : {0, 2, 1}) {
+            const std::string i = std::to_string(inside_out.indices[3 * t + k] + 1);
+            text += " " + i + "//" + i;
+        }
+        text += "\n";
+    }
+    const std::string normals_path = (dir / "inside_out_with_normals.obj").string();
+    write_file(normals_path, text);
+    const Mesh turned = load_mesh(normals_path);
+    EXPECT_EQ(turned.winding.parts_turned_outward, 1u);
+    EXPECT_EQ(turned.winding.normals_turned, turned.vertex_count());
+    EXPECT_EQ(facing_inward(turned, glm::dvec3(0.0)), 0u);
+    for (size_t v = 0; v < turned.vertex_count(); ++v)
+        ASSERT_GT(glm::dot(turned.normals[v], turned.positions[v]), 0.9f) << "vertex " << v;
+}
+
+// The shared models are consistent already (the horse inside out as a whole): the repair turns nothing
+// else, so their stipples and the figures measured on them stay.
+TEST(Winding, SharedModelsKeepTheirWinding) {
+    struct Expected {
+        const char* name;
+        size_t turned;
+    };
+    for (const Expected& e : {Expected{"stanford-bunny.obj", 0}, Expected{"ogre.obj", 0}, Expected{"igea.ply", 0},
+                              Expected{"spot.obj", 0}, Expected{"horse.ply", 96'966}}) {
+        const std::string path = test::shared_model(e.name);
+        if (path.empty()) {
+            std::printf("skipped %s: not in the shared models folder\n", e.name);
+            continue;
+        }
+        const Mesh mesh = load_mesh(path);
+        std::printf("%s: %zu part(s), %zu turned, %zu outward, %zu conflicting edges\n", e.name, mesh.winding.parts,
+                    mesh.winding.triangles_turned, mesh.winding.parts_turned_outward, mesh.winding.conflicting_edges);
+        EXPECT_EQ(mesh.winding.triangles_turned, e.turned) << e.name;
+        EXPECT_EQ(mesh.winding.wound_against, 0u) << e.name;
+    }
+}
+
+}  // namespace
+}  // namespace stipple
