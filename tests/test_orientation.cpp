@@ -238,6 +238,41 @@ TEST(Winding, LoadingRepairsTheWindingAndTheNormalsFollow) {
         ASSERT_GT(glm::dot(turned.normals[v], turned.positions[v]), 0.9f) << "vertex " << v;
 }
 
+TEST(RepeatedFaces, ExactRepeatsAreDroppedAndReversedCopiesKept) {
+    Mesh sphere = unwelded(make_icosphere(2));  // repeats are found through welded corners
+    const size_t triangles = sphere.triangle_count();
+    Mesh doubled = sphere;
+    // Every triangle again, rotated (the same face, starting at another corner); then every third one
+    // reversed, which is kept.
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t base = uint32_t(doubled.positions.size());
+        for (int k : {1, 2, 0}) {
+            doubled.positions.push_back(sphere.positions[sphere.indices[3 * t + k]]);
+            doubled.normals.push_back(sphere.normals[sphere.indices[3 * t + k]]);
+        }
+        doubled.indices.insert(doubled.indices.end(), {base, base + 1, base + 2});
+    }
+    size_t reversed = 0;
+    for (size_t t = 0; t < triangles; t += 3, ++reversed)
+        doubled.indices.insert(doubled.indices.end(), {sphere.indices[3 * t], sphere.indices[3 * t + 2], sphere.indices[3 * t + 1]});
+    const std::vector<uint32_t> first_copy(doubled.indices.begin(), doubled.indices.begin() + 3 * triangles);
+    EXPECT_EQ(drop_duplicate_triangles(doubled), triangles);
+    ASSERT_EQ(doubled.triangle_count(), triangles + reversed);
+    EXPECT_TRUE(std::equal(first_copy.begin(), first_copy.end(), doubled.indices.begin())) << "the first of each is kept, in order";
+    EXPECT_EQ(drop_duplicate_triangles(doubled), 0u);
+
+    // Through loading: a surface exported twice loads as once, with its triangles joined into one part.
+    Mesh twice = make_icosphere(3);
+    const size_t once = twice.triangle_count();
+    twice.indices.insert(twice.indices.end(), twice.indices.begin(), twice.indices.end());
+    const auto dir = test::temp_dir("repeated_faces");
+    write_file((dir / "twice.obj").string(), test::obj_text(twice));
+    const Mesh loaded = load_mesh((dir / "twice.obj").string());
+    EXPECT_EQ(loaded.triangle_count(), once);
+    EXPECT_EQ(loaded.duplicates_dropped, once);
+    EXPECT_EQ(loaded.winding.parts, 1u);
+}
+
 // The shared models are consistent already (the horse inside out as a whole): the repair turns nothing
 // else, so their stipples and the figures measured on them stay.
 TEST(Winding, SharedModelsKeepTheirWinding) {

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "mesh/loader_util.hpp"
+#include "mesh/mesh_ops.hpp"
 #include "mesh/orientation.hpp"
 
 namespace stipple {
@@ -54,7 +55,8 @@ Mesh parse(Format format, const std::string& name, std::string_view bytes, const
     fail_file(name, "unknown model format");
 }
 
-// What every format shares once its parser is done: normals, validation, one winding per part.
+// What every format shares once its parser is done: normals, validation, repeated faces dropped, one
+// winding per part.
 Mesh finish(Mesh mesh, const std::string& name) {
     mesh.source = name;
     if (mesh.indices.empty()) fail_file(name, "the model has no triangles");
@@ -71,6 +73,7 @@ Mesh finish(Mesh mesh, const std::string& name) {
     if (!has_area)
         fail_file(name, "no triangle with non-zero area (all " + std::to_string(mesh.triangle_count()) +
                             " triangles are degenerate)");
+    mesh.duplicates_dropped = drop_duplicate_triangles(mesh);
     mesh.winding = orient_consistently(mesh);
     // Computed normals followed the file's winding: where it was mixed they cancelled out.
     if (!file_normals && mesh.winding.triangles_turned > 0) compute_vertex_normals(mesh);

@@ -15,7 +15,7 @@ struct LoadOptions {
 };
 
 // Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
-// (validate_mesh), winds the triangles of each part alike and inside-out parts outward
+// (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part alike and inside-out parts outward
 // (orient_consistently, Mesh::winding says what changed), computes normals where the file has none and
 // turns the file's normals to agree with their faces. The file's triangle and vertex order is kept;
 // renderers reorder (optimize_draw_order).

@@ -39,6 +39,7 @@ struct Mesh {
     std::vector<glm::vec3> normals;    // one per vertex, unit length (computed when the file has none)
     std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
     WindingRepair winding;             // set by load_mesh
+    size_t duplicates_dropped = 0;     // set by load_mesh (drop_duplicate_triangles)
 
     size_t triangle_count() const { return indices.size() / 3; }
     size_t vertex_count() const { return positions.size(); }

@@ -60,6 +60,53 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
     return representative;
 }
 
+size_t drop_duplicate_triangles(Mesh& mesh) {
+    const std::vector<uint32_t> corner = weld_by_position(mesh.positions);
+    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
+    // Each triangle rotated to start at its smallest corner, bucketed by that corner (a counting sort), so
+    // that a repeat lies in its first's bucket, after it.
+    struct Rest {
+        uint32_t second, third, triangle;
+    };
+    auto rotated = [&](size_t t, uint32_t& smallest, Rest& rest) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        if (i[0] >= n || i[1] >= n || i[2] >= n) return false;
+        const uint32_t a = corner[i[0]], b = corner[i[1]], c = corner[i[2]];
+        if (a <= b && a <= c) smallest = a, rest = {b, c, uint32_t(t)};
+        else if (b <= c) smallest = b, rest = {c, a, uint32_t(t)};
+        else smallest = c, rest = {a, b, uint32_t(t)};
+        return true;
+    };
+    std::vector<uint32_t> first(n + 1, 0);
+    uint32_t smallest;
+    Rest rest;
+    for (size_t t = 0; t < triangles; ++t)
+        if (rotated(t, smallest, rest)) ++first[smallest + 1];
+    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    std::vector<Rest> buckets(first[n]);
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (size_t t = 0; t < triangles; ++t)
+        if (rotated(t, smallest, rest)) buckets[fill[smallest]++] = rest;
+    std::vector<uint8_t> repeat(triangles, 0);
+    size_t dropped = 0;
+    for (size_t v = 0; v < n; ++v)
+        for (uint32_t i = first[v]; i < first[v + 1]; ++i)
+            for (uint32_t j = first[v]; j < i; ++j)
+                if (buckets[j].second == buckets[i].second && buckets[j].third == buckets[i].third) {
+                    repeat[buckets[i].triangle] = 1, ++dropped;
+                    break;
+                }
+    if (dropped == 0) return 0;
+    size_t kept = 0;
+    for (size_t t = 0; t < triangles; ++t) {
+        if (repeat[t]) continue;
+        for (int k = 0; k < 3; ++k) mesh.indices[3 * kept + k] = mesh.indices[3 * t + k];
+        ++kept;
+    }
+    mesh.indices.resize(3 * kept);
+    return dropped;
+}
+
 Mesh subdivide_midpoints(const Mesh& mesh) {
     Mesh out;
     out.source = mesh.source;

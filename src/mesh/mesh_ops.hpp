@@ -21,6 +21,13 @@ Mesh weld_positions(const Mesh& mesh);
 // are built on the representatives, which lie where the split corners do.
 std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 
+// Drops every triangle that repeats an earlier one: the same corners (welded by position) in the same
+// cyclic order. Broken exports double whole surfaces, and each copy would get its own stipples at the same
+// depth: twice the tone. A copy wound the other way is kept (a sheet made two-sided by a reversed copy
+// shows its front from either side). Keeps the first of each and the order of the rest; returns how many
+// were dropped. Indices beyond the positions are left for validate_mesh to report.
+size_t drop_duplicate_triangles(Mesh& mesh);
+
 // Each triangle into four by its edge midpoints; a midpoint shared by two triangles is one vertex.
 // The mesh should be welded first (otherwise seams get duplicate midpoints). Normals are recomputed.
 Mesh subdivide_midpoints(const Mesh& mesh);
