@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "mesh/orientation.hpp"
 #include "mesh/primitives.hpp"
 
 namespace stipple {
@@ -121,6 +122,31 @@ TEST(Primitives, Grid) {
         EXPECT_NEAR(glm::length(n) / 2.0, 9.0 / (2 * 49), 1e-5);
     }
     EXPECT_EQ(make_grid(1).triangle_count(), 2u);
+}
+
+TEST(Primitives, CadCylinder) {
+    Mesh mesh = make_cad_cylinder(64, 1.0f, 4.0f);
+    ASSERT_NO_THROW(validate_mesh(mesh));
+    EXPECT_EQ(mesh.triangle_count(), 4u * 64);
+    // Closed once its split rims are welded, wound outward: the repair has nothing to turn.
+    EXPECT_NEAR(signed_volume(mesh), 4.0 * 64 / 2 * std::sin(2 * std::numbers::pi / 64), 1e-3);
+    const WindingRepair repair = orient_consistently(mesh);
+    EXPECT_EQ(repair.parts, 1u);
+    EXPECT_EQ(repair.triangles_turned, 0u);
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const glm::dvec3 n = face_normal(mesh, t);
+        const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
+            c(mesh.positions[mesh.indices[3 * t + 2]]);
+        const glm::dvec3 centroid = (a + b + c) / 3.0;
+        // Outward: radially on the side, along the axis on the caps.
+        const glm::dvec3 outward = std::abs(centroid.y) > 1.999 ? glm::dvec3(0.0, centroid.y, 0.0)
+                                                                 : glm::dvec3(centroid.x, 0.0, centroid.z);
+        EXPECT_GT(glm::dot(n, outward), 0.0) << "triangle " << t;
+    }
+    // The side's slivers: 4 long, 2 sin(pi / 64) ~ 0.098 wide.
+    EXPECT_NEAR(glm::length(mesh.positions[1] - mesh.positions[0]) / glm::length(mesh.positions[2] - mesh.positions[0]),
+                4.0 / (2 * std::sin(std::numbers::pi / 64)), 1e-2);
+    EXPECT_THROW(make_cad_cylinder(2), Error);
 }
 
 TEST(Primitives, BadArgumentsThrow) {

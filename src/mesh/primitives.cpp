@@ -180,6 +180,48 @@ Mesh make_mixed_sphere(int coarse_stacks, int fine_stacks, float radius, glm::ve
     return mesh;
 }
 
+Mesh make_cad_cylinder(int segments, float radius, float length) {
+    if (segments < 3 || segments > 100000) fail("make_cad_cylinder: segments must be in [3, 100000], got " + std::to_string(segments));
+    if (!(radius > 0.0f) || !(length > 0.0f) || !std::isfinite(radius) || !std::isfinite(length))
+        fail("make_cad_cylinder: radius and length must be positive finite numbers");
+    Mesh mesh;
+    mesh.source = "cad_cylinder";
+    const uint32_t n = uint32_t(segments);
+    const float y[2] = {-0.5f * length, 0.5f * length};
+    auto rim = [&](uint32_t j) {
+        const double phi = 2.0 * kPi * (j % n) / n;
+        return glm::vec3(float(std::cos(phi)), 0.0f, float(std::sin(phi)));
+    };
+    // Side: the rims' corners with radial normals, 2 per segment (bottom, top).
+    for (uint32_t j = 0; j < n; ++j)
+        for (int end = 0; end < 2; ++end) {
+            mesh.positions.push_back(radius * rim(j) + glm::vec3(0.0f, y[end], 0.0f));
+            mesh.normals.push_back(rim(j));
+        }
+    for (uint32_t j = 0; j < n; ++j) {
+        const uint32_t a = 2 * j, b = 2 * j + 1, c = 2 * ((j + 1) % n), d = c + 1;
+        // Counter-clockwise seen from outside: around +Y the angle grows from +X towards +Z.
+        mesh.indices.insert(mesh.indices.end(), {a, b, c, c, b, d});
+    }
+    // Caps: a centre and the rim again, with axial normals.
+    for (int end = 0; end < 2; ++end) {
+        const glm::vec3 normal(0.0f, end ? 1.0f : -1.0f, 0.0f);
+        const uint32_t centre = uint32_t(mesh.positions.size());
+        mesh.positions.push_back(glm::vec3(0.0f, y[end], 0.0f));
+        mesh.normals.push_back(normal);
+        for (uint32_t j = 0; j < n; ++j) {
+            mesh.positions.push_back(radius * rim(j) + glm::vec3(0.0f, y[end], 0.0f));
+            mesh.normals.push_back(normal);
+        }
+        for (uint32_t j = 0; j < n; ++j) {
+            const uint32_t p = centre + 1 + j, q = centre + 1 + (j + 1) % n;
+            if (end) mesh.indices.insert(mesh.indices.end(), {centre, q, p});
+            else mesh.indices.insert(mesh.indices.end(), {centre, p, q});
+        }
+    }
+    return mesh;
+}
+
 Mesh make_grid(int n, float size) {
     if (n < 1 || n > 8192) fail("make_grid: n must be in [1, 8192], got " + std::to_string(n));
     if (!(size > 0.0f) || !std::isfinite(size)) fail("make_grid: size must be a positive finite number");

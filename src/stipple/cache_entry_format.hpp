@@ -23,11 +23,12 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // selection values ranked by the polygons' first stipples; 10: selection values uniform per class of
 // candidate count and area (the stipples unchanged); 11: the relaxation's grid at one bucket a point
 // instead of two (its Gauss-Seidel chunks, fixed ranges of buckets, hold other stipples); 12: the
-// relaxation's force with a single falloff, 5 iterations by default instead of 6
-inline constexpr uint32_t kVersion = 12;
+// relaxation's force with a single falloff, 5 iterations by default instead of 6; 13: the progressive
+// order's search reaching 24 spacings instead of 12 (the prefixes down to 1/256 spread)
+inline constexpr uint32_t kVersion = 13;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0xf1299b04d79ef98e;
+inline constexpr uint64_t kGenerationFingerprint = 0xd51d9f438516ac46;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

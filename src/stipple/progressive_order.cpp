@@ -43,7 +43,13 @@ namespace stipple {
 namespace {
 
 constexpr double kSearch = 1.5;
-constexpr double kSearchCap = 12.0;
+// 24 spacings: a search capped at s reaches the placed set's spacing down to tau = (kSearch / s)^2, 1/256
+// here. Large polygons at 1/16 of the frame draw their first 1/400 to 1/1000 (a CAD cylinder's slivers, a
+// cube's faces): with 12 (until 2026-12-02) the prefixes below 1/64 were placed blind beyond 12 spacings,
+// delta-bar 0.61 at 1/512 on make_cad_cylinder(64) (0.73 now), and its tone fell 9-11% at 1/16 of the size
+// (1.03-1.04 max/min now; 16: 1.07-1.08, 20: 1.03-1.04, 32: 1.05). Generation on the 12-triangle cube is
+// about 10% slower, the 100k-triangle sphere's unchanged.
+constexpr double kSearchCap = 24.0;
 constexpr int kSlabs = 24;          // target number of slabs (fewer when they must be wider)
 constexpr double kMinSlabSearches = 4.0;  // see make_units
 // 64 gave a 12-triangle cube's prefixes delta-bar 0.78 instead of 0.74-0.77 (f = 1/4 to 1/256),
