@@ -22,17 +22,8 @@
 namespace stipple {
 namespace {
 
-glm::dvec3 face_normal(const Mesh& mesh, size_t t) {
-    const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
-        c(mesh.positions[mesh.indices[3 * t + 2]]);
-    return glm::cross(b - a, c - a);
-}
-
-glm::dvec3 centroid(const Mesh& mesh, size_t t) {
-    return (glm::dvec3(mesh.positions[mesh.indices[3 * t]]) + glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) +
-            glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]])) /
-           3.0;
-}
+using test::face_centroid;
+using test::face_normal;
 
 void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -40,7 +31,7 @@ void write_file(const std::string& path, const std::string& text) { std::ofstrea
 size_t facing_inward(const Mesh& mesh, glm::dvec3 centre, size_t first = 0, size_t last = SIZE_MAX) {
     size_t inward = 0;
     for (size_t t = first; t < std::min(last, mesh.triangle_count()); ++t)
-        inward += glm::dot(face_normal(mesh, t), centroid(mesh, t) - centre) < 0.0;
+        inward += glm::dot(face_normal(mesh, t), face_centroid(mesh, t) - centre) < 0.0;
     return inward;
 }
 

@@ -11,20 +11,13 @@
 #include "core/error.hpp"
 #include "mesh/orientation.hpp"
 #include "mesh/primitives.hpp"
+#include "support/test_shapes.hpp"
 
 namespace stipple {
 namespace {
 
-glm::dvec3 face_normal(const Mesh& mesh, size_t t) {
-    const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
-        c(mesh.positions[mesh.indices[3 * t + 2]]);
-    return glm::cross(b - a, c - a);
-}
-
-glm::dvec3 face_centroid(const Mesh& mesh, size_t t) {
-    return (glm::dvec3(mesh.positions[mesh.indices[3 * t]]) + glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) +
-            glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]])) / 3.0;
-}
+using test::face_centroid;
+using test::face_normal;
 
 // Every vertex at `radius` from `center`, unit normals pointing along the radius, every triangle
 // non-degenerate and counter-clockwise seen from outside.

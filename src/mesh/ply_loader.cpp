@@ -10,12 +10,16 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <span>
 #include <string_view>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/loader_util.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace stipple {
 
@@ -329,6 +333,9 @@ struct Target {
     const std::string& path;
     uint64_t vertex_count;  // from the header, so faces can be checked even before the vertices
     Mesh& mesh;
+    // Faces of more than 3 corners: where their fans start in mesh.indices, and their corner counts. They are
+    // cut properly once the vertices are read (a PLY may list its faces first): triangulate_polygons.
+    std::vector<std::pair<size_t, uint32_t>> polygons = {};
 };
 
 uint32_t checked_index(const Target& t, int64_t index, const char* what, uint64_t number) {
@@ -366,7 +373,8 @@ void read_vertices(Reader& r, const Element& e, Target& t, uint64_t& done) {
     }
 }
 
-// Faces: polygons are fan-triangulated around their first corner.
+// Faces: polygons are fan-triangulated around their first corner here, and the concave ones cut again by
+// triangulate_polygons once every vertex is read.
 template <class Reader>
 void read_faces(Reader& r, const Element& e, const Property& list, Target& t, uint64_t& done) {
     std::vector<uint32_t> corners;
@@ -386,6 +394,7 @@ void read_faces(Reader& r, const Element& e, const Property& list, Target& t, ui
             r.expect_items(static_cast<uint64_t>(n), p.type);
             corners.clear();
             for (int64_t i = 0; i < n; ++i) corners.push_back(checked_index(t, r.integer(p.type), "face", done));
+            if (corners.size() > 3) t.polygons.emplace_back(t.mesh.indices.size(), uint32_t(corners.size()));
             for (size_t i = 1; i + 1 < corners.size(); ++i)
                 t.mesh.indices.insert(t.mesh.indices.end(), {corners[0], corners[i], corners[i + 1]});
         }
@@ -465,6 +474,17 @@ void read_body(Reader& r, const Header& h, Target& t) {
     }
 }
 
+// Each polygon's fan, read back into its corners (c0 c1 c2, c0 c2 c3, ...), triangulated in place.
+void triangulate_polygons(Target& t) {
+    std::vector<uint32_t> corners;
+    for (const auto& [offset, count] : t.polygons) {
+        uint32_t* fan = t.mesh.indices.data() + offset;
+        corners.assign({fan[0], fan[1]});
+        for (uint32_t i = 0; i + 2 < count; ++i) corners.push_back(fan[3 * i + 2]);
+        triangulate_polygon(t.mesh.positions, corners, std::span<uint32_t>(fan, 3 * (size_t(count) - 2)));
+    }
+}
+
 }  // namespace
 
 Mesh parse_ply(const std::string& path, std::string_view file, const LoadOptions& options) {
@@ -493,6 +513,7 @@ Mesh parse_ply(const std::string& path, std::string_view file, const LoadOptions
         BinaryReader<true> r(path, begin, end);
         read_body(r, h, target);
     }
+    triangulate_polygons(target);
     return mesh;
 }
 

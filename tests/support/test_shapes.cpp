@@ -76,6 +76,18 @@ Mesh make_box(glm::vec3 size) {
     return mesh;
 }
 
+glm::dvec3 face_normal(const Mesh& mesh, size_t t) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]), b(mesh.positions[mesh.indices[3 * t + 1]]),
+        c(mesh.positions[mesh.indices[3 * t + 2]]);
+    return glm::cross(b - a, c - a);
+}
+
+glm::dvec3 face_centroid(const Mesh& mesh, size_t t) {
+    return (glm::dvec3(mesh.positions[mesh.indices[3 * t]]) + glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) +
+            glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]])) /
+           3.0;
+}
+
 std::string obj_text(const Mesh& mesh) {
     std::string text;
     for (const glm::vec3& p : mesh.positions)

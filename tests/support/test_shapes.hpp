@@ -20,6 +20,11 @@ Mesh make_disc(int segments, int rings);
 // 12 edges joins two faces at 90 degrees and each face's diagonal joins two triangles of one plane.
 Mesh make_box(glm::vec3 size);
 
+// Triangle t's normal scaled by twice its area (counter-clockwise corners give the side they face), and
+// its centroid, in double.
+glm::dvec3 face_normal(const Mesh& mesh, size_t t);
+glm::dvec3 face_centroid(const Mesh& mesh, size_t t);
+
 // The mesh as a Wavefront OBJ file's text (positions and faces).
 std::string obj_text(const Mesh& mesh);
 
