@@ -20,7 +20,8 @@ namespace stipple {
 namespace {
 
 struct ToneCase {
-    const char* model;  // a file of ../shared/models, "blobby.glb" (the default scene), "mixed_sphere" or "cad_cylinder"
+    // A file of ../shared/models, "blobby.glb" (the default scene), "mixed_sphere" or "cad_cylinder".
+    const char* model;
     uint32_t width, height;
     // The largest max/min allowed with the enhancement on: the issue's 1.05, or (known gaps, issue 18)
     // the figure measured on this branch with a small margin, so that a regression still fails; 0 where
@@ -55,7 +56,8 @@ Subject load_subject(const std::string& name, const GenerationParams& generation
         // ones (about 700 times smaller), joined by slivers: a CAD part's or a partly simplified scan's
         // mix. cad_cylinder: large slivers only, 40 times longer than wide, which stay in the large regime
         // at 1/16 of the size and draw there the first 1/400 to 1/1000 of their stipples.
-        s.mesh = std::make_shared<const Mesh>(name == "mixed_sphere" ? make_mixed_sphere(3, 100) : make_cad_cylinder(64));
+        s.mesh = std::make_shared<const Mesh>(name == "mixed_sphere" ? make_mixed_sphere(3, 100)
+                                                                      : make_cad_cylinder(64));
         s.stipples = make_stipples(*s.mesh, generation);
         s.bounds = compute_bounding_sphere(*s.mesh);
         return s;
@@ -157,7 +159,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ToneCase{"AnimatedMorphCube.gltf", 1280, 1024},
                       // The ogre's far figure is 3-7% darker: 1.036 for this seed (cache format 13; 1.040 for
                       // format 12, 1.054 before), seeds 2 and 3 give 1.074 and 1.046 (format 12: 1.069 and
-                      // 1.042; issue 18: 1.077 and 1.062 before; the mean of seeds 1-3 1.033 / 1.046; dots spread more evenly at middle distances since polygons
+                      // 1.042; issue 18: 1.077 and 1.062 before; the mean of seeds 1-3 1.033 / 1.046; dots
+                      // spread more evenly at middle distances since polygons
                       // are selected by their first stipples, so they overlap less and the far ink gains). Per
                       // regime it draws what it owes (`stipple tone --regimes`: drawn/owed 0.99-1.00);
                       // the extra ink follows the depth pass's slope-scaled polygon offset, which lets

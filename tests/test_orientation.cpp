@@ -66,8 +66,9 @@ TEST(Winding, MixedTrianglesOfAClosedMeshAgreeAndFaceOutward) {
         const size_t reversed = reverse_some(sphere, 0.3, 7);
         ASSERT_GT(reversed, sphere.triangle_count() / 4);
         const WindingRepair repair = orient_consistently(sphere);
-        std::printf("%s sphere: %zu of %zu triangles reversed, %zu turned in %zu part(s)\n", soup ? "unwelded" : "welded",
-                    reversed, sphere.triangle_count(), repair.triangles_turned, repair.parts);
+        std::printf("%s sphere: %zu of %zu triangles reversed, %zu turned in %zu part(s)\n",
+                    soup ? "unwelded" : "welded", reversed, sphere.triangle_count(), repair.triangles_turned,
+                    repair.parts);
         EXPECT_EQ(repair.parts, 1u);
         EXPECT_EQ(repair.triangles_turned, reversed);
         EXPECT_EQ(repair.wound_against, reversed);
@@ -136,7 +137,8 @@ TEST(Winding, AnOpenSheetKeepsItsMajoritysWinding) {
         const WindingRepair repair = orient_consistently(disc);
         size_t up = 0;
         for (size_t t = 0; t < disc.triangle_count(); ++t) up += face_normal(disc, t).z > 0.0;
-        std::printf("disc, %.0f%% reversed: %zu of %zu face +z after the repair\n", 100 * fraction, up, disc.triangle_count());
+        std::printf("disc, %.0f%% reversed: %zu of %zu face +z after the repair\n", 100 * fraction, up,
+                    disc.triangle_count());
         EXPECT_EQ(repair.parts_turned_outward, 0u);
         if (fraction < 0.5) {
             EXPECT_EQ(up, disc.triangle_count());
@@ -245,11 +247,13 @@ TEST(RepeatedFaces, ExactRepeatsAreDroppedAndReversedCopiesKept) {
     }
     size_t reversed = 0;
     for (size_t t = 0; t < triangles; t += 3, ++reversed)
-        doubled.indices.insert(doubled.indices.end(), {sphere.indices[3 * t], sphere.indices[3 * t + 2], sphere.indices[3 * t + 1]});
+        doubled.indices.insert(doubled.indices.end(),
+                               {sphere.indices[3 * t], sphere.indices[3 * t + 2], sphere.indices[3 * t + 1]});
     const std::vector<uint32_t> first_copy(doubled.indices.begin(), doubled.indices.begin() + 3 * triangles);
     EXPECT_EQ(drop_duplicate_triangles(doubled), triangles);
     ASSERT_EQ(doubled.triangle_count(), triangles + reversed);
-    EXPECT_TRUE(std::equal(first_copy.begin(), first_copy.end(), doubled.indices.begin())) << "the first of each is kept, in order";
+    EXPECT_TRUE(std::equal(first_copy.begin(), first_copy.end(), doubled.indices.begin()))
+        << "the first of each is kept, in order";
     EXPECT_EQ(drop_duplicate_triangles(doubled), 0u);
 
     // Through loading: a surface exported twice loads as once, with its triangles joined into one part.

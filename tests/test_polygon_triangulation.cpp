@@ -143,13 +143,15 @@ TEST(PolygonTriangulation, PlyFacesAreCutOnceTheirVerticesAreKnown) {
     const std::string face_header = "element face 2\nproperty list uchar uint vertex_index\n";
     for (bool faces_first : {false, true}) {
         const std::string path = (dir / (faces_first ? "faces_first.ply" : "u.ply")).string();
-        std::ofstream(path) << "ply\nformat ascii 1.0\n" << (faces_first ? face_header + vertex_header : vertex_header + face_header)
-                            << "end_header\n" << (faces_first ? face + vertices : vertices + face);
+        const std::string headers = faces_first ? face_header + vertex_header : vertex_header + face_header;
+        std::ofstream(path) << "ply\nformat ascii 1.0\n" << headers << "end_header\n"
+                            << (faces_first ? face + vertices : vertices + face);
         const Mesh mesh = load_mesh(path);
         ASSERT_EQ(mesh.triangle_count(), 6u + 2u);
         double u_area = 0.0;
         for (size_t t = 0; t < 6; ++t) u_area += triangle_area(mesh, t);
-        std::printf("%s: the U's triangles cover %.3f (a fan: 7)\n", faces_first ? "faces first" : "vertices first", u_area);
+        std::printf("%s: the U's triangles cover %.3f (a fan: 7)\n", faces_first ? "faces first" : "vertices first",
+                    u_area);
         EXPECT_NEAR(u_area, 5.0, 1e-6);
         // The convex quad after it keeps its fan.
         EXPECT_EQ(std::vector<uint32_t>(mesh.indices.begin() + 18, mesh.indices.end()),

@@ -119,8 +119,10 @@ AnimatedModel load_animated_model(const std::string& path, const LoadOptions& op
             // the vertex's morph normal deltas turn with it.
             if (glm::dot(glm::dvec3(bind_normals[v]), glm::dvec3(streams.file_normals[v])) < 0.0) {
                 const MorphRef& ref = streams.morph_refs[v];
-                for (uint32_t k = 0; k < ref.count; ++k)
-                    streams.morph_deltas[ref.first_delta + k].normal = -streams.morph_deltas[ref.first_delta + k].normal;
+                for (uint32_t k = 0; k < ref.count; ++k) {
+                    glm::vec3& delta = streams.morph_deltas[ref.first_delta + k].normal;
+                    delta = -delta;
+                }
             }
         }
     }

@@ -100,15 +100,17 @@ int run_info(const std::vector<std::string>& argv) {
             "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
-            "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, \"parts_turned_outward\": %zu, "
-            "\"normals_turned\": %zu, \"conflicting_edges\": %zu}, \"duplicates_dropped\": %zu, %s}\n",
+            "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, "
+            "\"parts_turned_outward\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
+            "\"duplicates_dropped\": %zu, %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
             object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
             stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
             stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
-            mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against, mesh.winding.parts_turned_outward,
-            mesh.winding.normals_turned, mesh.winding.conflicting_edges, mesh.duplicates_dropped,
+            mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against,
+            mesh.winding.parts_turned_outward, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
+            mesh.duplicates_dropped,
             animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());

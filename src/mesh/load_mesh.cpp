@@ -78,8 +78,10 @@ Mesh finish(Mesh mesh, const std::string& name) {
                             " triangles are degenerate)");
     mesh.duplicates_dropped = drop_duplicate_triangles(mesh);
     mesh.winding = orient_consistently(mesh);
-    // Computed normals followed the file's winding: where it was mixed they cancelled out.
-    if (!file_normals && mesh.winding.triangles_turned > 0) compute_vertex_normals(mesh);
+    // Computed normals followed the file's winding (where it was mixed they cancelled out) and counted
+    // repeated faces again.
+    if (!file_normals && (mesh.winding.triangles_turned > 0 || mesh.duplicates_dropped > 0))
+        compute_vertex_normals(mesh);
     if (file_normals) mesh.winding.normals_turned = turn_normals_to_faces(mesh);
     return mesh;
 }

@@ -15,10 +15,10 @@ struct LoadOptions {
 };
 
 // Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
-// (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part alike and inside-out parts outward
-// (orient_consistently, Mesh::winding says what changed), computes normals where the file has none and
-// turns the file's normals to agree with their faces. The file's triangle and vertex order is kept;
-// renderers reorder (optimize_draw_order).
+// (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part
+// alike and inside-out parts outward (orient_consistently; Mesh::winding says what changed), computes
+// normals where the file has none and turns the file's normals to agree with their faces. The file's
+// triangle and vertex order is kept; renderers reorder (optimize_draw_order).
 // Every problem throws stipple::Error with one line "<path>: <problem>".
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 

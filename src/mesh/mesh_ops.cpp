@@ -47,7 +47,8 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
     // meshoptimizer's hash of the bytes (an unordered_map took a fifth of the winding repair's time on an
     // 871k-triangle scan), numbering the positions in order of first use.
     std::vector<glm::vec3> keys(positions.size());
-    for (size_t v = 0; v < positions.size(); ++v) keys[v] = positions[v] + glm::vec3(0.0f);  // -0 and +0 are one position
+    // -0 and +0 are one position.
+    for (size_t v = 0; v < positions.size(); ++v) keys[v] = positions[v] + glm::vec3(0.0f);
     std::vector<uint32_t> id(positions.size());
     const size_t unique =
         meshopt_generateVertexRemap(id.data(), nullptr, keys.size(), keys.data(), keys.size(), sizeof(glm::vec3));

@@ -37,7 +37,8 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
         normal += glm::dvec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
     }
     const glm::dvec3 magnitude = glm::abs(normal);
-    const int axis = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
+    const int axis =
+        magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
     if (!(magnitude[axis] > 0.0) || !std::isfinite(magnitude[axis])) {
         fan();  // no area, or not finite (validate_mesh reports the coordinates)
         return false;

@@ -181,7 +181,8 @@ Mesh make_mixed_sphere(int coarse_stacks, int fine_stacks, float radius, glm::ve
 }
 
 Mesh make_cad_cylinder(int segments, float radius, float length) {
-    if (segments < 3 || segments > 100000) fail("make_cad_cylinder: segments must be in [3, 100000], got " + std::to_string(segments));
+    if (segments < 3 || segments > 100000)
+        fail("make_cad_cylinder: segments must be in [3, 100000], got " + std::to_string(segments));
     if (!(radius > 0.0f) || !(length > 0.0f) || !std::isfinite(radius) || !std::isfinite(length))
         fail("make_cad_cylinder: radius and length must be positive finite numbers");
     Mesh mesh;
