@@ -76,8 +76,9 @@ Mesh finish(Mesh mesh, const std::string& name) {
     if (!has_area)
         fail_file(name, "no triangle with non-zero area (all " + std::to_string(mesh.triangle_count()) +
                             " triangles are degenerate)");
-    mesh.duplicates_dropped = drop_duplicate_triangles(mesh);
-    mesh.winding = orient_consistently(mesh);
+    const std::vector<uint32_t> corners = weld_by_position(mesh.positions);  // dropping faces keeps the vertices
+    mesh.duplicates_dropped = drop_duplicate_triangles(mesh, corners);
+    mesh.winding = orient_consistently(mesh, corners);
     // Computed normals followed the file's winding (where it was mixed they cancelled out) and counted
     // repeated faces again.
     if (!file_normals && (mesh.winding.triangles_turned > 0 || mesh.duplicates_dropped > 0))

@@ -61,8 +61,9 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
     return representative;
 }
 
-size_t drop_duplicate_triangles(Mesh& mesh) {
-    const std::vector<uint32_t> corner = weld_by_position(mesh.positions);
+size_t drop_duplicate_triangles(Mesh& mesh) { return drop_duplicate_triangles(mesh, weld_by_position(mesh.positions)); }
+
+size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
     const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
     // Each triangle rotated to start at its smallest corner, bucketed by that corner (a counting sort), so
     // that a repeat lies in its first's bucket, after it.

@@ -27,6 +27,8 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 // shows its front from either side). Keeps the first of each and the order of the rest; returns how many
 // were dropped. Indices beyond the positions are left for validate_mesh to report.
 size_t drop_duplicate_triangles(Mesh& mesh);
+// The same with the corners already welded (weld_by_position of mesh.positions).
+size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners);
 
 // Each triangle into four by its edge midpoints; a midpoint shared by two triangles is one vertex.
 // The mesh should be welded first (otherwise seams get duplicate midpoints). Normals are recomputed.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -36,7 +37,7 @@ glm::dvec3 corner_position(const Mesh& mesh, size_t t, int k) {
 // Two triangles on one side of their shared edge (a, b), within 10 degrees of each other: faces laid over
 // each other (a duplicate, a polygon drawn twice over) rather than a surface going on across the edge.
 // Which way they should be wound says nothing about the other: the edge is no constraint.
-bool folded_onto_each_other(const Mesh& mesh, const std::vector<uint32_t>& corner, uint32_t a, uint32_t b, uint32_t s,
+bool folded_onto_each_other(const Mesh& mesh, std::span<const uint32_t> corner, uint32_t a, uint32_t b, uint32_t s,
                             uint32_t t) {
     const glm::dvec3 pa(mesh.positions[a]), edge = glm::dvec3(mesh.positions[b]) - pa;
     const double length2 = glm::dot(edge, edge);
@@ -55,8 +56,7 @@ bool folded_onto_each_other(const Mesh& mesh, const std::vector<uint32_t>& corne
     return lengths > 0.0 && glm::dot(u, w) > 0.985 * lengths;  // cos 10 degrees
 }
 
-Adjacency manifold_adjacency(const Mesh& mesh) {
-    const std::vector<uint32_t> corner = weld_by_position(mesh.positions);
+Adjacency manifold_adjacency(const Mesh& mesh, std::span<const uint32_t> corner) {
     const size_t triangles = mesh.triangle_count();
     // Half-edges bucketed by their smaller corner (a counting sort: a comparison sort of the 2.6M half-edges
     // of an 871k-triangle scan took most of the repair's time), then matched within each small bucket.
@@ -119,7 +119,6 @@ Adjacency manifold_adjacency(const Mesh& mesh) {
     return adjacency;
 }
 
-
 }  // namespace
 
 double signed_volume(const Mesh& mesh) {
@@ -134,9 +133,11 @@ double signed_volume(const Mesh& mesh) {
     return volume;
 }
 
-WindingRepair orient_consistently(Mesh& mesh) {
+WindingRepair orient_consistently(Mesh& mesh) { return orient_consistently(mesh, weld_by_position(mesh.positions)); }
+
+WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners) {
     const size_t triangles = mesh.triangle_count();
-    const Adjacency adjacency = manifold_adjacency(mesh);
+    const Adjacency adjacency = manifold_adjacency(mesh, corners);
     WindingRepair repair;
 
     // 1. Parts and a winding for each, breadth first from the lowest triangle of each part.

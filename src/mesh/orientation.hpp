@@ -7,6 +7,8 @@
 // Loading repairs it (load_mesh): the triangles of each part are wound alike, and a part that is then
 // clearly inside out is turned outward.
 #include <cstddef>
+#include <cstdint>
+#include <span>
 
 #include "mesh/mesh.hpp"
 
@@ -34,6 +36,8 @@ double signed_volume(const Mesh& mesh);
 // agree with their faces). Deterministic; indices beyond the positions are skipped (validate_mesh reports
 // them).
 WindingRepair orient_consistently(Mesh& mesh);
+// The same with the corners already welded (weld_by_position of mesh.positions).
+WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners);
 
 // Vertex normals from a file, each turned around where it disagrees with its faces (the area-weighted sum
 // of dot(face normal, vertex normal) over the triangles around it is negative): after a winding repair,
