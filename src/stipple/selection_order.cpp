@@ -47,31 +47,38 @@ public:
 
     size_t size() const { return entries_.size(); }
 
-    bool any_within(const glm::vec3& p) const {
+    float radius2() const { return radius2_; }
+
+    // The squared distance from p to its nearest centroid closer than the radius, or infinity if none
+    // is. The nearest rather than the first found: a site rejected now is rejected at the next levels,
+    // whose radii are smaller, without a query for as long as its nearest stays within them (see
+    // Pending).
+    float nearest_within(const glm::vec3& p) const {
         const glm::ivec3 c = hash_.cell_of(p);
+        float nearest = INFINITY;
         for (int dz = -1; dz <= 1; ++dz)
             for (int dy = -1; dy <= 1; ++dy) {
                 const glm::ivec3 row(c.x - 1, c.y + dy, c.z + dz);
                 const uint32_t first = hash_.bucket(row);
                 if (hash_.row_is_run(first, row.x, c.x + 1)) {
-                    for (uint32_t b = first; b < first + 3; ++b)
-                        if (any_in(b, p)) return true;
+                    for (uint32_t b = first; b < first + 3; ++b) nearest = std::min(nearest, nearest_in(b, p));
                 } else {
                     for (int dx = -1; dx <= 1; ++dx)
-                        if (any_in(hash_.bucket(row + glm::ivec3(dx + 1, 0, 0)), p)) return true;
+                        nearest = std::min(nearest, nearest_in(hash_.bucket(row + glm::ivec3(dx + 1, 0, 0)), p));
                 }
             }
-        return false;
+        return nearest < radius2_ ? nearest : INFINITY;
     }
 
 private:
     static constexpr uint32_t kNone = ~uint32_t(0);
-    bool any_in(uint32_t bucket, const glm::vec3& p) const {
+    float nearest_in(uint32_t bucket, const glm::vec3& p) const {
+        float nearest = INFINITY;
         for (uint32_t i = last_[bucket]; i != kNone; i = entries_[i].before) {
             const glm::vec3 d = entries_[i].point - p;
-            if (glm::dot(d, d) < radius2_) return true;
+            nearest = std::min(nearest, glm::dot(d, d));
         }
-        return false;
+        return nearest;
     }
     struct Entry {
         glm::vec3 point;
@@ -113,17 +120,35 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
     };
     std::vector<Keyed> by_area(count);
     for (size_t t = 0; t < count; ++t) by_area[t] = {std::min(counts[t], kExactCounts), uint32_t(t), areas[t]};
-    std::sort(by_area.begin(), by_area.end(), [](const Keyed& a, const Keyed& b) {
+    auto by_class_and_area = [](const Keyed& a, const Keyed& b) {
         if (a.count_class != b.count_class) return a.count_class < b.count_class;
         return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
+    };
+    // Halves sorted on two cores and merged: the order is total (triangles break ties), so the result
+    // is the one sort's (the 871k-triangle dragon's sort took 0.13 s on one core, 0.08 on two).
+    const size_t half = count >= 65536 ? count / 2 : 0;
+    parallel_for(half > 0 ? 2 : 1, 1, [&](size_t part) {
+        const auto from = by_area.begin() + std::ptrdiff_t(part == 0 ? 0 : half);
+        const auto to = part == 0 && half > 0 ? by_area.begin() + std::ptrdiff_t(half) : by_area.end();
+        std::sort(from, to, by_class_and_area);
     });
+    if (half > 0)
+        std::inplace_merge(by_area.begin(), by_area.begin() + std::ptrdiff_t(half), by_area.end(), by_class_and_area);
     const uint64_t key = mix64(seed ^ 0x53454C4543540001ull);
-    size_t begin = 0;
-    while (begin < count) {
+    // The classes' bounds first (each starts at a triangle whose area sets its limit), then the
+    // classes on both cores: each writes its own range and its own triangles' values.
+    std::vector<size_t> class_begin;
+    for (size_t begin = 0; begin < count;) {
+        class_begin.push_back(begin);
         size_t end = begin;
         const uint32_t class_count = by_area[begin].count_class;
         const double limit = by_area[begin].key * kClassRatio;
         while (end < count && by_area[end].count_class == class_count && by_area[end].key <= limit) ++end;
+        begin = end;
+    }
+    class_begin.push_back(count);
+    parallel_for(class_begin.size() - 1, 1, [&](size_t c) {
+        const size_t begin = class_begin[c], end = class_begin[c + 1];
         for (size_t k = begin; k < end; ++k) by_area[k].key = scaled[by_area[k].triangle];
         std::sort(by_area.begin() + std::ptrdiff_t(begin), by_area.begin() + std::ptrdiff_t(end),
                   [](const Keyed& a, const Keyed& b) {
@@ -136,8 +161,7 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
             const double value = std::min((double(k - begin) + within) / n, 1.0 - 1.0 / 16777216.0);
             values[t] = float(std::floor(value * 16777216.0)) * (1.0f / 16777216.0f);  // a multiple of 2^-24
         }
-        begin = end;
-    }
+    });
 }
 
 glm::vec3 centroid(const Mesh& mesh, size_t t) {
@@ -156,43 +180,62 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     glm::vec3 lowest = sites[0];
     for (const glm::vec3& c : sites) lowest = glm::min(lowest, c);
 
-    std::vector<uint32_t> remaining(count);
-    std::iota(remaining.begin(), remaining.end(), 0u);
-    std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
-    std::shuffle(remaining.begin(), remaining.end(), rng);
+    // A site waiting to be ranked, with the squared distance to a ranked centroid near it (infinity
+    // when none is known): once a site is rejected for a centroid at distance d, it is rejected at every
+    // later level whose radius exceeds d, as the centroid stays ranked. Those tests (40% of the 3.3M
+    // on the 871k-triangle dragon, a wait for memory each) are skipped; the result is the same.
+    struct Pending {
+        uint32_t triangle;
+        float near2;
+    };
+    std::vector<Pending> pending(count);
+    {
+        std::vector<uint32_t> shuffled(count);
+        std::iota(shuffled.begin(), shuffled.end(), 0u);
+        std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
+        std::shuffle(shuffled.begin(), shuffled.end(), rng);
+        for (size_t i = 0; i < count; ++i) pending[i] = {shuffled[i], INFINITY};
+    }
+    size_t head = 0;  // pending[head..] wait, in order: moving the head, not the sites, per level
 
     std::vector<uint32_t> ranked;
     ranked.reserve(count);
     // Sites tested against the level's ranked centroids at once, and per chunk of that test.
     constexpr size_t kBlock = 16384, kQueryChunk = 2048;
-    std::vector<uint8_t> near_ranked(kBlock);
+    std::vector<float> near_ranked(kBlock);
     // Level L aims at 2^L ranked sites: Poisson-disc radius 0.75 x the hexagonal spacing of that
     // many points. Each level examines at most 8x its target, so the whole order costs O(count).
-    for (size_t target = 1; target < count && !remaining.empty(); target *= 2) {
+    for (size_t target = 1; target < count && head < pending.size(); target *= 2) {
         float radius = float(0.75 * std::sqrt(2.0 * area / (std::sqrt(3.0) * double(target))));
-        size_t budget = std::min(remaining.size(), 8 * target);
+        const size_t budget = std::min(pending.size() - head, 8 * target);
         RankedGrid grid(lowest, radius, ranked.size() + budget);
         for (uint32_t t : ranked) grid.insert(sites[t]);
         RankedGrid block_grid(lowest, radius, kBlock);
-        std::vector<uint32_t> rejected;
+        std::vector<Pending> rejected;
         // Dart throwing in blocks, with the same result as one site after the other: a site near a centroid
         // ranked before its block is rejected whatever its block does, so those tests (nearly all of the
         // time, each a wait for memory) run on every core; then, in order, each remaining site is tested
         // against the centroids its own block has ranked so far, a small grid that stays in the cache.
-        for (size_t block = 0; block < budget; block += kBlock) {
-            const size_t block_end = std::min(budget, block + kBlock);
+        const size_t first = head;
+        for (size_t block = first; block < first + budget; block += kBlock) {
+            const size_t block_end = std::min(first + budget, block + kBlock);
             parallel_for_chunks(block_end - block, kQueryChunk, [&](size_t, size_t begin, size_t end) {
                 constexpr size_t kAhead = 8;  // queries whose memory is fetched while this one runs
                 for (size_t i = block + begin; i < block + end; ++i) {
-                    if (i + 2 * kAhead < block + end) __builtin_prefetch(&sites[remaining[i + 2 * kAhead]]);
-                    if (i + kAhead < block + end) grid.prefetch(sites[remaining[i + kAhead]]);
-                    near_ranked[i - block] = grid.any_within(sites[remaining[i]]);
+                    if (pending[i].near2 < grid.radius2()) {
+                        near_ranked[i - block] = pending[i].near2;
+                        continue;
+                    }
+                    if (i + 2 * kAhead < block + end) __builtin_prefetch(&sites[pending[i + 2 * kAhead].triangle]);
+                    if (i + kAhead < block + end) grid.prefetch(sites[pending[i + kAhead].triangle]);
+                    near_ranked[i - block] = grid.nearest_within(sites[pending[i].triangle]);
                 }
             });
             for (size_t i = block; i < block_end; ++i) {
-                const uint32_t t = remaining[i];
-                if (near_ranked[i - block] || block_grid.any_within(sites[t])) {
-                    rejected.push_back(t);
+                const uint32_t t = pending[i].triangle;
+                float near2 = near_ranked[i - block];
+                if (near2 < INFINITY || (near2 = block_grid.nearest_within(sites[t])) < INFINITY) {
+                    rejected.push_back({t, near2});
                 } else {
                     ranked.push_back(t);
                     block_grid.insert(sites[t]);
@@ -202,11 +245,14 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
             block_grid.clear();
         }
         // Unexamined sites go first at the next level, then the rejected ones.
-        std::vector<uint32_t> next(remaining.begin() + budget, remaining.end());
-        next.insert(next.end(), rejected.begin(), rejected.end());
-        remaining.swap(next);
+        head += budget;
+        if (head > pending.size() / 2) {
+            pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(head));
+            head = 0;
+        }
+        pending.insert(pending.end(), rejected.begin(), rejected.end());
     }
-    ranked.insert(ranked.end(), remaining.begin(), remaining.end());
+    for (size_t i = head; i < pending.size(); ++i) ranked.push_back(pending[i].triangle);
 
     // The ranking is about uniform over the surface's area, so a triangle a times the mean area reaches a
     // given rank about a times as often as the mean one: rank / count x relative area is close to uniform

@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
+#include "core/parallel.hpp"
 #include "core/timing.hpp"
 #include "params/param_table.hpp"
 #include "stipple/barycentric.hpp"
@@ -124,10 +125,13 @@ uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params, std
 }
 
 void finish_generated_stipples(const Mesh& mesh, uint64_t seed, StippleSet& stipples) {
-    for (size_t i = 0; i < stipples.size(); ++i) {
-        const uint32_t t = stipples.triangle[i];
-        stipples.positions[i] = unpack_barycentric(mesh, t, pack_barycentric(mesh, t, stipples.positions[i]));
-    }
+    // Each stipple on its own: on both cores (0.13 s on one for the 8M-stipple dragon).
+    parallel_for_chunks(stipples.size(), size_t(1) << 16, [&](size_t, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const uint32_t t = stipples.triangle[i];
+            stipples.positions[i] = unpack_barycentric(mesh, t, pack_barycentric(mesh, t, stipples.positions[i]));
+        }
+    });
     stipples.selection = polygon_selection_values(mesh, stipples, seed);
     for (float& value : stipples.selection) value = selection_from_step(selection_step(value));
 }
