@@ -1,5 +1,5 @@
 #pragma once
-// A tiny deterministic parallel_for over std::thread.
+// A tiny deterministic parallel_for over a pool of std::threads.
 //
 // Work is cut into fixed chunks whose boundaries depend only on the problem size and the chunk
 // size the caller gives, never on the number of threads; threads take chunks in any order. So a
@@ -42,9 +42,25 @@ inline unsigned worker_count() {
 // Overrides worker_count() (0 restores the default). For tests and benchmarks.
 inline void set_worker_count(unsigned threads) { detail::worker_override().store(threads, std::memory_order_relaxed); }
 
+namespace detail {
+// What each thread of a job runs: run(context, k) on thread k of the job (0: the caller). It must not throw.
+struct PoolJob {
+    void (*run)(void* context, unsigned thread);
+    void* context;
+};
+// Runs `job` once on each of `threads` threads, the calling one among them, with the program's pool of
+// workers (parallel.cpp), and returns when all have finished. False, having run nothing, when the pool is
+// taken: by another thread's job, or (called from inside a job) by the job this thread is running.
+bool run_on_pool(const PoolJob& job, unsigned threads);
+}  // namespace detail
+
 // Calls body(chunk_index, begin, end) for every chunk [begin, end) of [0, n) of `chunk` items
 // (the last one shorter). Blocks until all chunks ran. The first exception thrown by a body is
 // rethrown here (the remaining chunks are skipped).
+//
+// The chunks run on a pool of workers started once (starting two threads a call took 50-110 us on this
+// 2-core machine: 200-250 calls made up 3-8% of generating the horse's or the fox's stipples); a call
+// made while the pool is taken (another thread's, or one inside a chunk) starts threads of its own.
 template <class Body>
 void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
     if (n == 0) return;
@@ -71,6 +87,12 @@ void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
             }
         }
     };
+    // Every thread of the job runs `worker`, which takes chunks until none is left (and throws nothing).
+    const detail::PoolJob job{[](void* context, unsigned) { (*static_cast<decltype(worker)*>(context))(); }, &worker};
+    if (detail::run_on_pool(job, threads)) {
+        if (error) std::rethrow_exception(error);
+        return;
+    }
     std::vector<std::thread> pool;
     pool.reserve(threads - 1);
     for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
