@@ -58,9 +58,10 @@ bool run_on_pool(const PoolJob& job, unsigned threads);
 // (the last one shorter). Blocks until all chunks ran. The first exception thrown by a body is
 // rethrown here (the remaining chunks are skipped).
 //
-// The chunks run on a pool of workers started once (starting two threads a call took 50-110 us on this
-// 2-core machine: 200-250 calls made up 3-8% of generating the horse's or the fox's stipples); a call
-// made while the pool is taken (another thread's, or one inside a chunk) starts threads of its own.
+// The chunks run on a pool of workers started once: starting a thread a call took 58 us on this 2-core
+// machine when quiet, 108 under load, and generating the horse's or the fox's stipples makes 200-250
+// calls (docs/performance.md, "A pool of workers"). A call made while the pool is taken (another
+// thread's, or one inside a chunk) starts threads of its own.
 template <class Body>
 void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
     if (n == 0) return;
