@@ -94,11 +94,11 @@ void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
         if (error) std::rethrow_exception(error);
         return;
     }
-    std::vector<std::thread> pool;
-    pool.reserve(threads - 1);
-    for (unsigned i = 1; i < threads; ++i) pool.emplace_back(worker);
+    std::vector<std::thread> own_threads;  // the pool is taken: threads of this call's own
+    own_threads.reserve(threads - 1);
+    for (unsigned i = 1; i < threads; ++i) own_threads.emplace_back(worker);
     worker();  // the calling thread works too
-    for (std::thread& t : pool) t.join();
+    for (std::thread& t : own_threads) t.join();
     if (error) std::rethrow_exception(error);
 }
 
