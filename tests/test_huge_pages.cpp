@@ -113,8 +113,13 @@ TEST(HugePages, ManyLargeBlocksComeAndGoFromTwoThreads) {
             }
             std::shuffle(blocks.begin(), blocks.end(), random);
             for (size_t i = 0; i < blocks.size(); ++i) {
-                if (i % 2) ::operator delete(blocks[i].first, blocks[i].second);
-                else ::operator delete(blocks[i].first);
+#if defined(__cpp_sized_deallocation)  // GCC's default from C++14 on; clang 15 leaves it out
+                if (i % 2) {
+                    ::operator delete(blocks[i].first, blocks[i].second);
+                    continue;
+                }
+#endif
+                ::operator delete(blocks[i].first);
             }
         }
     };
