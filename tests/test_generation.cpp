@@ -380,6 +380,25 @@ TEST(Generation, BadParametersThrow) {
     EXPECT_THROW(generate_stipples(broken, params), Error);
 }
 
+TEST(Generation, AFaceOutOfRangeIsNamedWhereverItLies) {
+    // The areas are computed in blocks of triangles (generate.cpp): a bad face past the first block is
+    // reported by its own number, on both calls that read the areas.
+    Mesh mesh = make_uv_sphere(300000);
+    ASSERT_GT(mesh.triangle_count(), 250001u);
+    mesh.indices[3 * 250000 + 1] = uint32_t(mesh.positions.size());
+    GenerationParams params;
+    for (int call = 0; call < 2; ++call) {
+        try {
+            if (call == 0) generate_stipples(mesh, params);
+            else stipple_density_per_area(mesh, params);
+            ADD_FAILURE() << "a face out of range must throw";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("face 250000 refers to a vertex out of range"), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 TEST(Quality, MetricMatchesKnownDistributions) {
     // Uniform random points on a unit square: about 0.46; a hexagonal lattice: 1.
     std::mt19937 rng(7);
