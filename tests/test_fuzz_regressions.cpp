@@ -25,6 +25,9 @@ struct Regression {
 };
 
 const Regression kRegressions[] = {
+    // A POSITION accessor of no elements: the accessor reader gave memcpy a null destination for 0 bytes
+    // (2026-12-03, when the static glTF loader came to read through it).
+    {"gltf_empty_position_accessor.gltf", "mesh 'tri' primitive 0: index 0 refers to vertex 0 but there are only 0 vertices"},
     // File normals of 7e31 square to infinity in float and normalised to zero vectors.
     {"ply_normal_length_overflows_float.ply", ""},
     // A number beyond double range made nlohmann::json throw out_of_range, which escaped parse_scene.

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglm-dev libglfw3-dev libx11-dev libxext-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
-  libimgui-dev libmeshoptimizer-dev libgtest-dev
+  libimgui-dev libmeshoptimizer-dev libdraco-dev libgtest-dev
   libzstd-dev libnanoflann-dev libcairo2-dev libtinyxml2-dev poppler-utils librsvg2-bin
   xvfb xauth xdotool x11-utils
   clang-15 libfuzzer-15-dev llvm-15  # the sanitized build and the fuzzers (tools/run_sanitized_tests.sh, run_fuzzers.sh)

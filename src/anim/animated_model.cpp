@@ -9,15 +9,12 @@
 
 #include "anim/gltf_reading.hpp"
 #include "core/error.hpp"
+#include "mesh/gltf_document.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple::anim {
 
 namespace {
-
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;  // images play no part in stippling
-}
 
 struct DrawingOrder {
     Mesh mesh;                    // as load_mesh_for_drawing returns it
@@ -60,22 +57,9 @@ std::string lower_extension(const std::string& path) {
 }  // namespace
 
 tinygltf::Model parse_gltf(const std::string& path) {
-    const bool binary = lower_extension(path) == ".glb";
-    if (binary) {
-        char magic[4] = {};
-        std::ifstream in(path, std::ios::binary);
-        in.read(magic, 4);
-        if (in.gcount() != 4 || std::memcmp(magic, "glTF", 4) != 0)
-            fail_file(path, "not a binary glTF file (it does not start with 'glTF')");
-    }
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
-    tinygltf::Model model;
-    std::string err, warn;  // warnings were printed once already, by the static loader
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-    if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
-    return model;
+    // The static loader read the same file a moment ago and printed its warnings.
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    return read_gltf_model(path, read_file(path), &folder, true);
 }
 
 bool AnimatedModel::is_animated() const {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "anim/gltf_accessor.hpp"
 #include "anim/gltf_reading.hpp"
 #include "core/error.hpp"
+#include "mesh/gltf_accessor.hpp"
 
 namespace stipple::anim {
 

@@ -8,11 +8,11 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "anim/gltf_accessor.hpp"
 #include "anim/gltf_reading.hpp"
 #include "anim/trs.hpp"
 #include "core/error.hpp"
 #include "deform_types.h"
+#include "mesh/gltf_accessor.hpp"
 
 namespace stipple::anim {
 
@@ -233,7 +233,8 @@ private:
         const int* position = attribute(prim, "POSITION");
         if (!position) fail_file(path_, field + ".attributes: no POSITION");
         const std::vector<float> positions =
-            accessors_.floats(*position, TINYGLTF_TYPE_VEC3, {}, field + ".attributes.POSITION");
+            accessors_.numbers(*position, TINYGLTF_TYPE_VEC3, kGltfQuantizedTypes, kGltfQuantizedTypes,
+                               field + ".attributes.POSITION");
         const size_t count = positions.size() / 3;
         const size_t first = streams_.bind_positions.size();
         streams_.ranges.push_back(VertexRange{first, count, world});
@@ -241,7 +242,8 @@ private:
             streams_.bind_positions.emplace_back(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
         streams_.file_normals.resize(first + count, glm::vec3(0.0f));
         if (const int* normal = attribute(prim, "NORMAL")) {
-            const std::vector<float> n = per_vertex(*normal, count, field + ".attributes.NORMAL");
+            // As leniently as the static loader, which recomputes a normal that is not finite.
+            const std::vector<float> n = per_vertex(*normal, count, field + ".attributes.NORMAL", {}, true);
             for (size_t v = 0; v < count; ++v) streams_.file_normals[first + v] = glm::vec3(n[3 * v], n[3 * v + 1], n[3 * v + 2]);
         }
         if (skin >= 0) {
@@ -260,8 +262,11 @@ private:
         return *identity_slot_;
     }
 
-    std::vector<float> per_vertex(int accessor, size_t count, const std::string& field) const {
-        std::vector<float> values = accessors_.floats(accessor, TINYGLTF_TYPE_VEC3, {}, field);
+    // A VEC3 per vertex: FLOAT, normalized BYTE or SHORT (KHR_mesh_quantization), or those listed in `plain`.
+    std::vector<float> per_vertex(int accessor, size_t count, const std::string& field, const std::vector<int>& plain,
+                                  bool allow_non_finite = false) const {
+        std::vector<float> values =
+            accessors_.numbers(accessor, TINYGLTF_TYPE_VEC3, plain, kGltfSignedTypes, field, allow_non_finite);
         if (values.size() / 3 != count)
             fail_file(path_, field + ": " + std::to_string(values.size() / 3) + " elements for " + std::to_string(count) + " vertices");
         return values;
@@ -335,8 +340,9 @@ private:
             for (const char* name : {"POSITION", "NORMAL"}) {
                 const auto it = target.find(name);
                 if (it == target.end()) continue;
-                const std::vector<float> d = per_vertex(it->second, count, target_field + "." + name);
                 const bool is_position = name[0] == 'P';
+                const std::vector<float> d =
+                    per_vertex(it->second, count, target_field + "." + name, is_position ? kGltfSignedTypes : std::vector<int>{});
                 for (size_t v = 0; v < count; ++v) {
                     MorphDelta& delta = streams_.morph_deltas[base + v * morph.count + k];
                     (is_position ? delta.position : delta.normal) = glm::vec3(d[3 * v], d[3 * v + 1], d[3 * v + 2]);

@@ -3,7 +3,8 @@
 // must be arrays of well-formed names; a name that is neither used in the file nor a known extension
 // but close to one is taken for a misspelling and named with the likely intent; a required extension
 // that changes how geometry is stored (compression, quantisation, instancing) or that we do not know
-// is refused, since the model would load wrong without it.
+// is refused, since the model would load wrong without it, except those that loading decodes
+// (KHR_mesh_quantization, EXT_meshopt_compression, KHR_draco_mesh_compression).
 #include <set>
 #include <string>
 

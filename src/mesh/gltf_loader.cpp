@@ -1,6 +1,6 @@
-// glTF 2.0 (.gltf with external or data: buffers, and .glb) through tinygltf, after gltf_validate has
-// checked the JSON's fields. tinygltf parses the JSON and loads the buffers; what points into those
-// buffers (accessors, buffer views, indices, node references) is checked again here as it is used.
+// The static mesh of a glTF 2.0 file (.gltf with external or data: buffers, and .glb), read by
+// gltf_document (validated, loaded by tinygltf, compressed views decoded). What points into the buffers
+// (accessors, buffer views, indices, node references) is checked again here as it is used.
 #include <tiny_gltf.h>  // the implementation lives in Debian's libtinygltf, so no TINYGLTF_IMPLEMENTATION
 
 #include <algorithm>
@@ -16,18 +16,14 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/error.hpp"
+#include "mesh/gltf_accessor.hpp"
+#include "mesh/gltf_document.hpp"
 #include "mesh/load_mesh.hpp"
-#include "mesh/gltf_validate.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple {
 
 namespace {
-
-// Images play no part in stippling: skip decoding them (and any failure to).
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;
-}
 
 const char* mode_name(int mode) {
     switch (mode) {
@@ -39,18 +35,13 @@ const char* mode_name(int mode) {
     }
 }
 
-// Elements of one accessor, every one of them inside its buffer.
-struct Span {
-    const unsigned char* data = nullptr;
-    size_t stride = 0;
-    size_t count = 0;
-    const unsigned char* at(size_t i) const { return data + i * stride; }
-};
+const std::vector<int> kIndexTypes = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
 
 class Loader {
 public:
     Loader(const std::string& path, const tinygltf::Model& model, const LoadOptions& options)
-        : path_(path), model_(model), options_(options) {}
+        : path_(path), model_(model), options_(options), reader_(path, model, options) {}
 
     Mesh run() {
         mesh_.source = path_;
@@ -126,37 +117,6 @@ private:
             add_primitive(m.primitives[p], name + " primitive " + std::to_string(p), world);
     }
 
-    Span accessor(int index, int component_type, int type, const std::string& what) const {
-        if (index < 0 || static_cast<size_t>(index) >= model_.accessors.size())
-            fail_file(path_, what + ": accessor " + std::to_string(index) + " does not exist");
-        const tinygltf::Accessor& a = model_.accessors[index];
-        const std::string where = what + ": accessor " + std::to_string(index);
-        if (a.sparse.isSparse) fail_file(path_, where + " is sparse, which is not supported");
-        if (a.type != type || (component_type >= 0 && a.componentType != component_type))
-            fail_file(path_, where + " has the wrong type (" + (type == TINYGLTF_TYPE_VEC3 ? "expected float VEC3" : "expected SCALAR") + ")");
-        if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
-            fail_file(path_, where + " has no buffer view");
-        const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
-        if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model_.buffers.size())
-            fail_file(path_, where + ": its buffer view refers to a missing buffer");
-        const size_t buffer_size = model_.buffers[view.buffer].data.size();
-        if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset)
-            fail_file(path_, where + ": buffer view " + std::to_string(a.bufferView) + " reaches past the end of its buffer");
-        const int32_t component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
-        if (component_size <= 0) fail_file(path_, where + " has an invalid component type");
-        const size_t element = static_cast<size_t>(component_size) * static_cast<size_t>(tinygltf::GetNumComponentsInType(a.type));
-        const size_t stride = view.byteStride ? view.byteStride : element;
-        if (stride < element) fail_file(path_, where + ": byteStride is smaller than one element");
-        if (a.count > options_.max_elements)
-            fail_file(path_, where + " claims " + std::to_string(a.count) + " elements, more than the limit of " +
-                                 std::to_string(options_.max_elements));
-        // Overflow-safe form of: byteOffset + (count - 1) * stride + element <= byteLength.
-        if (a.count > 0 && (a.byteOffset > view.byteLength || element > view.byteLength - a.byteOffset ||
-                            (a.count - 1) > (view.byteLength - a.byteOffset - element) / stride))
-            fail_file(path_, where + " claims " + std::to_string(a.count) + " elements, more than its buffer view holds");
-        return Span{model_.buffers[view.buffer].data.data() + view.byteOffset + a.byteOffset, stride, a.count};
-    }
-
     std::vector<uint32_t> corners(const tinygltf::Primitive& prim, size_t vertex_count, const std::string& what) const {
         std::vector<uint32_t> out;
         if (prim.indices < 0) {  // non-indexed: the vertices in order
@@ -164,28 +124,12 @@ private:
             for (size_t i = 0; i < vertex_count; ++i) out[i] = static_cast<uint32_t>(i);
             return out;
         }
-        const Span s = accessor(prim.indices, -1, TINYGLTF_TYPE_SCALAR, what + " indices");
-        const int type = model_.accessors[prim.indices].componentType;
-        out.resize(s.count);
-        for (size_t i = 0; i < s.count; ++i) {
-            uint32_t v = 0;
-            if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) v = *s.at(i);
-            else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) v = load<uint16_t>(s.at(i));
-            else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) v = load<uint32_t>(s.at(i));
-            else fail_file(path_, what + ": indices must be unsigned byte, short or int");
-            if (v >= vertex_count)
-                fail_file(path_, what + ": index " + std::to_string(i) + " refers to vertex " + std::to_string(v) +
+        out = reader_.uints(prim.indices, TINYGLTF_TYPE_SCALAR, kIndexTypes, what + " indices");
+        for (size_t i = 0; i < out.size(); ++i)
+            if (out[i] >= vertex_count)
+                fail_file(path_, what + ": index " + std::to_string(i) + " refers to vertex " + std::to_string(out[i]) +
                                      " but there are only " + std::to_string(vertex_count) + " vertices");
-            out[i] = v;
-        }
         return out;
-    }
-
-    template <class T>
-    static T load(const unsigned char* p) {
-        T v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
     }
 
     // Strips and fans become triangles with the winding the glTF spec gives each of them;
@@ -211,36 +155,39 @@ private:
         }
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end()) fail_file(path_, what + " has no POSITION attribute");
-        const Span positions = accessor(position->second, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, what + " POSITION");
+        const std::vector<float> positions =
+            reader_.numbers(position->second, TINYGLTF_TYPE_VEC3, kGltfQuantizedTypes, kGltfQuantizedTypes, what + " POSITION");
+        const size_t vertex_count = positions.size() / 3;
         const auto normal = prim.attributes.find("NORMAL");
-        const Span normals = normal == prim.attributes.end()
-                                 ? Span{}
-                                 : accessor(normal->second, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, what + " NORMAL");
-        if (normals.data && normals.count != positions.count)
-            fail_file(path_, what + " has " + std::to_string(normals.count) + " normals for " +
-                                 std::to_string(positions.count) + " positions");
-        std::vector<uint32_t> indices = triangles(mode, corners(prim, positions.count, what));
+        const std::vector<float> normals =
+            normal == prim.attributes.end()
+                ? std::vector<float>()
+                : reader_.numbers(normal->second, TINYGLTF_TYPE_VEC3, {}, kGltfSignedTypes, what + " NORMAL", true);
+        if (!normals.empty() && normals.size() != positions.size())
+            fail_file(path_, what + " has " + std::to_string(normals.size() / 3) + " normals for " +
+                                 std::to_string(vertex_count) + " positions");
+        std::vector<uint32_t> indices = triangles(mode, corners(prim, vertex_count, what));
         if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
             fail_file(path_, what + " has " + std::to_string(indices.size()) + " corners, not a multiple of 3");
 
         // Instancing can multiply a small file into a huge mesh: the limit applies to the result.
-        if (mesh_.positions.size() + positions.count > std::min<uint64_t>(options_.max_elements, UINT32_MAX) ||
+        if (mesh_.positions.size() + vertex_count > std::min<uint64_t>(options_.max_elements, UINT32_MAX) ||
             (mesh_.indices.size() + indices.size()) / 3 > options_.max_elements)
             fail_file(path_, "the scene has more than " + std::to_string(options_.max_elements) + " vertices or triangles");
 
         Mesh part;
-        part.positions.resize(positions.count);
-        for (size_t i = 0; i < positions.count; ++i)
-            part.positions[i] = glm::vec3(world * glm::dvec4(glm::dvec3(load<glm::vec3>(positions.at(i))), 1.0));
+        part.positions.resize(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i)
+            part.positions[i] = glm::vec3(world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
         const glm::dmat3 linear(world);
         if (glm::determinant(linear) < 0.0)  // a mirroring transform turns faces inside out: undo it
             for (size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
         part.indices = std::move(indices);
-        if (normals.data) {
+        if (!normals.empty()) {
             const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
-            part.normals.resize(normals.count);
-            for (size_t i = 0; i < normals.count; ++i) {
-                const glm::dvec3 n = normal_matrix * glm::dvec3(load<glm::vec3>(normals.at(i)));
+            part.normals.resize(vertex_count);
+            for (size_t i = 0; i < vertex_count; ++i) {
+                const glm::dvec3 n = normal_matrix * glm::dvec3(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
                 const double length = glm::length(n);
                 part.normals[i] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0f);
             }
@@ -253,43 +200,16 @@ private:
     const std::string& path_;
     const tinygltf::Model& model_;
     const LoadOptions& options_;
+    AccessorReader reader_;
     Mesh mesh_;
     std::vector<std::string> skipped_;  // primitives of points or lines, as "mesh M primitive P (mode X)"
 };
-
-// Bytes from memory have no folder: a reference to an external file is refused, not looked up in
-// the current directory.
-bool no_external_file(std::vector<unsigned char>*, std::string* err, const std::string& uri, void*) {
-    if (err) *err = "external file '" + uri + "' cannot be read: the model was not loaded from a file";
-    return false;
-}
-bool no_file_exists(const std::string&, void*) { return false; }
-std::string unexpanded(const std::string& path, void*) { return path; }
-bool no_file_written(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
 }  // namespace
 
 Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
                 const LoadOptions& options) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const bool binary = ext == ".glb";
-    if (bytes.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
-    // tinygltf reads a field of the wrong type as absent, and trusts sizes: every field we (and the
-    // animation reader) use is checked first, and named when it is wrong.
-    validate_gltf(path, bytes, binary, base_dir);
-
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&skip_image, nullptr);
-    if (!base_dir) loader.SetFsCallbacks({&no_file_exists, &unexpanded, &no_external_file, &no_file_written, nullptr});
-    const std::string dir = base_dir ? base_dir->string() : std::string();
-    tinygltf::Model model;
-    std::string err, warn;
-    const auto size = static_cast<unsigned int>(bytes.size());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, dir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
-    if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
-    if (!warn.empty()) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
+    const tinygltf::Model model = read_gltf_model(path, bytes, base_dir);
     return Loader(path, model, options).run();
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "mesh/gltf_extensions.hpp"
+#include "mesh/gltf_meshopt.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple {
@@ -250,11 +251,17 @@ private:
     }
 
     // What a buffer's data can hold at most: the BIN chunk, the decoded data: URI, the external file.
-    // nullopt where only tinygltf can tell (a data: URI that is not base64).
+    // nullopt where only tinygltf can tell (a data: URI that is not base64), and for a placeholder buffer.
     std::optional<uint64_t> available(const json& b, const std::string& where, size_t i, std::string& holder) const {
         const json* uri = find(b, "uri");
+        if (is_placeholder_buffer(b, i, glb_ != nullptr)) {
+            // No data of its own: only EXT_meshopt_compression's views, decoded into it, may use it.
+            if (!uses_meshopt())
+                bad(at(where, "uri"), "missing (only the first buffer of a .glb, or a placeholder of EXT_meshopt_compression, "
+                                      "may leave it out)");
+            return std::nullopt;
+        }
         if (!uri) {
-            if (!glb_ || i != 0) bad(at(where, "uri"), "missing (only the first buffer of a .glb may leave it out)");
             if (!glb_->has_bin) bad(where, "refers to the BIN chunk, but the file has none");
             holder = "the BIN chunk";
             return glb_->bin.size();
@@ -285,6 +292,7 @@ private:
         if (const std::optional<uint64_t> bytes = available(b, where, i, holder); bytes && length > *bytes)
             bad(at(where, "byteLength"), std::to_string(length) + " bytes, but " + holder + " holds only " + std::to_string(*bytes));
         buffer_lengths_.push_back(length);
+        if (is_placeholder_buffer(b, i, glb_ != nullptr)) placeholders_.insert(i);
     }
 
     void buffer_view(const json& v, const std::string& where) {
@@ -298,7 +306,55 @@ private:
         if (offset > buffer_lengths_[b] || length > buffer_lengths_[b] - offset)
             bad(where, "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(length) +
                            " reaches past the end of buffer " + std::to_string(b) + " (" + std::to_string(buffer_lengths_[b]) + " bytes)");
+        const json* extensions = find(v, "extensions");
+        const json* meshopt = extensions && extensions->is_object() ? find(*extensions, "EXT_meshopt_compression") : nullptr;
+        if (meshopt) compressed_view(*meshopt, at(at(where, "extensions"), "EXT_meshopt_compression"), length, stride);
+        else if (placeholders_.count(b))
+            bad(at(where, "buffer"), "buffer " + std::to_string(b) + " holds no data (a placeholder of EXT_meshopt_compression), "
+                                     "but this view is not compressed");
         views_.push_back({length, stride});
+    }
+
+    // EXT_meshopt_compression on a buffer view of `length` bytes (`view_stride`: its byteStride, 0 if none):
+    // where the compressed bytes are, and what they decode to, count elements of byteStride bytes that fill
+    // the view exactly. The strides, modes and filters are those the extension allows.
+    void compressed_view(const json& e, const std::string& where, uint64_t length, uint64_t view_stride) const {
+        object(e, where);
+        const size_t b = index(required(e, where, "buffer"), at(where, "buffer"), "buffers");
+        if (placeholders_.count(b)) bad(at(where, "buffer"), "buffer " + std::to_string(b) + " holds no data (it has no uri)");
+        const uint64_t offset = optional_count(e, where, "byteOffset");
+        const uint64_t source = integer(required(e, where, "byteLength"), at(where, "byteLength"), 1, UINT64_MAX, "a positive integer");
+        if (offset > buffer_lengths_[b] || source > buffer_lengths_[b] - offset)
+            bad(where, "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(source) +
+                           " reaches past the end of buffer " + std::to_string(b) + " (" + std::to_string(buffer_lengths_[b]) + " bytes)");
+        one_of(required(e, where, "mode"), at(where, "mode"), {"ATTRIBUTES", "TRIANGLES", "INDICES"});
+        const std::string& mode = e["mode"].get_ref<const std::string&>();
+        std::string filter = "NONE";
+        if (const json* f = find(e, "filter")) {
+            one_of(*f, at(where, "filter"), {"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL"});
+            filter = f->get<std::string>();
+        }
+        const uint64_t stride = integer(required(e, where, "byteStride"), at(where, "byteStride"), 1, 256, "an integer from 1 to 256");
+        if (mode == "ATTRIBUTES" && stride % 4 != 0) bad(at(where, "byteStride"), "expected a multiple of 4 for ATTRIBUTES, got " + std::to_string(stride));
+        if (mode != "ATTRIBUTES" && stride != 2 && stride != 4)
+            bad(at(where, "byteStride"), "expected 2 or 4 for " + mode + ", got " + std::to_string(stride));
+        if (mode != "ATTRIBUTES" && filter != "NONE") bad(at(where, "filter"), filter + " applies to ATTRIBUTES only, not " + mode);
+        if ((filter == "OCTAHEDRAL" && stride != 4 && stride != 8) || (filter == "QUATERNION" && stride != 8))
+            bad(at(where, "filter"), filter + " does not decode elements of " + std::to_string(stride) + " bytes");
+        const uint64_t n = integer(required(e, where, "count"), at(where, "count"), 1, UINT64_MAX, "a positive integer");
+        if (mode == "TRIANGLES" && n % 3 != 0) bad(at(where, "count"), "expected a multiple of 3 for TRIANGLES, got " + std::to_string(n));
+        if (view_stride && view_stride != stride)
+            bad(at(where, "byteStride"), std::to_string(stride) + ", but the buffer view's byteStride is " + std::to_string(view_stride));
+        if (n > length / stride || n * stride != length)
+            bad(at(where, "count"), std::to_string(n) + " elements of " + std::to_string(stride) + " bytes do not fill the buffer view's " +
+                                        std::to_string(length) + " bytes");
+    }
+    bool uses_meshopt() const {
+        const json* used = find(doc_, "extensionsUsed");
+        if (!used || !used->is_array()) return false;
+        for (const json& e : *used)
+            if (e.is_string() && e.get_ref<const std::string&>() == "EXT_meshopt_compression") return true;
+        return false;
     }
 
     // `count` elements of `element` bytes, `stride` apart from `offset`, must lie in the buffer view.
@@ -368,12 +424,26 @@ private:
             optional_index(prim, w, "indices", "accessors");
             optional_index(prim, w, "material", "materials");
             if (const json* mode = find(prim, "mode")) integer(*mode, at(w, "mode"), 0, 6, "a primitive mode from 0 to 6");
+            if (const json* extensions = find(prim, "extensions"); extensions && extensions->is_object())
+                if (const json* draco = find(*extensions, "KHR_draco_mesh_compression"))
+                    draco_primitive(*draco, at(at(w, "extensions"), "KHR_draco_mesh_compression"));
             if (const json* targets = find(prim, "targets")) {
                 array(*targets, at(w, "targets"), false);
                 for (size_t t = 0; t < targets->size(); ++t) attributes((*targets)[t], at(at(w, "targets"), t));
             }
         }
         optional_numbers(m, where, "weights", 0);
+    }
+
+    // KHR_draco_mesh_compression on a primitive: the buffer view of its bitstream, and the bitstream's
+    // attribute id for each attribute it holds (gltf_draco.hpp decodes it).
+    void draco_primitive(const json& e, const std::string& where) const {
+        object(e, where);
+        index(required(e, where, "bufferView"), at(where, "bufferView"), "bufferViews");
+        const std::string aw = at(where, "attributes");
+        const json& attributes = object(required(e, where, "attributes"), aw);
+        for (auto it = attributes.begin(); it != attributes.end(); ++it)
+            integer(*it, aw + "." + one_line(it.key()), 0, UINT32_MAX, "a Draco attribute id");
     }
 
     void node(const json& n, const std::string& where) {
@@ -433,6 +503,7 @@ private:
     const GlbChunks* glb_;
     const std::filesystem::path* base_dir_;
     std::vector<uint64_t> buffer_lengths_;
+    std::set<size_t> placeholders_;  // buffers with no data, for EXT_meshopt_compression's views
     std::vector<View> views_;
 };
 
@@ -463,7 +534,7 @@ GlbChunks split_glb(const std::string& name, std::string_view bytes) {
     return chunks;
 }
 
-void validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir) {
+json validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir) {
     GlbChunks glb;
     if (binary) glb = split_glb(name, bytes);
     const std::string_view text = binary ? glb.json : bytes;
@@ -478,6 +549,7 @@ void validate_gltf(const std::string& name, std::string_view bytes, bool binary,
     }
     if (!doc.is_object()) fail_file(name, "expected a JSON object at the top level, got " + got(doc));
     Checker(name, doc, binary ? &glb : nullptr, base_dir).run();
+    return doc;
 }
 
 }  // namespace stipple

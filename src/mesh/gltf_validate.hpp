@@ -8,13 +8,16 @@
 // Checked: the container (GLB header and chunks; glTF 1.0 is named as such), the JSON itself (syntax,
 // nesting depth), and for JSON type and index range every field that the static loader reads
 // (scene, scenes, nodes, meshes, primitives, accessors, buffer views, buffers) and that animation
-// reads (skins, animations with their samplers and channels, morph targets, weights), and the
-// extension lists. Sizes are checked against the bytes that are really there (the GLB's BIN chunk, a
+// reads (skins, animations with their samplers and channels, morph targets, weights), the
+// extension lists, and EXT_meshopt_compression's fields (gltf_meshopt.hpp: placeholder buffers, and each
+// compressed view's source range, mode, filter, stride and count, which must fill its view). Sizes are checked against the bytes that are really there (the GLB's BIN chunk, a
 // data: URI, an external file), so no count in the JSON can make a reader allocate beyond the file.
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
 
 namespace stipple {
 
@@ -31,7 +34,7 @@ GlbChunks split_glb(const std::string& name, std::string_view bytes);
 
 // Validates a whole .gltf (binary == false: the bytes are JSON) or .glb file. `base_dir` is the folder
 // external buffers are resolved against; nullptr when the bytes did not come from a file, and then an
-// external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>".
-void validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir);
+// external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>". Returns the document.
+nlohmann::json validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir);
 
 }  // namespace stipple

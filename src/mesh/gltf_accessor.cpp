@@ -1,4 +1,4 @@
-#include "anim/gltf_accessor.hpp"
+#include "mesh/gltf_accessor.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace stipple::anim {
+namespace stipple {
 
 const char* component_type_name(int component_type) {
     switch (component_type) {
@@ -82,6 +82,7 @@ void convert(const unsigned char* base, size_t stride, size_t count, size_t n, b
 }
 
 void convert_any(const unsigned char* base, size_t stride, size_t count, size_t n, bool normalized, int type, float* out) {
+    if (count == 0) return;  // `out` may then be null, which memcpy may not be given even for no bytes
     switch (type) {
         case TINYGLTF_COMPONENT_TYPE_BYTE: return convert<int8_t>(base, stride, count, n, normalized, type, out);
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return convert<uint8_t>(base, stride, count, n, normalized, type, out);
@@ -104,17 +105,25 @@ const tinygltf::Accessor& AccessorReader::get(int index, const std::string& fiel
     return model_.accessors[index];
 }
 
-void AccessorReader::check_type(int index, int type, const std::vector<int>& components, bool want_normalized,
-                                const std::string& field) const {
+void AccessorReader::check_type(int index, int type, const std::vector<int>& plain, const std::vector<int>& normalized,
+                                const std::string& field, bool allow_float) const {
     const tinygltf::Accessor& a = get(index, field);
-    const bool float_ok = want_normalized && a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    const bool listed = std::find(components.begin(), components.end(), a.componentType) != components.end();
-    const bool ok = a.type == type && (float_ok || (listed && (!want_normalized || a.normalized)));
-    if (ok) return;
+    auto listed = [&](const std::vector<int>& types) {
+        return std::find(types.begin(), types.end(), a.componentType) != types.end();
+    };
+    const bool component_ok = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT
+                                  ? allow_float
+                                  : (a.normalized ? listed(normalized) : listed(plain));
+    if (a.type == type && component_ok) return;
+    auto names = [](const std::vector<int>& types) {
+        std::string out;
+        for (size_t i = 0; i < types.size(); ++i) out += (i ? ", " : "") + std::string(component_type_name(types[i]));
+        return out;
+    };
     std::string expected = std::string(accessor_type_name(type)) + " of ";
-    if (want_normalized) expected += components.empty() ? "FLOAT" : "FLOAT or normalized ";
-    for (size_t i = 0; i < components.size(); ++i)
-        expected += (i ? ", " : "") + std::string(component_type_name(components[i]));
+    if (allow_float) expected += "FLOAT";
+    if (!plain.empty()) expected += (allow_float ? ", " : "") + names(plain);
+    if (!normalized.empty() && normalized != plain) expected += " or normalized " + names(normalized);
     fail(field, "accessor " + std::to_string(index) + " is " + accessor_type_name(a.type) + " of " +
                     (a.normalized ? "normalized " : "") + component_type_name(a.componentType) + ", expected " +
                     expected);
@@ -139,58 +148,74 @@ const unsigned char* AccessorReader::view_bytes(int view_index, size_t offset, s
     return model_.buffers[view.buffer].data.data() + view.byteOffset + offset;
 }
 
-std::vector<float> AccessorReader::read(int index, bool normalized, const std::string& field) const {
-    const tinygltf::Accessor& a = get(index, field);
-    const std::string where = field + " (accessor " + std::to_string(index) + ")";
+AccessorReader::Layout AccessorReader::layout(int index, const std::string& where) const {
+    const tinygltf::Accessor& a = model_.accessors[index];
     const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
     const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
     if (component_size <= 0 || components <= 0) fail_file(path_, where + " has an invalid type");
     if (a.count > options_.max_elements)
         fail_file(path_, where + " claims " + std::to_string(a.count) + " elements, more than the limit of " +
                              std::to_string(options_.max_elements));
-    const size_t n = static_cast<size_t>(components);
-    const size_t element = n * static_cast<size_t>(component_size);
-    std::vector<float> out(a.count * n, 0.0f);  // no buffer view: zeros (sparse entries may follow)
+    Layout out;
+    out.components = static_cast<size_t>(components);
+    out.element = out.components * static_cast<size_t>(component_size);
+    out.stride = out.element;
     if (a.bufferView >= 0) {
         const size_t view_stride = model_.bufferViews.size() > static_cast<size_t>(a.bufferView)
                                        ? model_.bufferViews[a.bufferView].byteStride
                                        : 0;
-        const size_t stride = view_stride ? view_stride : element;
-        const unsigned char* base = view_bytes(a.bufferView, a.byteOffset, element, stride, a.count, where);
-        convert_any(base, stride, a.count, n, normalized, a.componentType, out.data());
-    }
-    if (a.sparse.isSparse) {
-        const size_t count = a.sparse.count < 0 ? 0 : static_cast<size_t>(a.sparse.count);
-        if (count > a.count)
-            fail_file(path_, where + ": sparse count " + std::to_string(count) + " exceeds the accessor's count " +
-                                 std::to_string(a.count));
-        const int index_type = a.sparse.indices.componentType;
-        const int index_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(index_type));
-        if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-            index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-            fail_file(path_, where + ": sparse indices must be unsigned byte, short or int");
-        const unsigned char* indices = view_bytes(a.sparse.indices.bufferView, size_t(std::max(a.sparse.indices.byteOffset, 0)),
-                                                  index_size, index_size, count, where + " sparse indices");
-        const unsigned char* values = view_bytes(a.sparse.values.bufferView, size_t(std::max(a.sparse.values.byteOffset, 0)),
-                                                 element, element, count, where + " sparse values");
-        for (size_t j = 0; j < count; ++j) {
-            const double target = component(indices + j * index_size, index_type);
-            if (target >= static_cast<double>(a.count))
-                fail_file(path_, where + ": sparse index " + std::to_string(static_cast<uint64_t>(target)) +
-                                     " is beyond the accessor's " + std::to_string(a.count) + " elements");
-            const size_t i = static_cast<size_t>(target);
-            convert_any(values + j * element, element, 1, n, normalized, a.componentType, &out[i * n]);
-        }
+        out.stride = view_stride ? view_stride : out.element;
+        out.base = view_bytes(a.bufferView, a.byteOffset, out.element, out.stride, a.count, where);
     }
     return out;
 }
 
-std::vector<float> AccessorReader::floats(int index, int type, const std::vector<int>& normalized,
-                                          const std::string& field) const {
-    check_type(index, type, normalized, true, field);
+template <class Apply>
+void AccessorReader::for_each_sparse(int index, const Layout& layout, const std::string& where, Apply&& apply) const {
     const tinygltf::Accessor& a = model_.accessors[index];
-    std::vector<float> out = read(index, a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT, field);
-    for (size_t i = 0; i < out.size(); ++i)
+    if (!a.sparse.isSparse) return;
+    const size_t count = a.sparse.count < 0 ? 0 : static_cast<size_t>(a.sparse.count);
+    if (count > a.count)
+        fail_file(path_, where + ": sparse count " + std::to_string(count) + " exceeds the accessor's count " +
+                             std::to_string(a.count));
+    const int index_type = a.sparse.indices.componentType;
+    const int index_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(index_type));
+    if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        fail_file(path_, where + ": sparse indices must be unsigned byte, short or int");
+    const unsigned char* indices = view_bytes(a.sparse.indices.bufferView, size_t(std::max(a.sparse.indices.byteOffset, 0)),
+                                              index_size, index_size, count, where + " sparse indices");
+    const unsigned char* values = view_bytes(a.sparse.values.bufferView, size_t(std::max(a.sparse.values.byteOffset, 0)),
+                                             layout.element, layout.element, count, where + " sparse values");
+    for (size_t j = 0; j < count; ++j) {
+        const double target = component(indices + j * index_size, index_type);
+        if (target >= static_cast<double>(a.count))
+            fail_file(path_, where + ": sparse index " + std::to_string(static_cast<uint64_t>(target)) +
+                                 " is beyond the accessor's " + std::to_string(a.count) + " elements");
+        apply(values + j * layout.element, static_cast<size_t>(target));
+    }
+}
+
+std::vector<float> AccessorReader::read(int index, bool normalized, const std::string& field) const {
+    const tinygltf::Accessor& a = get(index, field);
+    const std::string where = field + " (accessor " + std::to_string(index) + ")";
+    const Layout l = layout(index, where);
+    const size_t n = l.components;
+    std::vector<float> out(a.count * n, 0.0f);  // no buffer view: zeros (sparse entries may follow)
+    if (l.base) convert_any(l.base, l.stride, a.count, n, normalized, a.componentType, out.data());
+    for_each_sparse(index, l, where, [&](const unsigned char* value, size_t i) {
+        convert_any(value, l.element, 1, n, normalized, a.componentType, &out[i * n]);
+    });
+    return out;
+}
+
+std::vector<float> AccessorReader::numbers(int index, int type, const std::vector<int>& plain,
+                                           const std::vector<int>& normalized, const std::string& field,
+                                           bool allow_non_finite) const {
+    check_type(index, type, plain, normalized, field, true);
+    const tinygltf::Accessor& a = model_.accessors[index];
+    std::vector<float> out = read(index, a.normalized && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT, field);
+    for (size_t i = 0; i < out.size() && !allow_non_finite; ++i)
         if (!std::isfinite(out[i]))
             fail(field, "element " + std::to_string(i / tinygltf::GetNumComponentsInType(a.type)) + " is not finite");
     return out;
@@ -198,12 +223,20 @@ std::vector<float> AccessorReader::floats(int index, int type, const std::vector
 
 std::vector<uint32_t> AccessorReader::uints(int index, int type, const std::vector<int>& component_types,
                                             const std::string& field) const {
-    check_type(index, type, component_types, false, field);
-    // Exact in float: the integer uses here (joint indices) are unsigned bytes and shorts.
-    const std::vector<float> raw = read(index, false, field);
-    std::vector<uint32_t> out(raw.size());
-    for (size_t i = 0; i < raw.size(); ++i) out[i] = static_cast<uint32_t>(raw[i]);
+    // The normalized flag means nothing to an index: accepted either way, read as the integers stored.
+    check_type(index, type, component_types, component_types, field, false);
+    const tinygltf::Accessor& a = model_.accessors[index];
+    const std::string where = field + " (accessor " + std::to_string(index) + ")";
+    const Layout l = layout(index, where);
+    const size_t n = l.components, size = l.element / n;
+    std::vector<uint32_t> out(a.count * n, 0u);
+    auto put = [&](const unsigned char* element, size_t i) {
+        for (size_t c = 0; c < n; ++c) out[i * n + c] = static_cast<uint32_t>(component(element + c * size, a.componentType));
+    };
+    if (l.base)
+        for (size_t i = 0; i < a.count; ++i) put(l.base + i * l.stride, i);
+    for_each_sparse(index, l, where, put);
     return out;
 }
 
-}  // namespace stipple::anim
+}  // namespace stipple

@@ -1,0 +1,93 @@
+#include "mesh/gltf_document.hpp"
+
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+
+#include "core/error.hpp"
+#include "mesh/gltf_draco.hpp"
+#include "mesh/gltf_meshopt.hpp"
+#include "mesh/gltf_validate.hpp"
+#include "mesh/loader_util.hpp"
+
+namespace stipple {
+
+namespace {
+
+// Images play no part in stippling: skip decoding them (and any failure to).
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+// Bytes from memory have no folder: a reference to an external file is refused, not looked up in
+// the current directory.
+bool no_external_file(std::vector<unsigned char>*, std::string* err, const std::string& uri, void*) {
+    if (err) *err = "external file '" + uri + "' cannot be read: the model was not loaded from a file";
+    return false;
+}
+bool no_file_exists(const std::string&, void*) { return false; }
+std::string unexpanded(const std::string& path, void*) { return path; }
+bool no_file_written(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+void put_u32(std::string& out, uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+}
+
+// A .glb of `json_text` and `bin` (the original BIN chunk, if any), each chunk padded as GLB requires.
+std::string make_glb(std::string json_text, const GlbChunks& original) {
+    while (json_text.size() % 4) json_text.push_back(' ');
+    std::string bin(original.bin);
+    while (bin.size() % 4) bin.push_back('\0');
+    const uint64_t total = 12 + 8 + json_text.size() + (original.has_bin ? 8 + bin.size() : 0);
+    std::string out = "glTF";
+    put_u32(out, 2);
+    put_u32(out, static_cast<uint32_t>(total));
+    put_u32(out, static_cast<uint32_t>(json_text.size()));
+    put_u32(out, 0x4E4F534A);  // JSON
+    out += json_text;
+    if (original.has_bin) {
+        put_u32(out, static_cast<uint32_t>(bin.size()));
+        put_u32(out, 0x004E4942);  // BIN
+        out += bin;
+    }
+    return out;
+}
+
+}  // namespace
+
+tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
+                                bool quiet) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool binary = ext == ".glb";
+    if (bytes.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
+    nlohmann::json doc = validate_gltf(path, bytes, binary, base_dir);
+
+    // Placeholder buffers of EXT_meshopt_compression, and Draco primitives' indices, get data tinygltf can
+    // load: the file goes to it rewritten.
+    const MeshoptPlan meshopt = prepare_meshopt(doc, binary);
+    const bool draco_stand_ins = prepare_draco(doc);
+    std::string rewritten;
+    if (!meshopt.placeholders.empty() || draco_stand_ins) {
+        rewritten = binary ? make_glb(doc.dump(), split_glb(path, bytes)) : doc.dump();
+        if (rewritten.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
+        bytes = rewritten;
+    }
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skip_image, nullptr);
+    if (!base_dir) loader.SetFsCallbacks({&no_file_exists, &unexpanded, &no_external_file, &no_file_written, nullptr});
+    const std::string dir = base_dir ? base_dir->string() : std::string();
+    tinygltf::Model model;
+    std::string err, warn;
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, dir)
+                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
+    if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
+    if (!warn.empty() && !quiet) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
+    if (!meshopt.empty()) decode_meshopt(path, meshopt, model);
+    decode_draco(path, model);
+    return model;
+}
+
+}  // namespace stipple

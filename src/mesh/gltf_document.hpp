@@ -1,0 +1,21 @@
+#pragma once
+// A glTF 2.0 file (.gltf or .glb, chosen by the path's extension) as tinygltf's model, ready to read:
+// checked field by field first (gltf_validate: tinygltf reads a field of the wrong type as absent and
+// trusts sizes), loaded by tinygltf without decoding images, and with EXT_meshopt_compression's views
+// (gltf_meshopt) and KHR_draco_mesh_compression's primitives (gltf_draco) decoded. The static loader
+// (gltf_loader.cpp) and the animation loader read the same model.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <tiny_gltf.h>
+
+namespace stipple {
+
+// `base_dir`: the folder external buffers are resolved against; nullptr when the bytes did not come from
+// a file (an external buffer is then an error). tinygltf's warnings are printed to stderr unless
+// `quiet`. Throws stipple::Error "<path>: <problem>".
+tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
+                                bool quiet = false);
+
+}  // namespace stipple
