@@ -5,7 +5,9 @@
 
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <memory>
+#include <new>
 #include <vector>
 
 #include <draco/compression/decode.h>
@@ -26,8 +28,9 @@ int failed(StippleDracoMesh* out, const char* problem) {
 
 }  // namespace
 
-extern "C" int stipple_draco_decode(const unsigned char* data, size_t size, StippleDracoMesh* out) {
-    *out = StippleDracoMesh{};
+namespace {
+
+int decode(const unsigned char* data, size_t size, StippleDracoMesh* out) {
     draco::DecoderBuffer bitstream;
     bitstream.Init(reinterpret_cast<const char*>(data), size);
     draco::Decoder decoder;
@@ -73,6 +76,21 @@ extern "C" int stipple_draco_decode(const unsigned char* data, size_t size, Stip
     out->attributes = owned->attributes.data();
     out->owner = owned.release();
     return 0;
+}
+
+}  // namespace
+
+extern "C" int stipple_draco_decode(const unsigned char* data, size_t size, StippleDracoMesh* out) {
+    *out = StippleDracoMesh{};
+    // Nothing may leave through the C interface: a header that asks for more than memory holds is one more
+    // way for a bitstream not to decode.
+    try {
+        return decode(data, size, out);
+    } catch (const std::bad_alloc&) {
+        return failed(out, "the bitstream asks for more memory than there is");
+    } catch (const std::exception& e) {
+        return failed(out, e.what());
+    }
 }
 
 extern "C" void stipple_draco_free(StippleDracoMesh* mesh) {

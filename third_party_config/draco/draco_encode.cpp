@@ -3,12 +3,15 @@
 #include "mesh/draco_codec.h"
 
 #include <cstring>
+#include <exception>
 
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 
-extern "C" int stipple_draco_encode(uint32_t points, const uint32_t* corners, uint32_t faces, StippleDracoInput* attributes,
-                                    uint32_t attribute_count, int position_bits, unsigned char** bytes, size_t* size) {
+namespace {
+
+int encode(uint32_t points, const uint32_t* corners, uint32_t faces, StippleDracoInput* attributes,
+           uint32_t attribute_count, int position_bits, unsigned char** bytes, size_t* size) {
     draco::Mesh mesh;
     mesh.set_num_points(points);
     for (uint32_t f = 0; f < faces; ++f)
@@ -37,6 +40,17 @@ extern "C" int stipple_draco_encode(uint32_t points, const uint32_t* corners, ui
     *bytes = new unsigned char[encoded.size()];
     std::memcpy(*bytes, encoded.data(), encoded.size());
     return 0;
+}
+
+}  // namespace
+
+extern "C" int stipple_draco_encode(uint32_t points, const uint32_t* corners, uint32_t faces, StippleDracoInput* attributes,
+                                    uint32_t attribute_count, int position_bits, unsigned char** bytes, size_t* size) {
+    try {
+        return encode(points, corners, faces, attributes, attribute_count, position_bits, bytes, size);
+    } catch (...) {  // nothing leaves through the C interface
+        return 1;
+    }
 }
 
 extern "C" void stipple_draco_free_bytes(unsigned char* bytes) { delete[] bytes; }
