@@ -206,6 +206,14 @@ TEST(GltfCompression, MeshoptCompressedViewsLoadExactly) {
             EXPECT_EQ(loaded.positions, plain.positions) << indices;
             EXPECT_EQ(loaded.normals, plain.normals) << indices;
         }
+    // The same as a .gltf whose compressed bytes are a data: URI (the placeholder rewritten as JSON, not GLB).
+    const std::string glb = test::meshopt_pack_glb(b.glb());
+    const GlbChunks chunks = split_glb("packed.glb", glb);  // views into glb
+    json doc = json::parse(chunks.json);
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + test::base64(chunks.bin);
+    const Mesh text = load_mesh(write("gltf_meshopt", "packed.gltf", doc.dump()));
+    EXPECT_EQ(text.positions, plain.positions);
+    EXPECT_EQ(text.indices, plain.indices);
 }
 
 TEST(GltfCompression, OctahedralNormalsDecode) {
