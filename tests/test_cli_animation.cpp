@@ -117,6 +117,14 @@ TEST(CliAnimation, CompressedFilesRenderAsThePlainOne) {
         images.push_back(read_png(png));
         masks.push_back(read_png(mask));
     }
+    // `info` says what was decoded (nothing for the plain file).
+    const std::string said[3] = {"", "decoded:             EXT_meshopt_compression (", "decoded:             KHR_draco_mesh_compression (1 primitive)"};
+    for (int i = 0; i < 3; ++i) {
+        auto r = run_stipple(sparse({"info", files[i]}));
+        ASSERT_EQ(r.exit_code, 0) << files[i] << ": " << r.err;
+        if (i == 0) EXPECT_EQ(r.out.find("decoded:"), std::string::npos) << r.out;
+        else EXPECT_NE(r.out.find(said[i]), std::string::npos) << r.out;
+    }
     EXPECT_EQ(differing_pixels(images[0], images[1]), 0u) << "meshopt";
     EXPECT_EQ(differing_pixels(masks[0], masks[2]), 0u) << "Draco";
     EXPECT_GT(differing_pixels(images[0], images[2]), 0u) << "Draco's order makes other stipples: not the same file read twice";

@@ -35,6 +35,7 @@ DrawingOrder reorder_for_drawing(const Mesh& file_order) {
     order.mesh.source = file_order.source;
     order.mesh.winding = file_order.winding;
     order.mesh.duplicates_dropped = file_order.duplicates_dropped;
+    order.mesh.decoded = file_order.decoded;
     order.mesh.normals.resize(tagged.positions.size());
     for (size_t i = 0; i < tagged.positions.size(); ++i) {
         const uint32_t o = static_cast<uint32_t>(tagged.normals[i].x) | static_cast<uint32_t>(tagged.normals[i].y) << 16;

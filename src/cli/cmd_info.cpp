@@ -102,7 +102,7 @@ int run_info(const std::vector<std::string>& argv) {
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
             "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, "
             "\"parts_turned_outward\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
-            "\"duplicates_dropped\": %zu, %s}\n",
+            "\"duplicates_dropped\": %zu, \"decoded\": \"%s\", %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
             object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
@@ -110,7 +110,7 @@ int run_info(const std::vector<std::string>& argv) {
             stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
             mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against,
             mesh.winding.parts_turned_outward, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
-            mesh.duplicates_dropped,
+            mesh.duplicates_dropped, mesh.decoded.c_str(),
             animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());
@@ -122,6 +122,7 @@ int run_info(const std::vector<std::string>& argv) {
         if (mesh.duplicates_dropped > 0)
             std::printf("repeated faces:      %zu dropped (the same corners in the same order as an earlier face)\n",
                         mesh.duplicates_dropped);
+        if (!mesh.decoded.empty()) std::printf("decoded:             %s\n", mesh.decoded.c_str());
         std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,
                     bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
         std::printf("bounding sphere:     centre (%.6g, %.6g, %.6g), radius %.6g%s\n", object.bounds.center.x,

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/gltf_draco.hpp"
@@ -56,7 +58,7 @@ std::string make_glb(std::string json_text, const GlbChunks& original) {
 }  // namespace
 
 tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
-                                bool quiet) {
+                                bool quiet, std::string* decoded) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const bool binary = ext == ".glb";
@@ -86,7 +88,19 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
     if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
     if (!warn.empty() && !quiet) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
     if (!meshopt.empty()) decode_meshopt(path, meshopt, model);
-    decode_draco(path, model);
+    const size_t draco_primitives = decode_draco(path, model);
+    if (decoded) {
+        auto count = [](size_t n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
+        std::vector<std::string> parts;
+        if (!meshopt.views.empty()) parts.push_back("EXT_meshopt_compression (" + count(meshopt.views.size(), "buffer view") + ")");
+        if (draco_primitives) parts.push_back("KHR_draco_mesh_compression (" + count(draco_primitives, "primitive") + ")");
+        const auto used = doc.find("extensionsUsed");
+        if (used != doc.end() && used->is_array())
+            for (const nlohmann::json& e : *used)
+                if (e == "KHR_mesh_quantization") parts.push_back("KHR_mesh_quantization");
+        decoded->clear();
+        for (const std::string& part : parts) *decoded += (decoded->empty() ? "" : ", ") + part;
+    }
     return model;
 }
 

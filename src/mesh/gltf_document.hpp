@@ -14,8 +14,10 @@ namespace stipple {
 
 // `base_dir`: the folder external buffers are resolved against; nullptr when the bytes did not come from
 // a file (an external buffer is then an error). tinygltf's warnings are printed to stderr unless
-// `quiet`. Throws stipple::Error "<path>: <problem>".
+// `quiet`. `decoded`, when given, says which storage extensions were decoded, e.g.
+// "EXT_meshopt_compression (3 buffer views), KHR_mesh_quantization", or "" for none.
+// Throws stipple::Error "<path>: <problem>".
 tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
-                                bool quiet = false);
+                                bool quiet = false, std::string* decoded = nullptr);
 
 }  // namespace stipple

@@ -165,7 +165,8 @@ bool prepare_draco(nlohmann::json& doc) {
     return stand_in >= 0;
 }
 
-void decode_draco(const std::string& file, tinygltf::Model& model) {
+size_t decode_draco(const std::string& file, tinygltf::Model& model) {
+    size_t decoded = 0;
     for (size_t m = 0; m < model.meshes.size(); ++m)
         for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
             tinygltf::Primitive& prim = model.meshes[m].primitives[p];
@@ -174,7 +175,9 @@ void decode_draco(const std::string& file, tinygltf::Model& model) {
             const std::string field = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
                                       "].extensions.KHR_draco_mesh_compression";
             PrimitiveDecoder(file, model, field).run(prim, extension->second);
+            ++decoded;
         }
+    return decoded;
 }
 
 }  // namespace stipple

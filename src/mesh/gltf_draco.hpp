@@ -17,8 +17,9 @@ namespace stipple {
 // decode_draco replaces. Returns whether the document changed.
 bool prepare_draco(nlohmann::json& doc);
 
-// Throws stipple::Error "<file>: meshes[m].primitives[p].extensions.KHR_draco_mesh_compression: ..." for a
-// bitstream that does not decode or does not match its accessors.
-void decode_draco(const std::string& file, tinygltf::Model& model);
+// Returns how many primitives were decoded. Throws stipple::Error
+// "<file>: meshes[m].primitives[p].extensions.KHR_draco_mesh_compression: ..." for a bitstream that does not
+// decode or does not match its accessors.
+size_t decode_draco(const std::string& file, tinygltf::Model& model);
 
 }  // namespace stipple

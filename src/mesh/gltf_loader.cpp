@@ -209,8 +209,11 @@ private:
 
 Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
                 const LoadOptions& options) {
-    const tinygltf::Model model = read_gltf_model(path, bytes, base_dir);
-    return Loader(path, model, options).run();
+    std::string decoded;
+    const tinygltf::Model model = read_gltf_model(path, bytes, base_dir, false, &decoded);
+    Mesh mesh = Loader(path, model, options).run();
+    mesh.decoded = std::move(decoded);
+    return mesh;
 }
 
 }  // namespace stipple

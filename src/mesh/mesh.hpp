@@ -40,6 +40,7 @@ struct Mesh {
     std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
     WindingRepair winding;             // set by load_mesh
     size_t duplicates_dropped = 0;     // set by load_mesh (drop_duplicate_triangles)
+    std::string decoded;               // set by the glTF loader: the storage extensions it decoded, for `info`
 
     size_t triangle_count() const { return indices.size() / 3; }
     size_t vertex_count() const { return positions.size(); }
