@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "mesh/gltf_validate.hpp"
 
 namespace stipple::anim {
 
@@ -21,11 +22,6 @@ size_t components_of(const std::string& type) {
     fail("GltfBuilder: unknown accessor type '" + type + "'");
 }
 
-void put_u32(std::string& out, uint32_t v) {
-    char raw[4];
-    std::memcpy(raw, &v, 4);  // glTF is little-endian, as every machine this runs on
-    out.append(raw, 4);
-}
 
 }  // namespace
 
@@ -79,21 +75,7 @@ std::string GltfBuilder::glb() const {
     std::string bin = bin_;
     while (bin.size() % 4) bin += '\0';
     if (!bin.empty()) d["buffers"] = nlohmann::json::array({{{"byteLength", bin.size()}}});
-    std::string json = d.dump();
-    while (json.size() % 4) json += ' ';
-    std::string out;
-    put_u32(out, 0x46546C67);  // "glTF"
-    put_u32(out, 2);
-    put_u32(out, static_cast<uint32_t>(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
-    put_u32(out, static_cast<uint32_t>(json.size()));
-    put_u32(out, 0x4E4F534A);  // "JSON"
-    out += json;
-    if (!bin.empty()) {
-        put_u32(out, static_cast<uint32_t>(bin.size()));
-        put_u32(out, 0x004E4942);  // "BIN\0"
-        out += bin;
-    }
-    return out;
+    return join_glb(d.dump(), bin);
 }
 
 void GltfBuilder::write(const std::string& path) const {

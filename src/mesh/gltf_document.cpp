@@ -31,30 +31,6 @@ bool no_file_exists(const std::string&, void*) { return false; }
 std::string unexpanded(const std::string& path, void*) { return path; }
 bool no_file_written(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
-void put_u32(std::string& out, uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
-}
-
-// A .glb of `json_text` and `bin` (the original BIN chunk, if any), each chunk padded as GLB requires.
-std::string make_glb(std::string json_text, const GlbChunks& original) {
-    while (json_text.size() % 4) json_text.push_back(' ');
-    std::string bin(original.bin);
-    while (bin.size() % 4) bin.push_back('\0');
-    const uint64_t total = 12 + 8 + json_text.size() + (original.has_bin ? 8 + bin.size() : 0);
-    std::string out = "glTF";
-    put_u32(out, 2);
-    put_u32(out, static_cast<uint32_t>(total));
-    put_u32(out, static_cast<uint32_t>(json_text.size()));
-    put_u32(out, 0x4E4F534A);  // JSON
-    out += json_text;
-    if (original.has_bin) {
-        put_u32(out, static_cast<uint32_t>(bin.size()));
-        put_u32(out, 0x004E4942);  // BIN
-        out += bin;
-    }
-    return out;
-}
-
 }  // namespace
 
 tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
@@ -71,7 +47,7 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
     const bool draco_stand_ins = prepare_draco(doc);
     std::string rewritten;
     if (!meshopt.placeholders.empty() || draco_stand_ins) {
-        rewritten = binary ? make_glb(doc.dump(), split_glb(path, bytes)) : doc.dump();
+        rewritten = binary ? join_glb(doc.dump(), split_glb(path, bytes).bin) : doc.dump();
         if (rewritten.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
         bytes = rewritten;
     }

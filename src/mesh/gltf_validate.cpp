@@ -534,6 +534,27 @@ GlbChunks split_glb(const std::string& name, std::string_view bytes) {
     return chunks;
 }
 
+std::string join_glb(std::string_view json, std::string_view bin) {
+    auto put_u32 = [](std::string& out, uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+    };
+    const size_t json_padded = (json.size() + 3) / 4 * 4, bin_padded = (bin.size() + 3) / 4 * 4;
+    std::string out = "glTF";
+    put_u32(out, 2);
+    put_u32(out, static_cast<uint32_t>(12 + 8 + json_padded + (bin.empty() ? 0 : 8 + bin_padded)));
+    put_u32(out, static_cast<uint32_t>(json_padded));
+    put_u32(out, 0x4E4F534A);  // JSON
+    out += json;
+    out.append(json_padded - json.size(), ' ');
+    if (!bin.empty()) {
+        put_u32(out, static_cast<uint32_t>(bin_padded));
+        put_u32(out, 0x004E4942);  // BIN
+        out += bin;
+        out.append(bin_padded - bin.size(), '\0');
+    }
+    return out;
+}
+
 json validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir) {
     GlbChunks glb;
     if (binary) glb = split_glb(name, bytes);

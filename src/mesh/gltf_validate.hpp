@@ -32,6 +32,10 @@ struct GlbChunks {
 // glTF 1.0 binary file.
 GlbChunks split_glb(const std::string& name, std::string_view bytes);
 
+// The inverse: a .glb container of a JSON document and a binary chunk (none when `bin` is empty), each
+// padded as GLB requires.
+std::string join_glb(std::string_view json, std::string_view bin);
+
 // Validates a whole .gltf (binary == false: the bytes are JSON) or .glb file. `base_dir` is the folder
 // external buffers are resolved against; nullptr when the bytes did not come from a file, and then an
 // external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>". Returns the document.

@@ -1,5 +1,7 @@
 #include "support/model_files.hpp"
 
+#include "mesh/gltf_validate.hpp"
+
 #include <cstdint>
 #include <fstream>
 #include <stdexcept>
@@ -28,22 +30,6 @@ std::string base64(std::string_view bytes) {
     return out;
 }
 
-std::string make_glb(const std::string& json, const std::string& bin) {
-    std::string json_chunk = json, bin_chunk = bin;
-    while (json_chunk.size() % 4) json_chunk += ' ';
-    while (bin_chunk.size() % 4) bin_chunk += '\0';
-    const uint32_t total = 12 + 8 + static_cast<uint32_t>(json_chunk.size()) +
-                           (bin_chunk.empty() ? 0 : 8 + static_cast<uint32_t>(bin_chunk.size()));
-    ByteWriter w;
-    w.put<uint32_t>(0x46546C67).put<uint32_t>(2).put<uint32_t>(total);  // "glTF", version 2
-    w.put<uint32_t>(static_cast<uint32_t>(json_chunk.size())).put<uint32_t>(0x4E4F534A);  // "JSON"
-    std::string out = w.bytes() + json_chunk;
-    if (!bin_chunk.empty()) {
-        ByteWriter c;
-        c.put<uint32_t>(static_cast<uint32_t>(bin_chunk.size())).put<uint32_t>(0x004E4942);  // "BIN\0"
-        out += c.bytes() + bin_chunk;
-    }
-    return out;
-}
+std::string make_glb(const std::string& json, const std::string& bin) { return join_glb(json, bin); }
 
 }  // namespace stipple::test
