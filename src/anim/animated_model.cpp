@@ -5,11 +5,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "anim/gltf_reading.hpp"
 #include "core/error.hpp"
-#include "mesh/gltf_document.hpp"
 #include "mesh/loader_util.hpp"
 
 namespace stipple::anim {
@@ -57,12 +55,6 @@ std::string lower_extension(const std::string& path) {
 
 }  // namespace
 
-tinygltf::Model parse_gltf(const std::string& path) {
-    // The static loader read the same file a moment ago and printed its warnings.
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    return read_gltf_model(path, read_file(path), &folder, true);
-}
-
 bool AnimatedModel::is_animated() const {
     return std::any_of(animations.begin(), animations.end(), [](const Animation& a) { return !a.channels.empty(); });
 }
@@ -72,8 +64,8 @@ AnimatedModel load_animated_model(const std::string& path, const LoadOptions& op
     if (ext != ".gltf" && ext != ".glb") fail_file(path, "animation needs a glTF file (.gltf or .glb)");
     // The static loader decides the rest mesh (its checks, normals and orientation); the streams read
     // here are matched to its vertices.
-    const Mesh file_order = load_mesh(path, options);
-    const tinygltf::Model gltf = parse_gltf(path);
+    tinygltf::Model gltf;
+    const Mesh file_order = load_gltf_mesh(path, options, gltf);
 
     AnimatedModel model;
     model.source = path;

@@ -39,7 +39,4 @@ void read_gltf_scene(const std::string& path, const tinygltf::Model& gltf, const
 void read_gltf_animations(const std::string& path, const tinygltf::Model& gltf, const LoadOptions& options,
                           AnimatedModel& model);
 
-// The file's glTF model as the static loader reads it (mesh/gltf_document.hpp); errors name the file.
-tinygltf::Model parse_gltf(const std::string& path);
-
 }  // namespace stipple::anim

@@ -208,11 +208,12 @@ private:
 }  // namespace
 
 Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
-                const LoadOptions& options) {
+                const LoadOptions& options, tinygltf::Model* document) {
     std::string decoded;
-    const tinygltf::Model model = read_gltf_model(path, bytes, base_dir, false, &decoded);
+    tinygltf::Model model = read_gltf_model(path, bytes, base_dir, false, &decoded);
     Mesh mesh = Loader(path, model, options).run();
     mesh.decoded = std::move(decoded);
+    if (document) *document = std::move(model);
     return mesh;
 }
 

@@ -87,11 +87,9 @@ Mesh finish(Mesh mesh, const std::string& name) {
     return mesh;
 }
 
-}  // namespace
-
-Mesh load_mesh(const std::string& path, const LoadOptions& options) {
+// Checked here so that every format reports these the same way, before any parser sees them.
+void check_model_file(const std::string& path) {
     namespace fs = std::filesystem;
-    // Checked here so that every format reports these the same way, before any parser sees them.
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (ec && ec != std::errc::no_such_file_or_directory) fail_file(path, "cannot access: " + ec.message());
@@ -101,10 +99,24 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) fail_file(path, "cannot read the file size: " + ec.message());
     if (size == 0) fail_file(path, "file is empty");
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path, const LoadOptions& options) {
+    check_model_file(path);
     const Format format = format_of(path);
     const std::string bytes = read_file(path);
-    const fs::path base_dir = fs::path(path).parent_path();
+    const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
     return finish(parse(format, path, bytes, &base_dir, options), path);
+}
+
+Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document) {
+    check_model_file(path);
+    if (format_of(path) != Format::gltf) fail_file(path, "expected a glTF file (.gltf or .glb)");
+    const std::string bytes = read_file(path);
+    const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
+    return finish(parse_gltf(path, bytes, &base_dir, options, &document), path);
 }
 
 Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {

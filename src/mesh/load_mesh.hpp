@@ -5,6 +5,10 @@
 
 #include "mesh/mesh.hpp"
 
+namespace tinygltf {
+class Model;
+}
+
 namespace stipple {
 
 struct LoadOptions {
@@ -22,6 +26,10 @@ struct LoadOptions {
 // Every problem throws stipple::Error with one line "<path>: <problem>".
 Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 
+// load_mesh of a .gltf or .glb that also hands back the document it read, decoded (mesh/gltf_document.hpp):
+// the animation loader reads skins and animations from it, so an animated file is read and decoded once.
+Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document);
+
 // load_mesh, then optimize_draw_order: what every renderer draws (render, view, info, bench).
 Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options = {});
 
@@ -38,7 +46,8 @@ Mesh load_gltf(const std::string& path, const LoadOptions& options);  // .gltf a
 // external glTF buffers are resolved against, or nullptr when there is none (bytes from memory).
 Mesh parse_obj(const std::string& name, std::string_view text, const LoadOptions& options);
 Mesh parse_ply(const std::string& name, std::string_view bytes, const LoadOptions& options);
+// `document`, when given, receives the glTF document the mesh was read from.
 Mesh parse_gltf(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
-                const LoadOptions& options);
+                const LoadOptions& options, tinygltf::Model* document = nullptr);
 
 }  // namespace stipple
