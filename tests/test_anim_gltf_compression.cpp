@@ -18,7 +18,7 @@
 #include "anim/pose.hpp"
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
-#include "mesh/gltf_validate.hpp"
+#include "mesh/glb_container.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/loader_util.hpp"
 #include "mesh/primitives.hpp"

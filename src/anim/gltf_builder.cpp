@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "mesh/gltf_validate.hpp"
+#include "mesh/glb_container.hpp"
 
 namespace stipple::anim {
 

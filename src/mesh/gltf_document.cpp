@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "mesh/gltf_draco.hpp"
 #include "mesh/gltf_meshopt.hpp"
+#include "mesh/glb_container.hpp"
 #include "mesh/gltf_validate.hpp"
 #include "mesh/loader_util.hpp"
 

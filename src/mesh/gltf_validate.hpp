@@ -21,21 +21,6 @@
 
 namespace stipple {
 
-// The JSON and binary chunks of a .glb, after its header and chunk lengths are checked.
-struct GlbChunks {
-    std::string_view json;
-    bool has_bin = false;
-    std::string_view bin;
-};
-
-// Splits a .glb container; throws stipple::Error "<name>: ..." for a bad header or chunk, and for a
-// glTF 1.0 binary file.
-GlbChunks split_glb(const std::string& name, std::string_view bytes);
-
-// The inverse: a .glb container of a JSON document and a binary chunk (none when `bin` is empty), each
-// padded as GLB requires.
-std::string join_glb(std::string_view json, std::string_view bin);
-
 // Validates a whole .gltf (binary == false: the bytes are JSON) or .glb file. `base_dir` is the folder
 // external buffers are resolved against; nullptr when the bytes did not come from a file, and then an
 // external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>". Returns the document.

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesh/draco_codec.h"
-#include "mesh/gltf_validate.hpp"
+#include "mesh/glb_container.hpp"
 #include "support/model_files.hpp"
 
 namespace stipple::test {

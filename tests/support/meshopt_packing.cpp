@@ -8,7 +8,7 @@
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh/gltf_validate.hpp"
+#include "mesh/glb_container.hpp"
 #include "support/model_files.hpp"
 
 namespace stipple::test {

@@ -1,6 +1,6 @@
 #include "support/model_files.hpp"
 
-#include "mesh/gltf_validate.hpp"
+#include "mesh/glb_container.hpp"
 
 #include <cstdint>
 #include <fstream>
