@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "render/density_formulas.hpp"
 #include "render/polygon_constants.hpp"
+#include "stipple/barycentric.hpp"
 #include "stipple/object_data.hpp"
 #include "support/anim_files.hpp"
 #include "support/gpu_test.hpp"
@@ -70,18 +71,6 @@ glm::dvec2 window_position(const FrameView& view, const glm::vec3& object_point)
     const glm::dvec4 clip = glm::dmat4(view.camera.proj * view.camera.view) * glm::dvec4(glm::dvec3(object_point), 1.0);
     const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
     return {0.5 * (ndc.x + 1.0) * view.extent.width, 0.5 * (1.0 - ndc.y) * view.extent.height};
-}
-
-// A candidate's place in its triangle, (u, v) with p = a + u (b - a) + v (c - a), from its rest position.
-glm::dvec2 barycentric(const Mesh& mesh, uint32_t t, const glm::vec3& p) {
-    const glm::dvec3 a = mesh.positions[mesh.indices[3 * t]];
-    const glm::dvec3 e0 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - a;
-    const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - a;
-    const glm::dvec3 d = glm::dvec3(p) - a;
-    const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
-    const double den = d00 * d11 - d01 * d01;
-    if (!(den > 0.0)) return {0.0, 0.0};
-    return {(d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / den, (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / den};
 }
 
 glm::vec3 surface_point(const Mesh& mesh, const std::vector<glm::vec3>& positions, uint32_t t, glm::dvec2 uv) {
@@ -404,7 +393,7 @@ TEST_F(GpuAnimation, StipplesStickToTheSkin) {
     const FrameView view = test::framed_view(loaded.model.bounds, target.extent(), 1.0f, 70.0f, 20.0f);
 
     std::vector<glm::dvec2> uv(stipples.size());
-    for (size_t i = 0; i < uv.size(); ++i) uv[i] = barycentric(rest, stipples.triangle[i], stipples.positions[i]);
+    for (size_t i = 0; i < uv.size(); ++i) uv[i] = barycentric_uv(rest, stipples.triangle[i], stipples.positions[i]);
 
     struct Frame {
         std::vector<uint32_t> drawn;
