@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "anim/deform_cpu.hpp"
 #include "anim/describe.hpp"
@@ -12,6 +13,7 @@
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "mesh/loader_util.hpp"
 #include "support/anim_files.hpp"
 #include "support/test_paths.hpp"
 
@@ -227,6 +229,42 @@ TEST(AnimLoading, ProbeTellsAnimatedFilesBeforeLoading) {
     // Cannot tell: the full loader will say what is wrong.
     EXPECT_TRUE(gltf_declares_animations(write("broken.gltf", "{ not json")));
     EXPECT_TRUE(gltf_declares_animations((dir / "missing.glb").string()));
+}
+
+}  // namespace
+}  // namespace stipple::anim
+
+namespace stipple::anim {
+namespace {
+
+TEST(AnimLoading, FromBytesAsFromTheFile) {
+    // The animation fuzzer's seeds (tests/fuzz/corpus/anim, the procedural rigs as .glb and as .gltf
+    // with embedded buffers) read from memory give the model the file gives, and they stay seeds that
+    // animate: a seed that stopped loading would leave the fuzzer mutating refusals.
+    namespace fs = std::filesystem;
+    size_t seeds = 0;
+    for (const auto& entry : fs::directory_iterator(test::source_path("tests/fuzz/corpus/anim"))) {
+        const std::string path = entry.path().string();
+        SCOPED_TRACE(path);
+        const AnimatedModel from_file = load_animated_model(path);
+        const AnimatedModel from_bytes = load_animated_model_from_bytes(entry.path().filename().string(), read_file(path));
+        EXPECT_TRUE(from_file.is_animated());
+        EXPECT_EQ(from_bytes.rest.positions, from_file.rest.positions);
+        EXPECT_EQ(from_bytes.rest.indices, from_file.rest.indices);
+        ASSERT_EQ(from_bytes.animations.size(), from_file.animations.size());
+        const double t = 0.4 * from_file.animations[0].duration;
+        EXPECT_EQ(deform_cpu(from_bytes, evaluate_pose(from_bytes, 0, t)).positions,
+                  deform_cpu(from_file, evaluate_pose(from_file, 0, t)).positions);
+        ++seeds;
+    }
+    EXPECT_GE(seeds, 10u);
+    // Named by the name it is given, as every message of the file loader is by its path.
+    try {
+        load_animated_model_from_bytes("broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": 3}");
+        ADD_FAILURE() << "a broken document loaded";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("broken.gltf: ", 0), 0u) << e.what();
+    }
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 # one process on one core). Fails on any crash, sanitizer report, leak, hang (-timeout) or allocation
 # over the limits (-rss_limit_mb, -malloc_limit_mb); the input that did it is left in
 # <build>/fuzz/<harness>/ (turn it into a regression file: tests/fuzz/README.md).
-# Usage: tools/run_fuzzers.sh [SECONDS per harness, default 60] [HARNESS...: obj ply gltf scene]
+# Usage: tools/run_fuzzers.sh [SECONDS per harness, default 60] [HARNESS...: obj ply gltf anim scene]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 source "$(dirname "${BASH_SOURCE[0]}")/sanitizer_env.sh"
@@ -12,7 +12,7 @@ cd "$STIPPLE_ROOT"
 seconds="${1:-60}"
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(obj ply gltf scene)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(obj ply gltf anim scene)
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "run_fuzzers: SECONDS must be a whole number, got '$seconds'" >&2; exit 2; }
 
 third_party_config/install_deps.sh
@@ -24,9 +24,10 @@ cmake --build "$STIPPLE_ASAN_BUILD" -j "$STIPPLE_JOBS" --target "${harnesses[@]/
 fuzz_one() {
   local h=$1 out="$STIPPLE_ASAN_BUILD/fuzz/$1" rc=0
   mkdir -p "$out/corpus"
-  # New inputs go to the first folder (the build's); the committed seeds are only read.
+  # New inputs go to the first folder (the build's); the committed seeds are only read. fuzz_anim reads
+  # glTF too and shares its dictionary.
   "$STIPPLE_ASAN_BUILD/tests/fuzz/fuzz_$h" "$out/corpus" "tests/fuzz/corpus/$h" \
-    -dict="tests/fuzz/dict/$h.dict" -max_total_time="$seconds" -timeout=10 \
+    -dict="tests/fuzz/dict/${h/#anim/gltf}.dict" -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -malloc_limit_mb=1024 -max_len=16384 -print_final_stats=1 \
     -artifact_prefix="$out/" >"$out/log.txt" 2>&1 || rc=$?
   echo "$rc" >"$out/exit_code"

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -133,5 +134,10 @@ struct AnimatedModel {
 // mismatched sampler counts, decreasing key times, joints beyond their skin, weights summing to zero,
 // accessors of the wrong type) throws stipple::Error, one line naming the file and the field.
 AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options = {});
+
+// The same from bytes in memory (the fuzzer): `name`'s extension chooses .gltf or .glb and names the
+// model in every message; a .gltf read this way cannot refer to external buffer files.
+AnimatedModel load_animated_model_from_bytes(const std::string& name, std::string_view bytes,
+                                             const LoadOptions& options = {});
 
 }  // namespace stipple::anim

@@ -113,10 +113,15 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
 
 Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document) {
     check_model_file(path);
-    if (format_of(path) != Format::gltf) fail_file(path, "expected a glTF file (.gltf or .glb)");
-    const std::string bytes = read_file(path);
     const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
-    return finish(parse_gltf(path, bytes, &base_dir, options, &document), path);
+    return load_gltf_mesh_from_bytes(path, read_file(path), &base_dir, options, document);
+}
+
+Mesh load_gltf_mesh_from_bytes(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
+                               const LoadOptions& options, tinygltf::Model& document) {
+    if (format_of(name) != Format::gltf) fail_file(name, "expected a glTF file (.gltf or .glb)");
+    if (bytes.empty()) fail_file(name, "file is empty");
+    return finish(parse_gltf(name, bytes, base_dir, options, &document), name);
 }
 
 Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {

@@ -29,6 +29,9 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options = {});
 // load_mesh of a .gltf or .glb that also hands back the document it read, decoded (mesh/gltf_document.hpp):
 // the animation loader reads skins and animations from it, so an animated file is read and decoded once.
 Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document);
+// The same from bytes in memory (`base_dir` as for parse_gltf; the format from `name`'s extension).
+Mesh load_gltf_mesh_from_bytes(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
+                               const LoadOptions& options, tinygltf::Model& document);
 
 // load_mesh, then optimize_draw_order: what every renderer draws (render, view, info, bench).
 Mesh load_mesh_for_drawing(const std::string& path, const LoadOptions& options = {});
