@@ -171,10 +171,10 @@ const GltfCase kGltfCases[] = {
      "extensionsRequired[0]: 'KHR_materials_unlit' is required but not listed in extensionsUsed"},
     {"required_unsupported",
      [](json& d) {
-         d["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
-         d["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+         d["extensionsUsed"] = {"KHR_animation_pointer"};
+         d["extensionsRequired"] = {"KHR_animation_pointer"};
      },
-     "extensionsRequired[0]: the file requires extension 'EXT_mesh_gpu_instancing', which stipple does not support"},
+     "extensionsRequired[0]: the file requires extension 'KHR_animation_pointer', which stipple does not support"},
     // Counts beyond the data.
     {"count_beyond_view", [](json& d) { d["accessors"][0]["count"] = 100000000; },
      "accessors[0].count: 100000000 elements of 12 bytes (12 apart) from byteOffset 0 do not fit in buffer view 0 (36 bytes)"},

@@ -62,6 +62,10 @@ int GltfBuilder::add_uint16(const std::vector<uint16_t>& data, const std::string
     return add_accessor(data.data(), data.size() * 2, 5123, type, data.size() / components_of(type), false);
 }
 
+int GltfBuilder::add_int16(const std::vector<int16_t>& data, const std::string& type, bool normalized) {
+    return add_accessor(data.data(), data.size() * 2, 5122, type, data.size() / components_of(type), normalized);
+}
+
 int GltfBuilder::add_uint8(const std::vector<uint8_t>& data, const std::string& type, bool normalized) {
     return add_accessor(data.data(), data.size(), 5121, type, data.size() / components_of(type), normalized);
 }

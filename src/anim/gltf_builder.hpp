@@ -19,6 +19,7 @@ public:
     // ("SCALAR", "VEC3", "MAT4", ...); returns the accessor's index. Float accessors get min and max.
     int add_floats(const std::vector<float>& data, const std::string& type);
     int add_uint16(const std::vector<uint16_t>& data, const std::string& type);
+    int add_int16(const std::vector<int16_t>& data, const std::string& type, bool normalized = false);
     int add_uint8(const std::vector<uint8_t>& data, const std::string& type, bool normalized = false);
     int add_uint32(const std::vector<uint32_t>& data, const std::string& type);
 

@@ -2,6 +2,8 @@
 // vertex order (see gltf_reading.hpp). Every index and count is checked: tinygltf checks none.
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <utility>
@@ -13,6 +15,7 @@
 #include "core/error.hpp"
 #include "deform_types.h"
 #include "mesh/gltf_accessor.hpp"
+#include "mesh/gltf_instancing.hpp"
 
 namespace stipple::anim {
 
@@ -23,11 +26,13 @@ const std::vector<int> kJointTypes = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TIN
 
 std::string indexed(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
 
+constexpr uint32_t kNoSlot = UINT32_MAX;  // add_primitive: no palette slot chosen by the caller
+
 class SceneReader {
 public:
     SceneReader(const std::string& path, const tinygltf::Model& gltf, const LoadOptions& options, AnimatedModel& model,
                 FileOrderStreams& streams)
-        : path_(path), gltf_(gltf), accessors_(path, gltf, options), model_(model), streams_(streams) {}
+        : path_(path), gltf_(gltf), options_(options), accessors_(path, gltf, options), model_(model), streams_(streams) {}
 
     void run() {
         read_nodes();
@@ -56,7 +61,9 @@ public:
             const Node& node = model_.nodes[index];
             const glm::dmat4 world =
                 parent * (node.has_matrix ? node.matrix : trs_matrix(node.translation, node.rotation, node.scale));
-            if (gltf_.nodes[index].mesh >= 0) add_instance(gltf_.nodes[index].mesh, index, world);
+            if (gltf_.nodes[index].mesh >= 0)
+                add_instance(gltf_.nodes[index].mesh, index, world,
+                             read_gpu_instances(path_, gltf_, index, accessors_, options_));
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
         }
     }
@@ -154,7 +161,9 @@ private:
         return it->second;
     }
 
-    void add_instance(int mesh_index, int node_index, const glm::dmat4& world) {
+    // The mesh of a node (or of no node: kNoNode), once, or once per EXT_mesh_gpu_instancing instance
+    // (`instances`, their local transforms; gltf_instancing.hpp), as the static loader places them.
+    void add_instance(int mesh_index, int node_index, const glm::dmat4& world, const std::vector<glm::dmat4>& instances = {}) {
         if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= gltf_.meshes.size())
             fail_file(path_, "mesh " + std::to_string(mesh_index) + " does not exist");
         const tinygltf::Mesh& mesh = gltf_.meshes[mesh_index];
@@ -165,13 +174,23 @@ private:
             if (skin != -1 && (skin < 0 || static_cast<size_t>(skin) >= model_.skins.size()))
                 fail_file(path_, indexed("nodes", node_index) + ".skin: skin " + std::to_string(skin) + " does not exist");
         }
+        if (skin >= 0 && !instances.empty())
+            fail_file(path_, indexed("nodes", node_index) +
+                                 ".extensions.EXT_mesh_gpu_instancing: instances of a skinned mesh cannot be animated");
+        // One morph set for all the copies: they share the node's weights.
         const MorphRef morph = add_morph_set(mesh, mesh_index, node_index);
-        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            const tinygltf::Primitive& prim = mesh.primitives[p];
-            const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
-                continue;  // the static loader skips these too (and warns)
-            add_primitive(prim, mesh_field + indexed(".primitives", p), node_index, skin, world, morph);
+        const size_t copies = std::max<size_t>(instances.size(), 1);
+        for (size_t i = 0; i < copies; ++i) {
+            // An instance moves rigidly with its node, placed by its own transform: a slot of its own.
+            const uint32_t slot = instances.empty() ? kNoSlot : add_slot(PaletteSlot{node_index, glm::mat4(instances[i])});
+            const glm::dmat4 placed = instances.empty() ? world : world * instances[i];
+            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+                const tinygltf::Primitive& prim = mesh.primitives[p];
+                const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+                if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+                    continue;  // the static loader skips these too (and warns)
+                add_primitive(prim, mesh_field + indexed(".primitives", p), node_index, skin, placed, morph, slot);
+            }
         }
     }
 
@@ -228,8 +247,9 @@ private:
         return it == prim.attributes.end() ? nullptr : &it->second;
     }
 
+    // `rigid_slot`: the palette slot of an unskinned primitive, or kNoSlot for its node's (node_slot).
     void add_primitive(const tinygltf::Primitive& prim, const std::string& field, int node_index, int skin,
-                       const glm::dmat4& world, MorphRef morph) {
+                       const glm::dmat4& world, MorphRef morph, uint32_t rigid_slot) {
         const int* position = attribute(prim, "POSITION");
         if (!position) fail_file(path_, field + ".attributes: no POSITION");
         const std::vector<float> positions =
@@ -250,7 +270,7 @@ private:
             add_skin_influences(prim, field, skin, count);
         } else {
             Influences rigid;
-            rigid.slot[0] = node_index == kNoNode ? identity_slot() : node_slot(node_index);
+            rigid.slot[0] = rigid_slot != kNoSlot ? rigid_slot : node_index == kNoNode ? identity_slot() : node_slot(node_index);
             rigid.weight[0] = 1.0f;
             streams_.influences.resize(first + count, rigid);
         }
@@ -355,6 +375,7 @@ private:
 
     const std::string& path_;
     const tinygltf::Model& gltf_;
+    const LoadOptions& options_;
     AccessorReader accessors_;
     AnimatedModel& model_;
     FileOrderStreams& streams_;

@@ -36,8 +36,9 @@ Usage:
   stipple cache --list | --clear  what the stipple cache holds, or empty it
   stipple --help                  this text
 
-MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file (glTF quantized or
-compressed too: KHR_mesh_quantization, EXT_meshopt_compression, KHR_draco_mesh_compression). Without
+MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file (glTF quantized,
+compressed or instanced too: KHR_mesh_quantization, EXT_meshopt_compression, KHR_draco_mesh_compression,
+EXT_mesh_gpu_instancing). Without
 MODEL or scene, render and view draw the built-in default scene (assets/blobby.glb, a blobby metaball
 surface made by tools/make_blobby). Several MODELs given to view are set side by side, each scaled to the
 first one's size. The stipple options below apply to MODELs; a SCENE.json sets them per object

@@ -118,10 +118,11 @@ std::vector<std::string> names(const std::string& file, const json& doc, const c
 }
 
 // Extensions that change how geometry is stored and that loading decodes: KHR_mesh_quantization (the
-// accessors' integer types, AccessorReader), EXT_meshopt_compression (gltf_meshopt.hpp) and
-// KHR_draco_mesh_compression (gltf_draco.hpp).
+// accessors' integer types, AccessorReader), EXT_meshopt_compression (gltf_meshopt.hpp),
+// KHR_draco_mesh_compression (gltf_draco.hpp) and EXT_mesh_gpu_instancing (gltf_instancing.hpp).
 bool supported(std::string_view ext) {
-    return ext == "KHR_mesh_quantization" || ext == "EXT_meshopt_compression" || ext == "KHR_draco_mesh_compression";
+    return ext == "KHR_mesh_quantization" || ext == "EXT_meshopt_compression" || ext == "KHR_draco_mesh_compression" ||
+           ext == "EXT_mesh_gpu_instancing";
 }
 
 bool known(std::string_view ext) { return std::find(std::begin(kKnown), std::end(kKnown), ext) != std::end(kKnown); }

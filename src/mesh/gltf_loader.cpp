@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "mesh/gltf_accessor.hpp"
 #include "mesh/gltf_document.hpp"
+#include "mesh/gltf_instancing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/loader_util.hpp"
 
@@ -43,11 +44,19 @@ public:
     Loader(const std::string& path, const tinygltf::Model& model, const LoadOptions& options)
         : path_(path), model_(model), options_(options), reader_(path, model, options) {}
 
+    // What `stipple info` says was expanded, e.g. "EXT_mesh_gpu_instancing (125 instances of 1 node)";
+    // "" for none.
+    std::string instancing() const {
+        if (instanced_nodes_ == 0) return "";
+        return "EXT_mesh_gpu_instancing (" + std::to_string(instances_) + (instances_ == 1 ? " instance" : " instances") +
+               " of " + std::to_string(instanced_nodes_) + (instanced_nodes_ == 1 ? " node)" : " nodes)");
+    }
+
     Mesh run() {
         mesh_.source = path_;
         if (model_.scenes.empty()) {
             // No scene to say what is shown: every mesh once, untransformed.
-            for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(static_cast<int>(m), glm::dmat4(1.0));
+            for (size_t m = 0; m < model_.meshes.size(); ++m) add_mesh(static_cast<int>(m), {glm::dmat4(1.0)});
         } else {
             const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
             if (static_cast<size_t>(scene) >= model_.scenes.size())
@@ -80,7 +89,13 @@ private:
             seen[index] = 1;
             const tinygltf::Node& node = model_.nodes[index];
             const glm::dmat4 world = parent * local_transform(node, index);
-            if (node.mesh >= 0) add_mesh(node.mesh, world);
+            if (node.mesh >= 0) {
+                std::vector<glm::dmat4> worlds = read_gpu_instances(path_, model_, index, reader_, options_);
+                if (!worlds.empty()) ++instanced_nodes_, instances_ += worlds.size();
+                if (worlds.empty()) worlds.push_back(glm::dmat4(1.0));  // no instancing: the node's own
+                for (glm::dmat4& instance : worlds) instance = world * instance;
+                add_mesh(node.mesh, worlds);
+            }
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
         }
     }
@@ -108,13 +123,14 @@ private:
         return m;
     }
 
-    void add_mesh(int index, const glm::dmat4& world) {
+    // The mesh once at each of `worlds` (a node's, or its EXT_mesh_gpu_instancing instances').
+    void add_mesh(int index, const std::vector<glm::dmat4>& worlds) {
         if (index < 0 || static_cast<size_t>(index) >= model_.meshes.size())
             fail_file(path_, "mesh " + std::to_string(index) + " does not exist");
         const tinygltf::Mesh& m = model_.meshes[index];
         const std::string name = m.name.empty() ? "mesh " + std::to_string(index) : "mesh '" + one_line(m.name) + "'";
         for (size_t p = 0; p < m.primitives.size(); ++p)
-            add_primitive(m.primitives[p], name + " primitive " + std::to_string(p), world);
+            add_primitive(m.primitives[p], name + " primitive " + std::to_string(p), worlds);
     }
 
     std::vector<uint32_t> corners(const tinygltf::Primitive& prim, size_t vertex_count, const std::string& what) const {
@@ -147,7 +163,7 @@ private:
         return out;
     }
 
-    void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world) {
+    void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const std::vector<glm::dmat4>& worlds) {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             skipped_.push_back(what + " (mode " + mode_name(mode) + ")");
@@ -170,7 +186,15 @@ private:
         if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
             fail_file(path_, what + " has " + std::to_string(indices.size()) + " corners, not a multiple of 3");
 
-        // Instancing can multiply a small file into a huge mesh: the limit applies to the result.
+        for (const glm::dmat4& world : worlds) add_copy(positions, normals, indices, world);
+    }
+
+    // One copy of a primitive's triangles, placed by `world`.
+    void add_copy(const std::vector<float>& positions, const std::vector<float>& normals, std::vector<uint32_t> indices,
+                  const glm::dmat4& world) {
+        const size_t vertex_count = positions.size() / 3;
+        // Instancing (nodes sharing a mesh, EXT_mesh_gpu_instancing) can multiply a small file into a
+        // huge mesh: the limit applies to the result.
         if (mesh_.positions.size() + vertex_count > std::min<uint64_t>(options_.max_elements, UINT32_MAX) ||
             (mesh_.indices.size() + indices.size()) / 3 > options_.max_elements)
             fail_file(path_, "the scene has more than " + std::to_string(options_.max_elements) + " vertices or triangles");
@@ -203,6 +227,7 @@ private:
     AccessorReader reader_;
     Mesh mesh_;
     std::vector<std::string> skipped_;  // primitives of points or lines, as "mesh M primitive P (mode X)"
+    size_t instanced_nodes_ = 0, instances_ = 0;  // EXT_mesh_gpu_instancing, as drawn
 };
 
 }  // namespace
@@ -211,7 +236,10 @@ Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::file
                 const LoadOptions& options, tinygltf::Model* document) {
     std::string decoded;
     tinygltf::Model model = read_gltf_model(path, bytes, base_dir, false, &decoded);
-    Mesh mesh = Loader(path, model, options).run();
+    Loader loader(path, model, options);
+    Mesh mesh = loader.run();
+    const std::string instancing = loader.instancing();
+    if (!instancing.empty()) decoded += (decoded.empty() ? "" : ", ") + instancing;
     mesh.decoded = std::move(decoded);
     if (document) *document = std::move(model);
     return mesh;

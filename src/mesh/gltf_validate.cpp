@@ -452,6 +452,17 @@ private:
         optional_numbers(n, where, "rotation", 4);
         optional_numbers(n, where, "scale", 3);
         optional_numbers(n, where, "weights", 0);
+        if (const json* extensions = find(n, "extensions"); extensions && extensions->is_object())
+            if (const json* instancing = find(*extensions, "EXT_mesh_gpu_instancing"))
+                gpu_instancing(*instancing, at(at(where, "extensions"), "EXT_mesh_gpu_instancing"), n);
+    }
+
+    // EXT_mesh_gpu_instancing on a node: its attributes name accessors (gltf_instancing.cpp reads them),
+    // and it instances the node's mesh, so the node needs one.
+    void gpu_instancing(const json& e, const std::string& where, const json& node) const {
+        object(e, where);
+        attributes(required(e, where, "attributes"), at(where, "attributes"));
+        if (!find(node, "mesh")) bad(where, "the node has no mesh to instance");
     }
 
     void skin(const json& s, const std::string& where) {

@@ -9,9 +9,11 @@
 // nesting depth), and for JSON type and index range every field that the static loader reads
 // (scene, scenes, nodes, meshes, primitives, accessors, buffer views, buffers) and that animation
 // reads (skins, animations with their samplers and channels, morph targets, weights), the
-// extension lists, and EXT_meshopt_compression's fields (gltf_meshopt.hpp: placeholder buffers, and each
-// compressed view's source range, mode, filter, stride and count, which must fill its view). Sizes are checked against the bytes that are really there (the GLB's BIN chunk, a
-// data: URI, an external file), so no count in the JSON can make a reader allocate beyond the file.
+// extension lists, EXT_meshopt_compression's fields (gltf_meshopt.hpp: placeholder buffers, and each
+// compressed view's source range, mode, filter, stride and count, which must fill its view), Draco
+// primitives' and EXT_mesh_gpu_instancing's (a node with a mesh, attributes naming accessors). Sizes are
+// checked against the bytes that are really there (the GLB's BIN chunk, a data: URI, an external file),
+// so no count in the JSON can make a reader allocate beyond the file.
 #include <cstdint>
 #include <filesystem>
 #include <string>

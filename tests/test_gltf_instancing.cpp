@@ -1,0 +1,210 @@
+// EXT_mesh_gpu_instancing: a node drawing its mesh once per instance (node world x TRANSLATION x ROTATION x
+// SCALE), in the static loader and the animated one alike, with the attributes' quantized forms and
+// the broken files named in one line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "anim/animated_model.hpp"
+#include "anim/deform_cpu.hpp"
+#include "anim/gltf_builder.hpp"
+#include "anim/pose.hpp"
+#include "anim/procedural_rigs.hpp"
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+
+namespace stipple {
+namespace {
+
+using json = nlohmann::json;
+
+// The three instances every test places: (translation, rotation about +z in degrees, uniform scale).
+struct Instance {
+    glm::dvec3 translation;
+    double degrees;
+    double scale;
+};
+const std::array<Instance, 3> kInstances = {{{{0, 0, 0}, 0, 1}, {{5, 0, 0}, 90, 1}, {{0, 5, 0}, 0, 2}}};
+const glm::dvec3 kNodeTranslation(0, 0, -3);
+const glm::dvec3 kTriangle[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+
+glm::dmat4 instance_matrix(const Instance& i) {
+    return glm::translate(glm::dmat4(1.0), i.translation) * glm::rotate(glm::dmat4(1.0), glm::radians(i.degrees), {0, 0, 1}) *
+           glm::scale(glm::dmat4(1.0), glm::dvec3(i.scale));
+}
+
+glm::quat instance_rotation(const Instance& i) { return glm::angleAxis(float(glm::radians(i.degrees)), glm::vec3(0, 0, 1)); }
+
+// One triangle in node 0 (translated by kNodeTranslation), instanced three times. `quantized`: the
+// translations as plain unsigned bytes and the rotations as normalized shorts (KHR_mesh_quantization).
+anim::GltfBuilder instanced_triangle(bool quantized) {
+    anim::GltfBuilder b;
+    std::vector<float> positions;
+    for (const glm::dvec3& p : kTriangle) positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
+    const int position = b.add_floats(positions, "VEC3");
+    b.add("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}}}}})}});
+    json attributes;
+    std::vector<float> scales;
+    for (const Instance& i : kInstances) scales.insert(scales.end(), {float(i.scale), float(i.scale), float(i.scale)});
+    attributes["SCALE"] = b.add_floats(scales, "VEC3");
+    if (quantized) {
+        std::vector<uint8_t> t;
+        std::vector<int16_t> r;
+        for (const Instance& i : kInstances) {
+            t.insert(t.end(), {uint8_t(i.translation.x), uint8_t(i.translation.y), uint8_t(i.translation.z)});
+            const glm::quat q = instance_rotation(i);
+            for (float c : {q.x, q.y, q.z, q.w}) r.push_back(int16_t(std::lround(c * 32767.0f)));
+        }
+        attributes["TRANSLATION"] = b.add_uint8(t, "VEC3");
+        attributes["ROTATION"] = b.add_int16(r, "VEC4", true);
+        b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing", "KHR_mesh_quantization"};
+        b.doc["extensionsRequired"] = {"EXT_mesh_gpu_instancing", "KHR_mesh_quantization"};
+    } else {
+        std::vector<float> t, r;
+        for (const Instance& i : kInstances) {
+            t.insert(t.end(), {float(i.translation.x), float(i.translation.y), float(i.translation.z)});
+            const glm::quat q = instance_rotation(i);
+            r.insert(r.end(), {q.x, q.y, q.z, q.w});
+        }
+        attributes["TRANSLATION"] = b.add_floats(t, "VEC3");
+        attributes["ROTATION"] = b.add_floats(r, "VEC4");
+        b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    }
+    b.add("nodes", {{"mesh", 0},
+                    {"translation", {kNodeTranslation.x, kNodeTranslation.y, kNodeTranslation.z}},
+                    {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", attributes}}}}}});
+    b.add("scenes", {{"nodes", {0}}});
+    return b;
+}
+
+// Triangle k of the mesh is instance k, its corners where node x instance puts the file's (in either
+// winding: loading may turn a part's faces).
+void expect_instances_placed(const Mesh& mesh, double tolerance) {
+    ASSERT_EQ(mesh.triangle_count(), kInstances.size());
+    for (size_t k = 0; k < kInstances.size(); ++k) {
+        const glm::dmat4 m = glm::translate(glm::dmat4(1.0), kNodeTranslation) * instance_matrix(kInstances[k]);
+        for (const glm::dvec3& corner : kTriangle) {
+            const glm::dvec3 expected(m * glm::dvec4(corner, 1.0));
+            double nearest = 1e30;
+            for (int c = 0; c < 3; ++c)
+                nearest = std::min(nearest, glm::length(glm::dvec3(mesh.positions[mesh.indices[3 * k + c]]) - expected));
+            EXPECT_LT(nearest, tolerance) << "instance " << k;
+        }
+    }
+}
+
+TEST(GltfInstancing, EveryInstanceIsDrawnWhereItsTransformPutsIt) {
+    const Mesh plain = load_mesh_from_bytes("instanced.glb", instanced_triangle(false).glb());
+    expect_instances_placed(plain, 1e-5);
+    EXPECT_EQ(plain.decoded, "EXT_mesh_gpu_instancing (3 instances of 1 node)");  // `stipple info` says so
+    // Quantized: bytes for the translations, normalized shorts for the rotations (1/32767 a component).
+    const Mesh quantized = load_mesh_from_bytes("quantized.glb", instanced_triangle(true).glb());
+    expect_instances_placed(quantized, 1e-3);
+    EXPECT_EQ(quantized.decoded, "KHR_mesh_quantization, EXT_mesh_gpu_instancing (3 instances of 1 node)");
+}
+
+TEST(GltfInstancing, BrokenInstancingIsNamedInOneLine) {
+    struct Case {
+        const char* name;
+        void (*edit)(json& doc, anim::GltfBuilder& b);
+        const char* message;
+    };
+    const Case cases[] = {
+        {"counts_differ",
+         [](json& d, anim::GltfBuilder& b) {
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] =
+                 b.add_floats({1, 1, 1, 1, 1, 1}, "VEC3");
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.SCALE: 2 instances, but ROTATION has 3"},
+        {"rotation_not_vec4",
+         [](json& d, anim::GltfBuilder& b) {
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] =
+                 b.add_floats({0, 0, 0, 0, 0, 0, 0, 0, 0}, "VEC3");
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.ROTATION: accessor"},
+        {"accessor_missing",
+         [](json& d, anim::GltfBuilder&) { d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] = 99; },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.SCALE: accessor 99 does not exist"},
+        {"no_attributes",
+         [](json& d, anim::GltfBuilder&) { d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"].erase("attributes"); },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes"},
+        {"empty_attributes",
+         [](json& d, anim::GltfBuilder&) { d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = json::object(); },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes: none of TRANSLATION, ROTATION or SCALE"},
+        {"no_mesh", [](json& d, anim::GltfBuilder&) { d["nodes"][0].erase("mesh"); },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing: the node has no mesh to instance"},
+        {"zero_rotation",
+         [](json& d, anim::GltfBuilder& b) {
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] =
+                 b.add_floats({0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC4");
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.ROTATION: instance 1 is a zero quaternion"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        anim::GltfBuilder b = instanced_triangle(false);
+        c.edit(b.doc, b);
+        const std::string name = std::string(c.name) + ".glb";
+        try {
+            load_mesh_from_bytes(name, b.glb());
+            ADD_FAILURE() << "loaded";
+        } catch (const Error& e) {
+            const std::string message = e.what();
+            EXPECT_EQ(message.rfind(name + ": " + c.message, 0), 0u) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
+    }
+}
+
+TEST(GltfInstancing, InstancesMoveWithTheirAnimatedNode) {
+    // The node's translation animated from kNodeTranslation to kNodeTranslation + (0, 0, 2) over one
+    // second: every instance follows it, each placed by its own transform.
+    anim::GltfBuilder b = instanced_triangle(false);
+    const int times = b.add_floats({0, 1}, "SCALAR");
+    const int values = b.add_floats({0, 0, -3, 0, 0, -1}, "VEC3");
+    b.add("animations", {{"name", "Slide"},
+                         {"samplers", json::array({{{"input", times}, {"output", values}, {"interpolation", "LINEAR"}}})},
+                         {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}});
+    const std::string bytes = b.glb();
+    const anim::AnimatedModel model = anim::load_animated_model_from_bytes("slide.glb", bytes);
+    const Mesh drawn = load_mesh_from_bytes("slide.glb", bytes);
+    ASSERT_EQ(model.rest.triangle_count(), kInstances.size());
+    for (double t : {0.0, 0.5, 1.0}) {
+        const anim::DeformedGeometry posed = anim::deform_cpu(model, anim::evaluate_pose(model, 0, t, false));
+        // Every vertex moved by the node's slide, (0, 0, 2t), from where the static loader put it.
+        std::vector<glm::vec3> expected = model.rest.positions;
+        for (glm::vec3& p : expected) p += glm::vec3(0.0f, 0.0f, float(2.0 * t));
+        ASSERT_EQ(posed.positions.size(), expected.size());
+        for (size_t v = 0; v < expected.size(); ++v)
+            EXPECT_LT(glm::length(posed.positions[v] - expected[v]), 1e-5f) << "t " << t << " vertex " << v;
+    }
+    // The rest mesh is the static loader's (as the drawing order has it: the same set of corners).
+    EXPECT_EQ(drawn.triangle_count(), model.rest.triangle_count());
+}
+
+TEST(GltfInstancing, SkinnedInstancesLoadStaticButAreNotAnimated) {
+    anim::GltfBuilder b = anim::rigs::bending_cylinder({2, 6});
+    const int translations = b.add_floats({0, 0, 0, 3, 0, 0}, "VEC3");
+    b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", translations}}}};
+    b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    const std::string bytes = b.glb();
+    const Mesh once = load_mesh_from_bytes("cylinder.glb", anim::rigs::bending_cylinder({2, 6}).glb());
+    EXPECT_EQ(load_mesh_from_bytes("cylinder.glb", bytes).triangle_count(), 2 * once.triangle_count());
+    try {
+        anim::load_animated_model_from_bytes("cylinder.glb", bytes);
+        ADD_FAILURE() << "loaded";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(),
+                     "cylinder.glb: nodes[0].extensions.EXT_mesh_gpu_instancing: instances of a skinned mesh cannot be animated");
+    }
+}
+
+}  // namespace
+}  // namespace stipple
