@@ -53,45 +53,15 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-}  // namespace
-
-bool AnimatedModel::is_animated() const {
-    return std::any_of(animations.begin(), animations.end(), [](const Animation& a) { return !a.channels.empty(); });
-}
-
-namespace {
-
-AnimatedModel build_animated_model(const std::string& path, const Mesh& file_order, const tinygltf::Model& gltf,
-                                   const LoadOptions& options);
-
 void require_gltf_name(const std::string& name) {
     const std::string ext = lower_extension(name);
     if (ext != ".gltf" && ext != ".glb") fail_file(name, "animation needs a glTF file (.gltf or .glb)");
 }
 
-}  // namespace
-
-AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options) {
-    require_gltf_name(path);
-    // The static loader decides the rest mesh (its checks, normals and orientation); the streams read
-    // here are matched to its vertices.
-    tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh(path, options, gltf);
-    return build_animated_model(path, file_order, gltf, options);
-}
-
-AnimatedModel load_animated_model_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
-    require_gltf_name(name);
-    tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, options, gltf);
-    return build_animated_model(name, file_order, gltf, options);
-}
-
-namespace {
-
+// The animated model over the static loader's mesh (file order) of the same document: the streams read
+// here are matched to its vertices.
 AnimatedModel build_animated_model(const std::string& path, const Mesh& file_order, const tinygltf::Model& gltf,
                                    const LoadOptions& options) {
-
     AnimatedModel model;
     model.source = path;
     FileOrderStreams streams;
@@ -152,5 +122,24 @@ AnimatedModel build_animated_model(const std::string& path, const Mesh& file_ord
 }
 
 }  // namespace
+
+bool AnimatedModel::is_animated() const {
+    return std::any_of(animations.begin(), animations.end(), [](const Animation& a) { return !a.channels.empty(); });
+}
+
+AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options) {
+    require_gltf_name(path);
+    // The static loader decides the rest mesh (its checks, normals and orientation).
+    tinygltf::Model gltf;
+    const Mesh file_order = load_gltf_mesh(path, options, gltf);
+    return build_animated_model(path, file_order, gltf, options);
+}
+
+AnimatedModel load_animated_model_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
+    require_gltf_name(name);
+    tinygltf::Model gltf;
+    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, options, gltf);
+    return build_animated_model(name, file_order, gltf, options);
+}
 
 }  // namespace stipple::anim
