@@ -1,7 +1,6 @@
 #include "anim/gltf_builder.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <fstream>
 #include <limits>
 
@@ -21,7 +20,6 @@ size_t components_of(const std::string& type) {
     if (type == "MAT4") return 16;
     fail("GltfBuilder: unknown accessor type '" + type + "'");
 }
-
 
 }  // namespace
 

@@ -1,9 +1,9 @@
 // Nodes, skins, mesh instances and their per-vertex deformation data, read in the static loader's
 // vertex order (see gltf_reading.hpp). Every index and count is checked: tinygltf checks none.
-#include <cmath>
-#include <cstdio>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <utility>

@@ -35,7 +35,7 @@ bool no_file_written(std::string*, const std::string&, const std::vector<unsigne
 }  // namespace
 
 tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
-                                bool quiet, std::string* decoded) {
+                                std::string* decoded) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const bool binary = ext == ".glb";
@@ -63,7 +63,7 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
     if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
-    if (!warn.empty() && !quiet) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
+    if (!warn.empty()) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
     if (!meshopt.empty()) decode_meshopt(path, meshopt, model);
     const size_t draco_primitives = decode_draco(path, model);
     if (decoded) {

@@ -13,11 +13,12 @@
 namespace stipple {
 
 // `base_dir`: the folder external buffers are resolved against; nullptr when the bytes did not come from
-// a file (an external buffer is then an error). tinygltf's warnings are printed to stderr unless
-// `quiet`. `decoded`, when given, says which storage extensions were decoded, e.g.
-// "EXT_meshopt_compression (3 buffer views), KHR_mesh_quantization", or "" for none.
+// a file (an external buffer is then an error). tinygltf's warnings are printed to stderr (the file is
+// read once, even for an animated model: load_gltf_mesh). `decoded`, when given, says which storage
+// extensions were decoded, e.g. "EXT_meshopt_compression (3 buffer views), KHR_mesh_quantization", or ""
+// for none.
 // Throws stipple::Error "<path>: <problem>".
 tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
-                                bool quiet = false, std::string* decoded = nullptr);
+                                std::string* decoded = nullptr);
 
 }  // namespace stipple

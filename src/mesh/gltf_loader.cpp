@@ -91,8 +91,12 @@ private:
             const glm::dmat4 world = parent * local_transform(node, index);
             if (node.mesh >= 0) {
                 std::vector<glm::dmat4> worlds = read_gpu_instances(path_, model_, index, reader_, options_);
-                if (!worlds.empty()) ++instanced_nodes_, instances_ += worlds.size();
-                if (worlds.empty()) worlds.push_back(glm::dmat4(1.0));  // no instancing: the node's own
+                if (worlds.empty()) {
+                    worlds.push_back(glm::dmat4(1.0));  // no instancing: the node's own
+                } else {
+                    ++instanced_nodes_;
+                    instances_ += worlds.size();
+                }
                 for (glm::dmat4& instance : worlds) instance = world * instance;
                 add_mesh(node.mesh, worlds);
             }
@@ -186,7 +190,9 @@ private:
         if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
             fail_file(path_, what + " has " + std::to_string(indices.size()) + " corners, not a multiple of 3");
 
-        for (const glm::dmat4& world : worlds) add_copy(positions, normals, indices, world);
+        // The last copy takes the indices; the others copy them (a mesh drawn once copies nothing).
+        for (size_t i = 0; i + 1 < worlds.size(); ++i) add_copy(positions, normals, indices, worlds[i]);
+        add_copy(positions, normals, std::move(indices), worlds.back());
     }
 
     // One copy of a primitive's triangles, placed by `world`.
@@ -235,7 +241,7 @@ private:
 Mesh parse_gltf(const std::string& path, std::string_view bytes, const std::filesystem::path* base_dir,
                 const LoadOptions& options, tinygltf::Model* document) {
     std::string decoded;
-    tinygltf::Model model = read_gltf_model(path, bytes, base_dir, false, &decoded);
+    tinygltf::Model model = read_gltf_model(path, bytes, base_dir, &decoded);
     Loader loader(path, model, options);
     Mesh mesh = loader.run();
     const std::string instancing = loader.instancing();
