@@ -287,5 +287,24 @@ TEST(CliView, ScriptExportNeedsAVectorPath) {
     }
 }
 
+// A switch is set with true or false, as in a scene file; another word is refused with what was written.
+TEST(CliView, ScriptSwitchesTakeTrueOrFalse) {
+    auto dir = test::temp_dir("cli-view-switch-script");
+    const std::string script = (dir / "script.txt").string();
+    std::ofstream(script) << "set 0 contours true\nset 0 toon false\n";
+    const std::vector<app::ScriptAction> actions = app::read_viewer_script(script);
+    ASSERT_EQ(actions.size(), 2u);
+    EXPECT_EQ(actions[0].value, 1.0);
+    EXPECT_EQ(actions[1].value, 0.0);
+    std::ofstream(script) << "set 0 contours 1\n";
+    try {
+        app::read_viewer_script(script);
+        ADD_FAILURE() << "contours 1 was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(script + ":1: contours: expected true or false, got '1'"), std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace stipple

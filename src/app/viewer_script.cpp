@@ -59,7 +59,7 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
             if (!spec) bad("'" + rest[1] + "' is not a parameter (see stipple params)");
             action.key = rest[1];
             if (spec->type == ParamType::Bool) {
-                if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false");
+                if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false, got '" + rest[2] + "'");
                 action.value = rest[2] == "true" ? 1.0 : 0.0;
             } else {
                 try {
