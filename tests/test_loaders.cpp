@@ -103,6 +103,49 @@ TEST(ObjLoader, ZeroAreaTriangleIsKept) {
     expect_unit_normals(m);
 }
 
+// Concave polygons are cut inside themselves, wherever they lie (the ear test of the library used until
+// 2026-12-03 depended on the polygon's place: an L of area 3 away from the origin loaded as one triangle
+// of area 1, a U of area 5 as area 7, and a concave quad was split along its shorter diagonal, outside it).
+TEST(ObjLoader, ConcavePolygonsAreCutInsideThemselves) {
+    const auto dir = temp_dir("loaders_obj_concave");
+    const std::string path = write_file(dir / "concave.obj",
+                                        "# an L of area 3 at (-5, 5), a U of area 5 at (5, -5), a dart of area 1\n"
+                                        "v -5 5 0\nv -3 5 0\nv -3 6 0\nv -4 6 0\nv -4 7 0\nv -5 7 0\n"
+                                        "v 5 -5 0\nv 8 -5 0\nv 8 -3 0\nv 7 -3 0\nv 7 -4 0\nv 6 -4 0\nv 6 -3 0\nv 5 -3 0\n"
+                                        "v 20 0 0\nv 22 0 0\nv 20.5 0.5 0\nv 20 2 0\n"
+                                        "f 1 2 3 4 5 6\nf 7 8 9 10 11 12 13 14\nf 15 16 17 18\n");
+    const Mesh m = load_mesh(path);
+    EXPECT_EQ(m.triangle_count(), 4u + 6u + 2u);
+    EXPECT_NEAR(stipple::total_area(m), 3.0 + 5.0 + 1.0, 1e-6);
+}
+
+// What OBJ writers put around the numbers: a byte-order mark, a line continued with a backslash, comments
+// at the end of a line, tags, colours after a vertex, values below float's range (read as 0).
+TEST(ObjLoader, ReadsTheFileAroundItsNumbers) {
+    const auto dir = temp_dir("loaders_obj_around");
+    std::string tags;
+    for (int i = 0; i < 200; ++i) tags += "t crease 8192/8192/8192\n";  // 320 KB each in the library used before
+    const std::string path = write_file(dir / "around.obj", "\xEF\xBB\xBFv 0 0 0 # origin\nv 1 0 \\\n  1e-50 0.5 0.5 0.5\n"
+                                                            "v 0 1 0\n" + tags + "f 1 2 \\\n 3 # the only face\n");
+    const Mesh m = load_mesh(path);
+    ASSERT_EQ(m.triangle_count(), 1u);
+    EXPECT_DOUBLE_EQ(stipple::total_area(m), 0.5);
+    EXPECT_EQ(m.positions[1].z, 0.0f);
+}
+
+// A normal that is not a number is refused where it stands; one that is NaN (read as such, not as 0)
+// makes the loader compute every normal.
+TEST(ObjLoader, NormalsAreReadAsWritten) {
+    const auto dir = temp_dir("loaders_obj_vn");
+    expect_load_error(write_file(dir / "garbage.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn garbage 1 0\nf 1//1 2//1 3//1\n"),
+                      "normal 1 (line 4): 'garbage' is not a number");
+    expect_load_error(write_file(dir / "short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 1\nf 1//1 2//1 3//1\n"),
+                      "normal 1 (line 4) has fewer than 3 components");
+    const Mesh m = load_mesh(write_file(dir / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan 1 0\nf 1//1 2//1 3//1\n"));
+    ASSERT_EQ(m.normals.size(), 3u);
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);  // computed from the face, not (0, 1, 0)
+}
+
 // ---------------------------------------------------------------- PLY
 
 TEST(PlyLoader, AsciiWithCommentsExtraPropertiesAndElements) {
@@ -403,6 +446,26 @@ TEST(BadInput, ObjNaNAndInfCoordinates) {
                       "vertex 2 (line 2) has a NaN coordinate");
     expect_load_error(write_file(dir / "inf.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n"),
                       "vertex 3 (line 3) has an infinite coordinate");
+}
+
+// A PLY whose header and data disagree is refused where they part: a count beyond 64 bits (read as 0
+// until 2026-12-03, the element then skipped), and an ASCII line with a value more than its element's
+// properties (read on, every later element shifted by one and loaded as other numbers).
+TEST(BadInput, PlyHeaderAndDataDisagree) {
+    const auto dir = temp_dir("loaders_ply_disagree");
+    const std::string vertex = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string face = "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    expect_load_error(write_file(dir / "overflow.ply", vertex + "element junk 99999999999999999999\nproperty uchar a\n" + face +
+                                                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+                      "PLY header line 7: element count '99999999999999999999' is beyond any file");
+    expect_load_error(write_file(dir / "shifted.ply", vertex + face + "0 0 0\n1 0 0 7\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+                      "line 11: '7' is one value more than the header gives this element (one element a line)");
+    // The same data, one element a line, loads; a leading '+' is a number as strtod reads it.
+    const std::string one_face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const Mesh m = load_mesh(write_file(dir / "plus.ply", vertex + one_face + "+0 0 0\n+1 0 0\n0 +1e0 0\n3 +0 1 2\n"));
+    EXPECT_EQ(m.triangle_count(), 1u);
+    EXPECT_EQ(m.positions[1].x, 1.0f);
+    EXPECT_EQ(m.positions[2].y, 1.0f);
 }
 
 TEST(BadInput, PlyBinaryNaNAndInfCoordinates) {

@@ -125,13 +125,31 @@ TEST(PolygonTriangulation, BadPolygonsStillGiveTheirTriangles) {
         ASSERT_EQ(c.triangles.size(), 3 * (polygon.size() - 2));
         for (uint32_t i : c.triangles) EXPECT_LT(i, polygon.size());
     }
-    // Beyond kMaxEarClippedCorners, a fan whatever the shape.
-    std::vector<glm::vec3> many;
-    for (size_t i = 0; i <= kMaxEarClippedCorners; ++i) {
-        const double a = 2 * std::numbers::pi * double(i) / double(kMaxEarClippedCorners + 1), r = i % 2 ? 0.5 : 1.0;
-        many.push_back(glm::vec3(float(r * std::cos(a)), float(r * std::sin(a)), 0.0f));
+}
+
+// A star of 4,000 points (8,000 corners, half of them reflex; a gear in a CAD export): covered once, as
+// the small one (until 2026-12-03 any polygon of more than 256 corners was fanned, a comb of 403 corners
+// and area 402 loading as 20,602).
+TEST(PolygonTriangulation, ALargeStarIsCoveredOnce) {
+    std::vector<glm::vec3> star;
+    for (int i = 0; i < 8000; ++i) {
+        const double a = 2 * std::numbers::pi * i / 8000, r = i % 2 ? 0.9 : 1.0;
+        star.push_back(glm::vec3(float(r * std::cos(a)), float(r * std::sin(a)), 0.0f));
     }
-    EXPECT_FALSE(cut(many).clipped);
+    double polygon_area = 0.0;
+    for (size_t i = 0; i < star.size(); ++i) {
+        const glm::vec3 p = star[i], q = star[(i + 1) % star.size()];
+        polygon_area += 0.5 * (double(p.x) * q.y - double(q.x) * p.y);
+    }
+    const Cut c = cut(star);
+    EXPECT_TRUE(c.clipped);
+    double area = 0.0, absolute = 0.0;
+    for (size_t t = 0; t + 2 < star.size(); ++t) {
+        const double z = 0.5 * normal_of(star, &c.triangles[3 * t]).z;
+        area += z, absolute += std::abs(z);
+    }
+    EXPECT_NEAR(area, polygon_area, 1e-6 * polygon_area);
+    EXPECT_NEAR(absolute, polygon_area, 1e-6 * polygon_area) << "triangles overlap or fold over";
 }
 
 TEST(PolygonTriangulation, PlyFacesAreCutOnceTheirVerticesAreKnown) {

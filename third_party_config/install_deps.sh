@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
-  libglm-dev libglfw3-dev libx11-dev libxext-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
+  libglm-dev libglfw3-dev libx11-dev libxext-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libimgui-dev libmeshoptimizer-dev libdraco-dev libgtest-dev
   libzstd-dev libnanoflann-dev libcairo2-dev libtinyxml2-dev poppler-utils librsvg2-bin
   xvfb xauth xdotool x11-utils

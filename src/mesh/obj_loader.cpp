@@ -1,24 +1,26 @@
-// OBJ through tinyobjloader, behind a validating pre-scan of our own. tinyobjloader is lenient in
-// ways that hide broken files: it reads "nan", "inf" and other non-numbers as 0, silently drops
-// quads whose indices are out of range and only warns about other out-of-range indices. The
-// pre-scan rejects all of those with the line they are on, before tinyobjloader allocates anything.
-#include <tiny_obj_loader.h>
-
+// OBJ, read by a parser of our own. tinyobjloader (used until 2026-12-03) was lenient in ways that hid
+// broken files and wrong in ways that changed good ones: it read "nan", "inf" and other non-numbers
+// as 0 (a normal "vn nan 1 0" loaded as +Y), cut concave polygons into overlapping triangles (an
+// L-shaped face of area 3 loaded as one triangle of area 1; a concave quad was split along its shorter
+// diagonal), took quadratic time on large polygons (28 s for one face of 100k corners), allocated
+// about 320 KB for every "t" tag line (a 57 KB file took 2.9 GB), and knew no line continuations.
+// Here every number is checked where it stands, polygons are cut as the PLY loader cuts them
+// (triangulate_polygon), lines other than v, vn and f are skipped, and each problem is one line
+// naming the line of the file.
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
+#include <cstdlib>
 #include <limits>
-#include <sstream>
+#include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/loader_util.hpp"
+#include "mesh/polygon_triangulation.hpp"
 
 namespace stipple {
 
@@ -43,41 +45,120 @@ std::string_view next_word(std::string_view& rest) {
     return word;
 }
 
-struct Counts {
-    uint64_t vertices = 0;
-    uint64_t normals = 0;
-    uint64_t faces = 0;
-};
+enum class Number { ok, not_a_number, too_large };
 
-class Prescan {
+// A decimal number as a float. Magnitudes below float's smallest read as that tiny value or zero (they
+// are a model's rounding, 1e-50); above its largest they are refused (too_large).
+Number parse_float(std::string_view word, float& value) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);  // from_chars refuses the sign strtod accepts
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (ec == std::errc::result_out_of_range && ptr == word.data() + word.size()) {
+        // from_chars says out of range both below and above float's range; strtod tells which.
+        const double wide = std::strtod(std::string(word).c_str(), nullptr);
+        if (std::abs(wide) >= 1.0) return Number::too_large;
+        value = static_cast<float>(wide);
+        return Number::ok;
+    }
+    if (ec != std::errc() || ptr != word.data() + word.size()) return Number::not_a_number;
+    return Number::ok;
+}
+
+class ObjReader {
 public:
-    explicit Prescan(const std::string& path) : path_(path) {}
+    ObjReader(const std::string& path, uint64_t limit) : path_(path), limit_(limit) {}
 
-    Counts run(std::string_view text) {
+    void read(std::string_view text) {
         if (const size_t zero = text.find('\0'); zero != std::string_view::npos)
             fail_file(path_, "not a text OBJ file (zero byte at offset " + std::to_string(zero) + ")");
-        size_t pos = 0;
+        if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
+        std::string joined;  // a line continued with a backslash, gathered
+        size_t pos = 0, physical = 0;
         while (pos < text.size()) {
-            // Line ends as tinyobjloader sees them: "\n", "\r\n" or a lone "\r".
+            // Line ends "\n", "\r\n" or a lone "\r".
             size_t eol = text.find_first_of("\r\n", pos);
             if (eol == std::string_view::npos) eol = text.size();
-            std::string_view rest = text.substr(pos, eol - pos);
+            std::string_view piece = text.substr(pos, eol - pos);
             pos = eol + (eol + 1 < text.size() && text[eol] == '\r' && text[eol + 1] == '\n' ? 2 : 1);
-            ++line_;
-            const std::string_view keyword = next_word(rest);
-            if (keyword == "v") vertex(rest);
-            else if (keyword == "vn") ++counts_.normals;
-            else if (keyword == "f") face(rest);
+            ++physical;
+            if (joined.empty()) line_ = physical;
+            std::string_view trimmed = piece;
+            while (!trimmed.empty() && is_space(trimmed.back())) trimmed.remove_suffix(1);
+            if (!trimmed.empty() && trimmed.back() == '\\' && pos < text.size()) {  // continued on the next line
+                joined.append(trimmed.substr(0, trimmed.size() - 1)).push_back(' ');
+                continue;
+            }
+            if (!joined.empty()) {
+                joined.append(piece);
+                line(joined);
+                joined.clear();
+            } else {
+                line(piece);
+            }
         }
         // Positive indices may refer to vertices defined further down, so they are checked here.
-        check_far(far_vertex_, counts_.vertices, "vertex", "vertices");
-        check_far(far_normal_, counts_.normals, "normal", "normals");
-        return counts_;
+        check_far(far_vertex_, positions_.size(), "vertex", "vertices");
+        check_far(far_normal_, normals_.size(), "normal", "normals");
+        if (face_end_.empty()) fail_file(path_, "the model has no triangles");
+    }
+
+    // Polygons into triangles; where faces give one position different normals, the first normal keeps
+    // the position's place and each other (position, normal) pair becomes one extra vertex at the end.
+    // Every position of the file keeps its place (unused ones too: the model is what the file lists).
+    Mesh mesh() {
+        const bool all_normals =
+            !normals_.empty() && std::none_of(corner_normal_.begin(), corner_normal_.end(), [](int32_t n) { return n < 0; });
+        Mesh mesh;
+        mesh.source = path_;
+        mesh.positions = std::move(positions_);
+        std::vector<int32_t> normal_of;  // the normal index that claimed each position, -1 while unused
+        if (all_normals) {
+            mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));  // +Z for unused positions
+            normal_of.assign(mesh.positions.size(), -1);
+        }
+        std::unordered_map<uint64_t, uint32_t> extra;
+        auto vertex_of = [&](size_t corner) {
+            uint32_t v = corner_vertex_[corner];
+            if (!all_normals) return v;
+            const int32_t n = corner_normal_[corner];
+            if (normal_of[v] < 0) {
+                normal_of[v] = n;
+                mesh.normals[v] = normals_[size_t(n)];
+            } else if (normal_of[v] != n) {
+                const uint64_t key = (uint64_t(v) << 32) | uint32_t(n);
+                const auto [it, added] = extra.try_emplace(key, uint32_t(mesh.positions.size()));
+                if (added) {
+                    mesh.positions.push_back(mesh.positions[v]);
+                    mesh.normals.push_back(normals_[size_t(n)]);
+                }
+                v = it->second;
+            }
+            return v;
+        };
+        size_t triangles = 0;
+        for (size_t f = 0, begin = 0; f < face_end_.size(); begin = face_end_[f++]) triangles += face_end_[f] - begin - 2;
+        mesh.indices.reserve(3 * triangles);
+        // A polygon is cut over its corner slots, so that each corner keeps its own normal.
+        std::vector<glm::vec3> polygon;
+        std::vector<uint32_t> slots, cut;
+        for (size_t f = 0, begin = 0; f < face_end_.size(); begin = face_end_[f++]) {
+            const size_t n = face_end_[f] - begin;
+            if (n == 3) {
+                for (size_t k = 0; k < 3; ++k) mesh.indices.push_back(vertex_of(begin + k));
+                continue;
+            }
+            polygon.resize(n);
+            slots.resize(n);
+            cut.resize(3 * (n - 2));
+            for (size_t k = 0; k < n; ++k) polygon[k] = mesh.positions[corner_vertex_[begin + k]], slots[k] = uint32_t(k);
+            triangulate_polygon(polygon, slots, cut);
+            for (uint32_t slot : cut) mesh.indices.push_back(vertex_of(begin + slot));
+        }
+        return mesh;
     }
 
 private:
     struct Far {  // the largest positive index seen, and where
-        int64_t index = 0;
+        uint64_t index = 0;
         uint64_t face = 0;
         size_t line = 0;
     };
@@ -85,138 +166,117 @@ private:
     std::string at() const { return " (line " + std::to_string(line_) + ")"; }
 
     // Messages are built only on failure: these run for every vertex and corner of the file.
-    std::string vertex_here() const { return "vertex " + std::to_string(counts_.vertices) + at(); }
-    std::string face_here() const { return "face " + std::to_string(counts_.faces) + at(); }
+    std::string vertex_here() const { return "vertex " + std::to_string(positions_.size() + 1) + at(); }
+    std::string normal_here() const { return "normal " + std::to_string(normals_.size() + 1) + at(); }
+    std::string face_here() const { return "face " + std::to_string(face_end_.size() + 1) + at(); }
+
+    void line(std::string_view rest) {
+        // A comment may also end a line ("f 1 2 3 # the lid", as some exporters write).
+        if (const size_t hash = rest.find('#'); hash != std::string_view::npos) rest = rest.substr(0, hash);
+        const std::string_view keyword = next_word(rest);
+        if (keyword == "v") vertex(rest);
+        else if (keyword == "vn") normal(rest);
+        else if (keyword == "f") face(rest);
+        // Anything else (vt, o, g, s, usemtl, mtllib, l, p, t, comments, ...) plays no part in stippling.
+    }
+
+    void within_limit(uint64_t count, const char* what) const {
+        if (count >= limit_)
+            fail_file(path_, "has more than " + std::to_string(limit_) + " " + what + ", the limit");
+    }
 
     void vertex(std::string_view rest) {
-        ++counts_.vertices;
+        within_limit(positions_.size(), "vertices");
+        glm::vec3 p;
         for (int axis = 0; axis < 3; ++axis) {
-            std::string_view word = next_word(rest);
+            const std::string_view word = next_word(rest);
             if (word.empty()) fail_file(path_, vertex_here() + " has fewer than 3 coordinates");
-            if (word.front() == '+') word.remove_prefix(1);  // from_chars refuses the sign strtod accepts
-            float value = 0.0f;
-            const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-            if (ec == std::errc::result_out_of_range)
-                fail_file(path_, vertex_here() + " has an infinite coordinate (" + shown(word) + " is beyond float range)");
-            if (ec != std::errc() || ptr != word.data() + word.size())
-                fail_file(path_, vertex_here() + ": " + shown(word) + " is not a number");
-            if (std::isnan(value)) fail_file(path_, vertex_here() + " has a NaN coordinate");
-            if (std::isinf(value)) fail_file(path_, vertex_here() + " has an infinite coordinate");
+            switch (parse_float(word, p[axis])) {
+                case Number::ok: break;
+                case Number::not_a_number: fail_file(path_, vertex_here() + ": " + shown(word) + " is not a number");
+                case Number::too_large:
+                    fail_file(path_, vertex_here() + " has an infinite coordinate (" + shown(word) + " is beyond float range)");
+            }
+            if (std::isnan(p[axis])) fail_file(path_, vertex_here() + " has a NaN coordinate");
+            if (std::isinf(p[axis])) fail_file(path_, vertex_here() + " has an infinite coordinate");
         }
+        positions_.push_back(p);  // a fourth value (w) or a colour after the three is left
+    }
+
+    // A normal that is not finite is kept as read: the loader then computes every normal (load_mesh.cpp).
+    void normal(std::string_view rest) {
+        within_limit(normals_.size(), "normals");
+        glm::vec3 n;
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::string_view word = next_word(rest);
+            if (word.empty()) fail_file(path_, normal_here() + " has fewer than 3 components");
+            if (parse_float(word, n[axis]) == Number::not_a_number)
+                fail_file(path_, normal_here() + ": " + shown(word) + " is not a number");
+        }
+        normals_.push_back(n);
     }
 
     void face(std::string_view rest) {
-        ++counts_.faces;
-        int corners = 0;
-        for (std::string_view word = next_word(rest); !word.empty(); word = next_word(rest), ++corners) {
+        within_limit(face_end_.size(), "faces");
+        const size_t begin = corner_vertex_.size();
+        for (std::string_view word = next_word(rest); !word.empty(); word = next_word(rest)) {
+            within_limit(corner_vertex_.size(), "face corners");
             const size_t slash = word.find('/');
-            index(word.substr(0, slash), counts_.vertices, far_vertex_, "vertex", "vertices");
-            if (slash == std::string_view::npos) continue;
-            const size_t slash2 = word.find('/', slash + 1);
-            if (slash2 != std::string_view::npos)
-                index(word.substr(slash2 + 1), counts_.normals, far_normal_, "normal", "normals");
+            corner_vertex_.push_back(index(word.substr(0, slash), positions_.size(), far_vertex_, "vertex", "vertices"));
+            const size_t slash2 = slash == std::string_view::npos ? slash : word.find('/', slash + 1);
+            corner_normal_.push_back(slash2 == std::string_view::npos
+                                         ? -1
+                                         : int32_t(index(word.substr(slash2 + 1), normals_.size(), far_normal_, "normal", "normals")));
         }
+        const size_t corners = corner_vertex_.size() - begin;
         if (corners < 3)
             fail_file(path_, face_here() + " has " + std::to_string(corners) + " vertices; a face needs at least 3");
+        face_end_.push_back(corner_vertex_.size());
     }
 
-    void index(std::string_view word, uint64_t defined, Far& far, const char* what, const char* whats) {
+    // The 0-based index an OBJ index (1-based, or negative: counted back from the last one defined) names.
+    uint32_t index(std::string_view word, uint64_t defined, Far& far, const char* what, const char* whats) {
         int64_t value = 0;
         const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
         if (ec != std::errc() || ptr != word.data() + word.size())
             fail_file(path_, face_here() + ": " + shown(word) + " is not a " + what + " index");
         if (value == 0) fail_file(path_, face_here() + " uses " + what + " index 0 (OBJ indices start at 1)");
-        if (value < 0 && static_cast<uint64_t>(-value) > defined)
-            fail_file(path_, face_here() + " refers to " + what + " " + std::to_string(value) + " but only " +
-                                 std::to_string(defined) + " " + whats + " come before it");
-        if (value > far.index) far = Far{value, counts_.faces, line_};
+        if (value < 0) {
+            if (uint64_t(-(value + 1)) >= defined)  // -(value + 1): INT64_MIN has no positive counterpart
+                fail_file(path_, face_here() + " refers to " + what + " " + std::to_string(value) + " but only " +
+                                     std::to_string(defined) + " " + whats + " come before it");
+            return uint32_t(int64_t(defined) + value);
+        }
+        // Checked once the file is read (it may name a vertex defined further down); beyond the limit now.
+        if (uint64_t(value) > far.index) far = Far{uint64_t(value), face_end_.size() + 1, line_};
+        if (uint64_t(value) > limit_) check_far(far, defined, what, whats);
+        return uint32_t(value - 1);
     }
 
     void check_far(const Far& far, uint64_t defined, const char* what, const char* whats) const {
-        if (far.index > 0 && static_cast<uint64_t>(far.index) > defined)
+        if (far.index > defined)
             fail_file(path_, "face " + std::to_string(far.face) + " (line " + std::to_string(far.line) + ") refers to " +
                                  what + " " + std::to_string(far.index) + " but there are only " +
                                  std::to_string(defined) + " " + whats);
     }
 
     const std::string& path_;
-    Counts counts_;
-    size_t line_ = 0;
+    uint64_t limit_;
+    size_t line_ = 0;  // the (first) line of the line being read
+    std::vector<glm::vec3> positions_, normals_;
+    std::vector<uint32_t> corner_vertex_;  // 0-based, by corner, faces one after another
+    std::vector<int32_t> corner_normal_;   // 0-based, -1 where the corner names none
+    std::vector<size_t> face_end_;         // each face's end in the corner lists
     Far far_vertex_, far_normal_;
 };
 
 }  // namespace
 
 Mesh parse_obj(const std::string& path, std::string_view text, const LoadOptions& options) {
-    const Counts counts = Prescan(path).run(text);
-    // tinyobjloader indexes with int; the limit keeps its allocations bounded as well.
-    const uint64_t limit = std::min<uint64_t>(options.max_elements, std::numeric_limits<int32_t>::max());
-    for (const auto& [count, what] : {std::pair{counts.vertices, "vertices"}, {counts.normals, "normals"}, {counts.faces, "faces"}})
-        if (count > limit)
-            fail_file(path, "has " + std::to_string(count) + " " + what + ", more than the limit of " + std::to_string(limit));
-    if (counts.faces == 0) fail_file(path, "the model has no triangles");
-
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
-    std::istringstream in{std::string(text)};
-    // No material reader: materials play no part in stippling, and a missing .mtl must not matter.
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, /*triangulate=*/true);
-    if (!ok || !err.empty()) fail_file(path, one_line(err.empty() ? warn : err));
-
-    const size_t vertex_count = attrib.vertices.size() / 3;
-    const size_t normal_count = attrib.normals.size() / 3;
-    bool all_normals = normal_count > 0;
-    size_t corner_count = 0;
-    for (const tinyobj::shape_t& shape : shapes) {
-        corner_count += shape.mesh.indices.size();
-        for (const tinyobj::index_t& i : shape.mesh.indices) all_normals = all_normals && i.normal_index >= 0;
-    }
-
-    // Every position of the file keeps its place (also unused ones: the model is what the file
-    // lists). Where faces give one position different normals, the first normal keeps the place
-    // and each other (position, normal) pair becomes one extra vertex at the end.
-    Mesh mesh;
-    mesh.source = path;
-    mesh.positions.resize(vertex_count);
-    for (size_t v = 0; v < vertex_count; ++v)
-        mesh.positions[v] = {attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]};
-    std::vector<int> normal_of;  // the normal index that claimed each position, -1 while unused
-    if (all_normals) {
-        mesh.normals.assign(vertex_count, glm::vec3(0.0f, 0.0f, 1.0f));  // +Z for unused positions
-        normal_of.assign(vertex_count, -1);
-    }
-    std::unordered_map<uint64_t, uint32_t> extra;
-    mesh.indices.reserve(corner_count);
-    for (const tinyobj::shape_t& shape : shapes) {
-        for (size_t k = 0; k < shape.mesh.indices.size(); ++k) {
-            const tinyobj::index_t& i = shape.mesh.indices[k];
-            // The pre-scan already refused bad indices; this guards against the two disagreeing.
-            if (i.vertex_index < 0 || static_cast<size_t>(i.vertex_index) >= vertex_count ||
-                (all_normals && static_cast<size_t>(i.normal_index) >= normal_count))
-                fail_file(path, "face " + std::to_string(k / 3) + " of shape '" + one_line(shape.name) + "' has an index out of range");
-            uint32_t v = static_cast<uint32_t>(i.vertex_index);
-            if (all_normals) {
-                const float* n = &attrib.normals[3 * static_cast<size_t>(i.normal_index)];
-                if (normal_of[v] < 0) {
-                    normal_of[v] = i.normal_index;
-                    mesh.normals[v] = {n[0], n[1], n[2]};
-                } else if (normal_of[v] != i.normal_index) {
-                    const uint64_t key = (static_cast<uint64_t>(v) << 32) | static_cast<uint32_t>(i.normal_index);
-                    const auto [it, added] = extra.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
-                    if (added) {
-                        mesh.positions.push_back(mesh.positions[v]);
-                        mesh.normals.emplace_back(n[0], n[1], n[2]);
-                    }
-                    v = it->second;
-                }
-            }
-            mesh.indices.push_back(v);
-        }
-    }
-    if (mesh.indices.empty()) fail_file(path, "the model has no triangles");
-    return mesh;
+    // Indices are stored in 32 bits (and corners counted as int32 normals): the limit keeps them there.
+    ObjReader reader(path, std::min<uint64_t>(options.max_elements, std::numeric_limits<int32_t>::max()));
+    reader.read(text);
+    return reader.mesh();
 }
 
 }  // namespace stipple

@@ -147,7 +147,10 @@ Header parse_header(const std::string& path, std::string_view file, const LoadOp
         } else if (w[0] == "element") {
             Element e;
             const char* end = w.size() == 3 ? w[2].data() + w[2].size() : nullptr;
-            if (!end || std::from_chars(w[2].data(), end, e.count).ptr != end)
+            if (!end) fail_file(path, where + "expected 'element <name> <count>' with a count of 0 or more");
+            const auto [ptr, ec] = std::from_chars(w[2].data(), end, e.count);
+            if (ec == std::errc::result_out_of_range) fail_file(path, where + "element count " + shown(w[2]) + " is beyond any file");
+            if (ec != std::errc() || ptr != end)
                 fail_file(path, where + "expected 'element <name> <count>' with a count of 0 or more");
             e.name = std::string(w[1]);
             if (!printable(e.name)) fail_file(path, where + "bad element name " + shown(e.name));
@@ -232,6 +235,7 @@ public:
         }
     }
     size_t remaining() const { return static_cast<size_t>(end_ - p_); }
+    void end_item() {}  // binary elements have no separator
     // A list of n items must fit in what is left; checked before the items are read one by one.
     void expect_items(uint64_t n, Scalar t) {
         if (n > static_cast<uint64_t>(end_ - p_) / scalar_size(t)) throw Truncated{};
@@ -284,7 +288,7 @@ public:
         : path_(path), p_(begin), end_(end), line_(line) {}
 
     double real(Scalar) {
-        const std::string_view t = token();
+        const std::string_view t = unsigned_plus(token());
         double v = 0.0;
         const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
         if (ec == std::errc::result_out_of_range) bad(t, "is out of range");
@@ -292,7 +296,7 @@ public:
         return v;
     }
     int64_t integer(Scalar) {
-        const std::string_view s = token();
+        const std::string_view s = unsigned_plus(token());
         int64_t v = 0;
         const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
         if (ec == std::errc() && ptr == s.data() + s.size()) return v;
@@ -304,6 +308,15 @@ public:
         return static_cast<int64_t>(d);
     }
     size_t remaining() const { return static_cast<size_t>(end_ - p_); }
+    // Each element is one line: a value left before the line's end means the header and the data disagree
+    // (read on, every later element would shift by it and load as other numbers).
+    void end_item() {
+        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r')) ++p_;
+        if (p_ == end_ || *p_ == '\n') return;
+        const char* start = p_;
+        while (p_ < end_ && *p_ != ' ' && *p_ != '\t' && *p_ != '\r' && *p_ != '\n') ++p_;
+        bad({start, static_cast<size_t>(p_ - start)}, "is one value more than the header gives this element (one element a line)");
+    }
     void expect_items(uint64_t, Scalar) {}  // items are read one by one; the data end bounds them
     void skip(const Property& p) {
         const int64_t n = p.is_list ? integer(p.count_type) : 1;
@@ -312,6 +325,11 @@ public:
     }
 
 private:
+    // from_chars refuses the leading '+' that printf("%+g") and some writers put.
+    static std::string_view unsigned_plus(std::string_view t) {
+        if (t.size() > 1 && t.front() == '+') t.remove_prefix(1);
+        return t;
+    }
     std::string_view token() {
         while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) line_ += *p_++ == '\n';
         if (p_ == end_) throw Truncated{};
@@ -368,6 +386,7 @@ void read_vertices(Reader& r, const Element& e, Target& t, uint64_t& done) {
             if (slot[k] < 0) r.skip(e.properties[k]);
             else v[slot[k]] = static_cast<float>(r.real(e.properties[k].type));
         }
+        r.end_item();
         t.mesh.positions[done] = {v[0], v[1], v[2]};
         if (has_normals) t.mesh.normals[done] = {v[3], v[4], v[5]};
     }
@@ -398,6 +417,7 @@ void read_faces(Reader& r, const Element& e, const Property& list, Target& t, ui
             for (size_t i = 1; i + 1 < corners.size(); ++i)
                 t.mesh.indices.insert(t.mesh.indices.end(), {corners[0], corners[i], corners[i + 1]});
         }
+        r.end_item();
     }
 }
 
@@ -434,6 +454,7 @@ void read_strips(Reader& r, const Element& e, const Property& list, Target& t, u
                 ++in_strip;
             }
         }
+        r.end_item();
     }
 }
 
@@ -445,8 +466,10 @@ void skip_elements(Reader& r, const Element& e, Format format, uint64_t& done) {
         for (const Property& p : e.properties) fixed = fixed && !p.is_list;
         if (fixed) return r.skip_fixed(e.count, min_element_bytes(e, format), done);
     }
-    for (done = 0; done < e.count; ++done)
+    for (done = 0; done < e.count; ++done) {
         for (const Property& p : e.properties) r.skip(p);
+        r.end_item();
+    }
 }
 
 const Property* index_list(const Element& e) {

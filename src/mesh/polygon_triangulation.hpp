@@ -3,7 +3,7 @@
 // concave ones (an L- or U-shaped face of a part). A fan around the first corner covers a concave polygon
 // wrongly: its triangles reach outside it and overlap each other (a U-shaped face of area 5 loaded as
 // area 7), so the model gets stipples where it has no surface and twice the tone where it is covered
-// twice. (OBJ faces are triangulated by tinyobjloader, which clips ears itself.)
+// twice. The OBJ and PLY loaders both cut their polygons here.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -13,15 +13,16 @@
 
 namespace stipple {
 
-// Polygons with more corners than this are fanned whatever their shape: ear clipping costs up to the cube
-// of the corners, and faces that large are caps of round parts, which are convex.
-inline constexpr size_t kMaxEarClippedCorners = 256;
+// How many corner tests ear clipping may make for one polygon before it fans what is left (a polygon
+// that crosses itself can leave no ear to find): about a second, beyond what a simple polygon of 100k
+// corners with a thousand reflex ones needs.
+inline constexpr uint64_t kEarTestBudget = uint64_t(1) << 28;
 
 // The n - 2 triangles of the polygon `corners` (indices into `positions`, n >= 3), written to `triangles`
-// (3 * (n - 2) indices), each wound as the polygon is. A convex polygon, or one of more than
-// kMaxEarClippedCorners corners, is fanned around its first corner (what loaders did before, so convex
-// faces load exactly as they did); a concave one is cut by ear clipping in the plane it spans (Newell's
-// normal). Where no ear is left (a polygon that crosses itself, or is degenerate), the rest is fanned.
+// (3 * (n - 2) indices), each wound as the polygon is. A convex polygon is fanned around its first corner
+// (what loaders did before, so convex faces load exactly as they did); a concave one is cut by ear
+// clipping in the plane it spans (Newell's normal). Where no ear is left (a polygon that crosses itself,
+// or is degenerate), or the clipping has spent kEarTestBudget, the rest is fanned.
 // Returns true when it clipped ears.
 bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
                          std::span<uint32_t> triangles);
