@@ -168,14 +168,30 @@ void append_mesh(Mesh& a, const Mesh& b) {
         a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
     else
         a.normals.clear();
-    a.indices.reserve(a.indices.size() + b.indices.size());
+    // No exact reserve: a caller appending many small meshes (instances of one) would copy the whole list
+    // at every call (250k instances of a triangle took 2 minutes); push_back grows it geometrically.
     for (uint32_t i : b.indices) a.indices.push_back(i + offset);
 }
+
+namespace {
+// Above this many triangles on one vertex the draw order is optimised in linear time (optimize_draw_order).
+constexpr uint32_t kMaxValenceForCacheOptimizer = 1024;
+}  // namespace
 
 void optimize_draw_order(Mesh& mesh) {
     if (mesh.indices.empty()) return;
     std::vector<uint32_t> reordered(mesh.indices.size());
-    meshopt_optimizeVertexCache(reordered.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
+    // meshopt_optimizeVertexCache rescores every triangle of a vertex in its cache at each step, so a vertex
+    // shared by very many triangles costs their square (one polygon of 100k corners fanned around its
+    // first: 7 s). Such meshes take the FIFO optimiser, linear in the triangles.
+    std::vector<uint32_t> valence(mesh.positions.size(), 0);
+    uint32_t most = 0;
+    for (uint32_t i : mesh.indices)
+        if (i < valence.size()) most = std::max(most, ++valence[i]);
+    if (most <= kMaxValenceForCacheOptimizer)
+        meshopt_optimizeVertexCache(reordered.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
+    else
+        meshopt_optimizeVertexCacheFifo(reordered.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size(), 16);
     std::vector<uint32_t> remap(mesh.positions.size());
     const size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), reordered.data(), reordered.size(),
                                                          mesh.positions.size());

@@ -1,5 +1,7 @@
 #include "mesh/mesh_ops.hpp"
 
+#include <algorithm>
+
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -89,15 +91,20 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
     std::vector<uint32_t> fill(first.begin(), first.end() - 1);
     for (size_t t = 0; t < triangles; ++t)
         if (rotated(t, smallest, rest)) buckets[fill[smallest]++] = rest;
+    // Each bucket sorted by its other two corners, then by triangle: a repeat follows its first. (Comparing
+    // every pair of a bucket took 8 s for one polygon of 100k corners fanned around its first corner.)
     std::vector<uint8_t> repeat(triangles, 0);
     size_t dropped = 0;
-    for (size_t v = 0; v < n; ++v)
-        for (uint32_t i = first[v]; i < first[v + 1]; ++i)
-            for (uint32_t j = first[v]; j < i; ++j)
-                if (buckets[j].second == buckets[i].second && buckets[j].third == buckets[i].third) {
-                    repeat[buckets[i].triangle] = 1, ++dropped;
-                    break;
-                }
+    const auto order = [](const Rest& x, const Rest& y) {
+        return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
+    };
+    for (size_t v = 0; v < n; ++v) {
+        if (first[v + 1] - first[v] < 2) continue;
+        std::sort(buckets.begin() + first[v], buckets.begin() + first[v + 1], order);
+        for (uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
+            if (buckets[i].second == buckets[i - 1].second && buckets[i].third == buckets[i - 1].third)
+                repeat[buckets[i].triangle] = 1, ++dropped;
+    }
     if (dropped == 0) return 0;
     size_t kept = 0;
     for (size_t t = 0; t < triangles; ++t) {
