@@ -137,9 +137,29 @@ TEST(GltfInstancing, BrokenInstancingIsNamedInOneLine) {
          "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes"},
         {"empty_attributes",
          [](json& d, anim::GltfBuilder&) { d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = json::object(); },
-         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes: none of TRANSLATION, ROTATION or SCALE"},
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes: empty (no instance is defined)"},
         {"no_mesh", [](json& d, anim::GltfBuilder&) { d["nodes"][0].erase("mesh"); },
          "nodes[0].extensions.EXT_mesh_gpu_instancing: the node has no mesh to instance"},
+        {"no_instance",
+         [](json& d, anim::GltfBuilder&) {
+             d["accessors"].push_back({{"componentType", 5126}, {"count", 0}, {"type", "VEC3"}});
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", d["accessors"].size() - 1}};
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.TRANSLATION: 0 instances"},
+        {"an_own_attribute_counts_too",
+         [](json& d, anim::GltfBuilder& b) {
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["_ID"] = b.add_floats({0, 1, 2, 3, 4}, "SCALAR");
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes._ID: 5 instances, but TRANSLATION has 3"},
+        // 150M instances declared in a few bytes (an accessor without data reads as zeros): refused before
+        // anything is read or copied.
+        {"too_many",
+         [](json& d, anim::GltfBuilder&) {
+             d["accessors"].push_back({{"componentType", 5126}, {"count", 150000000}, {"type", "VEC3"}});
+             d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", d["accessors"].size() - 1}};
+         },
+         "nodes[0].extensions.EXT_mesh_gpu_instancing: 150000000 instances of a mesh of 3 vertices, more than the limit of "
+         "200000000 vertices"},
         {"zero_rotation",
          [](json& d, anim::GltfBuilder& b) {
              d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] =
@@ -187,6 +207,47 @@ TEST(GltfInstancing, InstancesMoveWithTheirAnimatedNode) {
     }
     // The rest mesh is the static loader's (as the drawing order has it: the same set of corners).
     EXPECT_EQ(drawn.triangle_count(), model.rest.triangle_count());
+}
+
+// Attributes of the application's own (an _ID) count instances like the transforms; alone, they place every
+// instance at the node's transform.
+TEST(GltfInstancing, AnAttributeOfTheApplicationsOwnCountsInstances) {
+    anim::GltfBuilder b = instanced_triangle(false);
+    b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["_ID"] = b.add_floats({7, 8, 9}, "SCALAR");
+    expect_instances_placed(load_mesh_from_bytes("with_id.glb", b.glb()), 1e-5);
+    b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"_ID", b.add_floats({7, 8, 9}, "SCALAR")}};
+    const Mesh alone = load_mesh_from_bytes("id_only.glb", b.glb());
+    EXPECT_EQ(alone.decoded, "EXT_mesh_gpu_instancing (3 instances of 1 node)");
+    // Three copies in one place: loading keeps one of the repeated faces.
+    ASSERT_EQ(alone.triangle_count(), 1u);
+    for (const glm::dvec3& corner : kTriangle) {
+        double nearest = 1e30;
+        for (int c = 0; c < 3; ++c)
+            nearest = std::min(nearest, glm::length(glm::dvec3(alone.positions[alone.indices[c]]) - (corner + kNodeTranslation)));
+        EXPECT_LT(nearest, 1e-6);
+    }
+}
+
+// A mesh of two primitives instanced on an animated node: the animated loader lays the copies out as the
+// static one does (primitive by primitive, each at every instance), so its rest mesh is the drawn one.
+TEST(GltfInstancing, CopiesOfSeveralPrimitivesAnimateInTheStaticOrder) {
+    anim::GltfBuilder b = instanced_triangle(false);
+    const int second = b.add_floats({0, 0, 1, 1, 0, 1, 0, 1, 1}, "VEC3");  // the triangle again, 1 higher in z
+    b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", second}}}});
+    const int times = b.add_floats({0, 1}, "SCALAR");
+    const int values = b.add_floats({0, 0, -3, 0, 0, -1}, "VEC3");
+    b.add("animations", {{"name", "Slide"},
+                         {"samplers", json::array({{{"input", times}, {"output", values}, {"interpolation", "LINEAR"}}})},
+                         {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}});
+    const std::string bytes = b.glb();
+    const Mesh drawn = load_mesh_from_bytes("two_primitives.glb", bytes);
+    const anim::AnimatedModel model = anim::load_animated_model_from_bytes("two_primitives.glb", bytes);
+    EXPECT_EQ(drawn.triangle_count(), 2 * kInstances.size());
+    EXPECT_EQ(model.rest.triangle_count(), drawn.triangle_count());
+    const anim::DeformedGeometry posed = anim::deform_cpu(model, anim::evaluate_pose(model, 0, 1.0, false));
+    ASSERT_EQ(posed.positions.size(), model.rest.positions.size());
+    for (size_t v = 0; v < posed.positions.size(); ++v)
+        EXPECT_LT(glm::length(posed.positions[v] - (model.rest.positions[v] + glm::vec3(0, 0, 2))), 1e-5f) << v;
 }
 
 TEST(GltfInstancing, SkinnedInstancesLoadStaticButAreNotAnimated) {

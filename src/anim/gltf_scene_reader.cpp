@@ -179,18 +179,25 @@ private:
                                  ".extensions.EXT_mesh_gpu_instancing: instances of a skinned mesh cannot be animated");
         // One morph set for all the copies: they share the node's weights.
         const MorphRef morph = add_morph_set(mesh, mesh_index, node_index);
+        // An instance moves rigidly with its node, placed by its own transform: a slot of its own.
         const size_t copies = std::max<size_t>(instances.size(), 1);
-        for (size_t i = 0; i < copies; ++i) {
-            // An instance moves rigidly with its node, placed by its own transform: a slot of its own.
-            const uint32_t slot = instances.empty() ? kNoSlot : add_slot(PaletteSlot{node_index, glm::mat4(instances[i])});
-            const glm::dmat4 placed = instances.empty() ? world : world * instances[i];
-            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-                const tinygltf::Primitive& prim = mesh.primitives[p];
-                const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
-                if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
-                    continue;  // the static loader skips these too (and warns)
-                add_primitive(prim, mesh_field + indexed(".primitives", p), node_index, skin, placed, morph, slot);
-            }
+        std::vector<uint32_t> slots(copies, kNoSlot);
+        for (size_t i = 0; i < instances.size(); ++i) {
+            if (model_.palette.size() >= gpu::kDeformMaxPaletteSlots)
+                fail_file(path_, indexed("nodes", node_index) + ".extensions.EXT_mesh_gpu_instancing: " +
+                                     std::to_string(instances.size()) + " instances; an animated model moves at most " +
+                                     std::to_string(gpu::kDeformMaxPaletteSlots) + " instances, joints and nodes in all");
+            slots[i] = add_slot(PaletteSlot{node_index, glm::mat4(instances[i])});
+        }
+        // Primitive by primitive, each at every instance: the static loader's order (gltf_loader.cpp).
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = mesh.primitives[p];
+            const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+                continue;  // the static loader skips these too (and warns)
+            for (size_t i = 0; i < copies; ++i)
+                add_primitive(prim, mesh_field + indexed(".primitives", p), node_index, skin,
+                              instances.empty() ? world : world * instances[i], morph, slots[i]);
         }
     }
 

@@ -1,5 +1,7 @@
 #include "mesh/gltf_instancing.hpp"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -27,23 +29,41 @@ std::vector<glm::dmat4> read_gpu_instances(const std::string& path, const tinygl
     Attribute read[] = {{"TRANSLATION", TINYGLTF_TYPE_VEC3, kGltfQuantizedTypes, kGltfQuantizedTypes, {}},
                         {"ROTATION", TINYGLTF_TYPE_VEC4, {}, kRotationTypes, {}},
                         {"SCALE", TINYGLTF_TYPE_VEC3, kGltfQuantizedTypes, kGltfQuantizedTypes, {}}};
+    // Every attribute, the application's own (_ID, ...) too, has one element per instance. The counts are
+    // checked, against each other and against what the copies would hold, before anything is read: a
+    // file of a few hundred bytes can declare an accessor of 150M elements without data (zeros).
     size_t count = 0;
-    const char* counted = nullptr;
+    std::string counted;
+    for (const std::string& name : attributes.Keys()) {
+        const int index = accessor(name.c_str());
+        if (index < 0 || size_t(index) >= model.accessors.size()) continue;  // gltf_validate refused these
+        const size_t n = model.accessors[size_t(index)].count;
+        const std::string where = field + ".attributes." + name;
+        if (n == 0) fail_file(path, where + ": 0 instances (an accessor holds at least one element)");
+        if (!counted.empty() && n != count)
+            fail_file(path, where + ": " + std::to_string(n) + " instances, but " + counted + " has " + std::to_string(count));
+        count = n;
+        counted = name;
+    }
+    if (counted.empty()) fail_file(path, field + ".attributes: empty (no instance is defined)");
+    // The node's mesh, copied once per instance: its vertices in all (the loaders refuse more; checked
+    // here before the instances' transforms are read and the copies made).
+    uint64_t mesh_vertices = 0;
+    if (node.mesh >= 0 && size_t(node.mesh) < model.meshes.size())
+        for (const tinygltf::Primitive& prim : model.meshes[size_t(node.mesh)].primitives)
+            if (const auto position = prim.attributes.find("POSITION");
+                position != prim.attributes.end() && position->second >= 0 && size_t(position->second) < model.accessors.size())
+                mesh_vertices = std::min<uint64_t>(mesh_vertices + std::min<uint64_t>(model.accessors[size_t(position->second)].count,
+                                                                                        options.max_elements + 1),
+                                                   options.max_elements + 1);  // no overflow from absurd counts
+    if (count > options.max_elements || (mesh_vertices > 0 && count > options.max_elements / mesh_vertices))
+        fail_file(path, field + ": " + std::to_string(count) + " instances of a mesh of " + std::to_string(mesh_vertices) +
+                            " vertices, more than the limit of " + std::to_string(options.max_elements) + " vertices");
     for (Attribute& a : read) {
         const int index = accessor(a.name);
         if (index < 0) continue;
-        const std::string where = field + ".attributes." + a.name;
-        a.values = reader.numbers(index, a.type, a.plain, a.normalized, where);
-        const size_t n = a.values.size() / (a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3);
-        if (counted && n != count)
-            fail_file(path, where + ": " + std::to_string(n) + " instances, but " + counted + " has " + std::to_string(count));
-        count = n;
-        counted = a.name;
+        a.values = reader.numbers(index, a.type, a.plain, a.normalized, field + ".attributes." + a.name);
     }
-    if (!counted) fail_file(path, field + ".attributes: none of TRANSLATION, ROTATION or SCALE");
-    if (count > options.max_elements)
-        fail_file(path, field + ": " + std::to_string(count) + " instances, more than the limit of " +
-                            std::to_string(options.max_elements));
     std::vector<glm::dmat4> out(count, glm::dmat4(1.0));
     for (size_t i = 0; i < count; ++i) {
         glm::dmat4& m = out[i];

@@ -15,8 +15,10 @@
 namespace stipple {
 
 // The instances' local transforms of node `node_index`, in order; empty when the node has no
-// EXT_mesh_gpu_instancing (it draws its mesh once). Throws stipple::Error naming the field for an
-// attribute of the wrong type, attributes of different counts, or too many instances for the limit.
+// EXT_mesh_gpu_instancing (it draws its mesh once). Attributes of the application's own (_ID, ...) count
+// instances too; a node with only those draws its mesh at the node's transform once per instance. Throws
+// stipple::Error naming the field for an attribute of the wrong type, attributes of different counts, no
+// instance, or more instances than the limit allows for the node's mesh (checked before any is read).
 std::vector<glm::dmat4> read_gpu_instances(const std::string& path, const tinygltf::Model& model, int node_index,
                                            const AccessorReader& reader, const LoadOptions& options);
 
