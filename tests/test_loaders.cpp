@@ -125,7 +125,7 @@ TEST(ObjLoader, ReadsTheFileAroundItsNumbers) {
     const auto dir = temp_dir("loaders_obj_around");
     std::string tags;
     for (int i = 0; i < 200; ++i) tags += "t crease 8192/8192/8192\n";  // 320 KB each in the library used before
-    const std::string path = write_file(dir / "around.obj", "\xEF\xBB\xBFv 0 0 0 # origin\nv 1 0 \\\n  1e-50 0.5 0.5 0.5\n"
+    const std::string path = write_file(dir / "around.obj", "\xEF\xBB\xBF# from C:\\models\\\nv 0 0 0 # origin\nv 1 0 \\\n  1e-50 0.5 0.5 0.5\n"
                                                             "v 0 1 0\n" + tags + "f 1 2 \\\n 3 # the only face\n");
     const Mesh m = load_mesh(path);
     ASSERT_EQ(m.triangle_count(), 1u);
@@ -141,9 +141,14 @@ TEST(ObjLoader, NormalsAreReadAsWritten) {
                       "normal 1 (line 4): 'garbage' is not a number");
     expect_load_error(write_file(dir / "short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 1\nf 1//1 2//1 3//1\n"),
                       "normal 1 (line 4) has fewer than 3 components");
-    const Mesh m = load_mesh(write_file(dir / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan 1 0\nf 1//1 2//1 3//1\n"));
-    ASSERT_EQ(m.normals.size(), 3u);
-    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);  // computed from the face, not (0, 1, 0)
+    expect_load_error(write_file(dir / "signs.obj", "v +-1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "vertex 1 (line 1): '+-1' is not a number");
+    // NaN, and beyond float's range (infinite): every normal is computed from the faces instead.
+    for (const char* component : {"nan", "1e50"}) {
+        const Mesh m = load_mesh(write_file(dir / "bad_normal.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 ") + component +
+                                                                       " 1\nf 1//1 2//1 3//1\n"));
+        ASSERT_EQ(m.normals.size(), 3u);
+        for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f) << component;  // not the file's (0, ?, 1)
+    }
 }
 
 // ---------------------------------------------------------------- PLY

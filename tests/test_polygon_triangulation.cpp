@@ -152,6 +152,31 @@ TEST(PolygonTriangulation, ALargeStarIsCoveredOnce) {
     EXPECT_NEAR(absolute, polygon_area, 1e-6 * polygon_area) << "triangles overlap or fold over";
 }
 
+// An L of area 19 whose straight edges are divided into 75,000 corners (as CAD exports write faces along
+// curves that happen to be straight): the corners on the edges are cut off as triangles of no area, and
+// the L as the six-cornered polygon it is (the clipping's budget ran out on it, and a fan from where it
+// stopped covered 59.8).
+TEST(PolygonTriangulation, CornersOnStraightEdgesCostNothing) {
+    std::vector<glm::vec3> l;
+    auto edge = [&](glm::vec3 a, glm::vec3 b, int pieces) {
+        for (int s = 0; s < pieces; ++s) l.push_back(a + (b - a) * (float(s) / float(pieces)));
+    };
+    edge({0, 0, 0}, {10, 0, 0}, 25000);
+    edge({10, 0, 0}, {10, 1, 0}, 1000);
+    edge({10, 1, 0}, {1, 1, 0}, 20000);
+    edge({1, 1, 0}, {1, 10, 0}, 20000);
+    edge({1, 10, 0}, {0, 10, 0}, 1000);
+    edge({0, 10, 0}, {0, 0, 0}, 8000);
+    const Cut c = cut(l);
+    double area = 0.0, absolute = 0.0;
+    for (size_t t = 0; t + 2 < l.size(); ++t) {
+        const double z = 0.5 * normal_of(l, &c.triangles[3 * t]).z;
+        area += z, absolute += std::abs(z);
+    }
+    EXPECT_NEAR(area, 19.0, 1e-4);
+    EXPECT_NEAR(absolute, 19.0, 1e-4) << "triangles overlap or fold over";
+}
+
 TEST(PolygonTriangulation, PlyFacesAreCutOnceTheirVerticesAreKnown) {
     // The U as one face, listed after its vertices and (legal in PLY) before them.
     const auto dir = test::temp_dir("ply_polygons");

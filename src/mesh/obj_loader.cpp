@@ -8,6 +8,7 @@
 // (triangulate_polygon), lines other than v, vn and f are skipped, and each problem is one line
 // naming the line of the file.
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -49,13 +50,19 @@ enum class Number { ok, not_a_number, too_large };
 
 // A decimal number as a float. Magnitudes below float's smallest read as that tiny value or zero (they
 // are a model's rounding, 1e-50); above its largest they are refused (too_large).
+// too_large sets `value` to the infinity of its sign.
 Number parse_float(std::string_view word, float& value) {
-    if (!word.empty() && word.front() == '+') word.remove_prefix(1);  // from_chars refuses the sign strtod accepts
+    // from_chars refuses the sign strtod accepts (but "+-5" stays refused).
+    if (word.size() > 1 && word.front() == '+' && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.'))
+        word.remove_prefix(1);
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (ec == std::errc::result_out_of_range && ptr == word.data() + word.size()) {
         // from_chars says out of range both below and above float's range; strtod tells which.
         const double wide = std::strtod(std::string(word).c_str(), nullptr);
-        if (std::abs(wide) >= 1.0) return Number::too_large;
+        if (std::abs(wide) >= 1.0) {
+            value = std::copysign(std::numeric_limits<float>::infinity(), static_cast<float>(wide));
+            return Number::too_large;
+        }
         value = static_cast<float>(wide);
         return Number::ok;
     }
@@ -79,6 +86,8 @@ public:
             if (eol == std::string_view::npos) eol = text.size();
             std::string_view piece = text.substr(pos, eol - pos);
             pos = eol + (eol + 1 < text.size() && text[eol] == '\r' && text[eol + 1] == '\n' ? 2 : 1);
+            // A comment ends the line, a backslash in it included ("# from C:\models\" continues nothing).
+            if (const size_t hash = piece.find('#'); hash != std::string_view::npos) piece = piece.substr(0, hash);
             ++physical;
             if (joined.empty()) line_ = physical;
             std::string_view trimmed = piece;
@@ -170,9 +179,8 @@ private:
     std::string normal_here() const { return "normal " + std::to_string(normals_.size() + 1) + at(); }
     std::string face_here() const { return "face " + std::to_string(face_end_.size() + 1) + at(); }
 
+    // Comments are already cut off (read): also those after the data ("f 1 2 3 # the lid", as some exporters write).
     void line(std::string_view rest) {
-        // A comment may also end a line ("f 1 2 3 # the lid", as some exporters write).
-        if (const size_t hash = rest.find('#'); hash != std::string_view::npos) rest = rest.substr(0, hash);
         const std::string_view keyword = next_word(rest);
         if (keyword == "v") vertex(rest);
         else if (keyword == "vn") normal(rest);
@@ -203,7 +211,8 @@ private:
         positions_.push_back(p);  // a fourth value (w) or a colour after the three is left
     }
 
-    // A normal that is not finite is kept as read: the loader then computes every normal (load_mesh.cpp).
+    // A normal that is not finite (NaN, or beyond float range: infinite) is kept as read: the loader then
+    // computes every normal (load_mesh.cpp).
     void normal(std::string_view rest) {
         within_limit(normals_.size(), "normals");
         glm::vec3 n;

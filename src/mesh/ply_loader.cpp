@@ -4,6 +4,7 @@
 // exhaust memory.
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -327,7 +328,8 @@ public:
 private:
     // from_chars refuses the leading '+' that printf("%+g") and some writers put.
     static std::string_view unsigned_plus(std::string_view t) {
-        if (t.size() > 1 && t.front() == '+') t.remove_prefix(1);
+        if (t.size() > 1 && t.front() == '+' && (std::isdigit(static_cast<unsigned char>(t[1])) || t[1] == '.'))
+            t.remove_prefix(1);  // "+-5" stays refused
         return t;
     }
     std::string_view token() {

@@ -56,22 +56,54 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
         return false;
     }
 
-    // Ear clipping over a ring of the corners left. Only a reflex corner (or a flat one) can lie inside an
-    // ear of a simple polygon, so the ear test visits those alone, and only those in the cells of a grid
-    // that the ear's box touches: a comb of 10,000 teeth is cut in a fraction of a second where testing
-    // every corner cost the cube of the corners. Clipping only ever turns a reflex corner convex (its
-    // neighbours are the only corners whose angle changes), so the grid is built once and corners that
-    // stop being reflex are skipped.
+    // Ear clipping over a ring of the corners left.
     std::vector<size_t> prev(n), next(n);
     for (size_t i = 0; i < n; ++i) prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
-    std::vector<uint8_t> reflex(n, 0);  // 0 as well once a corner is clipped
-    auto update = [&](size_t b) { reflex[b] = orientation(point[prev[b]], point[b], point[next[b]]) <= 0.0; };
+    size_t left = n, at = 0;
+    auto clip = [&](size_t b) {
+        emit(prev[b], b, next[b]);
+        next[prev[b]] = next[b];
+        prev[next[b]] = prev[b];
+        --left;
+    };
+    auto turn = [&](size_t b) { return orientation(point[prev[b]], point[b], point[next[b]]); };
+    // First the flat corners (on a straight edge, or the tip of a spike of no width): each is cut off as a
+    // triangle of no area, which leaves the polygon's shape as it was. A face whose edges are finely
+    // divided (a CAD export's, 75k corners on the straight sides of an L) then costs no more than its
+    // true corners.
+    {
+        std::vector<size_t> flat;
+        for (size_t i = 0; i < n; ++i)
+            if (turn(i) == 0.0) flat.push_back(i);
+        std::vector<uint8_t> gone(n, 0);
+        while (!flat.empty() && left > 3) {
+            const size_t b = flat.back();
+            flat.pop_back();
+            if (gone[b] || turn(b) != 0.0) continue;
+            const size_t a = prev[b], c = next[b];
+            clip(b);
+            gone[b] = 1;
+            at = a;
+            for (size_t x : {a, c})
+                if (turn(x) == 0.0) flat.push_back(x);
+        }
+    }
+    // Only a reflex corner can lie inside an ear of a simple polygon, so the ear test visits those alone,
+    // and only those in the cells of a grid that the ear's box touches: a comb of 10,000 teeth is cut in
+    // a fraction of a second where testing every corner cost the cube of the corners. Clipping only ever
+    // turns a reflex corner convex (its neighbours are the only corners whose angle changes); such a
+    // corner leaves its cell at once.
+    std::vector<uint8_t> reflex(n, 0);
     size_t reflex_count = 0;
-    glm::dvec2 lo = point[0], hi = point[0];
-    for (size_t i = 0; i < n; ++i) {
-        update(i);
-        reflex_count += reflex[i];
-        lo = glm::min(lo, point[i]), hi = glm::max(hi, point[i]);
+    glm::dvec2 lo = point[at], hi = point[at];
+    {
+        size_t b = at;
+        do {
+            reflex[b] = turn(b) < 0.0;
+            reflex_count += reflex[b];
+            lo = glm::min(lo, point[b]), hi = glm::max(hi, point[b]);
+            b = next[b];
+        } while (b != at);
     }
     // About one reflex corner a cell, the cells about square.
     const glm::dvec2 extent = glm::max(hi - lo, glm::dvec2(1e-300));
@@ -81,55 +113,62 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
     };
     const size_t nx = cells_along(aspect), ny = cells_along(1.0 / aspect);
     const glm::dvec2 scale = glm::dvec2(double(nx), double(ny)) / extent;
-    auto cell = [&](glm::dvec2 p) {
-        const glm::dvec2 c = glm::floor((p - lo) * scale);
-        return glm::ivec2(std::clamp(int(std::min(c.x, 2e9)), 0, int(nx) - 1), std::clamp(int(std::min(c.y, 2e9)), 0, int(ny) - 1));
+    auto cell_of = [&](glm::dvec2 p) {
+        const glm::dvec2 c = glm::floor((p - lo) * scale);  // NaN compares false: cell 0
+        const int x = c.x > 0.0 ? int(std::min(c.x, double(nx - 1))) : 0, y = c.y > 0.0 ? int(std::min(c.y, double(ny - 1))) : 0;
+        return glm::ivec2(x, y);
     };
-    std::vector<uint32_t> cell_start(nx * ny + 1, 0), in_cell(reflex_count);
-    for (size_t i = 0; i < n; ++i)
-        if (reflex[i]) {
-            const glm::ivec2 c = cell(point[i]);
-            ++cell_start[size_t(c.y) * nx + size_t(c.x) + 1];
+    auto cell_index = [&](glm::ivec2 c) { return size_t(c.y) * nx + size_t(c.x); };
+    // Each cell's reflex corners at in_cell[cell_begin, cell_end); a corner that turns convex is swapped out.
+    std::vector<uint32_t> cell_begin(nx * ny + 1, 0), in_cell(reflex_count), slot_of(n, 0);
+    for (size_t b = 0; b < n; ++b)
+        if (reflex[b]) ++cell_begin[cell_index(cell_of(point[b])) + 1];
+    for (size_t k = 0; k < nx * ny; ++k) cell_begin[k + 1] += cell_begin[k];
+    std::vector<uint32_t> cell_end(cell_begin.begin(), cell_begin.end() - 1);
+    for (size_t b = 0; b < n; ++b)
+        if (reflex[b]) {
+            const size_t k = cell_index(cell_of(point[b]));
+            slot_of[b] = cell_end[k];
+            in_cell[cell_end[k]++] = uint32_t(b);
         }
-    for (size_t k = 0; k < nx * ny; ++k) cell_start[k + 1] += cell_start[k];
-    {
-        std::vector<uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
-        for (size_t i = 0; i < n; ++i)
-            if (reflex[i]) {
-                const glm::ivec2 c = cell(point[i]);
-                in_cell[fill[size_t(c.y) * nx + size_t(c.x)]++] = uint32_t(i);
-            }
-    }
+    auto now_convex = [&](size_t b) {
+        if (!reflex[b] || turn(b) < 0.0) return;
+        reflex[b] = 0;
+        const size_t k = cell_index(cell_of(point[b]));
+        const uint32_t last = in_cell[--cell_end[k]];
+        in_cell[slot_of[b]] = last;
+        slot_of[last] = slot_of[b];
+    };
     uint64_t budget = kEarTestBudget;  // a polygon that crosses itself may find no ear for long
     auto is_ear = [&](size_t b) {
         const size_t a = prev[b], c = next[b];
         --budget;
         if (orientation(point[a], point[b], point[c]) <= 0.0) return false;  // reflex or flat
-        const glm::ivec2 c0 = cell(glm::min(point[a], glm::min(point[b], point[c])));
-        const glm::ivec2 c1 = cell(glm::max(point[a], glm::max(point[b], point[c])));
+        const glm::ivec2 c0 = cell_of(glm::min(point[a], glm::min(point[b], point[c])));
+        const glm::ivec2 c1 = cell_of(glm::max(point[a], glm::max(point[b], point[c])));
         for (int y = c0.y; y <= c1.y; ++y)
-            for (uint32_t k = cell_start[size_t(y) * nx + size_t(c0.x)]; k < cell_start[size_t(y) * nx + size_t(c1.x) + 1]; ++k) {
-                const size_t p = in_cell[k];
-                if (!reflex[p] || p == a || p == b || p == c) continue;
-                if (budget > 0) --budget;
-                if (point[p] == point[a] || point[p] == point[b] || point[p] == point[c]) continue;
-                if (orientation(point[a], point[b], point[p]) >= 0.0 && orientation(point[b], point[c], point[p]) >= 0.0 &&
-                    orientation(point[c], point[a], point[p]) >= 0.0)
-                    return false;  // a corner inside (or on the edge of) the would-be ear
+            for (int x = c0.x; x <= c1.x; ++x) {
+                const size_t k = cell_index({x, y});
+                budget -= std::min<uint64_t>(budget, 1 + cell_end[k] - cell_begin[k]);
+                for (uint32_t slot = cell_begin[k]; slot < cell_end[k]; ++slot) {
+                    const size_t p = in_cell[slot];
+                    if (p == a || p == c) continue;
+                    if (point[p] == point[a] || point[p] == point[b] || point[p] == point[c]) continue;
+                    if (orientation(point[a], point[b], point[p]) >= 0.0 && orientation(point[b], point[c], point[p]) >= 0.0 &&
+                        orientation(point[c], point[a], point[p]) >= 0.0)
+                        return false;  // a reflex corner inside (or on the edge of) the would-be ear
+                }
             }
         return true;
     };
-    size_t left = n, at = 0, tried = 0;
+    size_t tried = 0;
     while (left > 3 && tried < left && budget > 0) {
         if (is_ear(at)) {
-            emit(prev[at], at, next[at]);
-            next[prev[at]] = next[at];
-            prev[next[at]] = prev[at];
-            reflex[at] = 0;
-            update(prev[at]);
-            update(next[at]);
-            at = prev[at];
-            --left;
+            const size_t a = prev[at], c = next[at];
+            clip(at);
+            now_convex(a);
+            now_convex(c);
+            at = a;
             tried = 0;
         } else {
             at = next[at];
