@@ -84,6 +84,15 @@ anim::GltfBuilder instanced_triangle(bool quantized) {
     return b;
 }
 
+// Node 0's translation animated from kNodeTranslation to kNodeTranslation + (0, 0, 2) over one second.
+void add_slide(anim::GltfBuilder& b) {
+    const int times = b.add_floats({0, 1}, "SCALAR");
+    const int values = b.add_floats({0, 0, -3, 0, 0, -1}, "VEC3");
+    b.add("animations", {{"name", "Slide"},
+                         {"samplers", json::array({{{"input", times}, {"output", values}, {"interpolation", "LINEAR"}}})},
+                         {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}});
+}
+
 // Triangle k of the mesh is instance k, its corners where node x instance puts the file's (in either
 // winding: loading may turn a part's faces).
 void expect_instances_placed(const Mesh& mesh, double tolerance) {
@@ -187,11 +196,7 @@ TEST(GltfInstancing, InstancesMoveWithTheirAnimatedNode) {
     // The node's translation animated from kNodeTranslation to kNodeTranslation + (0, 0, 2) over one
     // second: every instance follows it, each placed by its own transform.
     anim::GltfBuilder b = instanced_triangle(false);
-    const int times = b.add_floats({0, 1}, "SCALAR");
-    const int values = b.add_floats({0, 0, -3, 0, 0, -1}, "VEC3");
-    b.add("animations", {{"name", "Slide"},
-                         {"samplers", json::array({{{"input", times}, {"output", values}, {"interpolation", "LINEAR"}}})},
-                         {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}});
+    add_slide(b);
     const std::string bytes = b.glb();
     const anim::AnimatedModel model = anim::load_animated_model_from_bytes("slide.glb", bytes);
     const Mesh drawn = load_mesh_from_bytes("slide.glb", bytes);
@@ -234,11 +239,7 @@ TEST(GltfInstancing, CopiesOfSeveralPrimitivesAnimateInTheStaticOrder) {
     anim::GltfBuilder b = instanced_triangle(false);
     const int second = b.add_floats({0, 0, 1, 1, 0, 1, 0, 1, 1}, "VEC3");  // the triangle again, 1 higher in z
     b.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", second}}}});
-    const int times = b.add_floats({0, 1}, "SCALAR");
-    const int values = b.add_floats({0, 0, -3, 0, 0, -1}, "VEC3");
-    b.add("animations", {{"name", "Slide"},
-                         {"samplers", json::array({{{"input", times}, {"output", values}, {"interpolation", "LINEAR"}}})},
-                         {"channels", json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}})}});
+    add_slide(b);
     const std::string bytes = b.glb();
     const Mesh drawn = load_mesh_from_bytes("two_primitives.glb", bytes);
     const anim::AnimatedModel model = anim::load_animated_model_from_bytes("two_primitives.glb", bytes);
