@@ -2,8 +2,11 @@
 // valid), and skins, morph targets, animations and the encodings glTF allows for them are read right.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 #include <filesystem>
 
 #include "anim/deform_cpu.hpp"
@@ -15,6 +18,7 @@
 #include "mesh/load_mesh.hpp"
 #include "mesh/loader_util.hpp"
 #include "support/anim_files.hpp"
+#include "stipple/object_data.hpp"
 #include "support/test_paths.hpp"
 
 namespace stipple::anim {
@@ -45,10 +49,72 @@ void expect_rest_is_drawing_mesh(const std::string& path) {
 TEST(AnimLoading, RestMeshIsTheStaticDrawingMesh) {
     expect_rest_is_drawing_mesh(write_rig(rigs::bending_cylinder(), "anim_load_cylinder", "cylinder"));
     expect_rest_is_drawing_mesh(write_rig(rigs::node_animated_box(), "anim_load_box", "box"));
-    expect_rest_is_drawing_mesh(write_rig(rigs::morphed_quad(), "anim_load_quad", "quad"));
     expect_rest_is_drawing_mesh(write_rig(rigs::interpolation_sample("LINEAR"), "anim_load_keys", "keys"));
     expect_rest_is_drawing_mesh(write_rig(rigs::stretching_plane(), "anim_load_plane", "plane"));
     expect_rest_is_drawing_mesh(write_rig(rigs::eight_joint_sheet(), "anim_load_eight", "eight"));
+}
+
+// A mesh's triangles as corner positions, each starting at its least corner (which keeps its winding),
+// sorted: equal for two meshes of the same faces in any vertex and triangle order.
+std::vector<std::array<float, 9>> wound_triangles(const Mesh& mesh) {
+    std::vector<std::array<float, 9>> out;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        std::array<glm::vec3, 3> c;
+        for (int k = 0; k < 3; ++k) c[k] = mesh.positions[mesh.indices[3 * t + k]];
+        auto less = [](const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); };
+        const int first = int(std::min_element(c.begin(), c.end(), less) - c.begin());
+        std::array<float, 9> tri;
+        for (int k = 0; k < 3; ++k)
+            for (int i = 0; i < 3; ++i) tri[3 * k + i] = c[(first + k) % 3][i];
+        out.push_back(tri);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The rest mesh is what the file draws when nothing moves: its skins and default morph weights applied,
+// where the static loader only places each primitive by its node.
+TEST(AnimLoading, RestMeshIsTheRestPose) {
+    // The quad's node weights (0.25, 0) lift its vertex (1, 1, 0) by 0.25 at rest: every triangle and
+    // normal as the static loader has them, that vertex moved.
+    const std::string quad = write_rig(rigs::morphed_quad(), "anim_load_quad", "quad");
+    const AnimatedModel morphed = load_animated_model(quad);
+    const Mesh drawn = load_mesh_for_drawing(quad);
+    ASSERT_EQ(morphed.rest.indices, drawn.indices);
+    const DeformedGeometry rest = deform_cpu(morphed, evaluate_pose(morphed, kRestPose, 0.0));
+    EXPECT_EQ(morphed.rest.positions, rest.positions);
+    EXPECT_EQ(morphed.rest.normals, rest.normals);
+    int lifted = 0;
+    for (size_t v = 0; v < drawn.vertex_count(); ++v) {
+        const glm::vec3 expected = drawn.positions[v] + (drawn.positions[v] == glm::vec3(2, 3, 3) ? glm::vec3(0, 0, 0.25f) : glm::vec3(0));
+        lifted += expected != drawn.positions[v];
+        EXPECT_EQ(morphed.rest.positions[v], expected) << "vertex " << v;
+    }
+    EXPECT_EQ(lifted, 1);
+
+    // A skinned tube under a node that scales it by 2 and mirrors it: glTF ignores that node, so the rest
+    // mesh is the tube under an identity node, and its faces still face out (the static loader re-wound
+    // them for the mirror).
+    auto tube = rigs::bending_cylinder();
+    const AnimatedModel plain = load_animated_model(write_rig(tube, "anim_load_tube", "plain"));
+    tube.doc["nodes"][0]["scale"] = {-2.0, 2.0, 2.0};
+    const AnimatedModel mirrored = load_animated_model(write_rig(tube, "anim_load_tube_mirror", "mirrored"));
+    EXPECT_NE(load_mesh_for_drawing(write_rig(tube, "anim_load_tube_mirror", "mirrored")).positions, mirrored.rest.positions);
+    // The same triangles, wound the same way (the draw order, chosen on the static placement, may differ).
+    EXPECT_EQ(wound_triangles(plain.rest), wound_triangles(mirrored.rest));
+    for (const AnimatedModel* model : {&plain, &mirrored}) {
+        size_t outward = 0;
+        for (size_t t = 0; t < model->rest.triangle_count(); ++t) {
+            const glm::vec3 a = model->rest.positions[model->rest.indices[3 * t]];
+            const glm::vec3 b = model->rest.positions[model->rest.indices[3 * t + 1]];
+            const glm::vec3 c = model->rest.positions[model->rest.indices[3 * t + 2]];
+            const glm::vec3 centre = (a + b + c) / 3.0f;
+            // Away from the tube's axis on its side, along it on the caps.
+            const glm::vec3 out = std::abs(centre.y - 1.0f) > 0.999f ? glm::vec3(0, centre.y - 1.0f, 0) : glm::vec3(centre.x, 0, centre.z);
+            outward += glm::dot(glm::cross(b - a, c - a), out) > 0.0f;
+        }
+        EXPECT_EQ(outward, model->rest.triangle_count()) << (model == &plain ? "plain" : "mirrored");
+    }
 }
 
 TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {
@@ -229,6 +295,38 @@ TEST(AnimLoading, ProbeTellsAnimatedFilesBeforeLoading) {
     // Cannot tell: the full loader will say what is wrong.
     EXPECT_TRUE(gltf_declares_animations(write("broken.gltf", "{ not json")));
     EXPECT_TRUE(gltf_declares_animations((dir / "missing.glb").string()));
+
+    // What sends a file without animations to the animated loader too: a rest pose that may differ from
+    // the static loader's placement (a skin, morph weights other than zero).
+    EXPECT_FALSE(gltf_declares_deformation(test::source_path("assets/blobby.glb")));
+    EXPECT_TRUE(gltf_declares_deformation(write("anim.gltf", R"({"asset": {"version": "2.0"}, "animations": [{}]})")));
+    EXPECT_TRUE(gltf_declares_deformation(write("skin.gltf", R"({"asset": {"version": "2.0"}, "skins": [{"joints": [0]}]})")));
+    EXPECT_FALSE(gltf_declares_deformation(write("zero.gltf", R"({"asset": {"version": "2.0"}, "meshes": [{"weights": [0, 0]}]})")));
+    EXPECT_TRUE(gltf_declares_deformation(write("mesh.gltf", R"({"asset": {"version": "2.0"}, "meshes": [{"weights": [0, 0.5]}]})")));
+    EXPECT_TRUE(gltf_declares_deformation(write("node.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"weights": [1]}]})")));
+    EXPECT_TRUE(gltf_declares_deformation(write("broken2.gltf", "{ not json")));
+}
+
+// A file without animations draws its rest pose too: a skin under a node that glTF ignores, a mesh whose
+// default weights morph it (the static loader alone would draw the first at twice its size, the second
+// unmorphed).
+TEST(AnimLoading, StaticFilesDrawTheirRestPose) {
+    auto tube = rigs::bending_cylinder();
+    const AnimatedModel plain = load_animated_model(write_rig(tube, "anim_static_tube", "plain"));
+    tube.doc.erase("animations");
+    tube.doc["nodes"][0]["scale"] = {2.0, 2.0, 2.0};
+    const std::string scaled = write_rig(tube, "anim_static_tube_scaled", "scaled");
+    EXPECT_EQ(load_model_data(scaled).mesh->positions, plain.rest.positions);
+    EXPECT_NE(load_mesh_for_drawing(scaled).positions, plain.rest.positions);
+
+    auto quad = rigs::morphed_quad();
+    quad.doc.erase("animations");
+    const std::string still = write_rig(quad, "anim_static_quad", "quad");
+    const ObjectData data = load_model_data(still);
+    EXPECT_FALSE(data.motion);
+    size_t lifted = 0;
+    for (const glm::vec3& p : data.mesh->positions) lifted += p == glm::vec3(2, 3, 3.25f);
+    EXPECT_EQ(lifted, 1u) << "the node's weights (0.25, 0) lift the vertex (2, 3, 3) at rest";
 }
 
 }  // namespace

@@ -129,5 +129,33 @@ TEST(AnimValidation, SkinsAndMorphWeightsThatDoNotFit) {
     expect_error(weights, "morph_weights", "nodes[0].weights: 1 weights for 2 morph targets");
 }
 
+// What glTF allows is not an error: one sampler driving a translation and a scale (both three floats a
+// key), and weights animated on a node outside the drawn scene (they move nothing drawn). A sampler
+// driving properties whose values differ in kind stays one.
+TEST(AnimValidation, SharedSamplersAndNodesOutsideTheScene) {
+    GltfBuilder box = rigs::node_animated_box();  // channels: translation (sampler 0), rotation (1), scale (2)
+    box.doc["animations"][0]["channels"][2]["sampler"] = 0;
+    const AnimatedModel shared = test::load_rig(box, "anim_shared_sampler", "box");
+    ASSERT_EQ(shared.animations[0].channels.size(), 3u);
+    EXPECT_EQ(shared.animations[0].channels[2].sampler, 0u);
+    EXPECT_EQ(shared.animations[0].channels[2].path, ChannelPath::Scale);
+
+    GltfBuilder mixed = rigs::node_animated_box();
+    mixed.doc["animations"][0]["channels"][1]["sampler"] = 0;
+    expect_error(mixed, "mixed_sampler",
+                 "animations[0].channels[1]: sampler 0 also drives a property whose values it cannot hold (translations or "
+                 "scales and rotations)");
+
+    GltfBuilder quad = rigs::morphed_quad();
+    const int hidden = quad.add("nodes", {{"name", "hidden"}, {"mesh", 0}});  // in no scene
+    quad.doc["animations"][0]["channels"].push_back({{"sampler", 0}, {"target", {{"node", hidden}, {"path", "weights"}}}});
+    const AnimatedModel outside = test::load_rig(quad, "anim_weights_outside", "quad");
+    EXPECT_EQ(outside.animations[0].channels.size(), 1u) << "the hidden node's channel drives nothing drawn";
+
+    GltfBuilder plain = rigs::node_animated_box();
+    plain.doc["animations"][0]["channels"][0]["target"]["path"] = "weights";
+    expect_error(plain, "weights_no_targets", "animations[0].channels[0]: node 1 has no morph targets to weight");
+}
+
 }  // namespace
 }  // namespace stipple::anim

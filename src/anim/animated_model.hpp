@@ -1,6 +1,7 @@
 #pragma once
-// A glTF model that moves: the rest mesh exactly as the static loader draws it, plus what deforms it
-// (per-vertex influences and morph deltas, the node hierarchy, skins and animations).
+// A glTF model that moves: the rest mesh (the static loader's, or the file's rest pose where that
+// differs), plus what deforms it (per-vertex influences and morph deltas, the node hierarchy, skins and
+// animations).
 //
 // Deformation is unified as a palette of matrices: a vertex's position in object space is
 //   sum_i weight_i * palette[slot_i] * (bind_position + sum_k morph_weight_k * delta_k)
@@ -107,8 +108,10 @@ struct MorphDelta {
 
 struct AnimatedModel {
     std::string source;
-    // The rest mesh: the same triangles, vertex order, positions and normals as
-    // load_mesh_for_drawing(source), so stipples generated on either stay valid on the other.
+    // The rest mesh: the same triangles and vertex order as load_mesh_for_drawing(source), so stipples
+    // generated on either stay valid on the other; its positions and normals too, unless the file's rest
+    // pose (skins and default morph weights applied) differs from the static loader's placement, where
+    // they are the rest pose's (and a face's winding follows the rest pose's mirroring).
     Mesh rest;
     // Per rest vertex, in the space its influences expect (bind space, or the mesh node's own space).
     std::vector<glm::vec3> bind_positions;

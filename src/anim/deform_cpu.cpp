@@ -4,6 +4,14 @@
 
 namespace stipple::anim {
 
+glm::dmat4 blend_matrix(const AnimatedModel& model, const Pose& pose, size_t v) {
+    const Influences& inf = model.influences[v];
+    glm::dmat4 m(0.0);
+    for (uint32_t i = 0; i < kMaxInfluences; ++i)
+        if (inf.weight[i] != 0.0f) m += double(inf.weight[i]) * glm::dmat4(pose.palette[inf.slot[i]]);
+    return m;
+}
+
 void deform_vertex(const AnimatedModel& model, const Pose& pose, size_t v, glm::dvec3& position, glm::dvec3& normal) {
     glm::dvec3 p(model.bind_positions[v]);
     glm::dvec3 n(model.bind_normals[v]);
@@ -14,10 +22,7 @@ void deform_vertex(const AnimatedModel& model, const Pose& pose, size_t v, glm::
         p += w * glm::dvec3(d.position);
         n += w * glm::dvec3(d.normal);
     }
-    const Influences& inf = model.influences[v];
-    glm::dmat4 m(0.0);
-    for (uint32_t i = 0; i < kMaxInfluences; ++i)
-        if (inf.weight[i] != 0.0f) m += double(inf.weight[i]) * glm::dmat4(pose.palette[inf.slot[i]]);
+    const glm::dmat4 m = blend_matrix(model, pose, v);
     position = glm::dvec3(m * glm::dvec4(p, 1.0));
     // The inverse transpose up to a positive factor: cofactors, with det's sign (a mirroring blend
     // keeps normals pointing out of the faces that the static loader re-wound), which also works for

@@ -19,6 +19,9 @@ struct DeformedGeometry {
 void deform_cpu(const AnimatedModel& model, const Pose& pose, DeformedGeometry& out);
 DeformedGeometry deform_cpu(const AnimatedModel& model, const Pose& pose);
 
+// The weighted sum of a vertex's palette matrices: what moves it from its own space to object space.
+glm::dmat4 blend_matrix(const AnimatedModel& model, const Pose& pose, size_t vertex);
+
 // One vertex (the loop body of deform_cpu, for callers that need only a few vertices).
 void deform_vertex(const AnimatedModel& model, const Pose& pose, size_t vertex, glm::dvec3& position, glm::dvec3& normal);
 

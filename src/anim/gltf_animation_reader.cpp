@@ -62,19 +62,28 @@ private:
                                      " has a matrix, which glTF does not allow to animate");
             uint32_t components = path == ChannelPath::Rotation ? 4 : 3;
             if (path == ChannelPath::Weights) {
-                if (node.morph_set < 0)
+                if (node.morph_set < 0) {
+                    // A node outside the drawn scene has no morph set even when its mesh has targets:
+                    // its weights move nothing drawn.
+                    if (has_morph_targets(channel.target_node)) continue;
                     fail_file(path_, channel_field + ": node " + std::to_string(channel.target_node) +
                                          " has no morph targets to weight");
+                }
                 components = static_cast<uint32_t>(model_.morph_sets[node.morph_set].rest_weights.size());
             }
             const int s = channel.sampler;
             Sampler& sampler = animation.samplers[s];
             const std::string sampler_field = field + indexed(".samplers", s);
+            // Translation and scale read their values alike (three floats a key), so one sampler may
+            // drive both (glTF allows any sampler whose output suits the property).
+            const int reading = path == ChannelPath::Scale ? static_cast<int>(ChannelPath::Translation) : static_cast<int>(path);
             if (sampler_use[s] < 0) {
                 read_values(in.samplers[s], sampler_field, path, components, sampler);
-                sampler_use[s] = static_cast<int>(path);
-            } else if (sampler_use[s] != static_cast<int>(path) || sampler.components != components) {
-                fail_file(path_, channel_field + ": sampler " + std::to_string(s) + " also drives a different property");
+                sampler_use[s] = reading;
+            } else if (sampler_use[s] != reading || sampler.components != components) {
+                fail_file(path_, channel_field + ": sampler " + std::to_string(s) +
+                                     " also drives a property whose values it cannot hold (" + read_as(sampler_use[s], sampler.components) +
+                                     " and " + read_as(reading, components) + ")");
             }
             animation.channels.push_back(Channel{static_cast<uint32_t>(s), channel.target_node, path});
         }
@@ -123,6 +132,23 @@ private:
             why += " per key)";
         }
         fail_file(path_, field + ": input has " + std::to_string(keys) + " keys, output " + std::to_string(elements) + why);
+    }
+
+    bool has_morph_targets(int node) const {
+        const int mesh = gltf_.nodes[static_cast<size_t>(node)].mesh;
+        if (mesh < 0 || static_cast<size_t>(mesh) >= gltf_.meshes.size()) return false;
+        for (const tinygltf::Primitive& primitive : gltf_.meshes[static_cast<size_t>(mesh)].primitives)
+            if (!primitive.targets.empty()) return true;
+        return false;
+    }
+
+    // How a sampler's values are read, for the message when two channels disagree.
+    static std::string read_as(int reading, uint32_t components) {
+        switch (static_cast<ChannelPath>(reading)) {
+            case ChannelPath::Rotation: return "rotations";
+            case ChannelPath::Weights: return std::to_string(components) + " morph weights a key";
+            default: return "translations or scales";
+        }
     }
 
     static std::string format(float value) {

@@ -35,8 +35,9 @@ std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* s
 ObjectData load_model_data(const std::string& path) {
     ObjectData object;
     const auto start = Clock::now();
-    if (is_gltf(path) && anim::gltf_declares_animations(path)) {
-        // One read serves both: the animated loader's rest mesh is exactly load_mesh_for_drawing's.
+    if (is_gltf(path) && anim::gltf_declares_deformation(path)) {
+        // One read serves both: the animated loader's rest mesh is load_mesh_for_drawing's, with the
+        // skins and default morph weights applied where the file's rest pose differs from it.
         auto model = std::make_shared<anim::AnimatedModel>(anim::load_animated_model(path));
         if (model->is_animated()) {
             object.motion.headroom = std::make_shared<const anim::StretchHeadroom>(anim::measure_headroom(*model));

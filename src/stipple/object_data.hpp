@@ -22,7 +22,7 @@ enum class StippleSource { Cache, Generate };
 // One object's CPU data. Meshes and stipple sets may be shared between objects that use the same
 // model (and, for stipples, the same generation parameters): a scene may show one model many times.
 struct ObjectData {
-    std::shared_ptr<const Mesh> mesh;  // an animated model's rest mesh (load_mesh_for_drawing's)
+    std::shared_ptr<const Mesh> mesh;  // a glTF file's rest mesh (anim::AnimatedModel::rest)
     Sphere bounds;  // object space; an animated model's holds every pose of every animation
     std::shared_ptr<const StippleSet> stipples;
     anim::Motion motion;  // a glTF file with an animation: what moves it and its stretch headroom
@@ -33,7 +33,8 @@ struct ObjectData {
 std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds = nullptr);
 
 // The model without stipples: its mesh, bounds and, for a glTF file with animations, its motion
-// (load_animated_model, whose rest mesh is load_mesh_for_drawing's, and measure_headroom).
+// (load_animated_model and measure_headroom). A glTF file with animations, skins or morph weights is
+// drawn from the animated loader's rest mesh (its rest pose), any other model from load_mesh_for_drawing.
 ObjectData load_model_data(const std::string& path);
 
 // The stipples of `mesh` for `generation` (the progress flag is set here from the mesh's size);
