@@ -12,6 +12,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "mesh/primitives.hpp"
 #include "core/hash.hpp"
@@ -51,6 +54,35 @@ void flip_byte(const fs::path& path, std::streamoff at) {
     c = char(c ^ 0x5A);
     f.seekp(at);
     f.write(&c, 1);
+}
+
+// Where the cache lives: an empty STIPPLE_CACHE_DIR or XDG_CACHE_HOME, or a relative XDG_CACHE_HOME (invalid
+// by the XDG specification), counts as unset; each made a cache folder in the current directory.
+TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
+    struct Saved {
+        const char* name;
+        std::optional<std::string> value;
+    };
+    std::vector<Saved> saved;
+    for (const char* name : {"STIPPLE_CACHE_DIR", "XDG_CACHE_HOME", "HOME"}) {
+        const char* v = std::getenv(name);
+        saved.push_back({name, v ? std::optional<std::string>(v) : std::nullopt});
+    }
+    auto set = [](const char* name, const char* value) { ::setenv(name, value, 1); };
+    set("HOME", "/home/someone");
+    set("STIPPLE_CACHE_DIR", "");
+    set("XDG_CACHE_HOME", "");
+    EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/home/someone/.cache/stipple/stipples"));
+    set("XDG_CACHE_HOME", "relative/cache");
+    EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/home/someone/.cache/stipple/stipples"));
+    set("XDG_CACHE_HOME", "/var/cache/me");
+    EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/var/cache/me/stipple/stipples"));
+    set("STIPPLE_CACHE_DIR", "/data/stipple");
+    EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/data/stipple/stipples"));
+    for (const Saved& s : saved) {
+        if (s.value) ::setenv(s.name, s.value->c_str(), 1);
+        else ::unsetenv(s.name);
+    }
 }
 
 TEST(StippleCache, ReopeningReadsTheSameStipplesBack) {

@@ -76,9 +76,12 @@ void maybe_crash(uint64_t written) {
 }  // namespace
 
 std::filesystem::path default_stipple_cache_dir() {
-    if (const char* dir = std::getenv("STIPPLE_CACHE_DIR")) return std::filesystem::path(dir) / "stipples";
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME")) return std::filesystem::path(xdg) / "stipple" / "stipples";
-    if (const char* home = std::getenv("HOME")) return std::filesystem::path(home) / ".cache" / "stipple" / "stipples";
+    // An empty variable is unset (it made a cache folder in whatever the current directory was), and so is
+    // a relative XDG_CACHE_HOME (the XDG Base Directory specification: such a value is invalid).
+    if (const char* dir = std::getenv("STIPPLE_CACHE_DIR"); dir && *dir) return std::filesystem::path(dir) / "stipples";
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && std::filesystem::path(xdg).is_absolute())
+        return std::filesystem::path(xdg) / "stipple" / "stipples";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "stipple" / "stipples";
     return std::filesystem::temp_directory_path() / "stipple-cache" / "stipples";
 }
 
