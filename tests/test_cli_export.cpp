@@ -224,5 +224,31 @@ TEST(CliExport, ShowTravelAddsThePenUpMovesToTheSvg) {
     EXPECT_EQ(std::count(pdf.err.begin(), pdf.err.end(), '\n'), 1) << pdf.err;
 }
 
+// What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger
+// ones), refused before anything is drawn, where an SVG takes any page; a CSV, the dots alone, which
+// the command's last line says where lines were drawn.
+TEST(CliExport, EachFormatSaysWhatItCannotHold) {
+    const auto dir = test::temp_dir("cli-export-formats");
+    const std::vector<std::string> view = {"render", "--width", "200", "--height", "160", "--page", "6000x4000mm"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> all = view;
+        all.insert(all.end(), extra.begin(), extra.end());
+        return all;
+    };
+    const std::string pdf_path = (dir / "big.pdf").string();
+    const test::CommandResult pdf = test::run_stipple(with({"-o", pdf_path}));
+    EXPECT_NE(pdf.exit_code, 0);
+    EXPECT_NE(pdf.err.find(pdf_path + ": a PDF page is at most 5080 mm (200 in) a side, and this page is 6000 x 4000 mm"),
+              std::string::npos) << pdf.err;
+    EXPECT_EQ(std::count(pdf.err.begin(), pdf.err.end(), '\n'), 1) << pdf.err;
+    EXPECT_FALSE(std::filesystem::exists(pdf_path));
+    run_ok(with({"-o", (dir / "big.svg").string()}));
+
+    const test::CommandResult csv =
+        test::run_stipple({"render", "--width", "200", "--height", "160", "--contours", "-o", (dir / "dots.csv").string()});
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    EXPECT_NE(csv.out.find("polylines are not written to CSV"), std::string::npos) << csv.out;
+}
+
 }  // namespace
 }  // namespace stipple

@@ -12,9 +12,11 @@
 #include <sstream>
 #include <string>
 
+#include "core/utf8.hpp"
 #include "export/blue_noise.hpp"
 #include "export/plot_plan.hpp"
 #include "export/svg_writer.hpp"
+#include "export/text_format.hpp"
 #include "io/png_io.hpp"
 #include "support/export_helpers.hpp"
 #include "support/test_paths.hpp"
@@ -162,6 +164,17 @@ TEST(ExportSvg, RasterisedInkIsWhereTheDotsAre) {
         EXPECT_LT(stipple::luminance(image, int(dot.px.x), int(dot.px.y)), 60) << dot.px.x << "," << dot.px.y;
         EXPECT_GT(stipple::luminance(image, int(dot.px.x) + 10, int(dot.px.y) + 10), 200);  // between dots: paper
     }
+}
+
+// An SVG is XML in UTF-8: a layer named after a file whose name is not UTF-8 (Latin-1 "caf\xe9") gets the
+// replacement character, where the raw byte made a file no XML parser reads.
+TEST(ExportSvg, TextThatIsNotUtf8IsMadeValid) {
+    EXPECT_EQ(xml_escape("caf\xe9 <1>"), "caf\xef\xbf\xbd &lt;1&gt;");
+    EXPECT_EQ(xml_escape("caf\xc3\xa9"), "caf\xc3\xa9");
+    EXPECT_EQ(xml_escape("\xed\xa0\x80"), "\xef\xbf\xbd\xef\xbf\xbd\xef\xbf\xbd") << "a surrogate is not UTF-8";
+    EXPECT_EQ(xml_escape("\xf0\x9f\x98\x80!"), "\xf0\x9f\x98\x80!") << "four bytes, one code point";
+    EXPECT_EQ(xml_escape("\xc0\xaf"), "\xef\xbf\xbd\xef\xbf\xbd") << "an overlong form is not UTF-8";
+    EXPECT_TRUE(stipple::is_valid_utf8(xml_escape("\xff\xfe\xe2\x82")));
 }
 
 TEST(ExportSvg, UnwritablePathIsOneLineError) {

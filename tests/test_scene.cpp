@@ -144,6 +144,24 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     EXPECT_GT(test::measure_ink(original).inked_inside, 500u) << "the scene should draw stipples";
 }
 
+// A scene file is JSON, which is UTF-8: a model whose file name is not (a Latin-1 name) cannot be saved in
+// one. Saving says so in one line naming the object, where the JSON library threw an exception that ended
+// the viewer (Ctrl+S).
+TEST(Scene, AModelNameThatIsNotUtf8IsAOneLineError) {
+    Scene scene;
+    scene.objects.push_back({"caf\xe9.obj", {}, {}});
+    try {
+        scene_to_json(scene, test::temp_dir("scene_latin1"));
+        ADD_FAILURE() << "a scene naming a file that is not UTF-8 was written";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("objects[0].model: the path is not UTF-8"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    scene.objects[0].model = "caf\xc3\xa9.obj";  // the same name in UTF-8
+    EXPECT_NE(scene_to_json(scene, test::temp_dir("scene_latin1")).find("caf\xc3\xa9.obj"), std::string::npos);
+}
+
 TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     auto dir = test::temp_dir("scene-text");
     Scene scene = parse_scene(R"({"objects": [{"model": "a.obj", "params": {"silhouette": "toon", "shading": false,
@@ -373,8 +391,42 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",
                  "camera.distance", "must be in"},
         BadScene{"empty_objects", R"({"objects": []})", "objects", "no objects"},
+        // JSON allows a repeated key but not which one counts: the parser kept the last silently.
+        BadScene{"repeated_param", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": 20, "dmax": 0.1}}]})",
+                 "objects[0].params.dmax", "the field is given twice"},
+        BadScene{"repeated_objects", R"({"objects": [{"model": "sphere.obj"}], "objects": []})", "objects",
+                 "the field is given twice"},
+        BadScene{"alias_and_switch", R"({"objects": [{"model": "sphere.obj", "params": {"silhouette_lines": false,
+                 "silhouette": "both"}}]})", "objects[0].params.silhouette", "sets silhouette_lines too"},
+        BadScene{"camera_path_yaw", R"({"objects": [{"model": "sphere.obj"}], "camera_path": [{"yaw": 3e38}, {"yaw": -3e38}]})",
+                 "camera_path[0].yaw", "must be in -36000..36000 degrees"},
         BadScene{"no_objects", R"({"camera": {"yaw": 3}})", "objects", "required field is missing"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// Options that would be silently dropped are refused: the camera's with a camera_path (which places
+// every frame's camera), and the old --silhouette with the switches it sets.
+TEST(Scene, OptionsThatWouldBeIgnoredAreRefused) {
+    auto dir = test::temp_dir("scene-ignored-options");
+    write_sphere_obj(dir);
+    write_text(dir / "path.json", R"({"objects": [{"model": "sphere.obj"}], "camera_path": [{"yaw": 0}, {"yaw": 90}]})");
+    for (const char* option : {"--yaw", "--pitch", "--distance"}) {
+        auto result = test::run_stipple({"render", (dir / "path.json").string(), option, "3", "-o", (dir / "out.png").string()});
+        EXPECT_EQ(result.exit_code, 1) << option;
+        EXPECT_NE(result.err.find(std::string(option) + " sets the camera, but the scene's camera_path"), std::string::npos)
+            << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    }
+    auto orbit = test::run_stipple({"render", (dir / "path.json").string(), "--frames", "2", "--orbit", "90", "-o",
+                                    (dir / "out%d.png").string()});
+    EXPECT_EQ(orbit.exit_code, 1);
+    EXPECT_NE(orbit.err.find("--orbit sets the camera"), std::string::npos) << orbit.err;
+
+    auto alias = test::run_stipple({"render", (dir / "sphere.obj").string(), "--silhouette-lines", "--silhouette", "none", "-o",
+                                    (dir / "out.png").string()});
+    EXPECT_EQ(alias.exit_code, 1);
+    EXPECT_NE(alias.err.find("--silhouette sets --silhouette-lines too"), std::string::npos) << alias.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
 
 TEST(Scene, ObjectOptionsAreNotMixedWithASceneFile) {
     auto dir = test::temp_dir("scene-mixed-options");

@@ -141,7 +141,7 @@ void Viewer::save_scene() {
     try {
         live_.save(options_.scene_path, camera_);
         message("scene saved: " + options_.scene_path);
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // a failed save is a message: the session goes on
         message(e.what(), true);
     }
 }

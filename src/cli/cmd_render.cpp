@@ -147,6 +147,7 @@ int run_render(const std::vector<std::string>& argv) {
             fail("--mask " + mask + " is the image's own path (-o): give it another");
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
+    if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
     const std::optional<app::PrintOptions> print = read_print_options(args);
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
@@ -194,6 +195,14 @@ int run_render(const std::vector<std::string>& argv) {
     }
     Scene scene = scene_from_command_line(args, "render");
     const std::string what = scene.source.empty() ? scene.model_path(0) : scene.source;
+    // A scene's camera_path places every frame's camera: options that set the scene's camera, or turn it,
+    // would be silently ignored.
+    if (!scene.camera_path.empty()) {
+        for (const char* name : {"--yaw", "--pitch", "--distance", "--orbit"})
+            if (args.has(name))
+                fail_file(scene.source, std::string(name) + " sets the camera, but the scene's camera_path places every frame's "
+                                        "camera: edit the path, or render without it");
+    }
 
     auto start = std::chrono::steady_clock::now();
     SceneContent content = load_scene_content(scene);
@@ -370,9 +379,12 @@ int run_render(const std::vector<std::string>& argv) {
         const VkExtent2D page = app::print_layout(*print).page_px;
         holds = printf_string("%ux%u, %s at %g dpi", page.width, page.height, args.get("--page", "").c_str(), print->dpi);
     } else if (vector) {
+        // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
+        const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())
+                                                            : printf_string(", %zu polylines", last_plot.polylines);
         holds = plot::format_number(vector_options.page.width_mm, 0) + "x" + plot::format_number(vector_options.page.height_mm, 0) +
-                printf_string(" mm page: %zu dots, %zu polylines%s; the frame's view at %lldx%lld", last_plot.dots,
-                              last_plot.polylines, sequence ? " in the last frame" : "", width, height);
+                printf_string(" mm page: %zu dots%s%s; the frame's view at %lldx%lld", last_plot.dots, lines.c_str(),
+                              sequence ? " in the last frame" : "", width, height);
     }
     if (sequence)
         std::printf("wrote %zu frames %s .. %s (%s)\n", cameras.size(), frame_path(output, 0).c_str(),

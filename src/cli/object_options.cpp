@@ -20,8 +20,24 @@ std::set<std::string> object_options() {
     return options;
 }
 
+namespace {
+
+// Whether the command line gives the parameter of this scene key (as --x, --no-x or --x VALUE).
+bool gives(const Args& args, const char* key) {
+    const ParamSpec* spec = find_param(key);
+    if (!spec) return false;
+    const std::string name = "--" + std::string(spec->cli);
+    return spec->type == ParamType::Bool ? args.flag(name) || args.flag("--no-" + std::string(spec->cli)) : args.has(name);
+}
+
+}  // namespace
+
 ObjectParams read_object_params(const Args& args) {
     ObjectParams params;
+    for (const ParamSpec& spec : param_table())
+        for (const char* key : spec.alias_of)
+            if (gives(args, spec.key) && gives(args, key))
+                fail("--" + std::string(spec.cli) + " sets --" + find_param(key)->cli + " too: give one or the other, not both");
     for (const ParamSpec& spec : param_table()) {
         const std::string name = "--" + std::string(spec.cli);
         if (spec.type == ParamType::Bool) {

@@ -85,9 +85,10 @@ Vector and print output (render):
                           the stipples the frame draws (after density, hidden-stipple removal, toon
                           fade) as dots, and its visible lines, on a page in mm, ordered for pen
                           plotters; layers per object and kind (see docs/plot-export.md); the
-                          image-space --silhouette-lines become the outline they trace (the contours)
+                          image-space --silhouette-lines become the outline they trace (the contours).
+                          x.csv holds the dots alone, one row each
   --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
-                          (WxHmm: 10 mm to 10 m a side; default A4)
+                          (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4)
   --margin MM             white border around the drawing (default 10)
   --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
                           dots 0.3)

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <cmath>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -31,9 +32,17 @@ bool is_plot_path(const std::string& path) {
 
 bool is_svg_path(const std::string& path) { return extension_of(path) == ".svg"; }
 bool is_png_path(const std::string& path) { return extension_of(path) == ".png"; }
+bool is_csv_path(const std::string& path) { return extension_of(path) == ".csv"; }
+
+void check_page_for_format(const std::string& path, double width_mm, double height_mm) {
+    if (extension_of(path) == ".pdf" && std::max(width_mm, height_mm) > kPdfMaxPageMm)
+        fail_file(path, "a PDF page is at most 5080 mm (200 in) a side, and this page is " + std::to_string(std::lround(width_mm)) +
+                            " x " + std::to_string(std::lround(height_mm)) + " mm: write an SVG (.svg) or choose a smaller --page");
+}
 
 void write_plot_file(const PlotPlan& plan, const std::string& path) {
     const std::string ext = extension_of(path);
+    check_page_for_format(path, plan.layout.page.width_mm, plan.layout.page.height_mm);
     // Into a folder made if missing, as PNG images are.
     const std::filesystem::path fs_path(path);
     if (fs_path.has_parent_path()) {

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/utf8.hpp"
 
 namespace stipple::plot {
 
@@ -41,7 +42,9 @@ std::string hex_colour(glm::vec3 colour) {
     return text;
 }
 
-std::string xml_escape(std::string_view text) {
+std::string xml_escape(std::string_view raw) {
+    // A file name need not be UTF-8 (a Latin-1 name), and an XML file that is not does not parse.
+    const std::string text = valid_utf8(raw);
     std::string out;
     for (const char c : text) {
         switch (c) {

@@ -19,6 +19,7 @@ constexpr const char* kSilhouetteNames[] = {"none", "lines", "toon", "both"};
 constexpr const char* kUpAxisNames[] = {"x", "y", "z", "-x", "-y", "-z"};  // UpAxis's order
 
 // The old single switch for both §3.1 methods, read into the two independent ones.
+constexpr const char* kSilhouetteAliasOf[] = {"silhouette_lines", "toon"};
 double silhouette_alias_get(const P& p) { return double(int(p.silhouette_lines) | int(p.toon) << 1); }
 void silhouette_alias_set(P& p, double v) {
     const int mode = int(v);
@@ -143,7 +144,7 @@ const ParamSpec kTable[] = {
     {"silhouette", "silhouette", "silhouette", kLines,
      "the old single switch: none, lines (silhouette lines), toon, or both; sets silhouette_lines and toon",
      ParamType::Choice, 0, 0, false, kSilhouetteNames, ParamEffect::Frame, ParamWidget::Hidden, true,
-     silhouette_alias_get, silhouette_alias_set},
+     silhouette_alias_get, silhouette_alias_set, kSilhouetteAliasOf},
 };
 
 std::string shortest(double value, ParamType type) {

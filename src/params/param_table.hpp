@@ -49,6 +49,9 @@ struct ParamSpec {
     bool alias = false;
     double (*get)(const ObjectParams&) = nullptr;
     void (*set)(ObjectParams&, double) = nullptr;
+    // An alias: the keys of the parameters it sets. Giving it with any of them is an error (which one
+    // wins would be an accident of the table's order).
+    std::span<const char* const> alias_of = {};
 };
 
 // Every parameter, in the order --help, the panel and saved scenes list them.

@@ -6,11 +6,13 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/utf8.hpp"
 #include "core/printf_string.hpp"
 #include "mesh/loader_util.hpp"
 #include "params/param_table.hpp"
@@ -131,7 +133,10 @@ json param_json(const ParamSpec& spec, double value) {
 ObjectParams read_params(const json& j, const Reader& r, const std::string& where) {
     r.expect_object(j, where, scene_param_names());
     ObjectParams params;
-    // In table order, so an alias (listed after the switches it sets) overrides them as it always did.
+    for (const ParamSpec& spec : param_table())
+        for (const char* key : spec.alias_of)
+            if (j.contains(spec.key) && j.contains(key))
+                r.error(Reader::field(where, spec.key), std::string("sets ") + key + " too: give one or the other, not both");
     for (const ParamSpec& spec : param_table())
         if (j.contains(spec.key)) spec.set(params, read_param_value(spec, j[spec.key], r, Reader::field(where, spec.key)));
     try {
@@ -219,7 +224,11 @@ json animation_json(const AnimationChoice& a) {
 SceneCamera read_camera(const json& j, const Reader& r, const std::string& where) {
     r.expect_object(j, where, {"yaw", "pitch", "distance", "world_distance", "target", "fov_y"});
     SceneCamera c;
-    if (j.contains("yaw")) c.yaw_deg = r.number(j["yaw"], Reader::field(where, "yaw"));
+    if (j.contains("yaw")) {
+        c.yaw_deg = r.number(j["yaw"], Reader::field(where, "yaw"));
+        // As --yaw: a camera path between yaws near the float range overflowed to a blank frame.
+        if (std::abs(c.yaw_deg) > 36000.0f) r.error(Reader::field(where, "yaw"), "must be in -36000..36000 degrees");
+    }
     if (j.contains("pitch")) {
         c.pitch_deg = r.number(j["pitch"], Reader::field(where, "pitch"));
         if (std::abs(c.pitch_deg) > 90.0f) r.error(Reader::field(where, "pitch"), "must be in -90..90 degrees");
@@ -301,11 +310,63 @@ std::vector<std::string> scene_param_names() {
     return names;
 }
 
+namespace {
+
+// Where the parser is in the document, to name a key that an object repeats: JSON allows a repeated key
+// but says nothing of which one counts, and nlohmann's DOM keeps the last silently ("dmax": 20, "dmax":
+// 0.1 drew with 0.1; "objects" given twice said "the scene has no objects").
+class DuplicateKeys {
+public:
+    // The parser's callback: records the first repeated key's path and keeps parsing.
+    bool operator()(int, json::parse_event_t event, json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start: begin_element(), frames_.push_back({true}); break;
+            case json::parse_event_t::array_start: begin_element(), frames_.push_back({false}); break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end: frames_.pop_back(); break;
+            case json::parse_event_t::key: {
+                Frame& frame = frames_.back();
+                frame.key = parsed.get<std::string>();
+                if (!frame.keys.insert(frame.key).second && duplicate_.empty()) duplicate_ = path();
+                break;
+            }
+            case json::parse_event_t::value: begin_element(); break;
+        }
+        return true;
+    }
+    const std::string& duplicate() const { return duplicate_; }
+
+private:
+    struct Frame {
+        bool object;
+        std::set<std::string> keys;
+        std::string key;  // an object's current key
+        size_t next = 0;  // an array's next element
+        size_t index = 0;  // an array's current element
+    };
+    // A value, object or array starts: in an array, it is the next element.
+    void begin_element() {
+        if (!frames_.empty() && !frames_.back().object) frames_.back().index = frames_.back().next++;
+    }
+    std::string path() const {
+        std::string out;
+        for (const Frame& f : frames_)
+            out += f.object ? (out.empty() ? "" : ".") + f.key : "[" + std::to_string(f.index) + "]";
+        return out;
+    }
+    std::vector<Frame> frames_;
+    std::string duplicate_;
+};
+
+}  // namespace
+
 Scene parse_scene(const std::string& text, const std::string& source, const std::filesystem::path& base_dir) {
     Reader r(source);
     json root;
+    DuplicateKeys duplicates;
     try {
-        root = json::parse(text);
+        root = json::parse(text, std::ref(duplicates));
+        if (!duplicates.duplicate().empty()) r.error(duplicates.duplicate(), "the field is given twice (give it once)");
     } catch (const json::exception& e) {  // parse_error, and out_of_range for a number like 1e390
         std::string message = e.what();
         if (size_t bracket = message.find("] "); message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
@@ -380,7 +441,12 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         std::filesystem::path model = std::filesystem::absolute(scene.model_path(i)).lexically_normal();
-        json object = {{"model", model_reference(model, save_dir)}};
+        const std::string reference = model_reference(model, save_dir);
+        // JSON text is UTF-8: a file name that is not (a Latin-1 name) cannot be written into a scene.
+        if (!is_valid_utf8(reference))
+            fail_file(reference, "objects[" + std::to_string(i) +
+                                     "].model: the path is not UTF-8, so a scene file cannot name it (rename the file)");
+        json object = {{"model", reference}};
         if (o.transform.matrix) {
             json m = json::array();
             for (int k = 0; k < 16; ++k) m.push_back(number((*o.transform.matrix)[k / 4][k % 4]));
