@@ -34,6 +34,39 @@ TEST(ExportPlan, LayersNumberedPerObjectAndKind) {
     EXPECT_EQ(plan.layers[1].dots.size(), 9u);
 }
 
+// The page holds the frame: a dot centred beyond the image's edge is left out, and a line piece that
+// reaches past the edge (the GPU's runs may, by a few pixels) is cut at it; with no margin both ran off
+// the paper.
+TEST(ExportPlan, NothingLeavesTheFrame) {
+    Drawing drawing = grid_drawing(1, 1);  // one dot at (50, 50), a square from (250, 100) to (350, 200)
+    drawing.dots.push_back({glm::vec2(-0.5f, 10.0f), 1.5f, 1.0f, 0, 7});
+    drawing.dots.push_back({glm::vec2(120.0f, 300.4f), 1.5f, 1.0f, 0, 8});
+    drawing.dots.push_back({glm::vec2(400.0f, 0.0f), 1.5f, 1.0f, 0, 9});  // on the corner: in
+    drawing.segments.push_back({glm::vec2(-3.0f, 10.0f), glm::vec2(50.0f, 10.0f), 0, LineKind::Border});
+    drawing.segments.push_back({glm::vec2(-3.0f, -1.0f), glm::vec2(-1.0f, 500.0f), 0, LineKind::Border});  // all outside
+    drawing.segments.push_back({glm::vec2(390.0f, 290.0f), glm::vec2(410.0f, 310.0f), 0, LineKind::Border});
+    ExportOptions options;
+    options.margin_mm = 0.0;
+    options.simplify_mm = 0.0;
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    size_t dots = 0;
+    glm::dvec2 lo(1e30), hi(-1e30);
+    for (const PlotLayer& layer : plan.layers) {
+        dots += layer.dots.size();
+        for (const PlotDot& dot : layer.dots) lo = glm::min(lo, dot.mm), hi = glm::max(hi, dot.mm);
+        for (const Polyline& line : layer.lines)
+            for (const glm::dvec2& p : line.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    EXPECT_EQ(dots, 2u) << "the dots at (50, 50) and on the corner";
+    const glm::dvec2 frame_lo = plan.layout.to_mm({0.0, 0.0}), frame_hi = plan.layout.to_mm({400.0, 300.0});
+    EXPECT_GE(lo.x, frame_lo.x - 1e-9);
+    EXPECT_GE(lo.y, frame_lo.y - 1e-9);
+    EXPECT_LE(hi.x, frame_hi.x + 1e-9);
+    EXPECT_LE(hi.y, frame_hi.y + 1e-9);
+    EXPECT_NEAR(lo.x, frame_lo.x, 1e-9) << "the piece from x = -3 is cut at the edge, not dropped";
+    EXPECT_NEAR(hi.x, frame_hi.x, 1e-9) << "the piece to (410, 310) is cut at the corner";
+}
+
 TEST(ExportPlan, FractionalDotsKeepTheirInkArea) {
     Drawing drawing = grid_drawing(2, 1);
     drawing.dots[0].intensity = 0.25f;

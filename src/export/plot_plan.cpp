@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "core/error.hpp"
 #include "export/dot_order.hpp"
@@ -46,6 +47,31 @@ std::string layer_label(uint32_t number, const std::string& name, uint32_t objec
 
 bool finite(glm::vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+// The part of segment a-b inside the frame [0, w] x [0, h] (Liang-Barsky), or nothing. The GPU's line
+// pieces may reach a few pixels past the image (a run bridged to a vertex outside it, a walk's first half
+// step): the page shows the frame, and with no margin they ran off the paper.
+std::optional<std::array<glm::dvec2, 2>> clip_to_frame(glm::dvec2 a, glm::dvec2 b, double w, double h) {
+    double t0 = 0.0, t1 = 1.0;
+    const glm::dvec2 d = b - a;
+    const double p[4] = {-d.x, d.x, -d.y, d.y};
+    const double q[4] = {a.x, w - a.x, a.y, h - a.y};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0) return std::nullopt;  // parallel to this edge and outside it
+            continue;
+        }
+        const double t = q[i] / p[i];
+        if (p[i] < 0.0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+    }
+    if (t0 > t1) return std::nullopt;
+    return std::array<glm::dvec2, 2>{a + t0 * d, a + t1 * d};
+}
+
+// Whether a dot's centre lies in the frame: one beyond its edge is mostly off the image (the splat inks
+// the pixels of it that are in), and the page holds the frame.
+bool in_frame(glm::vec2 p, uint32_t w, uint32_t h) { return p.x >= 0.0f && p.y >= 0.0f && p.x <= float(w) && p.y <= float(h); }
+
 PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot_indices, uint32_t object, const PlotPlan& plan,
                         double pen_mm, bool plotter_order, glm::dvec2& pen) {
     PlotLayer layer;
@@ -86,7 +112,10 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segmen
     // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).
     std::vector<std::array<glm::dvec2, 2>> pieces;
     pieces.reserve(segment_indices.size());
-    for (const uint32_t i : segment_indices) pieces.push_back({glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b)});
+    for (const uint32_t i : segment_indices)
+        if (const auto piece = clip_to_frame(glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b), drawing.width_px,
+                                             drawing.height_px))
+            pieces.push_back(*piece);
     for (Polyline& line : chain_edges(merge_segments(pieces, options.merge))) {
         for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
@@ -116,7 +145,8 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
         if (dot.object >= objects)
             fail("export: dot " + std::to_string(i) + " belongs to object " + std::to_string(dot.object) + " of " + std::to_string(objects));
         // A dot of no intensity or no size leaves no ink; one at no finite place cannot be drawn.
-        if (dot.intensity > 0.0f && dot.radius_px > 0.0f && finite(dot.px)) dots_of[dot.object].push_back(i);
+        if (dot.intensity > 0.0f && dot.radius_px > 0.0f && finite(dot.px) && in_frame(dot.px, drawing.width_px, drawing.height_px))
+            dots_of[dot.object].push_back(i);
     }
     for (uint32_t i = 0; i < drawing.segments.size(); ++i) {
         const Segment& segment = drawing.segments[i];
