@@ -120,6 +120,17 @@ TEST(ExportPolylines, OverlapsMergeOnlyOnOneLine) {
     EXPECT_NEAR(total_length(lines), 8.0, 1e-6);
 }
 
+// A mesh's contour seen edge-on zig-zags: its edges fold back over each other a tenth of a pixel or two
+// apart (the bunny's, at 640x512). They are one stretch of line, drawn once, not walked back and forth.
+TEST(ExportPolylines, AContourFoldingBackOnItselfIsDrawnOnce) {
+    const std::vector<Piece> pieces{{glm::dvec2(0, 0), glm::dvec2(6, 0.05)}, {glm::dvec2(6, 0.05), glm::dvec2(2, 0.1)},
+                                    {glm::dvec2(2, 0.1), glm::dvec2(9, 0.02)}, {glm::dvec2(9, 0.02), glm::dvec2(5, -0.03)}};
+    const std::vector<Polyline> lines = chain_edges(merge_segments(pieces));
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_NEAR(total_length(lines), 9.0, 0.01) << "the stretch from x = 0 to 9 once, where the pieces add up to 21";
+    EXPECT_EQ(repeated_edges(lines), 0u);
+}
+
 TEST(ExportPolylines, JunctionsKeepStraightStrokes) {
     // A plus: two strokes, each straight through the centre.
     const glm::dvec2 c(50, 50);
