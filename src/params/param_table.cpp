@@ -40,7 +40,7 @@ const ParamSpec kTable[] = {
      ParamType::Float, 0.0, 16.0, true, {}, ParamEffect::Regenerate, ParamWidget::LogSlider, false,
      [](const P& p) { return double(p.generation.dmax); }, [](P& p, double v) { p.generation.dmax = float(v); }},
     {"max_stipples", "max-stipples", "budget", kGeneration,
-     "Object_max, the object's stipple budget; the density is lowered evenly when D_max would exceed it",
+     "Object_max, the object's stipple budget; the density is lowered evenly when D_max would exceed it (an animated model's candidates add its stretch headroom on top)",
      ParamType::Int, 1.0, 2.0e9, false, {}, ParamEffect::Regenerate, ParamWidget::Input, false,
      [](const P& p) { return double(p.generation.max_stipples); },
      [](P& p, double v) { p.generation.max_stipples = uint64_t(v); }},
