@@ -375,7 +375,8 @@ struct ObjectUniforms {
                             // software GPU pays for each matrix product per vertex, culled ones included)
     vec4 shading;           // x: shading exponent n (§2.2); y: point size (px); z: toon sharpness (§3.1); w: unused
     vec4 extrinsic;         // x: pr; y: minimum stipple area (px^2); z: reference pixels per world unit; w: area scale (linear scale^2, object -> world)
-    vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre
+    vec4 intrinsic;         // x: de; y: A, the object's depth half-range; z: view depth of the object's centre;
+                            // w: 1 where the model matrix scales its axes unequally (polygon_view), else 0
     uvec4 flags;            // x: kFlag* bits; y: triangle count; z: silhouette edge count; w: candidate count
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
     vec4 box_size;          // xyz: the box's extent

@@ -195,6 +195,8 @@ struct PolygonView {
                           // generated with stretch headroom (stretched_due)
     float selection;      // fixed selection value in [0, 1) (src/stipple/selection_order.cpp)
     float area;           // world-space area
+    float scale_ratio;    // its linear scale from object to world over the object's mean (1 but for an
+                          // unequal scale of the axes)
     vec3 center;          // view-space centroid (the eye at the origin looking down -z)
     vec3 normal;          // view-space unit normal
 };
@@ -268,11 +270,24 @@ STIPPLE_FN PolygonView polygon_view(TriangleInfo info, float candidates, ObjectU
     p.due = candidates;
     p.selection = polygon_selection(info);
     p.area = info.area * o.extrinsic.w;
+    p.scale_ratio = 1.0f;
     vec2 xy = unpackUnorm2x16(info.center_xy);
     float z = unpackUnorm2x16(info.center_z_selection).x;
     vec3 center = vec3(o.box_min) + vec3(o.box_size) * vec3(xy.x, xy.y, z);
     p.center = vec3(o.model_view * vec4(center, 1.0f));
-    p.normal = normalize(mat3(o.normal_view) * octahedral_to_unit(unpackSnorm2x16(info.normal)));
+    vec3 normal = mat3(o.normal_view) * octahedral_to_unit(unpackSnorm2x16(info.normal));
+    p.normal = normalize(normal);
+    // A model matrix M that scales its axes unequally scales a polygon's area by |det M| |M^-T n| (n its
+    // unit normal), which depends on how the polygon lies: against the mean scale s = |det M|^(1/3) of
+    // extrinsic.w = s^2 that is s |M^-T n|, the length of the unnormalised view normal (normal_view is
+    // M's inverse transpose; the view turns it without scaling) times s. Taken as s^2 for every polygon,
+    // a plate squashed 3x across its plane drew 1.5 times the stipples of the same plate stored squashed,
+    // one stretched 3x along it 0.69 times. A similarity keeps 1 exactly (o.intrinsic.w = 0).
+    if (o.intrinsic.w != 0.0f) {
+        float area_ratio = length(normal) * sqrt(o.extrinsic.w);
+        p.area *= area_ratio;
+        p.scale_ratio = sqrt(area_ratio);
+    }
     return p;
 }
 
@@ -330,7 +345,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
         return result;
     }
     float orientation = orientation_factor(facing);
-    float screen_scale = q.pixels_per_unit / (distance * q.reference_ppu);
+    float screen_scale = p.scale_ratio * q.pixels_per_unit / (distance * q.reference_ppu);
     result.owed = density * extrinsic_factor(screen_scale, q.pr) * orientation;
     // Not capped at the candidates: a polygon owed more draws all of them, larger (stipple_scale).
     density = min(result.owed, p.candidates * kMaxStippleScale * kMaxStippleScale);
@@ -382,7 +397,8 @@ STIPPLE_CONST float kGradientAreaFull = 64.0f;
 // The place-dependent terms of polygon_density_terms at view-space point x of a polygon with unit normal
 // `normal` (flipped toward the eye for a two-sided polygon seen from inside): (x) the intrinsic depth
 // factor, (y) the extrinsic scale s^pr, (z) the facing ratio against the eye ray. point_terms multiplies
-// them as the density does.
+// them as the density does. Only their ratios over the centroid's are used, so the polygon's own
+// scale_ratio (a constant factor of s^pr) cancels and is left out.
 STIPPLE_FN vec3 point_term_parts(vec3 x, vec3 normal, DensityParams q) {
     float distance = max(-x.z, 1e-20f);
     vec3 parts = vec3(1.0f, 1.0f, abs(dot(normal, -x)) / max(length(x), 1e-20f));

@@ -244,6 +244,53 @@ TEST_F(SceneObjects, ObjectsAtDifferentScalesKeepTheirTone) {
     EXPECT_NEAR(big_off, big_on, 0.02) << "the other object's enhancement is its own";
 }
 
+// A scene matrix that scales the axes unequally: each polygon's area follows its own orientation
+// (|det M| |M^-T n|), not the mean scale. A plate squashed 3x across its plane is the plate itself, and
+// one stretched 3x along it draws what the same plate stored stretched draws, but for the overlap of its
+// stretched (anisotropic) pattern. Taken at the mean scale they drew 1.5 and 0.69 times the stipples.
+TEST_F(SceneObjects, AnUnequalScaleOfTheAxesKeepsThePolygonsTone) {
+    auto dir = test::temp_dir("scene-unequal-scale");
+    auto write_obj = [&](const std::string& name, glm::vec3 scale) {
+        const Mesh grid = make_grid(20);
+        std::ostringstream obj;
+        obj.precision(9);
+        for (const glm::vec3& p : grid.positions) obj << "v " << p.x * scale.x << ' ' << p.y * scale.y << ' ' << p.z * scale.z << '\n';
+        for (size_t t = 0; t < grid.triangle_count(); ++t)
+            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
+        write_text(dir / name, obj.str());
+    };
+    write_obj("plate.obj", glm::vec3(1.0f));
+    write_obj("wide.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    auto ink = [&](const std::string& model, glm::vec3 scale) {
+        Scene scene;
+        scene.base_dir = dir;
+        SceneObject object;
+        object.model = model;
+        object.transform.matrix = glm::scale(glm::mat4(1.0f), scale);
+        object.params.shading = false;
+        object.params.intrinsic = false;
+        scene.objects = {object};
+        scene.camera.world_distance = 12.0f;
+        scene.camera.target = glm::vec3(0.0f);
+        const RenderedFrame frame = render_scene(*context, scene, {640, 512});
+        double sum = 0.0;
+        size_t covered = 0;
+        for (size_t i = 0; i < frame.depth.size(); ++i) {
+            if (frame.depth[i] >= 1.0f) continue;
+            sum += 1.0 - frame.color.pixels[4 * i] / 255.0;
+            ++covered;
+        }
+        EXPECT_GT(covered, 10000u) << model;
+        return sum / double(covered);
+    };
+    const double plate = ink("plate.obj", glm::vec3(1.0f)), squashed = ink("plate.obj", glm::vec3(1.0f, 1.0f, 3.0f));
+    const double stored = ink("wide.obj", glm::vec3(1.0f)), stretched = ink("plate.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    std::printf("mean ink: plate %.4f, scaled 3x across its plane %.4f; stored 3x wider %.4f, scaled 3x wider %.4f\n", plate,
+                squashed, stored, stretched);
+    EXPECT_NEAR(squashed, plate, 0.01 * plate);
+    EXPECT_NEAR(stretched, stored, 0.08 * stored);  // 6% lighter measured: its dots overlap more across the stretch
+}
+
 TEST_F(SceneObjects, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
     // What the viewer does with a drop and with the panel's generation parameters, without a window.
     auto dir = test::temp_dir("scene-live");

@@ -123,8 +123,29 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
 }
 
-// Lengths scale by this much from object to world (the mean for non-uniform scales).
-float linear_scale(const glm::mat4& model) { return std::cbrt(std::abs(glm::determinant(glm::mat3(model)))); }
+// How the model matrix scales lengths from object to world: the mean (the cube root of the volume's
+// scale), the most (its longest column, as the scene's framing takes it) and whether it is a similarity
+// (every direction scaled alike), where the two are the same.
+struct ModelScale {
+    float mean = 1.0f, most = 1.0f;
+    bool uniform = true;
+};
+
+ModelScale model_scale(const glm::mat4& model) {
+    const glm::mat3 m(model);
+    ModelScale s;
+    s.mean = std::cbrt(std::abs(glm::determinant(m)));
+    const float lengths[3] = {glm::length(m[0]), glm::length(m[1]), glm::length(m[2])};
+    s.most = std::max({lengths[0], lengths[1], lengths[2]});
+    const float tolerance = 1e-5f * s.most;
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(lengths[i] - s.most) > tolerance) s.uniform = false;
+        if (std::abs(glm::dot(m[i], m[(i + 1) % 3])) > tolerance * s.most) s.uniform = false;
+    }
+    // A similarity keeps the mean it always used, so that its drawing does not move by a rounding.
+    if (s.uniform) s.most = s.mean;
+    return s;
+}
 
 }  // namespace
 
@@ -297,16 +318,19 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     u.model_view = view.camera.view * model;
     u.model_view_proj = (view.camera.proj * view.camera.view) * model;  // as FrameUniforms::view_proj times it
     u.normal_view = glm::inverseTranspose(u.model_view);
-    float scale = linear_scale(object.model);
-    float radius_world = std::max(bounds.radius * scale, 1e-20f);
+    const ModelScale scale = model_scale(object.model);
+    // The reference view (and the stipples' areas, extrinsic.w) at the mean scale; an unequal scale of
+    // the axes is corrected per polygon (polygon_view). The depth range A is the sphere's extent in world.
+    const float radius_mean = std::max(bounds.radius * scale.mean, 1e-20f);
+    const float radius_world = std::max(bounds.radius * scale.most, 1e-20f);
     // At print detail a stipple is drawn as the disc of its screen ink, enlarged (FrameView::detail_scale).
     const bool print = view.detail_scale != 1.0f;
     const float point_size = print ? 2.0f * stipple_ink_radius(p.point_size) * view.detail_scale : p.point_size;
     u.shading = glm::vec4(p.shading_exponent, point_size, p.toon_sharpness, 0.0f);
     // Reference view of generation: the bounding-sphere radius spans kReferenceHeight / 2 pixels.
-    u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_world, scale * scale);
+    u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_mean, scale.mean * scale.mean);
     glm::vec3 center_view = glm::vec3(u.model_view * glm::vec4(bounds.center, 1.0f));
-    u.intrinsic = glm::vec4(p.de, radius_world, -center_view.z, 0.0f);
+    u.intrinsic = glm::vec4(p.de, radius_world, -center_view.z, scale.uniform ? 0.0f : 1.0f);
     uint32_t flags = gpu::kFlagBackfaceCull;
     if (p.shading) flags |= gpu::kFlagShading;
     if (p.extrinsic) flags |= gpu::kFlagExtrinsic;
@@ -333,7 +357,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
 
 float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width) {
     const Sphere& bounds = object.polygons.bounds;
-    float radius_world = bounds.radius * linear_scale(object.model);
+    float radius_world = bounds.radius * model_scale(object.model).most;
     glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
     float distance = std::max(-center_view.z, 1e-6f);
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
