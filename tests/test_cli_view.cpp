@@ -105,6 +105,12 @@ TEST(CliView, DrivenByRealInputUnderXvfb) {
     EXPECT_TRUE(wait_for([&] { return session.out().find("drawing resumed") != std::string::npos; }, 10s))
         << session.out();
     ASSERT_TRUE(session.viewer().running()) << "the viewer died\n" << session.err();
+    // Wider than the device draws (lavapipe: 16384): the frame is clamped (shared memory) or drawing
+    // pauses (a swapchain, whose size the window fixes), with no validation message either way; it made
+    // images, framebuffers and viewports beyond the limits on every frame.
+    session.xdotool("windowsize " + session.window() + " 17000 300 sleep 1.5 windowsize " + session.window() + " 1000 760");
+    std::this_thread::sleep_for(1s);
+    ASSERT_TRUE(session.viewer().running()) << "the viewer died\n" << session.err();
     session.focus();
 
     // Still drawing, at the new window size.

@@ -10,13 +10,16 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "anim/procedural_rigs.hpp"
 #include "app/live_scene.hpp"
+#include "app/timeline.hpp"
 #include "core/error.hpp"
 #include "io/png_io.hpp"
 #include "mesh/primitives.hpp"
 #include "scene/frame_sequence.hpp"
 #include "scene/scene_content.hpp"
 #include "scene/scene_json.hpp"
+#include "support/anim_files.hpp"
 #include "support/gpu_test.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
@@ -289,6 +292,56 @@ TEST_F(SceneObjects, AnUnequalScaleOfTheAxesKeepsThePolygonsTone) {
                 squashed, stored, stretched);
     EXPECT_NEAR(squashed, plate, 0.01 * plate);
     EXPECT_NEAR(stretched, stored, 0.08 * stored);  // 6% lighter measured: its dots overlap more across the stretch
+}
+
+// What the viewer met in review (2026-12-03): a dropped animated model on a scene drawn on the cpu path,
+// which cannot draw it, took the splat path instead of leaving the scene with an object the renderer did
+// not have (the next frame ended the viewer); stipples made for parameters the panel no longer asks for
+// (set back while they were made) are not applied; a timeline at the end of an animation that does not
+// loop plays again from the start.
+TEST_F(SceneObjects, ViewerSceneTakesDropsAndResultsOnlyAsThePanelAsks) {
+    auto dir = test::temp_dir("scene-live-drops");
+    write_sphere_obj(dir);
+    const std::string tube = test::write_rig(anim::rigs::bending_cylinder(), "scene-live-drops-rig", "tube");
+    Scene scene;
+    scene.base_dir = dir;
+    scene.objects.push_back({"sphere.obj", {}, {}});
+    scene.objects[0].params.generation.dmax = 0.02f;
+    scene.objects[0].params.density_path = DensityPath::Cpu;
+    SceneContent content = load_scene_content(scene);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+    app::LiveScene live(scene, std::move(content), renderer);
+    live.add_model(tube);
+    ASSERT_EQ(live.size(), 2u);
+    ASSERT_EQ(renderer.object_count(), 2u);
+    EXPECT_EQ(live.scene().objects[1].params.density_path, ObjectParams{}.density_path);
+    EXPECT_TRUE(live.sync(0.5).empty());
+    EXPECT_EQ(renderer.params(1).density_path, ObjectParams{}.density_path);
+
+    // Stipples for D_max 0.04 arrive after the panel was set back to 0.02: stale, not applied.
+    const uint32_t before = renderer.object(0).geometry.stipple_count;
+    GenerationParams asked = live.scene().objects[0].params.generation;
+    asked.dmax = 0.04f;
+    auto stale = make_stipples(live.model(0), asked);
+    EXPECT_FALSE(live.apply_stipples(live.id(0), asked, stale,
+                                     prepare_object_upload(*context, *live.model(0).mesh, *stale, asked.seed, {})));
+    EXPECT_EQ(renderer.object(0).geometry.stipple_count, before);
+    EXPECT_FALSE(live.generation_changed(0));
+    live.scene().objects[0].params.generation.dmax = 0.04f;  // asked for now: applied
+    EXPECT_TRUE(live.apply_stipples(live.id(0), asked, stale,
+                                    prepare_object_upload(*context, *live.model(0).mesh, *stale, asked.seed, {})));
+    EXPECT_NEAR(double(renderer.object(0).geometry.stipple_count), 2.0 * before, 0.02 * before);
+
+    app::Timeline timeline;
+    live.scene().objects[1].animation.loop = false;
+    const double length = app::timeline_length(live.scene(), live.objects());
+    ASSERT_GT(length, 0.0);
+    timeline.advance(length + 1.0, live.scene(), live.objects());
+    EXPECT_FALSE(timeline.playing()) << "the end holds";
+    EXPECT_DOUBLE_EQ(timeline.time(), length);
+    timeline.toggle_play(live.scene(), live.objects());
+    EXPECT_TRUE(timeline.playing());
+    EXPECT_DOUBLE_EQ(timeline.time(), 0.0) << "played from the end, it starts again";
 }
 
 TEST_F(SceneObjects, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {

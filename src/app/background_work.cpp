@@ -1,5 +1,7 @@
 #include "app/background_work.hpp"
 
+#include <filesystem>
+
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -34,8 +36,11 @@ void BackgroundWork::regenerate(uint64_t object_id, const ObjectData& model, con
     // The newest value wins: older requests for this object are dropped, a running one is cancelled.
     queue_.erase(std::remove_if(queue_.begin(), queue_.end(), same_object), queue_.end());
     if (running_ && same_object(*running_) && observer_) observer_->cancel();
-    queue_.push_back({FinishedWork::Kind::Regenerated, object_id, "", std::move(shape), params,
-                      "new stipples for object " + std::to_string(object_id)});
+    // Named by its file: the id is internal (it starts at 1 and outlives removals), not the panel's number.
+    const std::string name = shape.mesh && !shape.mesh->source.empty()
+                                 ? std::filesystem::path(shape.mesh->source).filename().string()
+                                 : "object";
+    queue_.push_back({FinishedWork::Kind::Regenerated, object_id, "", std::move(shape), params, "new stipples for " + name});
     wake_.notify_one();
 }
 

@@ -43,7 +43,7 @@ public:
     void load(const std::string& path, const ObjectParams& params);
 
     std::vector<FinishedWork> take_finished();
-    // What runs now, e.g. "new stipples for object 2", and how far it is; nothing when idle.
+    // What runs now, e.g. "new stipples for stanford-bunny.obj", and how far it is; nothing when idle.
     struct Status {
         std::string label;
         double fraction = 0.0;

@@ -57,30 +57,43 @@ bool LiveScene::generation_changed(size_t object) const {
     return needs_regeneration(generated_with_.at(object), scene_.objects.at(object).params);
 }
 
-void LiveScene::apply_stipples(uint64_t id, const GenerationParams& generation,
+bool LiveScene::apply_stipples(uint64_t id, const GenerationParams& generation,
                                std::shared_ptr<const StippleSet> stipples, const ObjectUpload& upload) {
     const std::optional<size_t> object = index_of(id);
-    if (!object) return;  // removed while its stipples were being made
+    if (!object) return false;  // removed while its stipples were being made
+    // Made for parameters the panel no longer asks for (changed again, or set back, while they were made):
+    // stale. Set back to what the drawn stipples have, nothing else would ever replace them.
+    ObjectParams made = scene_.objects[*object].params;
+    made.generation = generation;
+    if (needs_regeneration(made, scene_.objects[*object].params)) return false;
     renderer_.replace_object(*object, upload);
     data_[*object].stipples = std::move(stipples);
     generated_with_[*object].generation = generation;
+    return true;
 }
 
-void LiveScene::add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload,
+bool LiveScene::add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload,
                            const ObjectParams& params) {
     SceneObject object;
     // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
     object.model = std::filesystem::absolute(path).lexically_normal().string();
     object.params = params;
+    // A new object takes the last one's parameters, but a model that moves cannot take a density path
+    // computed on the CPU from the rest pose: it takes the splat's, the default.
+    const bool moved_to_gpu = data.motion && density_on_cpu(object.params.density_path);
+    if (moved_to_gpu) object.params.density_path = ObjectParams{}.density_path;
     if (!data_.empty()) {
         float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.to_matrix()).radius;
         object.transform = placement_beside(bounds(), data.bounds, reference);
     }
+    // The renderer first: if it refuses the object, the scene's lists must not hold it (the next frame
+    // would ask the renderer for an object it does not have).
+    renderer_.add_object(upload, object.transform.to_matrix(), object.params);
     scene_.objects.push_back(object);
     data_.push_back(std::move(data));
-    generated_with_.push_back(params);
+    generated_with_.push_back(object.params);
     ids_.push_back(next_id_++);
-    renderer_.add_object(upload, object.transform.to_matrix(), params);
+    return moved_to_gpu;
 }
 
 ObjectParams LiveScene::params_for_new_object() const {

@@ -36,11 +36,13 @@ public:
     std::vector<std::string> sync(double scene_seconds = 0.0);
     // True when the panel's generation parameters differ from those the stipples were made with.
     bool generation_changed(size_t object) const;
-    // New stipples made elsewhere for object `id` with `generation` (ignored if the object is gone).
-    void apply_stipples(uint64_t id, const GenerationParams& generation, std::shared_ptr<const StippleSet> stipples,
+    // New stipples made elsewhere for object `id` with `generation`. Ignored (false) if the object is gone
+    // or its generation parameters are no longer `generation` (edited again, or set back, meanwhile).
+    bool apply_stipples(uint64_t id, const GenerationParams& generation, std::shared_ptr<const StippleSet> stipples,
                         const ObjectUpload& upload);
-    // A model loaded elsewhere, added beside the others and scaled like the first object.
-    void add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload, const ObjectParams& params);
+    // A model loaded elsewhere, added beside the others and scaled like the first object. True when it
+    // moves and `params` asked for a density path on the CPU, which it cannot take: it gets the default.
+    bool add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload, const ObjectParams& params);
     void remove(size_t object);  // the last object stays
 
     // The same work done here and now (tests, scripts): new stipples if the generation parameters

@@ -100,6 +100,13 @@ void Overlay::rebuild(const Swapchain& swapchain) {
 void Overlay::new_frame() {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    // The panel is drawn into the frame, which a window larger than the device can draw is clamped to
+    // (swapchain.cpp): its viewport must not be the window's.
+    ImGuiIO& io = ImGui::GetIO();
+    if (extent_.width > 0 && extent_.height > 0 && io.DisplayFramebufferScale.x > 0.0f && io.DisplayFramebufferScale.y > 0.0f) {
+        io.DisplaySize.x = std::min(io.DisplaySize.x, float(extent_.width) / io.DisplayFramebufferScale.x);
+        io.DisplaySize.y = std::min(io.DisplaySize.y, float(extent_.height) / io.DisplayFramebufferScale.y);
+    }
     ImGui::NewFrame();
     in_frame_ = true;
 }

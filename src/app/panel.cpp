@@ -103,9 +103,20 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(800, std::max(200.0f, float(figures.extent.height) - 20)));
+    const float max_height = std::max(200.0f, float(figures.extent.height) - 20);
+    // A window made small clamps the panel's height; grown again, the panel fits its content again (it
+    // stayed 200 px tall, the timeline over its figures).
+    static float clamped_at = 0.0f;   // the height limit that last clamped the panel, 0 if none
+    static float last_width = 470.0f;  // as the user left it
+    if (clamped_at > 0.0f && max_height > clamped_at) {
+        ImGui::SetNextWindowSize(ImVec2(last_width, 0), ImGuiCond_Always);
+        clamped_at = 0.0f;
+    }
+    ImGui::SetNextWindowSizeConstraints(ImVec2(300, 100), ImVec2(800, max_height));
     bool open = ImGui::Begin("stipple");
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    if (size.y >= max_height - 0.5f) clamped_at = max_height;
+    last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
     if (open) {
         ImGui::PushItemWidth(-150.0f);  // room for the labels on the right

@@ -1,5 +1,7 @@
 #include "app/param_widgets.hpp"
 
+#include <string_view>
+
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -33,7 +35,8 @@ WidgetResult draw_param_widget(const ParamSpec& spec, ObjectParams& params, doub
         case ParamType::Int: {
             if (spec.widget == ParamWidget::Input) {
                 uint64_t v = uint64_t(value), step = 1, fast = 1;
-                if (spec.max > 1e6) step = 100000, fast = 1000000;
+                // The budget moves in large steps; a seed (also up to 2^32) is a name, stepped one by one.
+                if (std::string_view(spec.key) == "max_stipples") step = 100000, fast = 1000000;
                 ImGui::InputScalar(spec.label, ImGuiDataType_U64, &v, &step, &fast, "%llu");
                 value = double(v);
             } else {

@@ -86,20 +86,40 @@ void Swapchain::destroy_views() {
     depth_.reset();
 }
 
+namespace {
+
+// The largest frame the device can draw: a window dragged larger (17000 px wide) made images, a
+// framebuffer and a viewport beyond its limits (validation errors on every frame). The frame is then
+// clamped, and the window's edge beyond it stays unpainted.
+VkExtent2D clamp_to_device(const gpu::Context& context, VkExtent2D extent) {
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(context.physical_device, &properties);
+    const VkPhysicalDeviceLimits& limits = properties.limits;
+    const uint32_t width = std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxViewportDimensions[0]});
+    const uint32_t height = std::min({limits.maxImageDimension2D, limits.maxFramebufferHeight, limits.maxViewportDimensions[1]});
+    return {std::min(extent.width, width), std::min(extent.height, height)};
+}
+
+}  // namespace
+
 bool Swapchain::recreate(VkExtent2D window_size, bool vsync) {
     vsync_ = vsync;
+    made_for_ = window_size;
     if (shared_memory_) return recreate_shared(window_size);
     // Queried right before creation: the window may be resized at any moment, and the extent must be
     // the one the surface reports now.
     VkSurfaceCapabilitiesKHR caps{};
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physical_device, surface_, &caps));
     VkExtent2D extent = caps.currentExtent;
-    if (extent.width == UINT32_MAX) {  // the surface lets the swapchain decide
-        extent.width = std::clamp(window_size.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-        extent.height = std::clamp(window_size.height, caps.minImageExtent.height, caps.maxImageExtent.height);
-    }
+    if (extent.width == UINT32_MAX) extent = window_size;  // the surface lets the swapchain decide
+    const VkExtent2D drawable = clamp_to_device(context_, extent);
+    extent.width = std::clamp(drawable.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+    extent.height = std::clamp(drawable.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    // A surface that fixes the extent (X11: the window's size) beyond what the device can draw: no frames
+    // until the window is smaller.
+    too_large_ = extent.width > drawable.width || extent.height > drawable.height;
     destroy_views();
-    if (extent.width == 0 || extent.height == 0) {
+    if (extent.width == 0 || extent.height == 0 || too_large_) {
         if (swapchain_) vkDestroySwapchainKHR(context_.device, swapchain_, nullptr);
         swapchain_ = VK_NULL_HANDLE;
         extent_ = {};
@@ -177,9 +197,11 @@ void Swapchain::add_semaphores_and_depth(VkExtent2D extent) {
                             VK_IMAGE_USAGE_TRANSFER_DST_BIT, gpu::kDepthStencilAspect);
 }
 
-bool Swapchain::recreate_shared(VkExtent2D extent) {
+bool Swapchain::recreate_shared(VkExtent2D window_size) {
     destroy_views();
     extent_ = {};
+    too_large_ = false;  // the frame is clamped, the window's edge beyond it left unpainted
+    const VkExtent2D extent = clamp_to_device(context_, window_size);
     if (extent.width == 0 || extent.height == 0) return false;
     // Two images: one the X server may still be copying from while the next is drawn.
     constexpr uint32_t kImages = 2;

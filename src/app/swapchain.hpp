@@ -45,6 +45,10 @@ public:
 
     VkFormat format() const { return format_.format; }
     VkExtent2D extent() const { return extent_; }
+    // The window size the frames were last made for (the extent may be smaller: the device's limit).
+    VkExtent2D made_for() const { return made_for_; }
+    // Whether the last recreate made nothing because the surface's fixed size exceeds the device's limits.
+    bool too_large() const { return too_large_; }
     // "fifo (vsync)", "mailbox", "immediate"; "X11 shared memory" with ", vsync" where it paces frames.
     std::string mode_name() const;
     // The layout the frame's last pass leaves the image in for presentation (PRESENT_SRC_KHR, or
@@ -83,6 +87,8 @@ private:
     VkSurfaceFormatKHR format_{};
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkExtent2D extent_{};
+    VkExtent2D made_for_{};
+    bool too_large_ = false;
     VkPresentModeKHR present_mode_ = VK_PRESENT_MODE_FIFO_KHR;
     uint32_t min_image_count_ = 2;
     bool copyable_ = false;

@@ -38,6 +38,13 @@ double timeline_length(const Scene& scene, const std::vector<ObjectData>& object
     return length;
 }
 
+void Timeline::toggle_play(const Scene& scene, const std::vector<ObjectData>& objects) {
+    playing_ = !playing_;
+    // At the end the clock stops (advance); played again from there it would stop at once, and Play
+    // would seem to do nothing.
+    if (playing_ && !all_loop(scene, objects) && time_ >= timeline_length(scene, objects)) time_ = 0.0;
+}
+
 void Timeline::advance(double wall_seconds, const Scene& scene, const std::vector<ObjectData>& objects) {
     if (!playing_) return;
     time_ += double(speed_) * wall_seconds;
@@ -49,16 +56,19 @@ void Timeline::advance(double wall_seconds, const Scene& scene, const std::vecto
 }
 
 glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, const std::vector<std::string>& names,
-                         float window_height) {
+                         glm::vec2 window_size) {
     if (std::none_of(objects.begin(), objects.end(), [](const ObjectData& o) { return bool(o.motion); }))
         return glm::vec4(0.0f);
-    ImGui::SetNextWindowPos(ImVec2(490, std::max(10.0f, window_height - 170.0f)), ImGuiCond_FirstUseEver);
+    // Beside the panel where the window is wide enough, else as far right as it fits (at x = 490 a window
+    // of 640 showed a third of it).
+    const float x = std::clamp(window_size.x - 450.0f, 10.0f, 490.0f);
+    ImGui::SetNextWindowPos(ImVec2(x, std::max(10.0f, window_size.y - 170.0f)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
     const bool open = ImGui::Begin("timeline");
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (open) {
         ImGui::PushItemWidth(-120.0f);
-        if (ImGui::Button(playing_ ? "pause (space)" : "play (space)")) toggle_play();
+        if (ImGui::Button(playing_ ? "pause (space)" : "play (space)")) toggle_play(scene, objects);
         ImGui::SameLine();
         ImGui::Text("scene time %.3f s", time_);
         const double length = timeline_length(scene, objects);
@@ -70,9 +80,13 @@ glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, c
         ImGui::SliderFloat("speed", &speed_, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
         bool loop_edit = loop;
-        if (ImGui::Checkbox("loop", &loop_edit))
+        if (ImGui::Checkbox("loop", &loop_edit)) {
             for (size_t i = 0; i < objects.size(); ++i)
                 if (objects[i].motion) scene.objects[i].animation.loop = loop_edit;
+            // Looping, the clock may be many cycles on: without loop it would stand past the end at once.
+            // It keeps its place in the cycle the bar shows.
+            if (!loop_edit && length > 0.0) time_ = std::fmod(std::max(time_, 0.0), length);
+        }
         for (size_t i = 0; i < objects.size(); ++i) {
             if (!objects[i].motion) continue;
             const anim::AnimatedModel& model = *objects[i].motion.model;

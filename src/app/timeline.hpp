@@ -17,7 +17,8 @@ class Timeline {
 public:
     double time() const { return time_; }  // scene seconds
     bool playing() const { return playing_; }
-    void toggle_play() { playing_ = !playing_; }
+    // Play or pause; playing from the end of an animation that does not loop starts it again.
+    void toggle_play(const Scene& scene, const std::vector<ObjectData>& objects);
     void set_time(double seconds) { time_ = seconds; }
 
     // Moves the clock on by `wall_seconds` of real time (when playing). Without loop the clock stops at
@@ -27,7 +28,7 @@ public:
     // The window; edits the clock and the objects' animation choices (animation, loop). Returns its
     // rectangle (x, y, width, height, in window pixels), or zeros when not drawn (nothing animated).
     glm::vec4 draw(Scene& scene, const std::vector<ObjectData>& objects, const std::vector<std::string>& names,
-                   float window_height);
+                   glm::vec2 window_size);
 
 private:
     double time_ = 0.0;

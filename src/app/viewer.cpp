@@ -161,6 +161,7 @@ int Viewer::run() {
         if (window_.hidden()) {
             if (!paused_) message("window hidden: drawing paused");
             paused_ = true;
+            last_frame_.reset();  // the animation clock stands while nothing is shown
             window_.wait_events(0.25);  // nothing to draw: sleep until the window manager shows it again
             continue;
         }
@@ -216,7 +217,8 @@ void Viewer::apply_finished_work() {
             switch (work.kind) {
                 case FinishedWork::Kind::Regenerated: {
                     const auto start = Clock::now();
-                    live_.apply_stipples(work.object_id, work.params.generation, work.data.stipples, *work.upload);
+                    if (!live_.apply_stipples(work.object_id, work.params.generation, work.data.stipples, *work.upload))
+                        break;  // stale: the panel asks for other parameters now (a newer job makes them, if needed)
                     char text[96];
                     std::snprintf(text, sizeof text, "new stipples: %zu candidates (uploaded in %.0f ms)",
                                   work.data.stipples->size(), ms_between(start, Clock::now()));
@@ -224,8 +226,10 @@ void Viewer::apply_finished_work() {
                     break;
                 }
                 case FinishedWork::Kind::Loaded:
-                    live_.add_loaded(work.path, std::move(work.data), *work.upload, work.params);
-                    message("added " + work.path);
+                    if (live_.add_loaded(work.path, std::move(work.data), *work.upload, work.params))
+                        message("added " + work.path + " (it moves: drawn on the splat path, which computes its densities on the GPU)");
+                    else
+                        message("added " + work.path);
                     break;
                 case FinishedWork::Kind::Failed: message(work.error, true); break;
             }
@@ -298,7 +302,7 @@ void Viewer::handle_input(const Input& input, float aspect) {
                 break;
             case KeyCommand::SaveScene: save_scene(); break;
             case KeyCommand::Quit: window_.request_close(); break;
-            case KeyCommand::TogglePlay: timeline_.toggle_play(); break;
+            case KeyCommand::TogglePlay: timeline_.toggle_play(live_.scene(), live_.objects()); break;
         }
     }
     for (const std::string& path : input.dropped) {

@@ -38,11 +38,19 @@ void Viewer::finish_previous_frame() {
 
 bool Viewer::ensure_swapchain() {
     VkExtent2D size = window_.framebuffer_size();
-    VkExtent2D have = swapchain_.extent();
-    if (!recreate_ && swapchain_.valid() && size.width == have.width && size.height == have.height) return true;
+    VkExtent2D have = swapchain_.made_for();
+    const bool unchanged = !recreate_ && size.width == have.width && size.height == have.height;
+    if (unchanged && swapchain_.valid()) return true;
+    if (unchanged && swapchain_.too_large()) {
+        window_.wait_events(0.1);  // nothing can be drawn at this size: wait for a resize without spinning
+        return false;
+    }
     VK_CHECK(vkDeviceWaitIdle(context_.device));
     recreate_ = false;
     bool ok = swapchain_.recreate(size, vsync_);
+    if (!ok && swapchain_.too_large())
+        message("the window (" + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                ") is larger than the device can draw: drawing paused until it is smaller");
     overlay_->rebuild(swapchain_);
     if (ok && options_.verbose) print_swapchain();
     return ok;
@@ -57,8 +65,12 @@ void Viewer::print_swapchain() const {
 void Viewer::frame() {
     finish_previous_frame();
     Clock::time_point start = Clock::now();
+    // The panel's fps counts frames drawn one after another, not an idle time between them; the frames
+    // drawn to show background work's progress (every kProgressInterval, each after a short wait) are
+    // drawn one after another too: resetting on every wait froze the figures for as long as work ran.
+    const bool idle_gap = start - last_drawn_ > 2 * kProgressInterval;
     last_drawn_ = start;
-    if (idled_) {  // the panel's fps counts frames drawn one after another, not the idle time between
+    if (idled_ && idle_gap) {
         idled_ = false;
         fps_frames_ = 0;
         fps_start_ = start;
@@ -118,7 +130,8 @@ void Viewer::frame() {
         figures_.work_fraction = status ? status->fraction : 0.0;
         figures_.work_queued = status ? status->queued : 0;
         handle_requests(draw_panel(live_.scene(), live_.names(), figures_, export_state_), aspect);
-        timeline_rect_ = timeline_.draw(live_.scene(), live_.objects(), live_.names(), float(figures_.extent.height));
+        timeline_rect_ = timeline_.draw(live_.scene(), live_.objects(), live_.names(),
+                                        glm::vec2(float(figures_.extent.width), float(figures_.extent.height)));
     }
     record(image);
 
