@@ -115,6 +115,14 @@ TEST(AnimLoading, RestMeshIsTheRestPose) {
         }
         EXPECT_EQ(outward, model->rest.triangle_count()) << (model == &plain ? "plain" : "mirrored");
     }
+
+    // A rest pose that collapses faces (the root joint at scale 0: a part hidden until the animation grows
+    // it) would give them no stipples ever: such a file keeps the static placement's mesh.
+    auto hidden = rigs::bending_cylinder();
+    hidden.doc["nodes"][0]["scale"] = {2.0, 2.0, 2.0};
+    hidden.doc["nodes"][1]["scale"] = {0.0, 0.0, 0.0};
+    const std::string hidden_path = write_rig(hidden, "anim_load_tube_hidden", "hidden");
+    EXPECT_EQ(load_animated_model(hidden_path).rest.positions, load_mesh_for_drawing(hidden_path).positions);
 }
 
 TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {

@@ -131,6 +131,30 @@ TEST(ExportPolylines, AContourFoldingBackOnItselfIsDrawnOnce) {
     EXPECT_EQ(repeated_edges(lines), 0u);
 }
 
+// The same folding along a curve (a contour's zig-zag around an arc of radius 200 px): merging stays on
+// the curve. Groups gather pairwise, and a group's span along one line had turned 60 folds into a chord
+// 77 px off the arc.
+TEST(ExportPolylines, FoldsAlongACurveStayOnIt) {
+    const double radius = 200.0, step = 6.0 / radius;  // pieces 1.5 and 0.5 steps of 6 px
+    auto on_arc = [&](double a) { return glm::dvec2(radius * std::cos(a), radius * std::sin(a)); };
+    std::vector<Piece> pieces;
+    double a = 0.0;
+    for (int i = 0; i < 60; ++i) {
+        pieces.push_back({on_arc(a), on_arc(a + 1.5 * step)});
+        pieces.push_back({on_arc(a + 1.5 * step), on_arc(a + step)});
+        a += step;
+    }
+    const LineGraph graph = merge_segments(pieces);
+    double worst = 0.0;
+    for (const auto& e : graph.edges) {
+        const glm::dvec2 mid = 0.5 * (graph.vertices[e[0]] + graph.vertices[e[1]]);
+        worst = std::max(worst, radius - glm::length(mid));  // the chord's sagitta
+    }
+    EXPECT_LT(worst, 0.5) << "a merged piece strays from the arc";
+    const std::vector<Polyline> lines = chain_edges(graph);
+    EXPECT_LT(total_length(lines), 1.5 * 61.5 * 6.0) << "most of the fold-backs are still drawn once";
+}
+
 TEST(ExportPolylines, JunctionsKeepStraightStrokes) {
     // A plus: two strokes, each straight through the centre.
     const glm::dvec2 c(50, 50);

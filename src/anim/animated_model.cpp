@@ -69,7 +69,8 @@ void require_gltf_name(const std::string& name) {
 // default weight doubled it drew 1.5 times the ink of the same box stored doubled, and a skin under a
 // node of scale 0.5 drew 36% ink instead of 24%. The faces keep the static loader's winding except
 // where the rest pose's mirroring differs from the mesh node's (a skinned mesh under a mirroring node).
-// Returns whether it changed anything.
+// A rest pose that collapses faces or leaves the coordinates drawing allows is not adopted. Returns
+// whether it changed anything.
 bool adopt_rest_pose(const std::string& path, AnimatedModel& model, const FileOrderStreams& streams,
                      const std::vector<uint32_t>& origin, double tolerance) {
     const Pose pose = evaluate_pose(model, kRestPose, 0.0);
@@ -83,8 +84,27 @@ bool adopt_rest_pose(const std::string& path, AnimatedModel& model, const FileOr
         moved = moved || glm::length(glm::dvec3(p) - glm::dvec3(model.rest.positions[v])) > tolerance;
     }
     if (!moved) return false;
-    model.rest.positions = rest.positions;
-    model.rest.normals = rest.normals;
+    // A rest pose that collapses faces (a joint at scale 0: a part hidden until the animation grows it)
+    // would give them no stipples ever, and one beyond the coordinates drawing allows would draw nothing:
+    // such a file keeps the static placement's mesh, as before.
+    const Mesh& placed = model.rest;
+    for (size_t t = 0; t + 2 < placed.indices.size(); t += 3) {
+        const uint32_t a = placed.indices[t], b = placed.indices[t + 1], c = placed.indices[t + 2];
+        const double before = glm::length(glm::cross(glm::dvec3(placed.positions[b] - placed.positions[a]),
+                                                     glm::dvec3(placed.positions[c] - placed.positions[a])));
+        const double after = glm::length(glm::cross(glm::dvec3(rest.positions[b] - rest.positions[a]),
+                                                    glm::dvec3(rest.positions[c] - rest.positions[a])));
+        if (before > 0.0 && !(after > 1e-6 * before)) return false;
+    }
+    Mesh adopted = model.rest;
+    adopted.positions = rest.positions;
+    adopted.normals = rest.normals;
+    try {
+        validate_mesh(adopted);
+    } catch (const Error&) {
+        return false;
+    }
+    model.rest = std::move(adopted);
 
     // Which file-order vertices the static loader mirrored (and so re-wound).
     std::vector<uint8_t> static_mirror(streams.bind_positions.size(), 0);

@@ -25,8 +25,8 @@ void deform_vertex(const AnimatedModel& model, const Pose& pose, size_t v, glm::
     const glm::dmat4 m = blend_matrix(model, pose, v);
     position = glm::dvec3(m * glm::dvec4(p, 1.0));
     // The inverse transpose up to a positive factor: cofactors, with det's sign (a mirroring blend
-    // keeps normals pointing out of the faces that the static loader re-wound), which also works for
-    // a singular blend.
+    // keeps normals pointing out of the faces, which loading re-wound for the rest pose's mirroring),
+    // which also works for a singular blend.
     const glm::dvec3 c0(m[0]), c1(m[1]), c2(m[2]);
     const glm::dvec3 x = glm::cross(c1, c2);
     const double det_sign = glm::dot(c0, x) < 0.0 ? -1.0 : 1.0;

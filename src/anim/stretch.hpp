@@ -23,7 +23,7 @@ struct StretchReport {
 std::vector<double> stretch_sample_times(const Animation& animation, uint32_t uniform = 64, size_t max_key_times = 1024);
 
 // Deforms the rest mesh at each of those times (the animation clamped, not looped, so the last key's
-// pose is seen) and compares every triangle's area with its rest area (load_mesh_for_drawing's; a
+// pose is seen) and compares every triangle's area with its rest area (AnimatedModel::rest's; a
 // triangle of zero rest area reports 1: it has no stipples to scale).
 StretchReport measure_stretch(const AnimatedModel& model, int animation, uint32_t uniform = 64);
 

@@ -177,8 +177,11 @@ int Viewer::run() {
             // (input, a resize, an expose) or the next look at background work, instead of drawing the same
             // frame again and again on cores that a software GPU and that work share.
             finish_previous_frame();  // its screenshot written, its figures taken
-            window_.wait_events(work_.idle() ? 0.5 : std::chrono::duration<double>(kProgressInterval).count());
-            idled_ = true;
+            const bool working = !work_.idle();
+            window_.wait_events(working ? std::chrono::duration<double>(kProgressInterval).count() : 0.5);
+            // While background work runs, frames come every kProgressInterval to show its progress: they
+            // count as frames drawn one after another (reset at each, the figures froze as long as it ran).
+            if (!working) idled_ = true;
             if (!wants_frame_now() && !progress_due()) continue;
         }
         if (window_.should_close()) break;

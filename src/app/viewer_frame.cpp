@@ -65,12 +65,8 @@ void Viewer::print_swapchain() const {
 void Viewer::frame() {
     finish_previous_frame();
     Clock::time_point start = Clock::now();
-    // The panel's fps counts frames drawn one after another, not an idle time between them; the frames
-    // drawn to show background work's progress (every kProgressInterval, each after a short wait) are
-    // drawn one after another too: resetting on every wait froze the figures for as long as work ran.
-    const bool idle_gap = start - last_drawn_ > 2 * kProgressInterval;
     last_drawn_ = start;
-    if (idled_ && idle_gap) {
+    if (idled_) {  // the panel's fps counts frames drawn one after another, not the idle time between
         idled_ = false;
         fps_frames_ = 0;
         fps_start_ = start;

@@ -97,35 +97,51 @@ DisjointSets overlapping_groups(const LineGraph& g, double tolerance) {
 }
 
 // Replaces each group of overlapping edges by the union of their extents along the group's
-// longest edge; the new edges end at existing vertices, so the graph stays connected there.
+// longest edge; the new edges end at existing vertices, so the graph stays connected there. Groups join
+// pairwise (each pair within the tolerance of one line), so a chain of pieces folding back along a curve
+// can gather into one group: only the members near the longest one's line join its span, and the rest
+// are merged the same way around their own longest, and so on (one span for the whole group turned 60
+// folds along an arc of radius 200 px into a chord 77 px off it).
 std::vector<std::array<uint32_t, 2>> merge_groups(const LineGraph& g, DisjointSets& groups, double tolerance) {
     std::vector<std::vector<uint32_t>> members(g.edges.size());
     for (uint32_t i = 0; i < g.edges.size(); ++i) members[groups.find(i)].push_back(i);
     std::vector<std::array<uint32_t, 2>> merged;
-    for (const std::vector<uint32_t>& group : members) {
-        if (group.size() == 1) merged.push_back(g.edges[group[0]]);
-        if (group.size() <= 1) continue;
-        const auto length = [&](uint32_t e) { return glm::length(g.vertices[g.edges[e][1]] - g.vertices[g.edges[e][0]]); };
-        const uint32_t longest = *std::max_element(group.begin(), group.end(), [&](uint32_t x, uint32_t y) { return length(x) < length(y); });
-        const glm::dvec2 origin = g.vertices[g.edges[longest][0]];
-        const glm::dvec2 dir = glm::normalize(g.vertices[g.edges[longest][1]] - origin);
-        struct Span { double t0, t1; uint32_t v0, v1; };
-        std::vector<Span> spans;
-        for (const uint32_t e : group) {
-            uint32_t v0 = g.edges[e][0], v1 = g.edges[e][1];
-            double t0 = glm::dot(g.vertices[v0] - origin, dir), t1 = glm::dot(g.vertices[v1] - origin, dir);
-            if (t1 < t0) std::swap(t0, t1), std::swap(v0, v1);
-            spans.push_back({t0, t1, v0, v1});
-        }
-        std::sort(spans.begin(), spans.end(), [](const Span& x, const Span& y) { return x.t0 < y.t0; });
-        Span current = spans[0];
-        for (size_t k = 1; k <= spans.size(); ++k) {
-            if (k < spans.size() && spans[k].t0 <= current.t1 + tolerance) {
-                if (spans[k].t1 > current.t1) current.t1 = spans[k].t1, current.v1 = spans[k].v1;
-                continue;
+    const auto length = [&](uint32_t e) { return glm::length(g.vertices[g.edges[e][1]] - g.vertices[g.edges[e][0]]); };
+    struct Span { double t0, t1; uint32_t v0, v1; };
+    std::vector<Span> spans;
+    std::vector<uint32_t> rest;
+    for (std::vector<uint32_t> group : members) {
+        while (!group.empty()) {
+            if (group.size() == 1) {
+                merged.push_back(g.edges[group[0]]);
+                break;
             }
-            if (current.v0 != current.v1) merged.push_back({current.v0, current.v1});
-            if (k < spans.size()) current = spans[k];
+            const uint32_t longest = *std::max_element(group.begin(), group.end(), [&](uint32_t x, uint32_t y) { return length(x) < length(y); });
+            const glm::dvec2 origin = g.vertices[g.edges[longest][0]];
+            const glm::dvec2 dir = glm::normalize(g.vertices[g.edges[longest][1]] - origin);
+            spans.clear();
+            rest.clear();
+            for (const uint32_t e : group) {
+                uint32_t v0 = g.edges[e][0], v1 = g.edges[e][1];
+                if (distance_to_line(g.vertices[v0], origin, dir) > tolerance || distance_to_line(g.vertices[v1], origin, dir) > tolerance) {
+                    rest.push_back(e);
+                    continue;
+                }
+                double t0 = glm::dot(g.vertices[v0] - origin, dir), t1 = glm::dot(g.vertices[v1] - origin, dir);
+                if (t1 < t0) std::swap(t0, t1), std::swap(v0, v1);
+                spans.push_back({t0, t1, v0, v1});
+            }
+            std::sort(spans.begin(), spans.end(), [](const Span& x, const Span& y) { return x.t0 < y.t0; });
+            Span current = spans[0];  // the longest edge itself is on its line
+            for (size_t k = 1; k <= spans.size(); ++k) {
+                if (k < spans.size() && spans[k].t0 <= current.t1 + tolerance) {
+                    if (spans[k].t1 > current.t1) current.t1 = spans[k].t1, current.v1 = spans[k].v1;
+                    continue;
+                }
+                if (current.v0 != current.v1) merged.push_back({current.v0, current.v1});
+                if (k < spans.size()) current = spans[k];
+            }
+            group.swap(rest);
         }
     }
     return merged;

@@ -21,7 +21,7 @@ struct MergeOptions {
     // Pieces whose ends lie this close to each other's line are on one line. A quarter of a pixel: a
     // mesh's contour zig-zags, its edges folding back over each other a tenth of a pixel or two apart,
     // and at 1e-2 px those stretches survived as separate pieces that the chain then walked back and
-    // forth (the bunny's contours at 640x512: 221 mm of 908 drawn two or three times, 12.5 mm of 635
+    // forth (the bunny's contours at 640x512: 221 mm of 908 drawn two or three times, 13.7 mm of 652
     // now). Lines half a pixel apart stay two (at 0.5 px the retracing fell to 0.7 mm, but such lines
     // were joined by diagonals between their ends).
     double collinear_px = 0.25;
