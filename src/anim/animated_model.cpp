@@ -87,18 +87,13 @@ bool adopt_rest_pose(const std::string& path, AnimatedModel& model, const FileOr
     // A rest pose that collapses faces (a joint at scale 0: a part hidden until the animation grows it)
     // would give them no stipples ever, and one beyond the coordinates drawing allows would draw nothing:
     // such a file keeps the static placement's mesh, as before.
-    const Mesh& placed = model.rest;
-    for (size_t t = 0; t + 2 < placed.indices.size(); t += 3) {
-        const uint32_t a = placed.indices[t], b = placed.indices[t + 1], c = placed.indices[t + 2];
-        const double before = glm::length(glm::cross(glm::dvec3(placed.positions[b] - placed.positions[a]),
-                                                     glm::dvec3(placed.positions[c] - placed.positions[a])));
-        const double after = glm::length(glm::cross(glm::dvec3(rest.positions[b] - rest.positions[a]),
-                                                    glm::dvec3(rest.positions[c] - rest.positions[a])));
-        if (before > 0.0 && !(after > 1e-6 * before)) return false;
-    }
     Mesh adopted = model.rest;
     adopted.positions = rest.positions;
     adopted.normals = rest.normals;
+    for (size_t t = 0; t < adopted.triangle_count(); ++t) {
+        const double before = triangle_area(model.rest, t);
+        if (before > 0.0 && !(triangle_area(adopted, t) > 1e-6 * before)) return false;
+    }
     try {
         validate_mesh(adopted);
     } catch (const Error&) {

@@ -92,9 +92,7 @@ namespace {
 // framebuffer and a viewport beyond its limits (validation errors on every frame). The frame is then
 // clamped, and the window's edge beyond it stays unpainted.
 VkExtent2D clamp_to_device(const gpu::Context& context, VkExtent2D extent) {
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(context.physical_device, &properties);
-    const VkPhysicalDeviceLimits& limits = properties.limits;
+    const VkPhysicalDeviceLimits& limits = context.properties.limits;
     const uint32_t width = std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxViewportDimensions[0]});
     const uint32_t height = std::min({limits.maxImageDimension2D, limits.maxFramebufferHeight, limits.maxViewportDimensions[1]});
     return {std::min(extent.width, width), std::min(extent.height, height)};
