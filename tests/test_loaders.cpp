@@ -133,6 +133,16 @@ TEST(ObjLoader, ReadsTheFileAroundItsNumbers) {
     EXPECT_EQ(m.positions[1].z, 0.0f);
 }
 
+// A backslash at the very end of the file continues the line into nothing: the line ends there (it was
+// read as a vertex index '\\' until 2026-12-04).
+TEST(ObjLoader, AContinuationAtTheEndOfTheFileEndsTheLine) {
+    const auto dir = temp_dir("loaders_obj_continued_end");
+    for (const std::string end : {"f 1 2 3 \\", "f 1 2 3 \\\n", "f 1 2 \\\n3 \\\n"}) {
+        const Mesh m = load_mesh(write_file(dir / "continued.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + end));
+        EXPECT_EQ(m.triangle_count(), 1u) << end;
+    }
+}
+
 // A normal that is not a number is refused where it stands; one that is NaN (read as such, not as 0)
 // makes the loader compute every normal.
 TEST(ObjLoader, NormalsAreReadAsWritten) {
@@ -240,6 +250,22 @@ TEST(PlyLoader, TriangleStripsWithSeparatorsAndDegenerates) {
     for (size_t t = 0; t < m.triangle_count(); ++t) EXPECT_GT(face_normal(m, t).z, 0.0f) << "triangle " << t;
     for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
     EXPECT_DOUBLE_EQ(stipple::total_area(m), 2.0);
+}
+
+// -1 in an unsigned list is its all-ones value: a ushort list's 65535 and a uchar list's 255 restart the strip
+// (both were refused as "refers to vertex 65535" until 2026-12-04).
+TEST(PlyLoader, TriangleStripRestartsInNarrowUnsignedLists) {
+    const auto dir = temp_dir("loaders_ply_strip_restart");
+    for (const auto& [type, restart] : {std::pair<std::string, std::string>{"ushort", "65535"}, {"uchar", "255"}}) {
+        const std::string path = write_file(dir / ("strips_" + type + ".ply"),
+                                            "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                                            "property float z\nelement tristrips 1\nproperty list int " + type +
+                                                " vertex_indices\nend_header\n0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n"
+                                                "9 1 0 3 2 " + restart + " 3 2 5 4\n");
+        const Mesh m = load_mesh(path);
+        ASSERT_EQ(m.triangle_count(), 4u) << type;
+        EXPECT_DOUBLE_EQ(stipple::total_area(m), 2.0) << type;
+    }
 }
 
 // ---------------------------------------------------------------- glTF
@@ -479,6 +505,22 @@ TEST(BadInput, PlyBinaryNaNAndInfCoordinates) {
                       "vertex 0 has a NaN coordinate");
     expect_load_error(write_file(dir / "inf.ply", binary_tetra_ply(true, std::numeric_limits<float>::infinity())),
                       "vertex 0 has an infinite coordinate");
+}
+
+// Size and place are the faces': a vertex no face uses is dropped before drawing, so it neither hides a model
+// too far from the origin or too small (an unused vertex at the origin let a triangle 1e6 away load and draw
+// its stipples in columns, until 2026-12-04) nor gets a sound model refused.
+TEST(BadInput, UnusedVerticesSetNeitherTheModelsSizeNorItsPlace) {
+    const auto dir = temp_dir("loaders_unused_vertices");
+    expect_load_error(write_file(dir / "far.obj", "v 0 0 0\nv 1e6 0 0\nv 1000001 0 0\nv 1e6 1 0\nf 2 3 4\n"),
+                      "from the origin, 1e+06 times its size");
+    expect_load_error(write_file(dir / "tiny.obj", "v 5 5 5\nv 0 0 0\nv 1e-20 0 0\nv 0 1e-20 0\nf 2 3 4\n"),
+                      "units across, below the 1e-15");
+    const Mesh m = load_mesh(write_file(dir / "stray.obj", "v 1e19 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"));
+    EXPECT_EQ(m.triangle_count(), 1u);
+    // NaN stays an error wherever it is: the file is damaged.
+    expect_load_error(write_file(dir / "nan.obj", "v nan 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"),
+                      "has a NaN coordinate");
 }
 
 // ---------------------------------------------------------------- real models

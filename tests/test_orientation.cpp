@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "mesh/load_mesh.hpp"
@@ -127,6 +128,68 @@ TEST(Winding, AnOpenPartIsTurnedOnlyWithTheWholeModel) {
     const WindingRepair alone = orient_consistently(bowl);
     EXPECT_EQ(alone.parts_turned_outward, 1u);
     EXPECT_GT(signed_volume(bowl), 0.0);
+}
+
+// A closed part's own volume decides however little of its box it fills: a thin rod lying across its box
+// (0.04% of it here) inside out is turned. Until 2026-12-04 it had to exceed 1% of the box.
+TEST(Winding, AThinClosedPartAcrossItsBoxIsTurnedToo) {
+    Mesh rod = make_cad_cylinder(16, 0.02f, 4.0f);
+    const glm::mat3 tilt = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(54.7356f), glm::vec3(1, 0, -1)));
+    for (glm::vec3& p : rod.positions) p = tilt * p;
+    for (size_t t = 0; t < rod.triangle_count(); ++t) std::swap(rod.indices[3 * t + 1], rod.indices[3 * t + 2]);
+    const Bounds box = compute_bounds(rod);
+    const glm::vec3 extent = box.max - box.min;
+    ASSERT_LT(-signed_volume(rod), 0.01 * double(extent.x) * extent.y * extent.z);
+    const WindingRepair repair = orient_consistently(rod);
+    EXPECT_EQ(repair.parts_turned_outward, 1u);
+    EXPECT_EQ(repair.triangles_turned, rod.triangle_count());
+    EXPECT_GT(signed_volume(rod), 0.0);
+}
+
+// Where the file has normals, an open part they clearly contradict is turned to them: a face of a cube
+// exported loose (its corners a hair off the rest, so nothing joins it) and wound against its normal was
+// left facing in, and the file's correct normals were turned to match it (until 2026-12-04). Normals that
+// agree with an inside-out winding leave the decision to the volume, as without normals.
+TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
+    const auto dir = test::temp_dir("winding_loose_panel");
+    // Five faces of a unit cube sharing 8 corners, outward, with outward face normals; the +z face on its own
+    // corners 1e-6 out, wound clockwise seen from outside.
+    const std::string box = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                            "v 0 0 1.000001\nv 1 0 1.000001\nv 1 1 1.000001\nv 0 1 1.000001\n"
+                            "vn 0 0 -1\nvn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 1\n"
+                            "f 1//1 4//1 3//1 2//1\nf 1//2 2//2 6//2 5//2\nf 2//3 3//3 7//3 6//3\n"
+                            "f 3//4 4//4 8//4 7//4\nf 4//5 1//5 5//5 8//5\nf 9//6 12//6 11//6 10//6\n";
+    write_file((dir / "loose.obj").string(), box);
+    const Mesh cube = load_mesh((dir / "loose.obj").string());
+    EXPECT_EQ(cube.winding.parts_turned_to_normals, 1u);
+    EXPECT_EQ(cube.winding.normals_turned, 0u);
+    EXPECT_EQ(facing_inward(cube, glm::dvec3(0.5)), 0u);
+    // A lone quad wound against its normal (it drew nothing seen from the side its normal faces).
+    write_file((dir / "quad.obj").string(), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 4//1 3//1 2//1\n");
+    const Mesh quad = load_mesh((dir / "quad.obj").string());
+    EXPECT_EQ(quad.winding.parts_turned_to_normals, 1u);
+    for (size_t t = 0; t < quad.triangle_count(); ++t) EXPECT_GT(face_normal(quad, t).z, 0.0) << t;
+    // A bowl wound toward its hollow with normals that agree (a scan inside out, normals included): the
+    // volume turns it, normals and all.
+    Mesh bowl = test::make_open_hemisphere(48, 12);
+    for (size_t t = 0; t < bowl.triangle_count(); ++t) std::swap(bowl.indices[3 * t + 1], bowl.indices[3 * t + 2]);
+    compute_vertex_normals(bowl);
+    std::string text;
+    for (size_t v = 0; v < bowl.vertex_count(); ++v) {
+        const glm::vec3 p = bowl.positions[v], n = bowl.normals[v];
+        text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+        text += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+    }
+    for (size_t t = 0; t < bowl.triangle_count(); ++t) {
+        text += "f";
+        for (int k = 0; k < 3; ++k) text += " " + std::to_string(bowl.indices[3 * t + k] + 1) + "//" + std::to_string(bowl.indices[3 * t + k] + 1);
+        text += "\n";
+    }
+    write_file((dir / "bowl.obj").string(), text);
+    const Mesh turned = load_mesh((dir / "bowl.obj").string());
+    EXPECT_EQ(turned.winding.parts_turned_outward, 1u);
+    EXPECT_EQ(turned.winding.parts_turned_to_normals, 0u);
+    EXPECT_GT(signed_volume(turned), 0.0);
 }
 
 TEST(Winding, AnOpenSheetKeepsItsMajoritysWinding) {
@@ -266,6 +329,43 @@ TEST(RepeatedFaces, ExactRepeatsAreDroppedAndReversedCopiesKept) {
     EXPECT_EQ(loaded.triangle_count(), once);
     EXPECT_EQ(loaded.duplicates_dropped, once);
     EXPECT_EQ(loaded.winding.parts, 1u);
+}
+
+// A sheet made two-sided by a reversed copy on the same vertices: the computed normals of the two sides
+// summed to nothing at every vertex (+Z everywhere, what the toon ramp then read) until 2026-12-04. Each
+// such vertex is now split, one copy for the side turned away, so each side is smooth and faces its own
+// way, whether the copy repeats the triangles reversed or cuts its quads along the other diagonal.
+TEST(RepeatedFaces, AReversedCopyOnTheSameVerticesGetsItsOwn) {
+  for (const bool other_diagonal : {false, true}) {
+    Mesh sheet = make_grid(8);
+    for (glm::vec3& p : sheet.positions) p.z = 0.3f * p.x * p.x;  // curved, so that smooth differs from flat
+    const size_t one_side = sheet.triangle_count(), vertices = sheet.vertex_count();
+    if (!other_diagonal) {
+        for (size_t t = 0; t < one_side; ++t)
+            sheet.indices.insert(sheet.indices.end(), {sheet.indices[3 * t], sheet.indices[3 * t + 2], sheet.indices[3 * t + 1]});
+    } else {  // the grid's (n+1)^2 vertices row by row; each cell's quad reversed, cut along its other diagonal
+        const uint32_t row = 9;
+        for (uint32_t y = 0; y < 8; ++y)
+            for (uint32_t x = 0; x < 8; ++x) {
+                const uint32_t a = y * row + x, b = a + 1, c = a + row + 1, d = a + row;
+                sheet.indices.insert(sheet.indices.end(), {a, d, b, b, d, c});
+            }
+    }
+    const auto dir = test::temp_dir("reversed_copy");
+    write_file((dir / "two_sided.obj").string(), test::obj_text(sheet));
+    const Mesh loaded = load_mesh((dir / "two_sided.obj").string());
+    ASSERT_EQ(loaded.triangle_count(), 2 * one_side);
+    EXPECT_EQ(loaded.vertex_count(), 2 * vertices);
+    for (size_t t = 0; t < loaded.triangle_count(); ++t)
+        for (int k = 0; k < 3; ++k)
+            ASSERT_GT(glm::dot(glm::dvec3(loaded.normals[loaded.indices[3 * t + k]]), glm::normalize(face_normal(loaded, t))), 0.9)
+                << "triangle " << t << " corner " << k << (other_diagonal ? " (other diagonal)" : "");
+    // Sides on vertices of their own already are left as they are, and so is a closed surface.
+    Mesh again = loaded;
+    EXPECT_EQ(split_vertices_between_opposite_sides(again), 0u);
+  }
+  Mesh sphere = make_icosphere(3);
+  EXPECT_EQ(split_vertices_between_opposite_sides(sphere), 0u);
 }
 
 // The shared models are consistent already (the horse inside out as a whole): the repair turns nothing

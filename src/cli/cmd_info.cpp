@@ -36,7 +36,8 @@ std::string describe_winding(const WindingRepair& w) {
         std::string why;
         if (w.wound_against > 0) why = std::to_string(w.wound_against) + " wound against their neighbours";
         if (w.parts_turned_outward > 0)
-            why += (why.empty() ? "" : ", ") + std::to_string(w.parts_turned_outward) + " of " + parts + " inside out";
+            why += (why.empty() ? "" : ", ") + std::to_string(w.parts_turned_outward) + " of " + parts + " inside out" +
+                   (w.parts_turned_to_normals > 0 ? ", " + std::to_string(w.parts_turned_to_normals) + " of them by the file's normals" : "");
         add(std::to_string(w.triangles_turned) + " triangles turned (" + why + ")");
     }
     if (w.normals_turned > 0) add(std::to_string(w.normals_turned) + " file normals turned to agree with their faces");
@@ -101,7 +102,7 @@ int run_info(const std::vector<std::string>& argv) {
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
             "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, "
-            "\"parts_turned_outward\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
+            "\"parts_turned_outward\": %zu, \"parts_turned_to_normals\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
             "\"duplicates_dropped\": %zu, \"decoded\": \"%s\", %s}\n",
             path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
@@ -109,7 +110,7 @@ int run_info(const std::vector<std::string>& argv) {
             stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
             stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
             mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against,
-            mesh.winding.parts_turned_outward, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
+            mesh.winding.parts_turned_outward, mesh.winding.parts_turned_to_normals, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
             mesh.duplicates_dropped, mesh.decoded.c_str(),
             animation_json(object).c_str());
     } else {

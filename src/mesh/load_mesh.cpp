@@ -78,10 +78,11 @@ Mesh finish(Mesh mesh, const std::string& name) {
                             " triangles are degenerate)");
     const std::vector<uint32_t> corners = weld_by_position(mesh.positions);  // dropping faces keeps the vertices
     mesh.duplicates_dropped = drop_duplicate_triangles(mesh, corners);
-    mesh.winding = orient_consistently(mesh, corners);
-    // Computed normals followed the file's winding (where it was mixed they cancelled out) and counted
-    // repeated faces again.
-    if (!file_normals && (mesh.winding.triangles_turned > 0 || mesh.duplicates_dropped > 0))
+    mesh.winding = orient_consistently(mesh, corners, file_normals);
+    // Computed normals followed the file's winding (where it was mixed they cancelled out), counted
+    // repeated faces again, and summed the two sides of a two-sided sheet to nothing.
+    const size_t split = file_normals ? 0 : split_vertices_between_opposite_sides(mesh);
+    if (!file_normals && (mesh.winding.triangles_turned > 0 || mesh.duplicates_dropped > 0 || split > 0))
         compute_vertex_normals(mesh);
     if (file_normals) mesh.winding.normals_turned = turn_normals_to_faces(mesh);
     return mesh;

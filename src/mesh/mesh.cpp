@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <meshoptimizer.h>
 
@@ -47,11 +49,28 @@ void validate_mesh(const Mesh& mesh) {
     if (mesh.indices.size() % 3 != 0)
         fail_file(source, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
     if (mesh.indices.empty()) fail_file(source, "the model has no triangles");
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const size_t vertex_count = mesh.positions.size();
+    for (size_t i = 0; i < mesh.indices.size(); ++i) {
+        if (mesh.indices[i] >= vertex_count)
+            fail_file(source, "face " + std::to_string(i / 3) + " refers to vertex " +
+                                  std::to_string(mesh.indices[i]) + " but there are only " +
+                                  std::to_string(vertex_count) + " vertices");
+    }
+    for (size_t i = 0; i < vertex_count; ++i) {
         const glm::vec3& p = mesh.positions[i];
         if (std::isnan(p.x) || std::isnan(p.y) || std::isnan(p.z))
             fail_file(source, "vertex " + std::to_string(i) + " has a NaN coordinate");
         if (!finite(p)) fail_file(source, "vertex " + std::to_string(i) + " has an infinite coordinate");
+    }
+    // Size and place are the drawn surface's: vertices no face uses are dropped before drawing
+    // (optimize_draw_order), so one left at the origin must not hide a model far from it, nor one far away
+    // refuse a model near it.
+    std::vector<uint8_t> used(vertex_count, 0);
+    for (uint32_t i : mesh.indices) used[i] = 1;
+    glm::vec3 lo{std::numeric_limits<float>::max()}, hi{std::numeric_limits<float>::lowest()};
+    for (size_t i = 0; i < vertex_count; ++i) {
+        if (!used[i]) continue;
+        const glm::vec3& p = mesh.positions[i];
         const float largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
         if (largest > kMaxCoordinate) {
             char text[160];
@@ -59,33 +78,23 @@ void validate_mesh(const Mesh& mesh) {
                           i, double(largest), double(kMaxCoordinate));
             fail_file(source, text);
         }
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
     }
-    if (!mesh.positions.empty()) {
-        glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
-        for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-        const glm::vec3 size = hi - lo;
-        const float extent = std::max({size.x, size.y, size.z});
-        if (extent > 0.0f && extent < kMinExtent) {
-            char text[160];
-            std::snprintf(text, sizeof(text), "the model is %g units across, below the %g it can be drawn at: scale it up",
-                          double(extent), double(kMinExtent));
-            fail_file(source, text);
-        }
-        const float offset = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
-        if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
-            char text[200];
-            std::snprintf(text, sizeof(text),
-                          "the model lies %g units from the origin, %g times its size: single precision keeps too few "
-                          "digits of its shape; move it near the origin", double(offset), double(offset / extent));
-            fail_file(source, text);
-        }
+    const glm::vec3 size = hi - lo;
+    const float extent = std::max({size.x, size.y, size.z});
+    if (extent > 0.0f && extent < kMinExtent) {
+        char text[160];
+        std::snprintf(text, sizeof(text), "the model is %g units across, below the %g it can be drawn at: scale it up",
+                      double(extent), double(kMinExtent));
+        fail_file(source, text);
     }
-    const size_t vertex_count = mesh.positions.size();
-    for (size_t i = 0; i < mesh.indices.size(); ++i) {
-        if (mesh.indices[i] >= vertex_count)
-            fail_file(source, "face " + std::to_string(i / 3) + " refers to vertex " +
-                                  std::to_string(mesh.indices[i]) + " but there are only " +
-                                  std::to_string(vertex_count) + " vertices");
+    const float offset = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+    if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
+        char text[200];
+        std::snprintf(text, sizeof(text),
+                      "the model lies %g units from the origin, %g times its size: single precision keeps too few "
+                      "digits of its shape; move it near the origin", double(offset), double(offset / extent));
+        fail_file(source, text);
     }
     if (mesh.normals.size() != vertex_count)
         fail_file(source, "has " + std::to_string(mesh.normals.size()) + " normals for " +

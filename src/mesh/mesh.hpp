@@ -28,6 +28,7 @@ struct WindingRepair {
     size_t triangles_turned = 0;      // triangles whose corner order was reversed, for either reason:
     size_t wound_against = 0;         // triangles wound against their part's majority
     size_t parts_turned_outward = 0;  // parts that were clearly inside out once wound alike
+    size_t parts_turned_to_normals = 0;  // of those, open parts turned to agree with the file's normals
     size_t conflicting_edges = 0;     // manifold edges still joining two triangles wound the same way
                                       // (a part that has no consistent winding, such as a Möbius strip)
     size_t normals_turned = 0;        // file normals turned to agree with their faces

@@ -30,6 +30,14 @@ size_t drop_duplicate_triangles(Mesh& mesh);
 // The same with the corners already welded (weld_by_position of mesh.positions).
 size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners);
 
+// A sheet made two-sided by a reversed copy that shares its vertices (as files write it) gets computed
+// normals that cancel: +n and -n summed at every vertex, +Z left, and the toon ramp reads those. A vertex
+// with a fifth of its faces' area at least on either side (within 26 degrees of its largest face's normal,
+// and of the opposite) is split in two: the faces turned away from its largest face move to a copy at the
+// same position (its normal, if any, negated), one copy per vertex, so that each side stays smooth.
+// Recompute the normals afterwards. Returns how many vertices were split.
+size_t split_vertices_between_opposite_sides(Mesh& mesh);
+
 // Each triangle into four by its edge midpoints; a midpoint shared by two triangles is one vertex.
 // The mesh should be welded first (otherwise seams get duplicate midpoints). Normals are recomputed.
 Mesh subdivide_midpoints(const Mesh& mesh);

@@ -92,9 +92,10 @@ public:
             if (joined.empty()) line_ = physical;
             std::string_view trimmed = piece;
             while (!trimmed.empty() && is_space(trimmed.back())) trimmed.remove_suffix(1);
-            if (!trimmed.empty() && trimmed.back() == '\\' && pos < text.size()) {  // continued on the next line
+            if (!trimmed.empty() && trimmed.back() == '\\') {  // continued on the next line
                 joined.append(trimmed.substr(0, trimmed.size() - 1)).push_back(' ');
-                continue;
+                if (pos < text.size()) continue;
+                piece = {};  // the file ends in a continuation: the line ends with it
             }
             if (!joined.empty()) {
                 joined.append(piece);

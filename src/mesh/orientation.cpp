@@ -135,7 +135,7 @@ double signed_volume(const Mesh& mesh) {
 
 WindingRepair orient_consistently(Mesh& mesh) { return orient_consistently(mesh, weld_by_position(mesh.positions)); }
 
-WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners) {
+WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file) {
     const size_t triangles = mesh.triangle_count();
     const Adjacency adjacency = manifold_adjacency(mesh, corners);
     WindingRepair repair;
@@ -171,6 +171,7 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners)
         glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
         bool closed = true;  // every edge joins two of its triangles: its signed volume does not depend on the origin
         double volume = 0.0;
+        double unsigned_volume = 0.0;  // the sum of its triangles' tetrahedra's volumes, each taken positive
     };
     std::vector<PartFigures> figures(repair.parts);
     for (size_t t = 0; t < triangles; ++t) {
@@ -201,7 +202,13 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners)
         const double volume = glm::dot(a, glm::cross(b, c)) / 6.0;
         return std::isfinite(volume) ? volume : 0.0;
     };
-    // "Clearly" negative: beyond 1% of the box's volume, and beyond what rounding leaves of a flat sheet's zero.
+    // A closed part's volume does not depend on where it is taken from: it is negative only when the part is
+    // inside out, whatever its shape. Against the unsigned sum, not the box: a thin rod or a coil lying
+    // across its box encloses far less than 1% of it (a diagonal prism inside out, 0.5%, was left so until
+    // 2026-12-04). A thousandth of the unsigned sum is far above rounding and far below any real solid.
+    auto closed_part_inside_out = [](const PartFigures& f) { return f.volume < -1e-3 * f.unsigned_volume; };
+    // Open parts together: "clearly" negative, beyond 1% of the box's volume, and beyond what rounding leaves
+    // of a flat sheet's zero.
     auto clearly_inside_out = [](double volume, glm::dvec3 lo, glm::dvec3 hi, double area) {
         const glm::dvec3 extent = hi - lo;
         return volume < -std::max(0.01 * extent.x * extent.y * extent.z, 1e-9 * area * glm::length(extent));
@@ -209,7 +216,35 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners)
     for (size_t t = 0; t < triangles; ++t) {
         if (part[t] == kUnassigned || !figures[part[t]].closed) continue;
         PartFigures& f = figures[part[t]];
-        f.volume += signed_volume_about(t, 0.5 * (f.lo + f.hi));
+        const double volume = signed_volume_about(t, 0.5 * (f.lo + f.hi));
+        f.volume += volume;
+        f.unsigned_volume += std::abs(volume);
+    }
+    // An open part whose faces the file's normals clearly contradict (area-weighted mean cosine below -1/2)
+    // follows them: a loose panel of an export wound against the rest, which no volume can tell. Where they
+    // agree the volume still decides: a scan's normals may be as inside out as its winding (the horse's are).
+    std::vector<uint8_t> decided_by_normals(repair.parts, 0);
+    if (normals_from_file && mesh.normals.size() == mesh.positions.size()) {
+        std::vector<double> agreement(repair.parts, 0.0);
+        for (size_t t = 0; t < triangles; ++t) {
+            if (part[t] == kUnassigned || figures[part[t]].closed) continue;
+            const glm::dvec3 a = corner_position(mesh, t, 0);
+            glm::dvec3 face = glm::cross(corner_position(mesh, t, 1) - a, corner_position(mesh, t, 2) - a);
+            if (turn[t] != invert[part[t]]) face = -face;
+            const double length = glm::length(face);
+            if (!(length > 0.0) || !std::isfinite(length)) continue;
+            glm::dvec3 normal(0.0);
+            for (int k = 0; k < 3; ++k) normal += glm::dvec3(mesh.normals[mesh.indices[3 * t + k]]);
+            const double normal_length = glm::length(normal);
+            if (normal_length > 0.0) agreement[part[t]] += 0.5 * glm::dot(face, normal) / normal_length;
+        }
+        for (size_t p = 0; p < repair.parts; ++p) {
+            if (figures[p].closed || !(figures[p].area > 0.0)) continue;
+            if (agreement[p] < -0.5 * figures[p].area) {
+                invert[p] ^= 1, ++repair.parts_turned_outward, ++repair.parts_turned_to_normals;
+                decided_by_normals[p] = 1;
+            }
+        }
     }
     bool any_open = false;
     glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
@@ -217,8 +252,8 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners)
     for (size_t p = 0; p < repair.parts; ++p) {
         const PartFigures& f = figures[p];
         lo = glm::min(lo, f.lo), hi = glm::max(hi, f.hi), area += f.area;
-        any_open |= !f.closed;
-        if (f.closed && clearly_inside_out(f.volume, f.lo, f.hi, f.area)) {
+        any_open |= !f.closed && !decided_by_normals[p];
+        if (f.closed && closed_part_inside_out(f)) {
             invert[p] ^= 1;
             ++repair.parts_turned_outward;
         }
@@ -229,7 +264,7 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners)
             if (part[t] != kUnassigned) volume += signed_volume_about(t, 0.5 * (lo + hi));
         if (clearly_inside_out(volume, lo, hi, area))
             for (size_t p = 0; p < repair.parts; ++p)
-                if (!figures[p].closed) invert[p] ^= 1, ++repair.parts_turned_outward;
+                if (!figures[p].closed && !decided_by_normals[p]) invert[p] ^= 1, ++repair.parts_turned_outward;
     }
 
     for (size_t t = 0; t < triangles; ++t) {

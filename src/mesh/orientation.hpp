@@ -24,20 +24,25 @@ double signed_volume(const Mesh& mesh);
 //    of one triangle (a border) or of three or more (non-manifold: fins, duplicated faces) says nothing.
 // 2. A breadth-first walk over the manifold edges gives each part one winding; of its two, the part keeps
 //    the one that turns less of its area (the file's winding, where the file was consistent).
-// 3. Outward, where the volume says so clearly (below -1% of the box's volume): scans are sometimes wound
+// 3. Outward, where the volume says so clearly: scans are sometimes wound
 //    inside out (the Cyberware horse is), and mirrored parts of an assembly are. A closed part (no border
-//    edge) is turned whole when its own signed volume is negative. Open parts (sheets, scans with holes)
-//    are turned together when the whole model's signed volume about its box's centre is negative: the
+//    edge) is turned whole when its own signed volume is negative (below a thousandth of the sum of its
+//    tetrahedra's volumes taken positive, so that a thin rod across its box counts too). Open parts (sheets, scans with holes)
+//    are turned together when the whole model's signed volume about its box's centre is below -1% of the
+//    box's volume: the
 //    volume of an open part alone depends on where it is taken from (a patch of a concave region reads
 //    negative from its own box), and a flat sheet's is zero, so it keeps its majority's winding.
 //    A closed part inside another (the wall of a cavity) is turned outward too; it is hidden in any view.
+//    With normals_from_file, an open part whose faces the file's normals clearly contradict is turned to
+//    them first (a loose panel of an export wound against the rest: no volume tells which way it faces);
+//    the parts they agree with, or say nothing clear about, are left to the volume.
 // Only the corner order changes (corners 1 and 2 swap): positions, normals and vertex order stay, so the
 // caller decides what to do with the normals (load_mesh recomputes computed ones and turns file ones to
 // agree with their faces). Deterministic; indices beyond the positions are skipped (validate_mesh reports
 // them).
 WindingRepair orient_consistently(Mesh& mesh);
 // The same with the corners already welded (weld_by_position of mesh.positions).
-WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners);
+WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file = false);
 
 // Vertex normals from a file, each turned around where it disagrees with its faces (the area-weighted sum
 // of dot(face normal, vertex normal) over the triangles around it is negative): after a winding repair,

@@ -423,8 +423,8 @@ void read_faces(Reader& r, const Element& e, const Property& list, Target& t, ui
     }
 }
 
-// Triangle strips, -1 between strips (0xFFFFFFFF in uint lists, which can never be a vertex
-// number here). Odd triangles of a strip swap their first two corners so
+// Triangle strips, -1 between strips (all ones in unsigned lists: 0xFFFFFFFF, 0xFFFF, 0xFF, where
+// they are not a vertex number). Odd triangles of a strip swap their first two corners so
 // that all keep the strip's winding; triangles with a repeated corner only stitch strips
 // together and are dropped.
 template <class Reader>
@@ -442,7 +442,11 @@ void read_strips(Reader& r, const Element& e, const Property& list, Target& t, u
             uint64_t in_strip = 0;
             for (int64_t i = 0; i < n; ++i) {
                 const int64_t value = r.integer(p.type);
-                if (value == -1 || (p.type == Scalar::u32 && value == 0xFFFFFFFF)) {
+                // The all-ones value of an unsigned list is -1 written unsigned: a restart wherever it cannot be
+                // a vertex (a ushort list's 65535 for a model of 65536 vertices is one).
+                const bool all_ones = (p.type == Scalar::u32 && value == 0xFFFFFFFF) ||
+                                      (p.type == Scalar::u16 && value == 0xFFFF) || (p.type == Scalar::u8 && value == 0xFF);
+                if (value == -1 || (all_ones && static_cast<uint64_t>(value) >= t.vertex_count)) {
                     in_strip = 0;
                     continue;
                 }
