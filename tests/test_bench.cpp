@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
+#include "support/model_files.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
@@ -301,6 +302,38 @@ TEST(BenchReport, ChartHasAxesLegendAndOneSeriesPerColumn) {
         EXPECT_NE(svg.find(label), std::string::npos) << label;
 }
 
+// A run of every path with object lines has 29 series: the canvas grows so that the legend's last entry
+// (the paper's) stays on it (it ran off the 600-px canvas until 2026-12-04), and each kind of line has its
+// own marker (contours, borders and creases shared the silhouettes' square).
+TEST(BenchReport, ChartOfEveryColumnKeepsItsLegendAndTellsTheLinesApart) {
+    bench::BenchResults r = synthetic_results();
+    r.columns = bench::make_columns(bench::all_density_paths(), true);
+    for (bench::ModelResult& m : r.models) {
+        m.cells.clear();
+        for (const bench::Column& c : r.columns) {
+            bench::CellResult cell;
+            cell.column = c;
+            cell.median_fps = cell.min_fps = cell.max_fps = 10.0;
+            m.cells.push_back(cell);
+        }
+    }
+    const std::string svg = bench::svg_chart(r);
+    const size_t at = svg.find("height=\"") + 8;
+    const double height = std::stod(svg.substr(at));
+    const size_t last = svg.rfind("paper: no vertex program + lines");
+    ASSERT_NE(last, std::string::npos);
+    const size_t y_at = svg.rfind(" y=\"", last) + 4;
+    EXPECT_LT(std::stod(svg.substr(y_at)), height - 4) << "the legend's last entry is below the canvas";
+    // Triangles for contours, diamonds for borders, upside-down triangles for creases: 2 models x 5 paths
+    // each, plus 5 legend entries each.
+    auto count = [&](const std::string& what) {
+        size_t n = 0;
+        for (size_t i = svg.find(what); i != std::string::npos; i = svg.find(what, i + 1)) ++n;
+        return n;
+    };
+    EXPECT_EQ(count("<polygon"), 3u * (2u * 5u + 5u));
+}
+
 // --- the regression guard (--compare) ----------------------------------------------------------
 
 // Two results.json files: the new one has horse/vertex 15% slower, horse/cpu 5% slower (within the
@@ -357,6 +390,37 @@ TEST(BenchCompare, ListsCellsSlowerByMoreThanTenPercentAndMissingOnes) {
     EXPECT_EQ(same.compared, old_speeds.size());
     EXPECT_TRUE(same.slower.empty() && same.only_in_old.empty() && same.only_in_new.empty());
     EXPECT_DOUBLE_EQ(same.worst.loss(), 0.0);
+}
+
+// Runs made otherwise say so, and a model drawn from other geometry (a sphere standing in for a missing
+// scan) is left out rather than reported 75% slower (both were compared silently until 2026-12-04).
+TEST(BenchCompare, SaysHowTheRunsDifferAndLeavesOutModelsOfOtherGeometry) {
+    const bench::BenchResults old_run = synthetic_results();
+    bench::BenchResults new_run = old_run;
+    new_run.width = 640;
+    new_run.queued = 2;
+    new_run.models[0].entry.source = "procedural sphere";
+    for (bench::CellResult& c : new_run.models[0].cells) c.median_fps *= 0.25;
+    const bench::Comparison c = bench::compare_runs(bench::json_report(old_run), "old.json", bench::json_report(new_run));
+    EXPECT_EQ(c.settings, (std::vector<std::string>{"width 1280 -> 640", "queued_frames 1 -> 2"}));
+    ASSERT_EQ(c.not_comparable.size(), 1u);
+    EXPECT_EQ(c.not_comparable[0], "horse: test, 13352 triangles -> procedural sphere, 13352 triangles");
+    EXPECT_TRUE(c.slower.empty());
+    EXPECT_EQ(c.compared, 6u);  // the dragon's cells
+    const std::string text = bench::comparison_text(c, "old.json");
+    EXPECT_NE(text.find("made differently, so their speeds differ for that too: width 1280 -> 640; queued_frames 1 -> 2"),
+              std::string::npos) << text;
+    EXPECT_NE(text.find("not comparable (other geometry), left out: horse"), std::string::npos) << text;
+    // The same run: nothing said.
+    const bench::Comparison same = bench::compare_runs(bench::json_report(old_run), "old.json", bench::json_report(old_run));
+    EXPECT_TRUE(same.settings.empty() && same.not_comparable.empty());
+    // A folder is not a results file.
+    try {
+        bench::read_results_file(test::temp_dir("bench_compare_folder").string());
+        ADD_FAILURE() << "a folder was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+    }
 }
 
 TEST(BenchCompare, MalformedOrMissingFilesFailWithOneLineNamingThem) {
@@ -562,7 +626,11 @@ TEST(BenchCommand, BadArgumentsFailWithOneLine) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"bench", "--models", "teapot"}, {"bench", "--paths", "vertex,raytrace"},
           {"bench", "--frames", "0"}, {"bench", "--queued", "0"}, {"bench", "--width", "0"}, {"bench", "--paths", "vertex,,cpu"},
-          {"bench", "model.obj"}, {"bench", "--no-such-option"}, {"bench", "--compare", "/nonexistent/old/results.json"}}) {
+          {"bench", "model.obj"}, {"bench", "--no-such-option"}, {"bench", "--compare", "/nonexistent/old/results.json"},
+          // Refused before any model is made (until 2026-12-04 these failed only at the end of the run, or ran
+          // twice and wrote a results.json that --compare refused).
+          {"bench", "--models", "horse,horse"}, {"bench", "--paths", "vertex,cpu,vertex"}, {"bench", "--cache-dir", ""},
+          {"bench", "--out", test::write_file(test::temp_dir("bench_out_file") / "a_file", "x")}}) {
         test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 1) << args.back();
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -62,6 +62,24 @@ TEST(CliTone, PrintsTheInkPerDistanceAndItsMaxOverMin) {
     for (const auto& row : off) EXPECT_GT(std::stod(row[3]), std::stod(row[2])) << "without it, far reads darker";
 }
 
+// A distance where the object covers nothing has no tone: it shows as "-", is left out of max/min (which
+// was 0.000 or not, by the order of --distances, until 2026-12-04) and is warned about.
+TEST(CliTone, ADistanceThatCoversNothingIsLeftOutOfMaxOverMin) {
+    for (const std::string distances : {"1,2,300", "300,1,2"}) {
+        const test::CommandResult r = test::run_stipple(
+            {"tone", "--distances", distances, "--views", "30:10", "--width", "96", "--height", "80"});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.err.find("at d=300 the object covers no pixel in view 30:10"), std::string::npos) << r.err;
+        const auto on = rows(r.out, "on");
+        ASSERT_EQ(on.size(), 1u) << r.out;
+        ASSERT_EQ(on[0].size(), 6u) << r.out;
+        const size_t far = distances == "1,2,300" ? 4 : 2;
+        EXPECT_EQ(on[0][far], "-") << r.out;
+        const double a = std::stod(on[0][far == 4 ? 2 : 3]), b = std::stod(on[0][far == 4 ? 3 : 4]);
+        EXPECT_NEAR(std::stod(on[0][5]), std::max(a, b) / std::min(a, b), 0.002) << r.out;
+    }
+}
+
 // A figure from few dots is mostly sampling noise: the command says so, with the dots it rests on and
 // 1/sqrt of them, where that exceeds 2.5%, and stays quiet where the object fills the frame.
 TEST(CliTone, SaysWhereAFigureRestsOnTooFewDots) {

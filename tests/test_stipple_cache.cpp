@@ -138,6 +138,8 @@ TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
     const Damage damages[] = {
         {"a flipped byte in the compressed stipples", [&] { flip_byte(entry, std::streamoff(size - size / 3)); }},
         {"a flipped byte in the header", [&] { flip_byte(entry, 20); }},
+        {"a flipped byte in the magic", [&] { flip_byte(entry, 0); }},
+        {"a flipped byte in the version", [&] { flip_byte(entry, 8); }},
         {"a truncated entry", [&] { fs::resize_file(entry, size - 7); }},
         {"a truncated header", [&] { fs::resize_file(entry, 100); }},
         // Last: restore() would wait on it. Opened, a FIFO would wait for a writer forever.

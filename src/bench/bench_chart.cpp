@@ -16,6 +16,7 @@ namespace {
 
 constexpr double kWidth = 960, kHeight = 600;
 constexpr double kLeft = 80, kRight = 280, kTop = 50, kBottom = 70;  // margins; the legend sits on the right
+constexpr double kLegendPitch = 20;
 
 std::string escape(const std::string& text) {
     std::string out;
@@ -39,12 +40,28 @@ const char* path_colour(DensityPath path) {
     }
 }
 
+// A series' marker says what it draws besides the stipples: nothing (circle), the paper's silhouettes
+// (square), contours (triangle), borders (diamond) or creases (an upside-down triangle); the colour says the
+// path.
+enum class Marker { Circle, Square, Triangle, Diamond, DownTriangle };
+
+Marker marker_for(const Column& c) {
+    switch (c.object_lines) {
+        case ObjectLines::Contours: return Marker::Triangle;
+        case ObjectLines::Borders: return Marker::Diamond;
+        case ObjectLines::Creases: return Marker::DownTriangle;
+        case ObjectLines::None: break;
+    }
+    return c.lines ? Marker::Square : Marker::Circle;
+}
+
 struct Series {
     std::string label;
     std::string colour;
     bool dashed = false;
-    bool square = false;  // marker: squares for columns with lines (any kind), circles otherwise
+    Marker shape = Marker::Circle;
     std::vector<std::pair<double, double>> points;  // (polygons, fps), sorted by polygons
+    bool with_lines() const { return shape != Marker::Circle; }
 };
 
 // A log axis from the largest 1-2-5 step at or below `lo` to the smallest at or above `hi`.
@@ -90,7 +107,7 @@ std::string tick_label(double v, bool polygons) {
 std::vector<Series> collect_series(const BenchResults& r) {
     std::vector<Series> series;
     for (const Column& c : r.columns) {
-        Series s{"ours: " + c.name(), path_colour(c.path), false, c.lines || c.object_lines != ObjectLines::None, {}};
+        Series s{"ours: " + c.name(), path_colour(c.path), false, marker_for(c), {}};
         for (const ModelResult& m : r.models)
             for (const CellResult& cell : m.cells)
                 if (cell.column == c && cell.median_fps > 0)
@@ -103,7 +120,7 @@ std::vector<Series> collect_series(const BenchResults& r) {
         for (bool lines : {false, true}) {
             Column c{path, lines};
             std::string label = std::string("paper: ") + (path == DensityPath::Vertex ? "vertex program" : "no vertex program");
-            Series s{label + (lines ? " + lines" : ""), path_colour(path), true, lines, {}};
+            Series s{label + (lines ? " + lines" : ""), path_colour(path), true, lines ? Marker::Square : Marker::Circle, {}};
             for (const PaperRow& row : kPaperTable) {
                 bool measured = r.models.empty();
                 for (const ModelResult& m : r.models) measured |= m.entry.name == row.name;
@@ -115,19 +132,23 @@ std::vector<Series> collect_series(const BenchResults& r) {
 }
 
 void marker(std::ostringstream& svg, const Series& s, double x, double y) {
-    if (s.square)
-        svg << printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"%s\"/>\n", x - 3.5, y - 3.5,
-                      s.dashed ? "white" : s.colour.c_str());
-    else
-        svg << printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", x, y,
-                      s.dashed ? "white" : s.colour.c_str());
-    if (s.dashed) {  // hollow markers for the paper
-        if (s.square)
-            svg << printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"%s\"/>\n",
-                          x - 3.5, y - 3.5, s.colour.c_str());
-        else
-            svg << printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"none\" stroke=\"%s\"/>\n", x, y,
-                          s.colour.c_str());
+    // Hollow for the paper, filled for ours.
+    const std::string paint = s.dashed ? "fill=\"white\" stroke=\"" + s.colour + "\"" : "fill=\"" + s.colour + "\"";
+    auto polygon = [&](std::initializer_list<std::pair<double, double>> corners) {
+        std::string points;
+        for (auto [dx, dy] : corners) points += printf_string("%.1f,%.1f ", x + dx, y + dy);
+        svg << printf_string("<polygon points=\"%s\" %s/>\n", points.c_str(), paint.c_str());
+    };
+    switch (s.shape) {
+        case Marker::Circle:
+            svg << printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" %s/>\n", x, y, paint.c_str());
+            break;
+        case Marker::Square:
+            svg << printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"7\" height=\"7\" %s/>\n", x - 3.5, y - 3.5, paint.c_str());
+            break;
+        case Marker::Triangle: polygon({{0, -4.5}, {4.5, 3.5}, {-4.5, 3.5}}); break;
+        case Marker::Diamond: polygon({{0, -4.5}, {4.5, 0}, {0, 4.5}, {-4.5, 0}}); break;
+        case Marker::DownTriangle: polygon({{0, 4.5}, {4.5, -3.5}, {-4.5, -3.5}}); break;
     }
 }
 
@@ -142,14 +163,16 @@ std::string svg_chart(const BenchResults& r) {
             if (first) x_lo = x_hi = x, y_lo = y_hi = y, first = false;
             x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
         }
-    const double plot_right = kWidth - kRight, plot_bottom = kHeight - kBottom;
+    // Taller than the default where the legend needs it (a run of every path has 29 series).
+    const double height = std::max(kHeight, kTop + 8 + kLegendPitch * double(series.size()) + 10);
+    const double plot_right = kWidth - kRight, plot_bottom = height - kBottom;
     LogAxis xa(x_lo, x_hi, kLeft, plot_right), ya(y_lo, y_hi, plot_bottom, kTop);
 
     std::ostringstream svg;
     svg << printf_string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
                   "font-family=\"Helvetica, Arial, sans-serif\" font-size=\"12\">\n",
-                  kWidth, kHeight, kWidth, kHeight);
-    svg << printf_string("<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", kWidth, kHeight);
+                  kWidth, height, kWidth, height);
+    svg << printf_string("<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", kWidth, height);
     svg << printf_string("<text x=\"%.0f\" y=\"24\" font-size=\"15\" font-weight=\"bold\">%s</text>\n", kLeft,
                   escape(printf_string("Frames per second against polygon count, %ux%u", r.width, r.height)).c_str());
     svg << printf_string("<text x=\"%.0f\" y=\"40\" fill=\"#555\">%s</text>\n", kLeft,
@@ -181,7 +204,7 @@ std::string svg_chart(const BenchResults& r) {
     svg << printf_string("<rect x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" fill=\"none\" stroke=\"black\"/>\n",
                   kLeft, kTop, plot_right - kLeft, plot_bottom - kTop);
     svg << printf_string("<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">polygons (triangles), log scale</text>\n",
-                  (kLeft + plot_right) / 2, kHeight - 25);
+                  (kLeft + plot_right) / 2, height - 25);
     svg << printf_string("<text transform=\"translate(24 %.0f) rotate(-90)\" text-anchor=\"middle\">frames per second, "
                   "log scale</text>\n",
                   (kTop + plot_bottom) / 2);
@@ -191,7 +214,7 @@ std::string svg_chart(const BenchResults& r) {
         std::string points;
         for (auto [x, y] : s.points) points += printf_string("%.1f,%.1f ", xa.map(x), ya.map(y));
         svg << printf_string("<polyline points=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%s\"%s/>\n", points.c_str(),
-                      s.colour.c_str(), s.square ? "1.5" : "2", s.dashed ? " stroke-dasharray=\"6 4\"" : "");
+                      s.colour.c_str(), s.with_lines() ? "1.5" : "2", s.dashed ? " stroke-dasharray=\"6 4\"" : "");
         for (auto [x, y] : s.points) marker(svg, s, xa.map(x), ya.map(y));
     }
 
@@ -203,7 +226,7 @@ std::string svg_chart(const BenchResults& r) {
         marker(svg, s, lx + 14, ly);
         svg << printf_string("<text x=\"%.0f\" y=\"%.0f\" font-size=\"11\">%s</text>\n", lx + 36, ly + 4,
                       escape(s.label).c_str());
-        ly += 20;
+        ly += kLegendPitch;
     }
     svg << "</svg>\n";
     return svg.str();

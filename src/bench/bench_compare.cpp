@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -76,13 +77,67 @@ std::map<std::string, double> read_speeds(const std::string& json_text, const st
     return speeds;
 }
 
-std::map<std::string, double> read_speeds_file(const std::string& path) {
+std::string read_results_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail_file(path, "is a folder: --compare takes an earlier run's results.json");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail_file(path, "cannot read the results to compare with (no such file?)");
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) fail_file(path, "read failed");
-    return read_speeds(text.str(), path);
+    read_speeds(text.str(), path);
+    return text.str();
+}
+
+std::map<std::string, double> read_speeds_file(const std::string& path) {
+    return read_speeds(read_results_file(path), path);
+}
+
+namespace {
+
+// A field's value as the report prints it, or "" where the file lacks it (an older run).
+std::string field_text(const json& object, const char* key) {
+    if (!object.is_object() || !object.contains(key)) return "";
+    const json& value = object.at(key);
+    return value.is_string() ? value.get<std::string>() : value.dump();
+}
+
+// What a model's speeds were measured on: its source and size (where the file says both).
+std::map<std::string, std::string> model_geometry(const json& root) {
+    std::map<std::string, std::string> out;
+    for (const json& model : root.at("models")) {
+        const std::string source = field_text(model, "source"), triangles = field_text(model, "triangles");
+        if (!source.empty() && !triangles.empty())
+            out[model.at("name").get<std::string>()] = source + ", " + triangles + " triangles";
+    }
+    return out;
+}
+
+}  // namespace
+
+Comparison compare_runs(const std::string& old_text, const std::string& old_name, const std::string& new_text,
+                        double threshold) {
+    std::map<std::string, double> old_speeds = read_speeds(old_text, old_name), new_speeds = read_speeds(new_text, "this run");
+    const json old_root = json::parse(old_text), new_root = json::parse(new_text);
+    std::vector<std::string> settings;
+    for (const char* key : {"width", "height", "queued_frames", "timed_frames", "warmup_frames", "quick", "device"}) {
+        const std::string was = field_text(old_root, key), now = field_text(new_root, key);
+        if (!was.empty() && !now.empty() && was != now) settings.push_back(std::string(key) + " " + was + " -> " + now);
+    }
+    std::vector<std::string> not_comparable;
+    const auto old_geometry = model_geometry(old_root), new_geometry = model_geometry(new_root);
+    for (const auto& [model, was] : old_geometry) {
+        const auto now = new_geometry.find(model);
+        if (now == new_geometry.end() || now->second == was) continue;
+        not_comparable.push_back(model + ": " + was + " -> " + now->second);
+        const std::string prefix = model + " / ";
+        for (auto* speeds : {&old_speeds, &new_speeds})
+            std::erase_if(*speeds, [&](const auto& entry) { return entry.first.rfind(prefix, 0) == 0; });
+    }
+    Comparison c = compare_speeds(old_speeds, new_speeds, threshold);
+    c.settings = std::move(settings);
+    c.not_comparable = std::move(not_comparable);
+    return c;
 }
 
 Comparison compare_speeds(const std::map<std::string, double>& old_speeds, const std::map<std::string, double>& new_speeds,
@@ -111,6 +166,12 @@ std::string comparison_text(const Comparison& c, const std::string& old_name, do
     auto change_text = [](const SpeedChange& s) {
         return printf_string("%s %+.1f%% (%.4g -> %.4g)", s.key.c_str(), -100.0 * s.loss(), s.old_speed, s.new_speed);
     };
+    if (!c.settings.empty()) {
+        text += "  the runs were made differently, so their speeds differ for that too:";
+        for (size_t i = 0; i < c.settings.size(); ++i) text += (i ? "; " : " ") + c.settings[i];
+        text += "\n";
+    }
+    for (const std::string& model : c.not_comparable) text += "  not comparable (other geometry), left out: " + model + "\n";
     for (const SpeedChange& s : c.slower) text += "  slower: " + change_text(s) + "\n";
     for (const std::string& key : c.only_in_old) text += "  missing in this run: " + key + "\n";
     for (const std::string& key : c.only_in_new) text += "  missing in " + old_name + ": " + key + "\n";

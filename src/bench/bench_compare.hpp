@@ -24,6 +24,9 @@ struct SpeedChange {
 };
 
 struct Comparison {
+    std::vector<std::string> settings;        // how the runs were made differently ("width 640 -> 1280"), if at all
+    std::vector<std::string> not_comparable;  // models drawn from other geometry ("horse: horse.ply, 96966
+                                              // triangles -> procedural sphere, 98000 triangles"): left out
     size_t compared = 0;                   // keys in both runs
     std::vector<SpeedChange> slower;       // loss > threshold, worst first
     std::vector<std::string> only_in_old;  // keys the new run lacks
@@ -38,8 +41,17 @@ std::map<std::string, double> read_speeds(const std::string& json_text, const st
 Comparison compare_speeds(const std::map<std::string, double>& old_speeds, const std::map<std::string, double>& new_speeds,
                           double threshold = kSlowerThreshold);
 
-// Reads `path` (a results.json); throws stipple::Error("<path>: ...") when missing, unreadable or malformed.
+// Reads `path` (a results.json); throws stipple::Error("<path>: ...") when missing, a folder, unreadable or
+// malformed.
 std::map<std::string, double> read_speeds_file(const std::string& path);
+// The same, returning the file's text (checked as read_speeds_file checks it).
+std::string read_results_file(const std::string& path);
+
+// Two results.json texts (both accepted by read_speeds): compare_speeds over the models drawn from the same
+// geometry in both, with the settings that differ between the runs (frame size, queued and timed frames,
+// --quick, device, depth options) listed, since a speed measured otherwise is no regression.
+Comparison compare_runs(const std::string& old_text, const std::string& old_name, const std::string& new_text,
+                        double threshold = kSlowerThreshold);
 
 // What the bench prints: the slower cells, the missing ones, then one summary line
 // ("compared with OLD: N cells compared, K slower by more than 10%, the worst: KEY -23.4% (a -> b)").

@@ -1,7 +1,9 @@
 // stipple bench: the paper's Table 1 on this machine (see src/bench/).
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
+#include <string>
+#include <vector>
 
 #include "bench/bench_compare.hpp"
 #include "bench/bench_output.hpp"
@@ -23,6 +25,13 @@ long long bounded(const Args& args, const std::string& name, long long fallback,
     if (value < lo || value > hi)
         fail(name + " = " + std::to_string(value) + " must be in " + std::to_string(lo) + ".." + std::to_string(hi));
     return value;
+}
+
+// A list option naming one entry twice would run it twice and write a results.json that --compare refuses.
+void fail_on_repeats(const std::string& option, const std::vector<std::string>& names) {
+    for (size_t i = 0; i < names.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (names[i] == names[j]) fail(option + ": '" + names[i] + "' is named twice");
 }
 
 }  // namespace
@@ -59,6 +68,7 @@ int run_bench(const std::vector<std::string>& argv) {
             if (!bench::find_paper_row(name))
                 fail("--models: unknown model '" + name + "' (the rows of Table 1 are: " + bench::paper_row_names() + ")");
         options.models = split_list("--models", args.get("--models", ""));
+        fail_on_repeats("--models", options.models);
     } else if (options.quick) {
         options.models = {bench::kPaperTable[0].name, bench::kPaperTable[1].name};
     }
@@ -74,6 +84,9 @@ int run_bench(const std::vector<std::string>& argv) {
                 }
                 options.paths.push_back(*path);
             }
+        std::vector<std::string> names;
+        for (DensityPath p : options.paths) names.push_back(density_path_name(p));
+        fail_on_repeats("--paths", names);
     } else if (options.quick) {
         options.paths = {DensityPath::Vertex, DensityPath::Cpu, DensityPath::Splat};
     }
@@ -85,19 +98,29 @@ int run_bench(const std::vector<std::string>& argv) {
     options.depth_raster = *parse_depth_raster(depth_raster);
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
+    if (args.has("--models-dir") && options.models_dir.empty()) fail("--models-dir needs a folder");
+    if (args.has("--cache-dir") && options.cache_dir.empty()) fail("--cache-dir needs a folder");
     const std::filesystem::path out = args.get("--out", "bench-results");
     if (out.empty()) fail("--out needs a folder");
     // Read before the run: a bad file fails at once, and --out may be the folder it is in.
     const std::string compare_path = args.get("--compare", "");
     if (args.has("--compare") && compare_path.empty()) fail("--compare needs the path of an earlier results.json");
-    std::map<std::string, double> old_speeds;
-    if (!compare_path.empty()) old_speeds = bench::read_speeds_file(compare_path);
+    std::string old_results;
+    if (!compare_path.empty()) old_results = bench::read_results_file(compare_path);
+    // Made now: a run of many minutes must not end unable to write its results.
+    {
+        std::error_code ec;
+        std::filesystem::create_directories(out, ec);
+        if (ec || !std::filesystem::is_directory(out))
+            fail_file(out.string(), "cannot make the results folder" + (ec ? ": " + ec.message() : std::string(" (a file is there)")));
+    }
     options.image_dir = out / "images";
     // The plot-order row: in a full run 150k dots and the bunny's view; --quick (in the test suite)
-    // shrinks it to 15k dots without the bunny; a run of chosen --models leaves it out unless asked.
+    // shrinks it to 15k dots without the bunny; a run of chosen --models, or --animated-only, leaves it out
+    // unless asked.
     const bool plot_asked = args.has("--plot-dots");
     const size_t plot_dots = size_t(bounded(args, "--plot-dots", options.quick ? 15'000 : 150'000, 0, 10'000'000));
-    const bool plot_row = plot_dots > 0 && (plot_asked || options.quick || options.models.empty());
+    const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && (options.quick || options.models.empty())));
     options.command = "stipple bench";
     for (const std::string& a : argv) options.command += " " + a;
 
@@ -105,24 +128,28 @@ int run_bench(const std::vector<std::string>& argv) {
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);
     };
+    const auto start = std::chrono::steady_clock::now();
     bench::BenchResults results = bench::run_bench(options, log);
     if (plot_row) {
         results.plot_order = measure_plot_order_row(plot_dots, !options.quick, options.models_dir, options.width,
                                                     options.height, options.device, log);
         results.validation_messages += results.plot_order->validation_messages;
     }
+    results.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const std::string markdown = bench::markdown_report(results);
     bench::write_text_file((out / "results.md").string(), markdown);
     bench::write_text_file((out / "results.json").string(), bench::json_report(results));
     bench::write_text_file((out / "chart.svg").string(), bench::svg_chart(results));
     std::printf("\n%s", markdown.c_str());
-    std::printf("wrote %s, %s, %s and the standard frames in %s (%.0f s)\n", (out / "results.md").c_str(),
-                (out / "results.json").c_str(), (out / "chart.svg").c_str(), (out / "images").c_str(),
-                results.total_seconds);
+    std::error_code ec;
+    const bool images = std::filesystem::is_directory(out / "images", ec) &&
+                        !std::filesystem::is_empty(out / "images", ec);
+    std::printf("wrote %s, %s, %s%s%s (%.0f s)\n", (out / "results.md").c_str(), (out / "results.json").c_str(),
+                (out / "chart.svg").c_str(), images ? " and the standard frames in " : "",
+                images ? (out / "images").c_str() : "", results.total_seconds);
     if (!compare_path.empty()) {
-        const bench::Comparison comparison =
-            bench::compare_speeds(old_speeds, bench::read_speeds(bench::json_report(results), "this run"));
+        const bench::Comparison comparison = bench::compare_runs(old_results, compare_path, bench::json_report(results));
         std::printf("\n%s", bench::comparison_text(comparison, compare_path).c_str());
     }
     if (results.validation_messages > 0) {

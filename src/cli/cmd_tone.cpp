@@ -81,13 +81,22 @@ std::vector<uint64_t> parse_seeds(const std::string& text) {
 }
 
 // One row per view: the mean ink at each distance and its max/min. `label` names the seed, if several.
+// A max/min cell: "-" where fewer than two distances covered a pixel.
+void print_figure(double figure) {
+    if (std::isnan(figure)) std::printf(" - |\n");
+    else std::printf(" %.3f |\n", figure);
+}
+
 void print_table(const ToneSurvey& survey, const ToneSurveyOptions& options, const char* extrinsic,
                  const std::string& label = "") {
     for (size_t v = 0; v < options.views.size(); ++v) {
         std::printf("| %-3s | %6.1f:%-5.1f |", extrinsic, options.views[v][0], options.views[v][1]);
         if (!label.empty()) std::printf(" %s |", label.c_str());
-        for (const ToneSample& s : survey.samples) std::printf(" %.4f |", s.mean_ink[v]);
-        std::printf(" %.3f |\n", survey.max_over_min(v));
+        for (const ToneSample& s : survey.samples) {
+            if (s.covered(v)) std::printf(" %.4f |", s.mean_ink[v]);
+            else std::printf(" - |");  // nothing covered: no tone to read (and none counted in max/min)
+        }
+        print_figure(survey.max_over_min(v));
     }
 }
 
@@ -101,7 +110,7 @@ void print_seed_average(const std::vector<ToneSurvey>& surveys, const ToneSurvey
         std::printf("| %-3s | %6.1f:%-5.1f | mean of the seeds' max/min |", extrinsic, options.views[v][0],
                     options.views[v][1]);
         for (size_t i = 0; i < surveys.front().samples.size(); ++i) std::printf(" |");
-        std::printf(" %.3f |\n", figures / double(surveys.size()));
+        print_figure(figures / double(surveys.size()));
     }
 }
 
@@ -249,6 +258,12 @@ int run_tone(const std::vector<std::string>& argv) {
         off_options.regimes = false;
         offs.push_back(survey_tone(context, renderer, 0, object.bounds, off_options, light));
     }
+    for (const ToneSample& sample : ons.front().samples)
+        for (size_t v = 0; v < options.views.size(); ++v)
+            if (!sample.covered(v))
+                std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel in view %g:%g (beyond the frame, or "
+                                     "the camera inside it): shown as -, left out of max/min\n",
+                             sample.distance, options.views[v][0], options.views[v][1]);
     std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance)%s:\n\n",
                 several ? "; per seed, then each distance averaged over the seeds" : "");
     std::printf("| extrinsic | yaw:pitch |%s", several ? " seed |" : "");

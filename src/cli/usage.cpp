@@ -173,7 +173,7 @@ Info options:
   targets, and its stretch headroom: the largest area any polygon reaches and the candidates that buys.
 
 Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
-reopened with the same generation parameters skips generation (~2-3 bytes per stipple, checked
+reopened with the same generation parameters skips generation (~4-5 bytes per stipple, checked
 when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else ~/.cache/stipple/stipples)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (default 1G); the least recently used
@@ -191,7 +191,11 @@ Tone options (and the stipple options; without MODEL the default scene's model):
                           enhancement owes and draws, and the ink they leave on the screen
   --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
                           each distance's ink averaged over the seeds (instead of --seed)
-  --images DIR            write each view and distance (cropped to the object, enlarged) as PNG
+  --images DIR            write each view and distance (cropped to the object, enlarged) as PNG:
+                          DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
+                          --frames the first frame's, at the start of the --arc
+  A distance at which the object covers no pixel (beyond the frame, or the camera inside it) shows
+  as - and is left out of max/min, with a warning.
   Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
   of the dots), a last line says so, with the dots and the spread.
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 #include "core/error.hpp"
@@ -191,14 +192,18 @@ FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, fl
 
 }  // namespace
 
+bool ToneSample::covered(size_t view) const { return view < ink.size() && ink[view].covered > 0; }
+
 double ToneSurvey::max_over_min(size_t view) const {
-    double lo = 0.0, hi = 0.0;
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    size_t counted = 0;
     for (const ToneSample& s : samples) {
+        if (!s.covered(view)) continue;  // no tone where the object covers nothing
         const double ink = s.mean_ink.at(view);
-        lo = lo == 0.0 ? ink : std::min(lo, ink);
-        hi = std::max(hi, ink);
+        lo = std::min(lo, ink), hi = std::max(hi, ink), ++counted;
     }
-    return lo > 0.0 ? hi / lo : 0.0;
+    if (counted < 2) return std::numeric_limits<double>::quiet_NaN();
+    return lo > 0.0 ? hi / lo : std::numeric_limits<double>::infinity();
 }
 
 ToneSurvey mean_survey(const std::vector<ToneSurvey>& surveys) {
@@ -216,7 +221,11 @@ ToneSurvey mean_survey(const std::vector<ToneSurvey>& surveys) {
 double ToneSurvey::worst_max_over_min() const {
     double worst = 0.0;
     if (!samples.empty())
-        for (size_t v = 0; v < samples[0].mean_ink.size(); ++v) worst = std::max(worst, max_over_min(v));
+        for (size_t v = 0; v < samples[0].mean_ink.size(); ++v) {
+            const double figure = max_over_min(v);
+            if (std::isnan(figure)) return figure;
+            worst = std::max(worst, figure);
+        }
     return worst;
 }
 
@@ -242,7 +251,7 @@ ToneSurvey survey_tone(const gpu::Context& context, StippleRenderer& renderer, s
                 }
                 if (j == 0 && !options.image_dir.empty()) {
                     char name[160];
-                    std::snprintf(name, sizeof name, "/tone-%g_%g-d%g-%s.png", yaw, pitch, distance,
+                    std::snprintf(name, sizeof name, "/tone-%g_%g-d%.9g-%s.png", yaw, pitch, distance,
                                   renderer.params(object).extrinsic ? "on" : "off");
                     write_png(options.image_dir + name, enlarged(frame.color, std::clamp(int(256 / crop.height), 1, 8)));
                 }

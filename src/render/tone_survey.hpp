@@ -91,10 +91,13 @@ struct ToneSample {
     std::vector<double> mean_ink;  // per view
     std::vector<ToneTally> tallies;  // per view, summed over its frames (empty regimes unless options.regimes)
     std::vector<InkFigures> ink;     // per view, summed over its frames
+    bool covered(size_t view) const;  // the object covers a pixel there (out of frame, or the camera inside it: not)
 };
 
 struct ToneSurvey {
     std::vector<ToneSample> samples;  // one per distance
+    // The largest mean ink over the smallest, over the distances where the object covers a pixel: NaN with
+    // fewer than two such, infinite when one of them drew no ink. The worst is NaN if any view's is.
     double max_over_min(size_t view) const;
     double worst_max_over_min() const;
 };

@@ -154,7 +154,10 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
     Header header{};
     const size_t triangles = mesh.triangle_count();
     if (!in.read(reinterpret_cast<char*>(&header), sizeof(header))) return warn_damaged(path, "truncated header"), std::nullopt;
-    if (header.magic != cache_format::kMagic || header.version != cache_format::kVersion) return std::nullopt;  // older format
+    // The key mixes in the format's version, so an older format lies under another name: a foreign magic or
+    // version here is damage (it was passed over silently until 2026-12-04).
+    if (header.magic != cache_format::kMagic || header.version != cache_format::kVersion)
+        return warn_damaged(path, "not an entry of this format"), std::nullopt;
     if (!cache_format::header_valid(header)) return warn_damaged(path, "header checksum"), std::nullopt;
     if (header.key != key || header.triangles != triangles) return std::nullopt;  // another mesh's (a 64-bit collision)
     const uint64_t raw_expected = header.triangles * 6 + header.stipples * 4;

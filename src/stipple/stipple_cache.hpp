@@ -4,8 +4,8 @@
 //
 // An entry holds what the GPU holds: each stipple as its 16-bit (u, v) in its polygon
 // (stipple/barycentric.hpp), the polygons' candidate counts and 16-bit selection values, compressed with
-// zstd (whose frame checksum covers the data) behind a header that carries its own hash. About 2-3 bytes
-// per stipple on disk. Every set this cache hands out, fresh or read back, has its positions on that
+// zstd (whose frame checksum covers the data) behind a header that carries its own hash. About 4-5 bytes
+// per stipple on disk (the (u, v) pairs are near random: zstd keeps most of their 4 bytes). Every set this cache hands out, fresh or read back, has its positions on that
 // 16-bit grid, so a hit and a miss give the same stipples to the byte.
 //
 // Entries are written to a temporary file and renamed into place (a killed process never leaves half an
