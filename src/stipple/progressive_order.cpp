@@ -267,17 +267,39 @@ void Orderer::merge_pieces() {
     parallel_for(split_.size(), 1, [&](size_t i) {
         const Split& split = split_[i];
         const uint32_t pieces = split.end_unit - split.first_unit;
-        std::vector<std::pair<double, uint32_t>> slots;  // (position in the order, index in positions_)
+        // Each piece's slots come in increasing order already: merged through a heap of the pieces' next
+        // slots, ties to the earlier piece. (A stable sort of every slot, 16 bytes each and as much again
+        // for the sort's buffer, made this the peak of generation for a model of one large triangle: 54
+        // bytes a stipple, against 36 for the 12-triangle cube, until 2026-12-04.)
+        struct Next {
+            double tau;
+            uint32_t unit, k;
+        };
+        auto later = [](const Next& a, const Next& b) { return a.tau != b.tau ? a.tau > b.tau : a.unit > b.unit; };
+        std::vector<double> phase(pieces);
+        std::vector<Next> heap;
+        heap.reserve(pieces);
         for (uint32_t u = split.first_unit; u < split.end_unit; ++u) {
             const Unit& unit = units_[u];
-            const uint32_t count = unit.end - unit.begin;
-            const double phase = radical_inverse(u - split.first_unit) + 0.5 / pieces;  // in (0, 1)
-            for (uint32_t k = 0; k < count; ++k) slots.push_back({(k + phase) / count, unit.begin + k});
+            phase[u - split.first_unit] = radical_inverse(u - split.first_unit) + 0.5 / pieces;  // in (0, 1)
+            if (unit.end > unit.begin) heap.push_back({phase[u - split.first_unit] / (unit.end - unit.begin), u, 0});
         }
-        // Stable: equal tau keep the piece order in which they were listed.
-        std::stable_sort(slots.begin(), slots.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::vector<glm::vec3> merged(slots.size());
-        for (size_t j = 0; j < slots.size(); ++j) merged[j] = positions_[slots[j].second];
+        std::make_heap(heap.begin(), heap.end(), later);
+        std::vector<glm::vec3> merged;
+        merged.reserve(first_[split.triangle + 1] - first_[split.triangle]);
+        while (!heap.empty()) {
+            std::pop_heap(heap.begin(), heap.end(), later);
+            Next& next = heap.back();
+            const Unit& unit = units_[next.unit];
+            merged.push_back(positions_[unit.begin + next.k]);
+            const uint32_t count = unit.end - unit.begin;
+            if (++next.k < count) {
+                next.tau = (next.k + phase[next.unit - split.first_unit]) / count;
+                std::push_heap(heap.begin(), heap.end(), later);
+            } else {
+                heap.pop_back();
+            }
+        }
         std::copy(merged.begin(), merged.end(), positions_.begin() + first_[split.triangle]);
     });
 }
