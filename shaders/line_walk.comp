@@ -22,6 +22,8 @@ layout(set = 0, binding = kBindingLinePieces, std430) buffer Pieces {
     LinePiecesHeader pieces;
     LinePiece piece[];
 };
+// One bit per polygon, set when it faces away (the density pass's, as line_edges.comp reads it).
+layout(set = 0, binding = kBindingFacing, std430) readonly buffer Facing { uint facing_away[]; };
 // The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
 // storage buffer lane by lane.
 layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
@@ -77,7 +79,17 @@ const float kBridgePx = 3.5;
 // lie in the next polygon in, whose plane passes in front of the line (the surface is convex there)
 // by more than any slope offset covers, and single samples fail all along the outline. An occluder
 // that narrow is below what the line, at least a pixel wide, could show anyway.
-void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
+//
+// A contour is also seen from its back face's side: a sample hidden where it lies counts as visible
+// when it is visible `away_px` off the line, on the side where the polygon facing away projects. A
+// mesh's contour zig-zags, and on the concave side of each zig a whole edge lies a little behind the
+// next front polygon in (whose plane passes in front of it), one triangle edge long: more than any
+// bridge, and the outline of a smooth torus, with nothing in front of it, broke into strokes that moved
+// from view to view (until 2026-12-04). Beside the line on that side lies what the fold shows behind it
+// (the paper, or a surface farther away); a real occluder covers that pixel too.
+const float kContourSidePx = 1.5;
+
+void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
     mat4 model_view_proj = object.model_view_proj;
     vec4 c0 = model_view_proj * vec4(p0, 1.0);
     vec4 c1 = model_view_proj * vec4(p1, 1.0);
@@ -92,6 +104,16 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
     vec2 s1 = vec2(0.5 * (n1.x + 1.0) * size.x, 0.5 * (1.0 - n1.y) * size.y);
     float length_px = distance(s0, s1);
     if (!(length_px < 1e6)) return;  // not finite: degenerate projection
+    vec2 away_px = vec2(0.0);  // (0, 0): the line alone is tested
+    if (kind == kLineKindContour && length_px > 0.0) {
+        vec4 ca = model_view_proj * vec4(away_point, 1.0);
+        if (ca.w > 0.0) {
+            vec2 sa = vec2(0.5 * (ca.x / ca.w + 1.0) * size.x, 0.5 * (1.0 - ca.y / ca.w) * size.y);
+            vec2 across = vec2(s0.y - s1.y, s1.x - s0.x) / length_px;
+            float side = dot(sa - s0, across);
+            if (side != 0.0) away_px = -sign(side) * kContourSidePx * across;
+        }
+    }
     uint steps = clamp(uint(ceil(length_px)), 1u, kMaxSteps);
     float step = 1.0 / float(steps);
     uint run = 0u;        // visible samples in the current run
@@ -105,7 +127,9 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind) {
     for (uint i = 0u; i <= steps; ++i) {
         float u = float(i) * step;
         float tested = clamp(u, trusted_from, trusted_to);
-        bool visible = sample_visible(mix(s0, s1, tested), mix(n0.z, n1.z, tested));
+        vec2 at = mix(s0, s1, tested);
+        float z = mix(n0.z, n1.z, tested);
+        bool visible = sample_visible(at, z) || (away_px != vec2(0.0) && sample_visible(at + away_px, z));
         if (!visible) {
             if (run > 0u && !gap) end = u - 0.5 * step, gap = true;
             continue;
@@ -130,6 +154,15 @@ void main() {
     if (slot >= candidates.count) return;
     uint listed = candidate[slot];
     uint e = listed & kLineEdgeMask;
-    uvec2 corners = texelFetch(edge_texels, int(e)).xy;  // SilhouetteEdge: first_vertex, second_vertex
-    walk_edge(mesh_vertex(corners.x), mesh_vertex(corners.y), e, listed >> kLineKindShift);
+    uvec4 edge = texelFetch(edge_texels, int(e));  // SilhouetteEdge: first_vertex, second_vertex, first_polygon, second_polygon
+    uint kind = listed >> kLineKindShift;
+    vec3 p0 = mesh_vertex(edge.x), p1 = mesh_vertex(edge.y);
+    // A contour's polygon facing away: where its centre projects is the side the fold shows behind.
+    vec3 away_point = 0.5 * (p0 + p1);
+    if (kind == kLineKindContour) {
+        uint away = ((facing_away[edge.z >> 5u] >> (edge.z & 31u)) & 1u) != 0u ? edge.z : edge.w;
+        uvec3 corners = mesh_triangle(away);
+        away_point = (mesh_vertex(corners.x) + mesh_vertex(corners.y) + mesh_vertex(corners.z)) / 3.0;
+    }
+    walk_edge(p0, p1, e, kind, away_point);
 }
