@@ -54,21 +54,33 @@ size_t svg_dots(const std::string& path, std::string* width) {
 }
 
 // A script's screenshot line followed at once by quit: the screenshot is taken and written before the
-// window closes (the quit used to close it first, and the file never appeared).
+// window closes (the quit used to close it first, and the file never appeared). A screenshot shows the
+// state at its line: two in a row are both written, and a `set` after one does not change it (both
+// were taken of a later frame until 2026-12-04: the first of two was never written, and a screenshot
+// followed by a larger point size showed the larger dots).
 TEST(CliView, ScriptScreenshotThenQuitWritesIt) {
     if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
     auto dir = test::temp_dir("cli-view-screenshot-quit");
-    const std::string shot = (dir / "shot.png").string();
-    std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot " + shot + "\nquit\n";
+    const std::string shot = (dir / "shot.png").string(), first = (dir / "first.png").string(),
+                      second = (dir / "second.png").string();
+    std::ofstream(dir / "script.txt") << "wait-idle\nscreenshot " + first + "\nscreenshot " + second +
+                                             "\nset 0 point_size 4\nscreenshot " + shot + "\nquit\n";
     ViewerSession session(dir);
     ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
     session.start_viewer({"--width", "320", "--height", "256", "--no-panel", "--script", (dir / "script.txt").string(),
                           "--cache-dir", (dir / "cache").string()});
     ASSERT_EQ(session.viewer().wait_exit(300s), 0) << session.out() << session.err();
     ASSERT_TRUE(std::filesystem::exists(shot)) << session.out() << session.err();
+    ASSERT_TRUE(std::filesystem::exists(first)) << session.out() << session.err();
+    ASSERT_TRUE(std::filesystem::exists(second)) << session.out() << session.err();
     const Image image = read_png(shot);
     EXPECT_EQ(image.width, 320);
     EXPECT_GT(ink_pixels(image), 200u) << "the screenshot shows no stipples";
+    // Dots of 4 px against 1.5: far more ink after the set than in the two before it, which are alike.
+    const size_t before = ink_pixels(read_png(first)), again = ink_pixels(read_png(second)), after = ink_pixels(image);
+    std::printf("ink pixels: %zu, %zu before the set, %zu after\n", before, again, after);
+    EXPECT_EQ(before, again);
+    EXPECT_GT(double(after), 2.0 * double(before));
 }
 
 // A script's screenshot that cannot be written is an error (exit code 1), not a message in a run that passes.

@@ -244,6 +244,10 @@ void Viewer::apply_finished_work() {
 
 void Viewer::run_script() {
     while (script_at_ < script_.size()) {
+        // A screenshot shows the state at its line: the actions after it wait until it is taken (a `set`
+        // right after one changed what it showed, and a second screenshot replaced the first, until
+        // 2026-12-04).
+        if (screenshot_.pending()) return;
         const ScriptAction& action = script_[script_at_];
         switch (action.kind) {
             case ScriptAction::Kind::Wait:
@@ -270,12 +274,14 @@ void Viewer::run_script() {
                         format_param_value(spec, action.value));
                 break;
             }
-            case ScriptAction::Kind::Screenshot: screenshot_.request(action.path); break;
+            case ScriptAction::Kind::Screenshot:
+                screenshot_.request(action.path);
+                ++script_at_;
+                return;  // this frame draws what it shows
             case ScriptAction::Kind::Export:
                 if (!export_view(action.path, plot::ExportOptions{})) script_failed_ = true;  // exit code 1 at the end
                 break;
             case ScriptAction::Kind::Quit:
-                if (screenshot_.pending()) return;  // a screenshot just asked for is taken and written first
                 window_.request_close();
                 break;
         }
