@@ -254,6 +254,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"tone", "--views", "30:10,"}, "--views '30:10,' has an empty entry"},
         {{"render", "--yaw", "1e30"}, "--yaw = 1e30"},
         {{"render", "-o", "a.png", "-o", "b.png"}, "option -o given twice (a.png and b.png)"},
+        {{"render", "-o", "a.png", "--output", "b.png"}, "name the output twice"},
         {{"tone", "--distances", "1,1e-300"}, "--distances: 1e-300"},
         {{"render", "--device", "-1"}, "--device = -1"},
         {{"render", "--device", "4294967296"}, "--device = 4294967296"},

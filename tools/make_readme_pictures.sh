@@ -2,13 +2,13 @@
 # The README's pictures of vector and print output, from the project's own default scene
 # (assets/blobby.glb; no shared models): the screen image, its SVG rasterised, and the plot order
 # (the SVG with the pen-up moves in light red), into docs/images/.
-# Usage: tools/make_readme_pictures.sh [STIPPLE_EXECUTABLE]   (default: build/stipple)
+# Usage: tools/make_readme_pictures.sh [STIPPLE_EXECUTABLE]   (default: build-release/stipple, as the README builds it)
 # Needs rsvg-convert (librsvg2-bin). The same command always writes the same pictures.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$STIPPLE_ROOT"
-stipple="${1:-build/stipple}"
-[ -x "$stipple" ] || { echo "make_readme_pictures.sh: $stipple is not built (cmake --build build --target stipple)" >&2; exit 1; }
+stipple="${1:-build-release/stipple}"
+[ -x "$stipple" ] || { echo "make_readme_pictures.sh: $stipple is not built (cmake --build build-release --target stipple)" >&2; exit 1; }
 command -v rsvg-convert >/dev/null || { echo "make_readme_pictures.sh: rsvg-convert is missing (apt-get install librsvg2-bin)" >&2; exit 1; }
 out=docs/images
 mkdir -p "$out"

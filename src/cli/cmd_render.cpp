@@ -132,6 +132,8 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     if (args.positionals().size() > 1) fail("render takes at most one MODEL or SCENE.json (see stipple --help)");
+    if (args.has("-o") && args.has("--output"))
+        fail("-o " + args.get("-o", "") + " and --output " + args.get("--output", "") + " name the output twice: give one");
     const std::string output = args.get("--output", args.get("-o", "stipple.png"));
     // -o x.svg, x.pdf or x.csv: the frame's visible stipples and lines as vector output.
     const bool vector = plot::is_plot_path(output);

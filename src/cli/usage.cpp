@@ -70,6 +70,7 @@ Render options:
                           fixed (default auto)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
+  --verbose               print the device chosen
   --frames N              render N frames: an orbit (--orbit) or the scene's camera_path sampled at
                           N evenly spaced points (a camera_path alone gives one frame per keyframe)
   --orbit DEG             turn the camera by DEG in total around the scene's centre, DEG*i/N at
@@ -175,7 +176,8 @@ Info options:
 Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
 reopened with the same generation parameters skips generation (~4-5 bytes per stipple, checked
 when read; a damaged entry is reported and regenerated)
-  --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else ~/.cache/stipple/stipples)
+  --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
+                          $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (default 1G); the least recently used
                           entries are removed beyond it
 
@@ -212,7 +214,10 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
                           the paper's columns (without the contours, borders and creases columns)
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
-  --width N --height N (default 1280 x 1024)  --device N  --models-dir DIR  --cache-dir DIR
+  --width N --height N (default 1280 x 1024)  --device N  --list-devices
+  --models-dir DIR        where the scans are (default: $STIPPLE_SHARED_MODELS, else ../shared/models)
+  --cache-dir DIR         where the models derived from them are kept (not the stipple cache;
+                          default: $STIPPLE_CACHE_DIR/bench-models, else the build folder's bench-models)
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
                           not run when --models names rows, unless this is given)
   --animated-only         the animated row alone
@@ -236,6 +241,7 @@ Environment:
                           the build folder's bench-models); the stipple cache is
                           $STIPPLE_CACHE_DIR/stipples (see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
+  STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory free: how
                           a smaller GPU refuses an object too big for it, tried on a big one
   STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
