@@ -155,6 +155,38 @@ TEST(ExportPolylines, FoldsAlongACurveStayOnIt) {
     EXPECT_LT(total_length(lines), 1.5 * 61.5 * 6.0) << "most of the fold-backs are still drawn once";
 }
 
+// Folds a pixel apart, beyond the merge's quarter pixel but within the stroke's width: the spot's contour
+// at 640x512 went (249.8,247.9) -> (256.4,243.4) -> (250.9,247.7) -> (256.9,241.7), a Z drawn three times
+// (13 such turns on the spot, 43 on the bunny seen from below, until 2026-12-04). Unfolded, the stroke
+// takes the straight line over the fold; ends that turn back over their stroke are dropped; what a
+// stroke draws beyond its width, a sharp V or a spike that goes elsewhere, stays.
+TEST(ExportPolylines, FoldsWithinTheStrokesWidthAreDrawnOnce) {
+    auto length = [](const Polyline& line) { return total_length(std::vector<Polyline>{line}); };
+    const Polyline z{{{249.8, 247.9}, {256.4, 243.4}, {250.9, 247.7}, {256.9, 241.7}, {270.0, 230.0}}, false};
+    const Polyline flat = unfold(z, 1.2);
+    EXPECT_LE(flat.points.size(), 3u);
+    EXPECT_EQ(flat.points.front(), z.points.front());
+    EXPECT_EQ(flat.points.back(), z.points.back());
+    EXPECT_NEAR(length(flat), glm::length(z.points.back() - z.points.front()), 0.5) << "straight over the fold";
+    // The same Z with its arms 3 px apart is drawn as it is: a stroke 2.4 px wide shows both.
+    const Polyline wide{{{0, 0}, {7, 0}, {1, 3}, {7, 3}, {20, 3}}, false};
+    EXPECT_EQ(unfold(wide, 1.2).points, wide.points);
+    // A sharp V, and a spike out and back that then goes on elsewhere.
+    const Polyline v{{{0, 0}, {10, 0}, {0, 4}}, false};
+    EXPECT_EQ(unfold(v, 1.2).points, v.points);
+    const Polyline spike{{{0, 0}, {10, 0}, {5, 0.5}, {5, 20}}, false};
+    EXPECT_EQ(unfold(spike, 1.2).points, spike.points);
+    // An end turning back over its stroke within the width is dropped, at either end.
+    const Polyline tails{{{3, 0.5}, {0, 0}, {10, 0}, {20, 0}, {16, 0.6}}, false};
+    EXPECT_EQ(unfold(tails, 1.2).points, (std::vector<glm::dvec2>{{0, 0}, {10, 0}, {20, 0}}));
+    // An end that turns back past the stroke's start: the way back covers the way out, which goes.
+    const Polyline past{{{0, 0}, {10, 0}, {-3, 0.5}}, false};
+    EXPECT_EQ(unfold(past, 1.2).points, (std::vector<glm::dvec2>{{10, 0}, {-3, 0.5}}));
+    // A closed square is left as it is.
+    const Polyline square{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, true};
+    EXPECT_EQ(unfold(square, 1.2).points, square.points);
+}
+
 TEST(ExportPolylines, JunctionsKeepStraightStrokes) {
     // A plus: two strokes, each straight through the centre.
     const glm::dvec2 c(50, 50);

@@ -116,7 +116,11 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segmen
         if (const auto piece = clip_to_frame(glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b), drawing.width_px,
                                              drawing.height_px))
             pieces.push_back(*piece);
-    for (Polyline& line : chain_edges(merge_segments(pieces, options.merge))) {
+    // A fold within the stroke's own width is drawn once (unfold): half the width, and the merge's
+    // tolerance for where the frame put each piece.
+    const double fold_px = 0.5 * layer.stroke_mm / plan.layout.mm_per_px + options.merge.collinear_px;
+    for (Polyline line : chain_edges(merge_segments(pieces, options.merge))) {
+        line = unfold(line, fold_px);
         for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
     }
