@@ -52,6 +52,15 @@ bool sample_visible(vec2 px, float z) {
     return surface >= 1.0 || z <= surface + kDepthToleranceFloat;
 }
 
+// The depth pass's window depth at `px` (1 where no surface covers it; 2 off the image).
+float surface_depth(vec2 px) {
+    ivec2 p = ivec2(floor(px));
+    ivec2 size = ivec2(frame.viewport.xy);
+    if (p.x < 0 || p.y < 0 || p.x >= size.x || p.y >= size.y) return 2.0;
+    uint word = texelFetch(scene_depth_texels, int(uint(p.y) * uint(size.x) + uint(p.x))).x;
+    return kDepthUnorm24 ? float(word & 0xFFFFFFu) / 16777215.0 : uintBitsToFloat(word);
+}
+
 void append_piece(vec2 a, vec2 b, uint edge, uint kind) {
     uint slot = atomicAdd(pieces.vertex_count, 6u) / 6u;
     if (slot >= pieces.capacity) return;  // counted, not stored: the read-back reports the overflow
@@ -85,9 +94,17 @@ const float kBridgePx = 3.5;
 // mesh's contour zig-zags, and on the concave side of each zig a whole edge lies a little behind the
 // next front polygon in (whose plane passes in front of it), one triangle edge long: more than any
 // bridge, and the outline of a smooth torus, with nothing in front of it, broke into strokes that moved
-// from view to view (until 2026-12-04). Beside the line on that side lies what the fold shows behind it
-// (the paper, or a surface farther away); a real occluder covers that pixel too.
+// from view to view (until 2026-12-04). Beside the line on the side away from the polygon facing away
+// (at a contour both polygons project to the same side: the fold) lies what the fold shows behind it:
+// the paper, or a surface farther away. Only where what hides the sample lies within a polygon's depth of
+// the line (the contour polygon's own depth span, the one facing away: the next polygon in, not another
+// part): a contour running just inside a nearer part's outline (a shell's inner wall) stays hidden.
 const float kContourSidePx = 1.5;
+// The margin, in depth spans of the polygon facing away (its centre's window depth from the edge's): 1.5
+// closes a torus's outline at every yaw tried, where 1 left a gap; each more lets more of a shell's inner
+// wall through (a sphere inside another 0.8% larger, its contour 0.8 px inside: about 34% of the hidden
+// contour drawn at 1.5, 41% at 2, 55% at 3, all of it without the margin, 7% without the side test).
+const float kSideDepthSpans = 1.5;
 
 void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
     mat4 model_view_proj = object.model_view_proj;
@@ -105,6 +122,7 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
     float length_px = distance(s0, s1);
     if (!(length_px < 1e6)) return;  // not finite: degenerate projection
     vec2 away_px = vec2(0.0);  // (0, 0): the line alone is tested
+    float side_margin = 0.0;   // how far behind what hides it a sample may lie for the side test
     if (kind == kLineKindContour && length_px > 0.0) {
         vec4 ca = model_view_proj * vec4(away_point, 1.0);
         if (ca.w > 0.0) {
@@ -112,6 +130,7 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
             vec2 across = vec2(s0.y - s1.y, s1.x - s0.x) / length_px;
             float side = dot(sa - s0, across);
             if (side != 0.0) away_px = -sign(side) * kContourSidePx * across;
+            side_margin = kSideDepthSpans * abs(ca.z / ca.w - 0.5 * (n0.z + n1.z));
         }
     }
     uint steps = clamp(uint(ceil(length_px)), 1u, kMaxSteps);
@@ -129,7 +148,9 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
         float tested = clamp(u, trusted_from, trusted_to);
         vec2 at = mix(s0, s1, tested);
         float z = mix(n0.z, n1.z, tested);
-        bool visible = sample_visible(at, z) || (away_px != vec2(0.0) && sample_visible(at + away_px, z));
+        bool visible = sample_visible(at, z);
+        if (!visible && away_px != vec2(0.0) && z - surface_depth(at) <= side_margin)
+            visible = sample_visible(at + away_px, z);
         if (!visible) {
             if (run > 0u && !gap) end = u - 0.5 * step, gap = true;
             continue;

@@ -9,6 +9,9 @@
 #include <tuple>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+#include <glm/geometric.hpp>
+
 #include "anim/deform_cpu.hpp"
 #include "anim/describe.hpp"
 #include "anim/gltf_probe.hpp"
@@ -123,6 +126,68 @@ TEST(AnimLoading, RestMeshIsTheRestPose) {
     hidden.doc["nodes"][1]["scale"] = {0.0, 0.0, 0.0};
     const std::string hidden_path = write_rig(hidden, "anim_load_tube_hidden", "hidden");
     EXPECT_EQ(load_animated_model(hidden_path).rest.positions, load_mesh_for_drawing(hidden_path).positions);
+}
+
+// A curved sheet made two-sided by a reversed copy of its triangles on the same vertices, without
+// normals, as a .glb; with `animated`, its node turns about y over a second.
+std::string two_sided_sheet(bool animated, const std::string& folder) {
+    GltfBuilder b;
+    std::vector<float> positions;
+    std::vector<uint16_t> indices;
+    const int n = 6;
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x) {
+            const float u = float(x) / n - 0.5f, v = float(y) / n - 0.5f;
+            positions.insert(positions.end(), {u, v, 0.4f * u * u});
+        }
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const uint16_t a = uint16_t(y * (n + 1) + x), c = uint16_t(a + n + 2), d = uint16_t(a + n + 1);
+            indices.insert(indices.end(), {a, uint16_t(a + 1), c, a, c, d});
+        }
+    const size_t one_side = indices.size();
+    for (size_t t = 0; t < one_side; t += 3) indices.insert(indices.end(), {indices[t], indices[t + 2], indices[t + 1]});
+    const int p = b.add_floats(positions, "VEC3");
+    const int i = b.add_uint16(indices, "SCALAR");
+    b.add("meshes", {{"primitives", nlohmann::json::array({{{"attributes", {{"POSITION", p}}}, {"indices", i}}})}});
+    b.add("nodes", {{"mesh", 0}});
+    b.add("scenes", {{"nodes", nlohmann::json::array({0})}});
+    b.doc["scene"] = 0;
+    if (animated) {
+        const int times = b.add_floats({0.0f, 1.0f}, "SCALAR");
+        const int turns = b.add_floats({0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.7071068f, 0.0f, 0.7071068f}, "VEC4");
+        b.add("animations", {{"samplers", nlohmann::json::array({{{"input", times}, {"output", turns}}})},
+                             {"channels", nlohmann::json::array({{{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}}})}});
+    }
+    return write_rig(b, folder, animated ? "sheet_animated" : "sheet");
+}
+
+// The loader computes a glTF primitive's missing normals itself; they used to count as the file's, so a
+// two-sided sheet on shared vertices kept normals that cancelled, and the winding repair then turned its
+// back faces to them (it drew nothing from behind, until 2026-12-04). Computed normals are now the
+// loader's, the shared vertices are split as for OBJ, and the animated loader, whose skin and morph data
+// are per vertex of the file, loads the same sheet without the split (it failed with "the animation
+// data has 49 vertices, the static mesh 98").
+TEST(AnimLoading, ATwoSidedSheetWithoutNormalsLoadsStaticAndAnimated) {
+    const Mesh sheet = load_mesh(two_sided_sheet(false, "anim_two_sided_sheet"));
+    ASSERT_EQ(sheet.triangle_count(), 144u);
+    EXPECT_TRUE(sheet.normals_computed);
+    EXPECT_EQ(sheet.winding.parts_turned_to_normals, 0u);
+    EXPECT_EQ(sheet.vertex_count(), 98u);  // every vertex split: its sides each have their own
+    size_t facing_back = 0;
+    for (size_t t = 0; t < sheet.triangle_count(); ++t) {
+        const glm::vec3 a = sheet.positions[sheet.indices[3 * t]], b = sheet.positions[sheet.indices[3 * t + 1]],
+                        c = sheet.positions[sheet.indices[3 * t + 2]];
+        const glm::vec3 face = glm::normalize(glm::cross(b - a, c - a));
+        facing_back += face.z < 0.0f;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_GT(glm::dot(sheet.normals[sheet.indices[3 * t + k]], face), 0.9f) << "triangle " << t << " corner " << k;
+    }
+    EXPECT_EQ(facing_back, 72u) << "half the triangles face each way, as in the file";
+    const AnimatedModel animated = load_animated_model(two_sided_sheet(true, "anim_two_sided_sheet_animated"));
+    EXPECT_TRUE(animated.is_animated());
+    EXPECT_EQ(animated.rest.triangle_count(), 144u);
+    EXPECT_EQ(animated.rest.vertex_count(), 49u) << "the file's vertices, unsplit";
 }
 
 TEST(AnimLoading, StaticGltfLoadsWithNothingToAnimate) {

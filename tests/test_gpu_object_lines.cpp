@@ -245,6 +245,30 @@ TEST_F(ObjectLines, ASmoothOutlineIsUnbrokenFromEveryView) {
     }
 }
 
+// The side test above must not show a contour that a nearer part hides: a sphere inside another, its
+// outline just inside the outer one's, stays mostly hidden (all of it was drawn before the depth margin,
+// review of 2026-12-04), and one well inside it stays wholly hidden.
+TEST_F(ObjectLines, TheSideTestKeepsAnInnerWallHidden) {
+    const VkExtent2D extent{320, 256};
+    auto inner_contour_px = [&](float inner_radius) {
+        Mesh shell = make_icosphere(4, 1.0f);
+        const size_t outer_vertices = shell.vertex_count();
+        append_mesh(shell, make_icosphere(4, inner_radius));
+        test::Prepared prepared = test::prepare(shell, line_params());
+        Lines lines = render_lines(*context, prepared, line_params(), set_contours, extent, 0.0f, 20.0f);
+        double inner = 0.0, outer = 0.0;
+        for (const auto& [edge, drawn] : piece_edges(prepared.mesh, lines.pieces))
+            (edge.first >= outer_vertices ? inner : outer) += drawn.length_px;
+        std::printf("inner sphere %.3f: contour drawn %.1f px of the inner, %.1f px of the outer\n", inner_radius, inner, outer);
+        return std::pair(inner, outer);
+    };
+    const auto [thin_inner, thin_outer] = inner_contour_px(0.992f);
+    const auto [deep_inner, deep_outer] = inner_contour_px(0.9f);
+    EXPECT_LT(thin_inner, 0.5 * thin_outer) << "a hidden inner wall drawn as a second outline";
+    EXPECT_LT(deep_inner, 1.0) << "a contour well behind a nearer surface drawn";
+    EXPECT_GT(deep_outer, 500.0);
+}
+
 // The mesh with every triangle's corners its own (a triangle soup, as a glTF primitive without indices).
 Mesh triangle_soup(const Mesh& mesh) {
     Mesh soup = mesh;

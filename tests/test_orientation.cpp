@@ -164,11 +164,37 @@ TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
     EXPECT_EQ(cube.winding.parts_turned_to_normals, 1u);
     EXPECT_EQ(cube.winding.normals_turned, 0u);
     EXPECT_EQ(facing_inward(cube, glm::dvec3(0.5)), 0u);
-    // A lone quad wound against its normal (it drew nothing seen from the side its normal faces).
+    // A lone quad wound against its normal says nothing about which is wrong: its winding stays.
     write_file((dir / "quad.obj").string(), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 4//1 3//1 2//1\n");
     const Mesh quad = load_mesh((dir / "quad.obj").string());
-    EXPECT_EQ(quad.winding.parts_turned_to_normals, 1u);
-    for (size_t t = 0; t < quad.triangle_count(); ++t) EXPECT_GT(face_normal(quad, t).z, 0.0) << t;
+    EXPECT_EQ(quad.winding.parts_turned_to_normals, 0u);
+    for (size_t t = 0; t < quad.triangle_count(); ++t) EXPECT_LT(face_normal(quad, t).z, 0.0) << t;
+    // A bowl wound outward with normals inward (an open scan whose normals are what is wrong): the
+    // normals contradict all of the model, so they are not followed (it was turned inside out by them).
+    auto bowl_text = [](const Mesh& bowl, float normal_sign) {
+        std::string text;
+        for (size_t v = 0; v < bowl.vertex_count(); ++v) {
+            const glm::vec3 p = bowl.positions[v], n = normal_sign * bowl.normals[v];
+            text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+            text += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+        }
+        for (size_t t = 0; t < bowl.triangle_count(); ++t) {
+            text += "f";
+            for (int k = 0; k < 3; ++k)
+                text += " " + std::to_string(bowl.indices[3 * t + k] + 1) + "//" + std::to_string(bowl.indices[3 * t + k] + 1);
+            text += "\n";
+        }
+        return text;
+    };
+    {
+        Mesh outward = test::make_open_hemisphere(48, 12);
+        compute_vertex_normals(outward);
+        ASSERT_GT(signed_volume(outward), 0.0);
+        write_file((dir / "bowl_normals_in.obj").string(), bowl_text(outward, -1.0f));
+        const Mesh kept = load_mesh((dir / "bowl_normals_in.obj").string());
+        EXPECT_EQ(kept.winding.triangles_turned, 0u);
+        EXPECT_GT(signed_volume(kept), 0.0);
+    }
     // A bowl wound toward its hollow with normals that agree (a scan inside out, normals included): the
     // volume turns it, normals and all.
     Mesh bowl = test::make_open_hemisphere(48, 12);

@@ -185,18 +185,30 @@ bool AnimatedModel::is_animated() const {
     return std::any_of(animations.begin(), animations.end(), [](const Animation& a) { return !a.channels.empty(); });
 }
 
+namespace {
+
+// The static loader's options for the rest mesh: no vertex of the file split (its skin and morph data are
+// per vertex; a two-sided sheet's split vertices made the load fail).
+LoadOptions rest_mesh_options(const LoadOptions& options) {
+    LoadOptions rest = options;
+    rest.split_two_sided_vertices = false;
+    return rest;
+}
+
+}  // namespace
+
 AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options) {
     require_gltf_name(path);
     // The static loader decides the rest mesh (its checks, normals and orientation).
     tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh(path, options, gltf);
+    const Mesh file_order = load_gltf_mesh(path, rest_mesh_options(options), gltf);
     return build_animated_model(path, file_order, gltf, options);
 }
 
 AnimatedModel load_animated_model_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
     require_gltf_name(name);
     tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, options, gltf);
+    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, rest_mesh_options(options), gltf);
     return build_animated_model(name, file_order, gltf, options);
 }
 

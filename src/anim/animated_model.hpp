@@ -111,7 +111,9 @@ struct AnimatedModel {
     // The rest mesh: the same triangles and vertex order as load_mesh_for_drawing(source), so stipples
     // generated on either stay valid on the other; its positions and normals too, unless the file's rest
     // pose (skins and default morph weights applied) differs from the static loader's placement, where
-    // they are the rest pose's (and a face's winding follows the rest pose's mirroring).
+    // they are the rest pose's (and a face's winding follows the rest pose's mirroring). One exception: the
+    // vertices a two-sided sheet's sides share stay one here (LoadOptions::split_two_sided_vertices), where
+    // the static loader splits them.
     Mesh rest;
     // Per rest vertex, in the space its influences expect (bind space, or the mesh node's own space).
     std::vector<glm::vec3> bind_positions;

@@ -223,6 +223,7 @@ private:
             }
         } else {
             compute_vertex_normals(part);  // per primitive, so every part has a full set
+            mesh_.normals_computed = true;  // not the file's: loading computes them all again (load_mesh.cpp)
         }
         append_mesh(mesh_, part);
     }

@@ -60,10 +60,14 @@ Mesh parse(Format format, const std::string& name, std::string_view bytes, const
 
 // What every format shares once its parser is done: normals, validation, repeated faces dropped, one
 // winding per part.
-Mesh finish(Mesh mesh, const std::string& name) {
+Mesh finish(Mesh mesh, const std::string& name, const LoadOptions& options) {
     mesh.source = name;
     if (mesh.indices.empty()) fail_file(name, "the model has no triangles");
-    const bool file_normals = normals_usable(mesh);
+    // Normals a reader computed are not the file's: they say nothing about which way a face looks, and
+    // they are computed again once the winding is repaired (a glTF sheet whose computed normals cancelled
+    // had its back faces turned to them, until 2026-12-04).
+    const bool file_normals = normals_usable(mesh) && !mesh.normals_computed;
+    mesh.normals_computed = !file_normals;
     if (file_normals) {
         for (glm::vec3& n : mesh.normals) n = glm::vec3(glm::normalize(glm::dvec3(n)));
     } else {
@@ -81,7 +85,8 @@ Mesh finish(Mesh mesh, const std::string& name) {
     mesh.winding = orient_consistently(mesh, corners, file_normals);
     // Computed normals followed the file's winding (where it was mixed they cancelled out), counted
     // repeated faces again, and summed the two sides of a two-sided sheet to nothing.
-    const size_t split = file_normals ? 0 : split_vertices_between_opposite_sides(mesh);
+    // Not for a model that deforms: its skin and morph data are per vertex of the file.
+    const size_t split = file_normals || !options.split_two_sided_vertices ? 0 : split_vertices_between_opposite_sides(mesh);
     if (!file_normals && (mesh.winding.triangles_turned > 0 || mesh.duplicates_dropped > 0 || split > 0))
         compute_vertex_normals(mesh);
     if (file_normals) mesh.winding.normals_turned = turn_normals_to_faces(mesh);
@@ -109,7 +114,7 @@ Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     const Format format = format_of(path);
     const std::string bytes = read_file(path);
     const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
-    return finish(parse(format, path, bytes, &base_dir, options), path);
+    return finish(parse(format, path, bytes, &base_dir, options), path, options);
 }
 
 Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document) {
@@ -122,12 +127,12 @@ Mesh load_gltf_mesh_from_bytes(const std::string& name, std::string_view bytes, 
                                const LoadOptions& options, tinygltf::Model& document) {
     if (format_of(name) != Format::gltf) fail_file(name, "expected a glTF file (.gltf or .glb)");
     if (bytes.empty()) fail_file(name, "file is empty");
-    return finish(parse_gltf(name, bytes, base_dir, options, &document), name);
+    return finish(parse_gltf(name, bytes, base_dir, options, &document), name, options);
 }
 
 Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
     if (bytes.empty()) fail_file(name, "file is empty");
-    return finish(parse(format_of(name), name, bytes, nullptr, options), name);
+    return finish(parse(format_of(name), name, bytes, nullptr, options), name, options);
 }
 
 Mesh load_obj(const std::string& path, const LoadOptions& options) { return parse_obj(path, read_file(path), options); }

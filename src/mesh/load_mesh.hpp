@@ -16,6 +16,9 @@ struct LoadOptions {
     // and huge allocations). The file size also bounds every count: a count is refused when the
     // file cannot possibly hold that many elements.
     uint64_t max_elements = 200'000'000;
+    // Split the vertices a two-sided sheet's sides share (split_vertices_between_opposite_sides). Off for
+    // the rest mesh of an animated model, whose skin and morph data are per vertex of the file.
+    bool split_two_sided_vertices = true;
 };
 
 // Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result

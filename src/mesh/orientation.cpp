@@ -221,8 +221,12 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
         f.unsigned_volume += std::abs(volume);
     }
     // An open part whose faces the file's normals clearly contradict (area-weighted mean cosine below -1/2)
-    // follows them: a loose panel of an export wound against the rest, which no volume can tell. Where they
-    // agree the volume still decides: a scan's normals may be as inside out as its winding (the horse's are).
+    // follows them, where the file's normals clearly agree with more of the open parts' area than they
+    // contradict: a loose panel of an export wound against the rest, which no volume can tell. Where the
+    // normals contradict most of it, they are what is wrong (an open scan wound outward with its normals
+    // inward was turned inside out by them, until the review of 2026-12-04), and a lone part says nothing;
+    // the volume decides those. Where they agree, the volume still decides too: a scan's normals may be as
+    // inside out as its winding (the horse's are).
     std::vector<uint8_t> decided_by_normals(repair.parts, 0);
     if (normals_from_file && mesh.normals.size() == mesh.positions.size()) {
         std::vector<double> agreement(repair.parts, 0.0);
@@ -238,7 +242,13 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
             const double normal_length = glm::length(normal);
             if (normal_length > 0.0) agreement[part[t]] += 0.5 * glm::dot(face, normal) / normal_length;
         }
+        double agreeing = 0.0, contradicted = 0.0;  // open area whose normals clearly agree, or contradict
         for (size_t p = 0; p < repair.parts; ++p) {
+            if (figures[p].closed || !(figures[p].area > 0.0)) continue;
+            if (agreement[p] > 0.5 * figures[p].area) agreeing += figures[p].area;
+            if (agreement[p] < -0.5 * figures[p].area) contradicted += figures[p].area;
+        }
+        for (size_t p = 0; p < repair.parts && agreeing > contradicted; ++p) {
             if (figures[p].closed || !(figures[p].area > 0.0)) continue;
             if (agreement[p] < -0.5 * figures[p].area) {
                 invert[p] ^= 1, ++repair.parts_turned_outward, ++repair.parts_turned_to_normals;

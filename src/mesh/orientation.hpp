@@ -34,8 +34,9 @@ double signed_volume(const Mesh& mesh);
 //    negative from its own box), and a flat sheet's is zero, so it keeps its majority's winding.
 //    A closed part inside another (the wall of a cavity) is turned outward too; it is hidden in any view.
 //    With normals_from_file, an open part whose faces the file's normals clearly contradict is turned to
-//    them first (a loose panel of an export wound against the rest: no volume tells which way it faces);
-//    the parts they agree with, or say nothing clear about, are left to the volume.
+//    them first, where the normals clearly agree with more of the open parts' area than they contradict
+//    (a loose panel of an export wound against the rest: no volume tells which way it faces); otherwise
+//    the normals are what is wrong, and the volume decides, as for the parts they agree with.
 // Only the corner order changes (corners 1 and 2 swap): positions, normals and vertex order stay, so the
 // caller decides what to do with the normals (load_mesh recomputes computed ones and turns file ones to
 // agree with their faces). Deterministic; indices beyond the positions are skipped (validate_mesh reports
