@@ -32,6 +32,18 @@ const Regression kRegressions[] = {
     {"ply_normal_length_overflows_float.ply", ""},
     // A number beyond double range made nlohmann::json throw out_of_range, which escaped parse_scene.
     {"scene_number_overflow_1e390.json", "not valid JSON: number overflow parsing '1e390'"},
+    // Found by a longer campaign and by reading the readers (review of 2026-12-04). An attribute name with a
+    // line break was quoted raw in the message (fail_file now makes every message one line).
+    {"gltf_draco_attribute_name_with_newline.glb",
+     "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: attributes.X; Y: the primitive has no X; Y attribute"},
+    {"gltf_instancing_attribute_name_with_newline.gltf",
+     "nodes[0].extensions.EXT_mesh_gpu_instancing.attributes._X; Y: 1 instances, but TRANSLATION has 3"},
+    // 100 compressed views sharing one source range, one placed 1.6 GB out: the placeholder buffer was
+    // reserved at 1.6 GB before any view was decoded.
+    {"gltf_meshopt_view_far_out_reserved_1_6GB.gltf",
+     "buffers[1]: its compressed views reach byte 1600000004, beyond the 800 bytes they decode to"},
+    // A 22-byte GLB whose JSON chunk claims 4 GiB (the animation probe reserved it; the loader refuses it).
+    {"glb_json_chunk_longer_than_the_file.glb", "GLB header: length 4294967280 is more than the file's 22 bytes"},
     // A field name with a backspace ("o\bj_y") was quoted raw, breaking the one-line message.
     {"scene_control_character_in_field_name.json",
      "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},

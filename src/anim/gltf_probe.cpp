@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -21,7 +22,12 @@ nlohmann::json read_json(const std::string& path) {
     std::string json;
     uint32_t header[5] = {};  // magic, version, length; the first chunk's length and type
     if (in.read(reinterpret_cast<char*>(header), sizeof header) && header[0] == kGlbMagic) {
-        if (header[4] != kGlbJsonChunk || header[3] > header[2]) return nlohmann::json(nlohmann::json::value_t::discarded);
+        // Against the file's real size, not only its header's: a 22-byte file claiming a 4 GiB chunk was
+        // given 4 GiB (found by review, 2026-12-04).
+        std::error_code ec;
+        const uintmax_t file_size = std::filesystem::file_size(path, ec);
+        if (ec || header[4] != kGlbJsonChunk || header[3] > header[2] || uintmax_t(header[3]) + sizeof header > file_size)
+            return nlohmann::json(nlohmann::json::value_t::discarded);
         json.resize(header[3]);
         if (!in.read(json.data(), std::streamsize(json.size()))) return nlohmann::json(nlohmann::json::value_t::discarded);
     } else {

@@ -12,7 +12,12 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
-// "<path>: <problem>", the shape of every input error.
+// `text` as one printable line: line breaks become "; ", other control characters '?'. Library messages
+// may span lines and quote file bytes.
+std::string one_line(const std::string& text);
+
+// "<path>: <problem>", the shape of every input error, made one printable line (a name read from the
+// file may hold a line break: a Draco or instancing attribute's did, found by fuzzing on 2026-12-04).
 [[noreturn]] void fail_file(const std::string& path, const std::string& problem);
 [[noreturn]] void fail(const std::string& message);
 

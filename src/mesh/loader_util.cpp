@@ -22,17 +22,5 @@ std::string read_file(const std::string& path) {
     return data;
 }
 
-std::string one_line(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '\n' || c == '\r') {
-            if (!out.empty() && out.back() != ' ') out += "; ";
-        } else {
-            out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
-        }
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-    return out;
-}
 
 }  // namespace stipple
