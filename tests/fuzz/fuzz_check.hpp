@@ -25,7 +25,8 @@ inline void check_message(const stipple::Error& e, const std::string& name) {
         if (static_cast<unsigned char>(c) < 0x20) contract_broken("message is not one printable line: " + message);
     // An internal check names no problem of the file: a valid file the loaders disagree on (a two-sided sheet
     // the static loader split and the animated one did not, found by review on 2026-12-04) or a bug.
-    if (message.find(": internal") != std::string::npos) contract_broken("an internal check failed: " + message);
+    // (Right after the name only: a message may quote the file's bytes, which may read ": internal".)
+    if (message.rfind(name + ": internal", 0) == 0) contract_broken("an internal check failed: " + message);
 }
 
 // The promises of load_mesh (mesh.hpp): indices in range, finite positions, unit normals.
