@@ -66,22 +66,13 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
 
 size_t drop_duplicate_triangles(Mesh& mesh) { return drop_duplicate_triangles(mesh, weld_by_position(mesh.positions)); }
 
-namespace {
-
-// Each triangle rotated to start at its smallest welded corner, bucketed by that corner (a counting sort) and
-// sorted within its bucket by its other two corners, then by triangle: a repeat lies after its first, and a
-// copy wound the other way, (s, c, b) for (s, b, c), in the same bucket.
-struct RotatedTriangles {
+size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
+    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
+    // Each triangle rotated to start at its smallest corner, bucketed by that corner (a counting sort), so
+    // that a repeat lies in its first's bucket, after it.
     struct Rest {
         uint32_t second, third, triangle;
     };
-    std::vector<uint32_t> first;  // bucket of smallest corner v: [first[v], first[v + 1])
-    std::vector<Rest> rests;
-};
-
-RotatedTriangles rotate_and_bucket(const Mesh& mesh, std::span<const uint32_t> corner) {
-    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
-    using Rest = RotatedTriangles::Rest;
     auto rotated = [&](size_t t, uint32_t& smallest, Rest& rest) {
         const uint32_t* i = &mesh.indices[3 * t];
         if (i[0] >= n || i[1] >= n || i[2] >= n) return false;
@@ -91,39 +82,30 @@ RotatedTriangles rotate_and_bucket(const Mesh& mesh, std::span<const uint32_t> c
         else smallest = c, rest = {a, b, uint32_t(t)};
         return true;
     };
-    RotatedTriangles out;
-    out.first.assign(n + 1, 0);
+    std::vector<uint32_t> first(n + 1, 0);
     uint32_t smallest;
     Rest rest;
     for (size_t t = 0; t < triangles; ++t)
-        if (rotated(t, smallest, rest)) ++out.first[smallest + 1];
-    for (size_t v = 0; v < n; ++v) out.first[v + 1] += out.first[v];
-    out.rests.resize(out.first[n]);
-    std::vector<uint32_t> fill(out.first.begin(), out.first.end() - 1);
+        if (rotated(t, smallest, rest)) ++first[smallest + 1];
+    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    std::vector<Rest> buckets(first[n]);
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
     for (size_t t = 0; t < triangles; ++t)
-        if (rotated(t, smallest, rest)) out.rests[fill[smallest]++] = rest;
-    // Sorted per bucket (comparing every pair of a bucket took 8 s for one polygon of 100k corners fanned
-    // around its first corner).
+        if (rotated(t, smallest, rest)) buckets[fill[smallest]++] = rest;
+    // Each bucket sorted by its other two corners, then by triangle: a repeat follows its first. (Comparing
+    // every pair of a bucket took 8 s for one polygon of 100k corners fanned around its first corner.)
+    std::vector<uint8_t> repeat(triangles, 0);
+    size_t dropped = 0;
     const auto order = [](const Rest& x, const Rest& y) {
         return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
     };
-    for (size_t v = 0; v < n; ++v)
-        if (out.first[v + 1] - out.first[v] > 1)
-            std::sort(out.rests.begin() + out.first[v], out.rests.begin() + out.first[v + 1], order);
-    return out;
-}
-
-}  // namespace
-
-size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
-    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
-    const RotatedTriangles rotated = rotate_and_bucket(mesh, corner);
-    std::vector<uint8_t> repeat(triangles, 0);
-    size_t dropped = 0;
-    for (size_t v = 0; v < n; ++v)
-        for (uint32_t i = rotated.first[v] + 1; i < rotated.first[v + 1]; ++i)
-            if (rotated.rests[i].second == rotated.rests[i - 1].second && rotated.rests[i].third == rotated.rests[i - 1].third)
-                repeat[rotated.rests[i].triangle] = 1, ++dropped;
+    for (size_t v = 0; v < n; ++v) {
+        if (first[v + 1] - first[v] < 2) continue;
+        std::sort(buckets.begin() + first[v], buckets.begin() + first[v + 1], order);
+        for (uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
+            if (buckets[i].second == buckets[i - 1].second && buckets[i].third == buckets[i - 1].third)
+                repeat[buckets[i].triangle] = 1, ++dropped;
+    }
     if (dropped == 0) return 0;
     size_t kept = 0;
     for (size_t t = 0; t < triangles; ++t) {
@@ -137,12 +119,15 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
 
 size_t split_vertices_between_opposite_sides(Mesh& mesh) {
     const size_t n = mesh.positions.size(), triangles = mesh.triangle_count();
-    auto face = [&](size_t t) {  // twice the area along the normal
-        const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
-        const glm::dvec3 f = glm::cross(glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - a,
-                                        glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - a);
-        return std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z) ? f : glm::dvec3(0.0);
-    };
+    // Each triangle's normal times twice its area; zero where it has none or refers beyond the vertices.
+    std::vector<glm::dvec3> faces(triangles, glm::dvec3(0.0));
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        if (i[0] >= n || i[1] >= n || i[2] >= n) continue;
+        const glm::dvec3 a(mesh.positions[i[0]]);
+        const glm::dvec3 f = glm::cross(glm::dvec3(mesh.positions[i[1]]) - a, glm::dvec3(mesh.positions[i[2]]) - a);
+        if (std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z)) faces[t] = f;
+    }
     auto in_range = [&](size_t t) {
         return mesh.indices[3 * t] < n && mesh.indices[3 * t + 1] < n && mesh.indices[3 * t + 2] < n;
     };
@@ -150,7 +135,7 @@ size_t split_vertices_between_opposite_sides(Mesh& mesh) {
     std::vector<glm::dvec3> largest(n, glm::dvec3(0.0));
     for (size_t t = 0; t < triangles; ++t) {
         if (!in_range(t)) continue;
-        const glm::dvec3 f = face(t);
+        const glm::dvec3 f = faces[t];
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.indices[3 * t + k];
             if (glm::dot(f, f) > glm::dot(largest[v], largest[v])) largest[v] = f;
@@ -159,7 +144,7 @@ size_t split_vertices_between_opposite_sides(Mesh& mesh) {
     std::vector<double> total(n, 0.0), along(n, 0.0), against(n, 0.0);
     for (size_t t = 0; t < triangles; ++t) {
         if (!in_range(t)) continue;
-        const glm::dvec3 f = face(t);
+        const glm::dvec3 f = faces[t];
         const double length = glm::length(f);
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.indices[3 * t + k];
@@ -192,7 +177,7 @@ size_t split_vertices_between_opposite_sides(Mesh& mesh) {
     // The faces turned away from the vertex's largest face move to its copy.
     for (size_t t = 0; t < triangles; ++t) {
         if (!in_range(t)) continue;
-        const glm::dvec3 f = face(t);
+        const glm::dvec3 f = faces[t];
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.indices[3 * t + k];
             if (v < n && other_side[v] != UINT32_MAX && glm::dot(f, largest[v]) < 0.0) mesh.indices[3 * t + k] = other_side[v];
