@@ -142,6 +142,17 @@ TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
         {"a flipped byte in the version", [&] { flip_byte(entry, 8); }},
         {"a truncated entry", [&] { fs::resize_file(entry, size - 7); }},
         {"a truncated header", [&] { fs::resize_file(entry, 100); }},
+        // A consistent header (sizes agreeing, hash recomputed) claiming 2^32 stipples over the same few
+        // compressed bytes: refused before 16 GiB is allocated for them.
+        {"a header claiming far more stipples than its bytes hold", [&] {
+             cache_format::Header header{};
+             std::memcpy(&header, good.data(), sizeof(header));
+             header.stipples = uint64_t(1) << 32;
+             header.raw_bytes = header.triangles * 6 + header.stipples * 4;
+             header.header_hash = cache_format::hash_header(header);
+             std::fstream f(entry, std::ios::in | std::ios::out | std::ios::binary);
+             f.write(reinterpret_cast<const char*>(&header), sizeof(header));
+         }},
         // Last: restore() would wait on it. Opened, a FIFO would wait for a writer forever.
         {"a FIFO in its place (not a regular file)", [&] {
              fs::remove(entry);

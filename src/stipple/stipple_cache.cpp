@@ -28,6 +28,9 @@ namespace {
 
 using cache_format::Header;
 
+// How many times zstd may shrink a real entry's stipple places at most (they shrink about 1x).
+constexpr uint64_t kMostCompression = 16;
+
 uint64_t hash_bytes(uint64_t h, const void* data, size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
     uint64_t word = 0;
@@ -167,8 +170,16 @@ std::optional<StippleSet> load_cached_stipples(const std::filesystem::path& dir,
     if (ec || header.raw_bytes != raw_expected || header.stipples > (uint64_t(1) << 32) ||
         size != sizeof(Header) + header.compressed_bytes)
         return warn_damaged(path, "sizes"), std::nullopt;
+    // Each stipple's place is a pair of near-random 16-bit fractions, which zstd cannot shrink much (real
+    // entries hold 4-5 bytes a stipple): an entry claiming many times more stipples than its compressed bytes
+    // could hold is damaged or forged, and is refused before its claim is allocated (a 300-byte file with a
+    // consistent header otherwise asked for 16 GiB).
+    if (header.stipples * 4 > kMostCompression * header.compressed_bytes + 65536)
+        return warn_damaged(path, "sizes"), std::nullopt;
     std::vector<char> compressed(header.compressed_bytes);
     if (!in.read(compressed.data(), std::streamsize(compressed.size()))) return warn_damaged(path, "truncated"), std::nullopt;
+    if (ZSTD_getFrameContentSize(compressed.data(), compressed.size()) != header.raw_bytes)
+        return warn_damaged(path, "sizes"), std::nullopt;
     std::vector<unsigned char> raw(header.raw_bytes);
     const size_t got = ZSTD_decompress(raw.data(), raw.size(), compressed.data(), compressed.size());
     if (ZSTD_isError(got) || got != raw.size()) return warn_damaged(path, "checksum"), std::nullopt;
