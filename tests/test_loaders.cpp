@@ -363,6 +363,37 @@ TEST(GltfLoader, ExternalBufferFile) {
     EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
 }
 
+// External files are resolved once, by stipple, as the validator resolves them: '+' is itself (tinygltf read
+// it as a space), an absolute path stays absolute (tinygltf joined it to the folder, then tried the current
+// directory), a file longer than byteLength is read only that far (tinygltf read it whole, then refused it),
+// and images, which play no part, are never opened (a directory named as one read as 2^63 bytes and ended
+// in 'out of memory'; a FIFO waited for ever).
+TEST(GltfLoader, ExternalFilesAreTheOnesTheValidatorChecked) {
+    const auto dir = temp_dir("loaders_gltf_external_names");
+    ByteWriter w;
+    for (float v : {0, 0, 0, 1, 0, 0, 0, 1, 0}) w.put<float>(v);
+    const std::string bytes = w.bytes();
+    write_file(dir / "a+b.bin", bytes);
+    write_file(dir / "long.bin", bytes + std::string(1 << 20, '\x7f'));
+    std::filesystem::create_directories(dir / "picture.png");
+    const std::string rest =
+        R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],)"
+        R"("images":[{"uri":"picture.png"}],"textures":[{"source":0}])";
+    for (const std::string uri : {std::string("a+b.bin"), std::string("a%2Bb.bin"), (dir / "a+b.bin").string(), std::string("long.bin")}) {
+        SCOPED_TRACE(uri);
+        const Mesh m = load_mesh(write_file(dir / "tri.gltf", gltf_json(R"({"byteLength":36,"uri":")" + uri + "\"}", rest)));
+        ASSERT_EQ(m.triangle_count(), 1u);
+        EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
+    }
+    expect_load_error(write_file(dir / "empty.gltf", gltf_json(R"({"byteLength":0,"uri":"a+b.bin"})", rest)),
+                      "buffers[0].byteLength: expected a positive integer, got 0");
+    expect_load_error(
+        write_file(dir / "mime.gltf", gltf_json(R"({"byteLength":36,"uri":"data:application/x-foo;base64,AAAA"})", rest)),
+        "buffers[0].uri: a buffer's data: URI must be application/octet-stream or application/gltf-buffer in base64, got "
+        "'data:application/x-foo;base64'");
+}
+
 TEST(GltfLoader, NodeCycleIsAnError) {
     const auto dir = temp_dir("loaders_gltf_cycle");
     std::string json = one_triangle_gltf("4", 2);

@@ -1,8 +1,15 @@
 #include "mesh/gltf_document.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,7 +24,7 @@ namespace stipple {
 
 namespace {
 
-// Images play no part in stippling: skip decoding them (and any failure to).
+// Images play no part in stippling: skip decoding any left (and any failure to).
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
     return true;
 }
@@ -31,6 +38,92 @@ bool no_external_file(std::vector<unsigned char>*, std::string* err, const std::
 bool no_file_exists(const std::string&, void*) { return false; }
 std::string unexpanded(const std::string& path, void*) { return path; }
 bool no_file_written(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+// External buffers are read here, not by tinygltf: it would resolve their names its own way ('+' read as a
+// space, an absolute path joined to the folder, then looked up in the current directory) and read a file
+// whole before comparing its size with byteLength. Each one's uri is replaced with a name of ours that the
+// file callbacks below serve from these bytes; nothing else is opened.
+struct ExternalBuffers {
+    std::map<std::string, std::vector<unsigned char>> by_name;
+};
+
+std::string served_name(size_t buffer) { return "stipple-external-buffer-" + std::to_string(buffer); }
+
+std::string last_component(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+bool external_buffer_exists(const std::string& path, void* user) {
+    return static_cast<ExternalBuffers*>(user)->by_name.count(last_component(path)) > 0;
+}
+
+bool read_external_buffer(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    auto& buffers = static_cast<ExternalBuffers*>(user)->by_name;
+    const auto found = buffers.find(last_component(path));
+    if (found == buffers.end()) {
+        if (err) *err = "not an external buffer of this model";
+        return false;
+    }
+    *out = std::move(found->second);
+    return true;
+}
+
+// The first byteLength bytes of the file (the validator checked that it holds them; a longer file is read
+// only as far as the buffer goes).
+std::vector<unsigned char> read_buffer_file(const std::string& model, const std::string& where, const std::string& uri,
+                                            const std::filesystem::path& file, uint64_t length) {
+    const std::string named = where + ".uri: '" + one_line(uri.substr(0, 64)) + (uri.size() > 64 ? "...'" : "'");
+    const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);  // no wait on a FIFO
+    if (fd < 0) fail_file(model, named + " cannot be read: " + std::strerror(errno));
+    struct stat info {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || uint64_t(info.st_size) < length) {
+        ::close(fd);
+        fail_file(model, named + " is not a regular file of at least " + std::to_string(length) + " bytes");
+    }
+    std::vector<unsigned char> bytes(length);
+    size_t done = 0;
+    while (done < length) {
+        const ssize_t got = ::read(fd, bytes.data() + done, length - done);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) {
+            const std::string reason = got < 0 ? std::strerror(errno) : "the file ended early";
+            ::close(fd);
+            fail_file(model, named + " cannot be read: " + reason);
+        }
+        done += size_t(got);
+    }
+    ::close(fd);
+    return bytes;
+}
+
+// Takes every external buffer out of `doc` into `buffers`; true when the document changed.
+bool take_external_buffers(const std::string& model, nlohmann::json& doc, const std::filesystem::path& base_dir,
+                           ExternalBuffers& buffers) {
+    const auto list = doc.find("buffers");
+    if (list == doc.end() || !list->is_array()) return false;
+    bool changed = false;
+    for (size_t i = 0; i < list->size(); ++i) {
+        nlohmann::json& buffer = (*list)[i];
+        const auto uri = buffer.find("uri");
+        if (uri == buffer.end() || !uri->is_string()) continue;
+        const std::string text = uri->get<std::string>();
+        if (text.rfind("data:", 0) == 0) continue;
+        const uint64_t length = buffer.at("byteLength").get<uint64_t>();
+        const std::string name = served_name(i);
+        buffers.by_name[name] =
+            read_buffer_file(model, "buffers[" + std::to_string(i) + "]", text, external_buffer_path(base_dir, text), length);
+        *uri = name;
+        changed = true;
+    }
+    return changed;
+}
+
+// tinygltf's message, on one line and short: a data: URI it failed to decode is quoted whole (megabytes).
+std::string tinygltf_message(const std::string& text) {
+    const std::string line = one_line(text);
+    return line.size() <= 300 ? line : line.substr(0, 300) + "...";
+}
 
 }  // namespace
 
@@ -46,8 +139,13 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
     // load: the file goes to it rewritten.
     const MeshoptPlan meshopt = prepare_meshopt(doc, binary);
     const bool draco_stand_ins = prepare_draco(doc);
+    // Images play no part in stippling, and tinygltf would open and read every image file (a FIFO waited for
+    // ever, a directory read as 2^63 bytes): they are left out of what it parses.
+    const bool images_dropped = doc.erase("images") > 0;
+    ExternalBuffers external;
+    const bool buffers_taken = base_dir && take_external_buffers(path, doc, *base_dir, external);
     std::string rewritten;
-    if (!meshopt.placeholders.empty() || draco_stand_ins) {
+    if (!meshopt.placeholders.empty() || draco_stand_ins || images_dropped || buffers_taken) {
         rewritten = binary ? join_glb(doc.dump(), split_glb(path, bytes).bin) : doc.dump();
         if (rewritten.size() > UINT32_MAX) fail_file(path, "a glTF file of 4 GiB or more is not supported");
         bytes = rewritten;
@@ -55,15 +153,18 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&skip_image, nullptr);
-    if (!base_dir) loader.SetFsCallbacks({&no_file_exists, &unexpanded, &no_external_file, &no_file_written, nullptr});
+    if (base_dir)
+        loader.SetFsCallbacks({&external_buffer_exists, &unexpanded, &read_external_buffer, &no_file_written, &external});
+    else
+        loader.SetFsCallbacks({&no_file_exists, &unexpanded, &no_external_file, &no_file_written, nullptr});
     const std::string dir = base_dir ? base_dir->string() : std::string();
     tinygltf::Model model;
     std::string err, warn;
     const auto size = static_cast<unsigned int>(bytes.size());
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), size, dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
-    if (!ok) fail_file(path, "cannot read glTF: " + one_line(err.empty() ? warn : err));
-    if (!warn.empty()) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), one_line(warn).c_str());
+    if (!ok) fail_file(path, "cannot read glTF: " + tinygltf_message(err.empty() ? warn : err));
+    if (!warn.empty()) std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), tinygltf_message(warn).c_str());
     if (!meshopt.empty()) decode_meshopt(path, meshopt, model);
     const size_t draco_primitives = decode_draco(path, model);
     if (decoded) {

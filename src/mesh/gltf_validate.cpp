@@ -1,5 +1,6 @@
 #include "mesh/gltf_validate.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -62,9 +63,9 @@ constexpr Collection kCollections[] = {
 std::string percent_decoded(const std::string& uri) {
     std::string out;
     for (size_t i = 0; i < uri.size(); ++i) {
-        unsigned value = 0;
-        if (uri[i] == '%' && i + 2 < uri.size() && std::sscanf(uri.c_str() + i + 1, "%2x", &value) == 1) {
-            out += static_cast<char>(value);
+        const auto hex = [&](size_t at) { return at < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[at])); };
+        if (uri[i] == '%' && hex(i + 1) && hex(i + 2)) {
+            out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
             i += 2;
         } else {
             out += uri[i];
@@ -246,7 +247,7 @@ private:
     }
 
     // What a buffer's data can hold at most: the BIN chunk, the decoded data: URI, the external file.
-    // nullopt where only tinygltf can tell (a data: URI that is not base64), and for a placeholder buffer.
+    // nullopt for a placeholder buffer, which has none.
     std::optional<uint64_t> available(const json& b, const std::string& where, size_t i, std::string& holder) const {
         const json* uri = find(b, "uri");
         if (is_placeholder_buffer(b, i, glb_ != nullptr)) {
@@ -265,13 +266,17 @@ private:
         if (u.rfind("data:", 0) == 0) {
             const size_t comma = u.find(',');
             if (comma == std::string::npos) bad(at(where, "uri"), "a data: URI without ','");
-            if (comma < 7 || u.compare(comma - 7, 7, ";base64") != 0) return std::nullopt;
+            // The types glTF gives a buffer, in base64, are all tinygltf decodes (it takes any other for a file name).
+            const std::string type = u.substr(0, comma);
+            if (type != "data:application/octet-stream;base64" && type != "data:application/gltf-buffer;base64")
+                bad(at(where, "uri"), "a buffer's data: URI must be application/octet-stream or application/gltf-buffer in "
+                                      "base64, got " + shown(type));
             holder = "its data: URI";
             const uint64_t payload = u.size() - comma - 1;
             return payload / 4 * 3 + (payload % 4 ? 3 : 0);
         }
         if (!base_dir_) bad(at(where, "uri"), "external file " + shown(u) + " cannot be read: the model was not loaded from a file");
-        const std::filesystem::path path = *base_dir_ / percent_decoded(u);
+        const std::filesystem::path path = external_buffer_path(*base_dir_, u);
         std::error_code ec;
         const auto status = std::filesystem::status(path, ec);
         if (!std::filesystem::exists(status)) bad(at(where, "uri"), shown(u) + " not found (looked for " + shown(path.string()) + ")");
@@ -282,7 +287,8 @@ private:
 
     void buffer(const json& b, const std::string& where, size_t i) {
         name(b, where);
-        const uint64_t length = count(required(b, where, "byteLength"), at(where, "byteLength"));
+        // glTF's minimum, and tinygltf's: it refuses an empty external file or data: URI.
+        const uint64_t length = integer(required(b, where, "byteLength"), at(where, "byteLength"), 1, UINT64_MAX, "a positive integer");
         std::string holder;
         if (const std::optional<uint64_t> bytes = available(b, where, i, holder); bytes && length > *bytes)
             bad(at(where, "byteLength"), std::to_string(length) + " bytes, but " + holder + " holds only " + std::to_string(*bytes));
@@ -514,6 +520,10 @@ private:
 };
 
 }  // namespace
+
+std::filesystem::path external_buffer_path(const std::filesystem::path& base_dir, const std::string& uri) {
+    return base_dir / percent_decoded(uri);
+}
 
 json validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir) {
     GlbChunks glb;

@@ -28,4 +28,9 @@ namespace stipple {
 // external buffer is an error. Throws stipple::Error "<name>: <field>: <problem>". Returns the document.
 nlohmann::json validate_gltf(const std::string& name, std::string_view bytes, bool binary, const std::filesystem::path* base_dir);
 
+// The file an external buffer's uri names: percent-escapes decoded (RFC 3986: '+' stands for itself), relative
+// to `base_dir` (an absolute path stays as it is). The validator checks that file and the document reader reads
+// it, so both mean the same one.
+std::filesystem::path external_buffer_path(const std::filesystem::path& base_dir, const std::string& uri);
+
 }  // namespace stipple
