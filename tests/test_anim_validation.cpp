@@ -124,6 +124,13 @@ TEST(AnimValidation, SkinsAndMorphWeightsThatDoNotFit) {
     matrices.doc["skins"][0]["inverseBindMatrices"] = matrices.add_floats(one, "MAT4");
     expect_error(matrices, "bind_count", "skins[0].inverseBindMatrices: 1 matrices for 2 joints");
 
+    // A fourth row other than (0, 0, 0, 1), as all-zero matrices have: the skinned object vanished silently.
+    GltfBuilder zeros = rigs::bending_cylinder();
+    std::vector<float> two = one;
+    two.insert(two.end(), 16, 0.0f);
+    zeros.doc["skins"][0]["inverseBindMatrices"] = zeros.add_floats(two, "MAT4");
+    expect_error(zeros, "bind_row", "skins[0].inverseBindMatrices: matrix 1's fourth row is (0, 0, 0, 0); glTF requires (0, 0, 0, 1)");
+
     GltfBuilder weights = rigs::morphed_quad();
     weights.doc["nodes"][0]["weights"] = {0.25};
     expect_error(weights, "morph_weights", "nodes[0].weights: 1 weights for 2 morph targets");

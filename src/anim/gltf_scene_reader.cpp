@@ -12,6 +12,7 @@
 
 #include "anim/gltf_reading.hpp"
 #include "anim/trs.hpp"
+#include "core/printf_string.hpp"
 #include "core/error.hpp"
 #include "deform_types.h"
 #include "mesh/gltf_accessor.hpp"
@@ -139,7 +140,18 @@ private:
                 if (m.size() / 16 < skin.joints.size())
                     fail_file(path_, field + ".inverseBindMatrices: " + std::to_string(m.size() / 16) +
                                          " matrices for " + std::to_string(skin.joints.size()) + " joints");
-                for (size_t j = 0; j < skin.joints.size(); ++j) skin.inverse_bind[j] = glm::make_mat4(&m[16 * j]);
+                for (size_t j = 0; j < skin.joints.size(); ++j) {
+                    // glTF requires the fourth row (0, 0, 0, 1): another one (all zeros, as a broken exporter
+                    // writes) takes every vertex the joint moves to the camera's plane or to infinity, and the
+                    // object vanished without a word. Checked loosely, as exporters round.
+                    const float* row = &m[16 * j];
+                    if (std::abs(row[3]) > 1e-3f || std::abs(row[7]) > 1e-3f || std::abs(row[11]) > 1e-3f ||
+                        std::abs(row[15] - 1.0f) > 1e-3f)
+                        fail_file(path_, field + printf_string(".inverseBindMatrices: matrix %zu's fourth row is (%g, %g, %g, %g); "
+                                                               "glTF requires (0, 0, 0, 1)", j, double(row[3]), double(row[7]),
+                                                               double(row[11]), double(row[15])));
+                    skin.inverse_bind[j] = glm::make_mat4(row);
+                }
             }
             skin.first_slot = static_cast<uint32_t>(model_.palette.size());
             for (size_t j = 0; j < skin.joints.size(); ++j) add_slot(PaletteSlot{skin.joints[j], skin.inverse_bind[j]});
