@@ -2,6 +2,7 @@
 // the scans, or procedural spheres without them), the mesh operations behind it, the report writers,
 // and `stipple bench --quick` end to end (its figures are printed, never asserted against time).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -414,13 +415,30 @@ TEST(BenchCompare, SaysHowTheRunsDifferAndLeavesOutModelsOfOtherGeometry) {
     // The same run: nothing said.
     const bench::Comparison same = bench::compare_runs(bench::json_report(old_run), "old.json", bench::json_report(old_run));
     EXPECT_TRUE(same.settings.empty() && same.not_comparable.empty());
-    // A folder is not a results file.
+    // A folder is not a results file, nor a FIFO (read, it waited for a writer for ever).
     try {
         bench::read_results_file(test::temp_dir("bench_compare_folder").string());
         ADD_FAILURE() << "a folder was read";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
     }
+    const std::string fifo = (test::temp_dir("bench_compare_fifo") / "results.json").string();
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        bench::read_results_file(fifo);
+        ADD_FAILURE() << "a FIFO was read";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), fifo + ": is not a regular file: --compare takes an earlier run's results.json");
+    }
+    // A described field holding no plain value (here 100,000 nested arrays, which printing recursed through
+    // until the stack overflowed) reads as absent: the model stays comparable.
+    nlohmann::json deep_run = nlohmann::json::parse(bench::json_report(old_run));
+    deep_run["models"][0]["triangles"] = "@";
+    std::string deep_text = deep_run.dump();
+    deep_text.replace(deep_text.find("\"@\""), 3, std::string(100000, '[') + std::string(100000, ']'));
+    const bench::Comparison deep = bench::compare_runs(deep_text, "old.json", bench::json_report(old_run));
+    EXPECT_TRUE(deep.not_comparable.empty());
+    EXPECT_EQ(deep.compared, 12u);
 }
 
 TEST(BenchCompare, MalformedOrMissingFilesFailWithOneLineNamingThem) {

@@ -80,6 +80,13 @@ std::map<std::string, double> read_speeds(const std::string& json_text, const st
 std::string read_results_file(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) fail_file(path, "is a folder: --compare takes an earlier run's results.json");
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        fail_file(path, "is not a regular file: --compare takes an earlier run's results.json");  // a FIFO waited for ever
+    // A run's results are a few tens of kilobytes; /dev/zero-like sizes are not read into memory.
+    constexpr uintmax_t kMostBytes = uintmax_t(64) << 20;
+    if (const uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMostBytes)
+        fail_file(path, "is " + std::to_string(size >> 20) + " MiB: not a bench run's results.json");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail_file(path, "cannot read the results to compare with (no such file?)");
     std::ostringstream text;
@@ -95,11 +102,13 @@ std::map<std::string, double> read_speeds_file(const std::string& path) {
 
 namespace {
 
-// A field's value as the report prints it, or "" where the file lacks it (an older run).
+// A field's value as the report prints it, or "" where the file lacks it (an older run) or holds no plain
+// value there (an array or object, which dump() printed recursively: 100k nested brackets overflowed the stack).
 std::string field_text(const json& object, const char* key) {
     if (!object.is_object() || !object.contains(key)) return "";
     const json& value = object.at(key);
-    return value.is_string() ? value.get<std::string>() : value.dump();
+    if (value.is_string()) return one_line(value.get<std::string>().substr(0, 200));
+    return value.is_number() || value.is_boolean() ? value.dump() : "";
 }
 
 // What a model's speeds were measured on: its source and size (where the file says both).
