@@ -318,5 +318,30 @@ TEST(CliView, ScriptSwitchesTakeTrueOrFalse) {
     }
 }
 
+// What a script cannot mean is refused in one short line: an object number no scene has (1e300 became object
+// 0, silently), a script without an action (the window stayed open for ever), and a long line is quoted in
+// part (a 20 MB line made a 20 MB message).
+TEST(CliView, ScriptLinesThatCannotMeanAnythingAreRefusedShortly) {
+    auto dir = test::temp_dir("cli-view-bad-script");
+    const std::string script = (dir / "script.txt").string();
+    for (const auto& [text, phrase] : std::vector<std::pair<std::string, std::string>>{
+             {"set 1e300 dmax 0.3\n", ":1: set needs an object number, got '1e300'"},
+             {"set 18446744073709551616 dmax 0.3\n", ":1: set needs an object number, got '18446744073709551616'"},
+             {"# only a comment\n\n", ": holds no action (wait S, wait-idle"},
+             {"", ": holds no action"},
+             {"jump " + std::string(100000, 'x') + "\n", ":1: unknown or incomplete line 'jump xxx"}}) {
+        std::ofstream(script) << text;
+        try {
+            app::read_viewer_script(script);
+            ADD_FAILURE() << text.substr(0, 40) << " was accepted";
+        } catch (const Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(script + phrase), std::string::npos) << what.substr(0, 300);
+            EXPECT_LT(what.size(), 400u);
+            EXPECT_EQ(what.find('\n'), std::string::npos);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace stipple

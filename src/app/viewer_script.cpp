@@ -21,6 +21,14 @@ double parse_number(const std::string& text, bool* ok) {
     return value;
 }
 
+// A piece of the script quoted in a message: one line, and short (a 20 MB line was quoted whole).
+std::string script_text(const std::string& text) {
+    return "'" + one_line(text.substr(0, 80)) + (text.size() > 80 ? "...'" : "'");
+}
+
+// Object numbers beyond any scene's (a double that size_t cannot hold converted to object 0).
+constexpr double kMostObjects = 1e9;
+
 }  // namespace
 
 std::vector<ScriptAction> read_viewer_script(const std::string& path) {
@@ -53,13 +61,14 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
         } else if (verb == "set" && rest.size() == 3) {
             action.kind = ScriptAction::Kind::Set;
             const double object = parse_number(rest[0], &ok);
-            if (!ok || object < 0.0 || object != std::floor(object)) bad("set needs an object number, got '" + rest[0] + "'");
+            if (!ok || object < 0.0 || object != std::floor(object) || object > kMostObjects)
+                bad("set needs an object number, got " + script_text(rest[0]));
             action.object = size_t(object);
             const ParamSpec* spec = find_param(rest[1]);
-            if (!spec) bad("'" + rest[1] + "' is not a parameter (see stipple params)");
+            if (!spec) bad(script_text(rest[1]) + " is not a parameter (see stipple params)");
             action.key = rest[1];
             if (spec->type == ParamType::Bool) {
-                if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false, got '" + rest[2] + "'");
+                if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false, got " + script_text(rest[2]));
                 action.value = rest[2] == "true" ? 1.0 : 0.0;
             } else {
                 try {
@@ -71,18 +80,21 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
         } else if (verb == "screenshot" && rest.size() == 1) {
             action.kind = ScriptAction::Kind::Screenshot;
             action.path = rest[0];
-            if (!plot::is_png_path(action.path)) bad("screenshot needs a .png path, got '" + action.path + "'");
+            if (!plot::is_png_path(action.path)) bad("screenshot needs a .png path, got " + script_text(action.path));
         } else if (verb == "export" && rest.size() == 1) {
             action.kind = ScriptAction::Kind::Export;
             action.path = rest[0];
-            if (!plot::is_plot_path(action.path)) bad("export needs a .svg, .pdf or .csv path, got '" + action.path + "'");
+            if (!plot::is_plot_path(action.path)) bad("export needs a .svg, .pdf or .csv path, got " + script_text(action.path));
         } else if (verb == "quit" && rest.empty()) {
             action.kind = ScriptAction::Kind::Quit;
         } else {
-            bad("unknown or incomplete line '" + line + "' (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, export PATH, quit)");
+            bad("unknown or incomplete line " + script_text(line) + " (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, export PATH, quit)");
         }
         actions.push_back(action);
     }
+    // Nothing to do is a mistake (a wrong file, or one not yet written), not a script: the window would
+    // stay open, waiting for a person, where a script was meant to drive it.
+    if (actions.empty()) fail_file(path, "holds no action (wait S, wait-idle, set OBJECT KEY VALUE, screenshot PATH, export PATH, quit)");
     return actions;
 }
 
