@@ -500,7 +500,17 @@ INSTANTIATE_TEST_SUITE_P(
                  "silhouette": "both"}}]})", "objects[0].params.silhouette", "sets silhouette_lines too"},
         BadScene{"camera_path_yaw", R"({"objects": [{"model": "sphere.obj"}], "camera_path": [{"yaw": 3e38}, {"yaw": -3e38}]})",
                  "camera_path[0].yaw", "must be in -36000..36000 degrees"},
-        BadScene{"no_objects", R"({"camera": {"yaw": 3}})", "objects", "required field is missing"}),
+        BadScene{"no_objects", R"({"camera": {"yaw": 3}})", "objects", "required field is missing"},
+        // Places beyond the coordinates drawing allows drew a blank frame with exit status 0.
+        BadScene{"huge_translate", R"({"objects": [{"model": "sphere.obj", "transform": {"translate": [3e38, 0, 0]}}]})",
+                 "objects[0].transform.translate", "components must be within -1e+18..1e+18"},
+        BadScene{"huge_matrix_translation", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
+                 [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,-3e38,0,1]}}]})",
+                 "objects[0].transform.matrix", "the translation (elements 12-14) must be within"},
+        BadScene{"huge_target", R"({"objects": [{"model": "sphere.obj"}], "camera": {"target": [3e38, -3e38, 3e38]}})",
+                 "camera.target", "components must be within"},
+        BadScene{"tiny_world_distance", R"({"objects": [{"model": "sphere.obj"}], "camera": {"world_distance": 1e-38}})",
+                 "camera.world_distance", "must be in 1e-15..1e+18"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Options that would be silently dropped are refused: the camera's with a camera_path (which places

@@ -15,6 +15,7 @@
 #include "core/utf8.hpp"
 #include "core/printf_string.hpp"
 #include "mesh/loader_util.hpp"
+#include "mesh/mesh.hpp"
 #include "params/param_table.hpp"
 
 namespace stipple {
@@ -85,6 +86,17 @@ public:
     glm::vec3 vec3(const json& j, const std::string& where) const {
         if (!j.is_array() || j.size() != 3) error(where, "expected an array of 3 numbers");
         return {number(j[0], where + "[0]"), number(j[1], where + "[1]"), number(j[2], where + "[2]")};
+    }
+
+    // A place in the world: within the coordinates drawing allows (a translation of 3e38 overflowed the
+    // scene's bounds and drew a blank frame with exit status 0).
+    glm::vec3 place(const json& j, const std::string& where) const {
+        const glm::vec3 p = vec3(j, where);
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(p[i]) > kMaxCoordinate)
+                error(where, printf_string("components must be within -%g..%g (the coordinates drawing allows)",
+                                           double(kMaxCoordinate), double(kMaxCoordinate)));
+        return p;
     }
 
     glm::vec3 color(const json& j, const std::string& where) const {
@@ -171,10 +183,14 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
         }
         if (matrix[0][3] != 0.0f || matrix[1][3] != 0.0f || matrix[2][3] != 0.0f || matrix[3][3] != 1.0f)
             r.error(w, "the last row must be 0, 0, 0, 1 (an affine transform)");
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(matrix[3][i]) > kMaxCoordinate)
+                r.error(w, printf_string("the translation (elements 12-14) must be within -%g..%g (the coordinates drawing "
+                                         "allows)", double(kMaxCoordinate), double(kMaxCoordinate)));
         t.matrix = matrix;
         return t;
     }
-    if (j.contains("translate")) t.translate = r.vec3(j["translate"], Reader::field(where, "translate"));
+    if (j.contains("translate")) t.translate = r.place(j["translate"], Reader::field(where, "translate"));
     if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], Reader::field(where, "rotate_deg"));
     if (j.contains("scale")) {
         t.scale = r.number(j["scale"], Reader::field(where, "scale"));
@@ -241,10 +257,12 @@ SceneCamera read_camera(const json& j, const Reader& r, const std::string& where
     }
     if (j.contains("world_distance")) {
         float d = r.number(j["world_distance"], Reader::field(where, "world_distance"));
-        if (!(d > 0.0f)) r.error(Reader::field(where, "world_distance"), "must be > 0");
+        if (!(d >= kMinExtent && d <= kMaxCoordinate))
+            r.error(Reader::field(where, "world_distance"),
+                    printf_string("must be in %g..%g (the sizes drawing allows)", double(kMinExtent), double(kMaxCoordinate)));
         c.world_distance = d;
     }
-    if (j.contains("target")) c.target = r.vec3(j["target"], Reader::field(where, "target"));
+    if (j.contains("target")) c.target = r.place(j["target"], Reader::field(where, "target"));
     if (j.contains("fov_y")) {
         c.fov_y_deg = r.number(j["fov_y"], Reader::field(where, "fov_y"));
         if (!(c.fov_y_deg >= 1.0f && c.fov_y_deg <= 150.0f)) r.error(Reader::field(where, "fov_y"), "must be in 1..150 degrees");
