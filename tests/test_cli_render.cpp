@@ -10,7 +10,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "io/png_io.hpp"
+#include "support/model_files.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
@@ -141,6 +144,23 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
                              "lower --dmax or --max-stipples"})
         EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
+    // The objects of a scene count together: under a limit that holds two copies of the model (each about 12
+    // MiB), the third is refused, saying what the others hold (each was checked alone against the whole
+    // limit, and a scene of a thousand copies grew to 5 GB).
+    const std::string model = test::source_path("assets/blobby.glb");
+    nlohmann::json scene = {{"objects", nlohmann::json::array()}};
+    for (int i = 0; i < 5; ++i)
+        scene["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
+    const std::string scene_path = test::write_file(test::temp_dir("cli-device-limit-scene") / "five.json", scene.dump());
+    for (const auto& [limit, refused] : {std::pair<const char*, bool>{"30M", true}, {"80M", false}}) {
+        ::setenv("STIPPLE_GPU_MEMORY_LIMIT", limit, 1);
+        const test::CommandResult five = test::run_stipple({"render", scene_path, "-o", out.string(), "--width", "64", "--height", "64"});
+        ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
+        EXPECT_EQ(five.exit_code, refused ? 1 : 0) << limit << ": " << five.err;
+        if (refused)
+            EXPECT_NE(five.err.find("MiB free ("), std::string::npos) << five.err;
+    }
+    std::filesystem::remove(out);
     // A size that is not one is refused, not ignored (a typo would test nothing).
     for (const char* bad : {"foo", "0", "-1", "2X", "99999999999G"}) {
         ::setenv("STIPPLE_GPU_MEMORY_LIMIT", bad, 1);

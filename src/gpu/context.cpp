@@ -339,14 +339,17 @@ uint64_t Context::device_memory_available() const {
     VkPhysicalDeviceMemoryProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
     if (memory_budget_) properties2.pNext = &budget;
     vkGetPhysicalDeviceMemoryProperties2(physical_device, &properties2);
+    const uint64_t held = bytes_allocated();
+    const auto less_held = [&](uint64_t total) { return total > held ? total - held : 0; };
     uint64_t best = 0;
     for (uint32_t h = 0; h < memory_properties.memoryHeapCount; ++h) {
         if (!(memory_properties.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)) continue;
-        uint64_t left = memory_properties.memoryHeaps[h].size;
-        if (memory_budget_) left = budget.heapBudget[h] > budget.heapUsage[h] ? budget.heapBudget[h] - budget.heapUsage[h] : 0;
+        uint64_t left = less_held(memory_properties.memoryHeaps[h].size);
+        if (memory_budget_)
+            left = std::min(left, budget.heapBudget[h] > budget.heapUsage[h] ? budget.heapBudget[h] - budget.heapUsage[h] : 0);
         best = std::max(best, left);
     }
-    if (const uint64_t limit = size_from_environment("STIPPLE_GPU_MEMORY_LIMIT")) best = std::min(best, limit);
+    if (const uint64_t limit = size_from_environment("STIPPLE_GPU_MEMORY_LIMIT")) best = std::min(best, less_held(limit));
     return best;
 }
 

@@ -85,9 +85,14 @@ public:
                               VkMemoryPropertyFlags preferred = 0) const;
 
     // Bytes of device-local memory this process may still allocate: the budget minus what is in use
-    // (VK_EXT_memory_budget) where the device offers it, else the largest device-local heap. Lowered by
-    // STIPPLE_GPU_MEMORY_LIMIT (e.g. 64M: how a smaller device would refuse, tried on a big one).
+    // (VK_EXT_memory_budget) where the device offers it, and never more than the largest device-local heap
+    // less what this context holds (lavapipe has no budget, and its figure did not shrink: a scene of a
+    // thousand objects, each checked alone, grew to 5 GB). STIPPLE_GPU_MEMORY_LIMIT (e.g. 64M: how a smaller
+    // device would refuse, tried on a big one) bounds what the context holds in all.
     uint64_t device_memory_available() const;
+    // Bytes of memory this context's buffers and images hold now (gpu::MemoryTally counts them).
+    uint64_t bytes_allocated() const { return allocated_bytes_.load(); }
+    std::atomic<uint64_t>& memory_tally() const { return allocated_bytes_; }
     // The largest storage buffer a shader may read (maxStorageBufferRange). Lowered by
     // STIPPLE_MAX_STORAGE_BUFFER (e.g. 16M: how a device with a smaller limit draws large images in tiles).
     uint64_t max_storage_buffer_bytes() const;
@@ -106,6 +111,7 @@ private:
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     bool memory_budget_ = false;  // VK_EXT_memory_budget enabled
     std::atomic<uint32_t> validation_messages_{0};
+    mutable std::atomic<uint64_t> allocated_bytes_{0};
     static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                          VkDebugUtilsMessageTypeFlagsEXT types,
                                                          const VkDebugUtilsMessengerCallbackDataEXT* data,

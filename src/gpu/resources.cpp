@@ -82,6 +82,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
         fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory (" +
              vk_result_name(result) + ")");
     }
+    tally_ = MemoryTally(context.memory_tally(), requirements.size);
     VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
     if (use != MemoryUse::DeviceLocal) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
@@ -95,6 +96,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         size_ = std::exchange(other.size_, 0);
         mapped_ = std::exchange(other.mapped_, nullptr);
         coherent_ = other.coherent_;
+        tally_ = std::move(other.tally_);
     }
     return *this;
 }
@@ -103,6 +105,7 @@ void Buffer::reset() {
     if (!device_) return;
     if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
     if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    tally_.release();
     buffer_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     mapped_ = nullptr;
@@ -133,6 +136,7 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     alloc.memoryTypeIndex =
         context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    tally_ = MemoryTally(context.memory_tally(), alloc.allocationSize);
     VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
     view_ = create_view_2d(device_, image_, format, aspect);
 }
@@ -184,6 +188,7 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
     alloc.allocationSize = std::max(for_image.size, for_words.size);
     alloc.memoryTypeIndex = context.find_memory_type(types, host_mapped ? host : 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkAllocateMemory(image.device_, &alloc, nullptr, &image.memory_));
+    image.tally_ = MemoryTally(context.memory_tally(), alloc.allocationSize);
     VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_, 0));
     if (words) {
         VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
@@ -210,6 +215,7 @@ Image& Image::operator=(Image&& other) noexcept {
         format_ = other.format_;
         extent_ = other.extent_;
         aspect_ = other.aspect_;
+        tally_ = std::move(other.tally_);
     }
     return *this;
 }
@@ -220,6 +226,7 @@ void Image::reset() {
     if (words_) vkDestroyBuffer(device_, words_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
     if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    tally_.release();
     view_ = VK_NULL_HANDLE;
     words_ = VK_NULL_HANDLE;
     mapped_ = nullptr;

@@ -1,8 +1,10 @@
 #pragma once
 // Buffers and images with their memory: small move-only owners, so nothing leaks when an error
 // unwinds (a leak would be a validation message at device destruction).
+#include <atomic>
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -15,6 +17,35 @@ enum class MemoryUse {
     DeviceLocal,  // GPU-only data (stipples, per-frame densities, depth)
     Upload,       // host-visible, written by the CPU (uniforms, staging)
     Readback,     // host-visible and cached, read by the CPU (images, counters)
+};
+
+// The memory a Buffer or Image holds, counted in its context's tally while it lives
+// (Context::bytes_allocated, which device_memory_available subtracts).
+class MemoryTally {
+public:
+    MemoryTally() = default;
+    MemoryTally(std::atomic<uint64_t>& total, uint64_t bytes) : total_(&total), bytes_(bytes) { total += bytes; }
+    ~MemoryTally() { release(); }
+    MemoryTally(MemoryTally&& other) noexcept { *this = std::move(other); }
+    MemoryTally& operator=(MemoryTally&& other) noexcept {
+        if (this != &other) {
+            release();
+            total_ = std::exchange(other.total_, nullptr);
+            bytes_ = std::exchange(other.bytes_, 0);
+        }
+        return *this;
+    }
+    MemoryTally(const MemoryTally&) = delete;
+    MemoryTally& operator=(const MemoryTally&) = delete;
+    void release() {
+        if (total_) *total_ -= bytes_;
+        total_ = nullptr;
+        bytes_ = 0;
+    }
+
+private:
+    std::atomic<uint64_t>* total_ = nullptr;
+    uint64_t bytes_ = 0;
 };
 
 class Buffer {
@@ -44,6 +75,7 @@ private:
     VkDeviceSize size_ = 0;
     void* mapped_ = nullptr;
     bool coherent_ = true;
+    MemoryTally tally_;
 };
 
 class Image {
@@ -92,6 +124,7 @@ private:
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
     VkImageAspectFlags aspect_ = 0;
+    MemoryTally tally_;
 };
 
 // A device-local buffer filled once from host data through a staging buffer (waits for completion).

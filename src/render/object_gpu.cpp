@@ -69,9 +69,13 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
              std::to_string(context.properties.limits.maxTexelBufferElements) +
              " texels): lower --dmax or --max-stipples, or use a simplified model");
     const uint64_t available = context.device_memory_available();
-    if (needed > available)
+    if (needed > available) {
+        // A scene's objects count together: say what the ones before hold.
+        const uint64_t held = context.bytes_allocated();
+        const std::string in_use = held >= (uint64_t(1) << 20) ? " (" + mebibytes(held) + " in use by this drawing)" : "";
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
-             mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + lower);
+             mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + in_use + lower);
+    }
 }
 
 enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
