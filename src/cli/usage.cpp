@@ -242,8 +242,8 @@ Environment:
                           $STIPPLE_CACHE_DIR/stipples (see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
   STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
-  STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory free: how
-                          a smaller GPU refuses an object too big for it, tried on a big one
+  STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory: how a
+                          smaller GPU refuses an object or scene too big for it, tried on a big one
   STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
                           draws an image whose pixel words do not fit one in tiles (lavapipe: 128M)
 
