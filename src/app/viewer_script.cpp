@@ -74,7 +74,8 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
                 try {
                     action.value = parse_param_text(*spec, rest[2]);
                 } catch (const Error& e) {
-                    bad(e.what());
+                    const std::string what = e.what();  // it quotes the value whole
+                    bad(what.size() <= 200 ? what : what.substr(0, 200) + "...");
                 }
             }
         } else if (verb == "screenshot" && rest.size() == 1) {

@@ -83,8 +83,9 @@ std::string read_results_file(const std::string& path) {
     const auto status = std::filesystem::status(path, ec);
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         fail_file(path, "is not a regular file: --compare takes an earlier run's results.json");  // a FIFO waited for ever
-    // A run's results are a few tens of kilobytes; /dev/zero-like sizes are not read into memory.
-    constexpr uintmax_t kMostBytes = uintmax_t(64) << 20;
+    // A run's results are tens of kilobytes, up to ~100 MB with --frames at its 100,000 (each cell lists its
+    // frame times); /dev/zero-like sizes are not read into memory.
+    constexpr uintmax_t kMostBytes = uintmax_t(1) << 30;
     if (const uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMostBytes)
         fail_file(path, "is " + std::to_string(size >> 20) + " MiB: not a bench run's results.json");
     std::ifstream in(path, std::ios::binary);

@@ -257,11 +257,13 @@ int run_render(const std::vector<std::string>& argv) {
         if (repeat > 0) fail("--repeat times one frame, and " + why);
     }
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
-    // A print is drawn by a renderer of its own (app::render_print): this one would only hold a second
-    // copy of every object's buffers.
-    if (!print) add_scene_objects(renderer, scene, content.objects);
+    // A print is drawn by a renderer of its own (app::render_print), and so is vector output
+    // (app::export_frame): this one would only hold a second copy of every object's buffers, unless the
+    // screen's frame is asked for too (its mask, figures or timings).
+    const bool screen_frame = !vector || args.has("--mask") || args.flag("--stats") || repeat > 0;
+    if (!print && screen_frame) add_scene_objects(renderer, scene, content.objects);
     std::optional<OffscreenTarget> target;
-    if (!tiled && !print) target.emplace(context, extent);
+    if (!tiled && !print && screen_frame) target.emplace(context, extent);
 
     // Frames are written as they are drawn (a long orbit needs no more memory than one frame).
     ProgressBar bar("Rendering frames", sequence);
@@ -273,7 +275,7 @@ int run_render(const std::vector<std::string>& argv) {
     for (size_t i = 0; i < cameras.size(); ++i) {
         // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
         view = scene_frame_view(scene, cameras[i], bounds, print ? app::print_layout(*print).drawing_px : extent);
-        if (animated && !print) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
+        if (animated && !print && screen_frame) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
         auto render_start = std::chrono::steady_clock::now();
         if (print) {
             const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0,
@@ -290,7 +292,7 @@ int run_render(const std::vector<std::string>& argv) {
             bar.update(double(i + 1) / double(cameras.size()));
             continue;
         }
-        frame = target->render(renderer, view);
+        if (screen_frame) frame = target->render(renderer, view);
         render_seconds = seconds_since(render_start);
         if (vector) {
             last_plot = app::export_frame(context, scene, content.objects, view, vector_options,

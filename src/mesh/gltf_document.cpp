@@ -74,26 +74,23 @@ bool read_external_buffer(std::vector<unsigned char>* out, std::string* err, con
 std::vector<unsigned char> read_buffer_file(const std::string& model, const std::string& where, const std::string& uri,
                                             const std::filesystem::path& file, uint64_t length) {
     const std::string named = where + ".uri: '" + one_line(uri.substr(0, 64)) + (uri.size() > 64 ? "...'" : "'");
-    const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);  // no wait on a FIFO
+    struct Descriptor {
+        int fd;
+        ~Descriptor() { if (fd >= 0) ::close(fd); }
+    } file_descriptor{::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};  // no wait on a FIFO
+    const int fd = file_descriptor.fd;
     if (fd < 0) fail_file(model, named + " cannot be read: " + std::strerror(errno));
     struct stat info {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || uint64_t(info.st_size) < length) {
-        ::close(fd);
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode) || uint64_t(info.st_size) < length)
         fail_file(model, named + " is not a regular file of at least " + std::to_string(length) + " bytes");
-    }
     std::vector<unsigned char> bytes(length);
     size_t done = 0;
     while (done < length) {
         const ssize_t got = ::read(fd, bytes.data() + done, length - done);
         if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) {
-            const std::string reason = got < 0 ? std::strerror(errno) : "the file ended early";
-            ::close(fd);
-            fail_file(model, named + " cannot be read: " + reason);
-        }
+        if (got <= 0) fail_file(model, named + " cannot be read: " + (got < 0 ? std::strerror(errno) : "the file ended early"));
         done += size_t(got);
     }
-    ::close(fd);
     return bytes;
 }
 
@@ -140,8 +137,12 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
     const MeshoptPlan meshopt = prepare_meshopt(doc, binary);
     const bool draco_stand_ins = prepare_draco(doc);
     // Images play no part in stippling, and tinygltf would open and read every image file (a FIFO waited for
-    // ever, a directory read as 2^63 bytes): they are left out of what it parses.
-    const bool images_dropped = doc.erase("images") > 0;
+    // ever, a directory read as 2^63 bytes): images named by a uri are left out of what it parses. (Images in
+    // buffer views, as a textured .glb holds them, open nothing: dropping them would copy the BIN chunk.)
+    bool images_named = false;
+    if (const auto images = doc.find("images"); images != doc.end() && images->is_array())
+        for (const nlohmann::json& image : *images) images_named = images_named || (image.is_object() && image.contains("uri"));
+    const bool images_dropped = images_named && doc.erase("images") > 0;
     ExternalBuffers external;
     const bool buffers_taken = base_dir && take_external_buffers(path, doc, *base_dir, external);
     std::string rewritten;

@@ -88,6 +88,8 @@ public:
         return {number(j[0], where + "[0]"), number(j[1], where + "[1]"), number(j[2], where + "[2]")};
     }
 
+    static constexpr float kMinWorldDistance = 1e-21f, kMaxWorldDistance = 1e24f;
+
     // A place in the world: within the coordinates drawing allows (a translation of 3e38 overflowed the
     // scene's bounds and drew a blank frame with exit status 0).
     glm::vec3 place(const json& j, const std::string& where) const {
@@ -257,9 +259,12 @@ SceneCamera read_camera(const json& j, const Reader& r, const std::string& where
     }
     if (j.contains("world_distance")) {
         float d = r.number(j["world_distance"], Reader::field(where, "world_distance"));
-        if (!(d >= kMinExtent && d <= kMaxCoordinate))
+        // Any distance the viewer saves: a model's framing distance (a few times its size, kMinExtent to
+        // kMaxCoordinate, up to 115 times its radius at a 1-degree field of view) zoomed by 1e-3..1e3
+        // (camera_control.cpp); 3e38 or 1e-38 drew a blank frame.
+        if (!(d >= Reader::kMinWorldDistance && d <= Reader::kMaxWorldDistance))
             r.error(Reader::field(where, "world_distance"),
-                    printf_string("must be in %g..%g (the sizes drawing allows)", double(kMinExtent), double(kMaxCoordinate)));
+                    printf_string("must be in %g..%g", double(Reader::kMinWorldDistance), double(Reader::kMaxWorldDistance)));
         c.world_distance = d;
     }
     if (j.contains("target")) c.target = r.place(j["target"], Reader::field(where, "target"));
