@@ -380,7 +380,7 @@ TEST(GltfLoader, ExternalFilesAreTheOnesTheValidatorChecked) {
         R"("bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],)"
         R"("images":[{"uri":"picture.png"}],"textures":[{"source":0}])";
-    for (const std::string uri : {std::string("a+b.bin"), std::string("a%2Bb.bin"), (dir / "a+b.bin").string(), std::string("long.bin")}) {
+    for (const std::string& uri : {std::string("a+b.bin"), std::string("a%2Bb.bin"), (dir / "a+b.bin").string(), std::string("long.bin")}) {
         SCOPED_TRACE(uri);
         const Mesh m = load_mesh(write_file(dir / "tri.gltf", gltf_json(R"({"byteLength":36,"uri":")" + uri + "\"}", rest)));
         ASSERT_EQ(m.triangle_count(), 1u);

@@ -22,9 +22,7 @@ double parse_number(const std::string& text, bool* ok) {
 }
 
 // A piece of the script quoted in a message: one line, and short (a 20 MB line was quoted whole).
-std::string script_text(const std::string& text) {
-    return "'" + one_line(text.substr(0, 80)) + (text.size() > 80 ? "...'" : "'");
-}
+std::string script_text(const std::string& text) { return quoted_excerpt(text, 80); }
 
 // Object numbers beyond any scene's (a double that size_t cannot hold converted to object 0).
 constexpr double kMostObjects = 1e9;
@@ -74,8 +72,7 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
                 try {
                     action.value = parse_param_text(*spec, rest[2]);
                 } catch (const Error& e) {
-                    const std::string what = e.what();  // it quotes the value whole
-                    bad(what.size() <= 200 ? what : what.substr(0, 200) + "...");
+                    bad(excerpt(e.what(), 200));  // it quotes the value whole
                 }
             }
         } else if (verb == "screenshot" && rest.size() == 1) {

@@ -15,6 +15,20 @@ std::string one_line(const std::string& text) {
     return out;
 }
 
+std::string excerpt(const std::string& text, size_t most) {
+    std::string out = one_line(text.substr(0, most));
+    if (text.size() > most) out += "...";
+    return out;
+}
+
+// Appended in place: GCC 12 warns (-Wrestrict, a known false positive) on "'" + std::string&&.
+std::string quoted_excerpt(const std::string& text, size_t most) {
+    std::string out = "'";
+    out += excerpt(text, most);
+    out += "'";
+    return out;
+}
+
 void fail_file(const std::string& path, const std::string& problem) { throw Error(one_line(path + ": " + problem)); }
 
 void fail(const std::string& message) { throw Error(one_line(message)); }

@@ -16,6 +16,11 @@ public:
 // may span lines and quote file bytes.
 std::string one_line(const std::string& text);
 
+// The start of `text` for a message: one printable line of its first `most` characters, "..." where cut
+// (a quoted file name, script line or data: URI can be megabytes long). quoted_excerpt puts it in quotes.
+std::string excerpt(const std::string& text, size_t most);
+std::string quoted_excerpt(const std::string& text, size_t most);
+
 // "<path>: <problem>", the shape of every input error, made one printable line (a name read from the
 // file may hold a line break: a Draco or instancing attribute's did, found by fuzzing on 2026-12-04).
 [[noreturn]] void fail_file(const std::string& path, const std::string& problem);

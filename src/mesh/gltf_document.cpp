@@ -73,7 +73,7 @@ bool read_external_buffer(std::vector<unsigned char>* out, std::string* err, con
 // only as far as the buffer goes).
 std::vector<unsigned char> read_buffer_file(const std::string& model, const std::string& where, const std::string& uri,
                                             const std::filesystem::path& file, uint64_t length) {
-    const std::string named = where + ".uri: '" + one_line(uri.substr(0, 64)) + (uri.size() > 64 ? "...'" : "'");
+    const std::string named = where + ".uri: " + quoted_excerpt(uri, 64);
     struct Descriptor {
         int fd;
         ~Descriptor() { if (fd >= 0) ::close(fd); }
@@ -117,10 +117,7 @@ bool take_external_buffers(const std::string& model, nlohmann::json& doc, const 
 }
 
 // tinygltf's message, on one line and short: a data: URI it failed to decode is quoted whole (megabytes).
-std::string tinygltf_message(const std::string& text) {
-    const std::string line = one_line(text);
-    return line.size() <= 300 ? line : line.substr(0, 300) + "...";
-}
+std::string tinygltf_message(const std::string& text) { return excerpt(text, 300); }
 
 }  // namespace
 

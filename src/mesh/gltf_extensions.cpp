@@ -88,13 +88,7 @@ std::string a_type(const json& v) {
     return (type == "array" || type == "object" ? "an " : "a ") + type;
 }
 
-// Appended in place: GCC 12 warns (-Wrestrict, a known false positive) on "'" + std::string&&.
-std::string shown(const std::string& text) {
-    std::string out = "'";
-    out += one_line(text.substr(0, 64));
-    out += text.size() > 64 ? "...'" : "'";
-    return out;
-}
+std::string shown(const std::string& text) { return quoted_excerpt(text, 64); }
 
 // The entries of extensionsUsed or extensionsRequired, each checked to be a well-formed name.
 std::vector<std::string> names(const std::string& file, const json& doc, const char* key) {

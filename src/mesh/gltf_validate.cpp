@@ -74,7 +74,7 @@ std::string percent_decoded(const std::string& uri) {
     return out;
 }
 
-std::string shown(const std::string& text) { return "'" + one_line(text.substr(0, 64)) + (text.size() > 64 ? "...'" : "'"); }
+std::string shown(const std::string& text) { return quoted_excerpt(text, 64); }
 
 class Checker {
 public:
