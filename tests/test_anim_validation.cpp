@@ -4,6 +4,7 @@
 
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
+#include "stipple/object_data.hpp"
 #include "support/anim_files.hpp"
 
 namespace stipple::anim {
@@ -134,6 +135,33 @@ TEST(AnimValidation, SkinsAndMorphWeightsThatDoNotFit) {
     GltfBuilder weights = rigs::morphed_quad();
     weights.doc["nodes"][0]["weights"] = {0.25};
     expect_error(weights, "morph_weights", "nodes[0].weights: 1 weights for 2 morph targets");
+}
+
+// Keys far beyond any real model (3e38) moved the object to infinity and drew a blank frame with exit
+// status 0. A key beyond +-1e18 is refused where it stands; keys in range that compose to a pose beyond it
+// (a parent scaled 1e10 carrying a child translated 1e9) are refused when the drawing samples the poses.
+TEST(AnimValidation, KeysAndPosesBeyondTheCoordinateRange) {
+    GltfBuilder box = rigs::node_animated_box();  // sampler 0: the box's translation, keys (0,0,0), (2,0,0)
+    box.doc["animations"][0]["samplers"][0]["output"] = box.add_floats({0, 0, 0, 3e38f, 0, 0}, "VEC3");
+    expect_error(box, "huge_translation", "animations[0].samplers[0].output: element 1 holds 3e+38, beyond the +-1e+18");
+
+    GltfBuilder quad = rigs::morphed_quad();  // sampler 0: two weights a key, three keys
+    quad.doc["animations"][0]["samplers"][0]["output"] = quad.add_floats({0, 0, 1, 0, -2e18f, 1}, "SCALAR");
+    expect_error(quad, "huge_weight", "animations[0].samplers[0].output: element 4 holds -2e+18");
+
+    GltfBuilder composed = rigs::node_animated_box();
+    composed.doc["nodes"][0]["scale"] = {1e10, 1e10, 1e10};
+    composed.doc["animations"][0]["samplers"][0]["output"] = composed.add_floats({0, 0, 0, 1e9f, 0, 0}, "VEC3");
+    const std::string path = test::write_rig(composed, "anim_bad_composed", "composed");
+    EXPECT_NO_THROW(load_animated_model(path)) << "every key is in range";
+    try {
+        load_model_data(path);
+        ADD_FAILURE() << "a pose 1e19 away was drawn";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), path + ": animation 0 'Move' moves the model beyond the +-1e+18 a coordinate may reach");
+    }
+    composed.doc["animations"][0]["samplers"][0]["output"] = composed.add_floats({0, 0, 0, 1e7f, 0, 0}, "VEC3");
+    EXPECT_TRUE(load_model_data(test::write_rig(composed, "anim_bad_composed", "in_range")).motion) << "1e17 away is drawn";
 }
 
 // What glTF allows is not an error: one sampler driving a translation and a scale (both three floats a

@@ -122,7 +122,10 @@ private:
         const size_t per_key = (sampler.interpolation == Interpolation::CubicSpline ? 3 : 1) *
                                (path == ChannelPath::Weights ? components : 1);
         const size_t elements = sampler.values.size() / (path == ChannelPath::Weights ? 1 : components);
-        if (elements == keys * per_key) return;
+        if (elements == keys * per_key) {
+            check_magnitudes(sampler.values, path == ChannelPath::Weights ? 1 : components, output);
+            return;
+        }
         std::string why;
         if (per_key != 1) {
             why = " (expected " + std::to_string(keys * per_key) + ": ";
@@ -132,6 +135,15 @@ private:
             why += " per key)";
         }
         fail_file(path_, field + ": input has " + std::to_string(keys) + " keys, output " + std::to_string(elements) + why);
+    }
+
+    // A key beyond kMaxCoordinate (a translation or morph weight of 3e38) would move the model to
+    // infinity and draw a blank frame with exit status 0; no real animation comes near it.
+    void check_magnitudes(const std::vector<float>& values, size_t per_element, const std::string& field) const {
+        for (size_t i = 0; i < values.size(); ++i)
+            if (std::abs(values[i]) > kMaxCoordinate)
+                fail_file(path_, field + ": element " + std::to_string(i / per_element) + " holds " + format(values[i]) +
+                                     ", beyond the +-" + format(kMaxCoordinate) + " an animation may reach");
     }
 
     bool has_morph_targets(int node) const {

@@ -21,6 +21,11 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
             headroom.max_ratio = report.max_ratio;
             headroom.max_animation = model.animations[a].name;
         }
+        const auto in_range = [](const glm::vec3& p) {
+            return glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(kMaxCoordinate)));  // false for NaN too
+        };
+        if (headroom.out_of_range.empty() && !(in_range(report.bounds.min) && in_range(report.bounds.max)))
+            headroom.out_of_range = "animation " + std::to_string(a) + " '" + model.animations[a].name + "'";
         headroom.bounds.min = glm::min(headroom.bounds.min, report.bounds.min);
         headroom.bounds.max = glm::max(headroom.bounds.max, report.bounds.max);
     }

@@ -28,6 +28,10 @@ struct StretchHeadroom {
     size_t stretched_triangles = 0;   // polygons given headroom (ratio above 1)
     size_t capped_triangles = 0;      // polygons whose ratio exceeds the cap
     Bounds bounds;                    // every vertex of the rest pose and of every sampled pose
+    // The first animation whose sampled poses put a vertex beyond kMaxCoordinate (or at infinity), as
+    // "animation 0 'Run'"; "" when every pose stays in range. Keys within range can still compose to
+    // such a pose (a parent scaled 1e10 moving a child translated 1e10).
+    std::string out_of_range;
     // The mean headroom weighted by rest area: the candidates grow by this factor over a static model's.
     double candidate_factor = 1.0;
 };

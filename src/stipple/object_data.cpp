@@ -6,6 +6,7 @@
 
 #include "anim/animated_model.hpp"
 #include "anim/gltf_probe.hpp"
+#include "core/error.hpp"
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "stipple/stipple_cache.hpp"
@@ -41,6 +42,8 @@ ObjectData load_model_data(const std::string& path) {
         auto model = std::make_shared<anim::AnimatedModel>(anim::load_animated_model(path));
         if (model->is_animated()) {
             object.motion.headroom = std::make_shared<const anim::StretchHeadroom>(anim::measure_headroom(*model));
+            if (!object.motion.headroom->out_of_range.empty())
+                fail_file(path, object.motion.headroom->out_of_range + " moves the model beyond the +-1e+18 a coordinate may reach");
             object.motion.model = model;
             object.mesh = std::shared_ptr<const Mesh>(object.motion.model, &object.motion.model->rest);
             object.bounds = box_sphere(object.motion.headroom->bounds);
