@@ -461,6 +461,14 @@ TEST(BenchCompare, MalformedOrMissingFilesFailWithOneLineNamingThem) {
     EXPECT_NE(message(R"({"models": [{"name": "horse", "cells": [{"column": "vertex", "median_fps": "fast"}]}]})")
                   .find("median_fps"),
               std::string::npos);
+    const std::string negative = R"({"models": [{"name": "horse", "cells": [{"column": "vertex", "median_fps": -5}],
+                                      "preprocessing_seconds": 1, "candidate_stipples": 10}]})";
+    EXPECT_EQ(message(negative), "old/results.json: \"horse / vertex\" has the speed -5; a speed cannot be negative");
+    std::string zero = negative;
+    zero.replace(zero.find("-5"), 2, "0");
+    const auto speeds = bench::read_speeds(zero, "old/results.json");
+    EXPECT_EQ(speeds.count("horse / vertex"), 0u) << "a cell that measured nothing is not compared";
+    EXPECT_EQ(speeds.count("horse / generation"), 1u);
     try {
         bench::read_speeds_file("/nonexistent/old/results.json");
         ADD_FAILURE() << "a missing file was read";

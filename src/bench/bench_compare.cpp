@@ -34,7 +34,11 @@ double number(const json& object, const char* key, const std::string& name, cons
     return member(object, key, json::value_t::number_float, name, where).get<double>();
 }
 
+// A speed of 0 is a cell that measured nothing (it has no ratio to compare and is left out); a negative
+// one is no speed at all, and read as one it made every later run look faster or slower at random.
 void add_speed(std::map<std::string, double>& speeds, const std::string& key, double speed, const std::string& name) {
+    if (speed < 0.0) fail_file(name, "\"" + key + "\" has the speed " + printf_string("%g", speed) + "; a speed cannot be negative");
+    if (speed == 0.0) return;
     if (!speeds.emplace(key, speed).second) fail_file(name, "\"" + key + "\" appears twice");
 }
 
