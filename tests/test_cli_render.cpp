@@ -55,14 +55,23 @@ TEST(CliRender, NoArgumentsRendersTheDefaultScene) {
     EXPECT_GT(double(inked) / double(covered), 0.03);
 }
 
+// The JSON parses whatever the file is called (a quote or backslash in its path was printed as it stood),
+// and a cache read gives no generation speed (it gave the cache's reading speed, 83M stipples/s).
 TEST(CliRender, InfoPrintsFiguresAsJson) {
     auto dir = test::temp_dir("cli-info");
-    write_file(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
-    auto result = run_stipple({"info", (dir / "quad.obj").string(), "--json"});
-    ASSERT_EQ(result.exit_code, 0) << result.err;
-    EXPECT_NE(result.out.find("\"triangles\": 2"), std::string::npos) << result.out;
-    EXPECT_NE(result.out.find("\"stipple_candidates\""), std::string::npos);
-    EXPECT_EQ(count_lines(result.out), 1u);
+    const std::string model = (dir / "qu\"a\\d\t.obj").string();
+    write_file(model, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    for (int run = 0; run < 2; ++run) {  // the second may read the first's stipples from the cache
+        auto result = run_stipple({"info", model, "--json", "--cache-dir", (dir / "cache").string()});
+        ASSERT_EQ(result.exit_code, 0) << result.err;
+        EXPECT_EQ(count_lines(result.out), 1u);
+        const nlohmann::json info = nlohmann::json::parse(result.out);
+        EXPECT_EQ(info["model"], model);
+        EXPECT_EQ(info["triangles"], 2);
+        EXPECT_TRUE(info.contains("stipple_candidates"));
+        EXPECT_EQ(info["stipples_per_second"].is_null(), info["from_cache"].get<bool>()) << result.out;
+        EXPECT_EQ(info["from_cache"].get<bool>(), run == 1) << "the cache folder is the test's own";
+    }
 }
 
 struct BadInput {
@@ -309,6 +318,15 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"parity", "--devices", "0"}, "--devices"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
+        {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},
+        // Numbers are decimal everywhere: hex was read by some options (--seed 0x10 as 16) and not others.
+        {{"render", "--seed", "0x10"}, "--seed: '0x10' is not a finite number"},
+        {{"render", "--dmax", "0x0.4p0"}, "--dmax: '0x0.4p0' is not a finite number"},
+        {{"render", "--width", " 320"}, "--width: ' 320' is not an integer"},
+        {{"render", "--light", "0x1,0,1"}, "is not three numbers X,Y,Z"},
+        {{"render", "--light", "1,0,1,"}, "is not three numbers X,Y,Z"},
+        {{"tone", "--distances", "0x10"}, "--distances: '0x10' is not a finite number"},
+        {{"tone", "--views", "30:10,30.01:10"}, "is the same view as an earlier one to 0.1 degree"},
     };
     for (const Case& c : cases) {
         auto result = run_stipple(c.args);

@@ -133,7 +133,7 @@ TEST(CliTone, SeedsAreDrawnOneByOneAndAveraged) {
 
 TEST(CliTone, BadOptionsGetOneLine) {
     for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
-             {{"--seeds", "1,x"}, "stipple: --seeds: 'x' is not a number\n"},
+             {{"--seeds", "1,x"}, "stipple: --seeds: 'x' is not a finite number\n"},
              {{"--seeds", "1.5"}, "stipple: --seeds: '1.5' is not a whole number in [0, 4294967295]\n"},
              {{"--seed", "2", "--seeds", "1,2"}, "stipple: give --seed or --seeds, not both\n"},
              {{"--distances", "0"}, "stipple: --distances: 0 must be in (0, 10000]\n"},

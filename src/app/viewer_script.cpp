@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "export/plot_file.hpp"
 #include "params/param_table.hpp"
@@ -15,10 +16,9 @@ namespace stipple::app {
 namespace {
 
 double parse_number(const std::string& text, bool* ok) {
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    *ok = end != text.c_str() && *end == '\0' && std::isfinite(value);
-    return value;
+    const std::optional<double> value = parse_decimal(text);
+    *ok = value.has_value();
+    return value.value_or(0.0);
 }
 
 // A piece of the script quoted in a message: one line, and short (a 20 MB line was quoted whole).

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 
 namespace stipple::cli {
@@ -50,35 +51,34 @@ std::string Args::get(const std::string& name, const std::string& fallback) cons
 double Args::number(const std::string& name, double fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
-    const char* text = it->second.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double value = std::strtod(text, &end);
-    if (end == text || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-        fail("option " + name + ": '" + it->second + "' is not a finite number");
-    return value;
+    const std::optional<double> value = parse_decimal(it->second);
+    if (!value) fail("option " + name + ": '" + it->second + "' is not a finite number");
+    return *value;
 }
 
 long long Args::integer(const std::string& name, long long fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
-    const char* text = it->second.c_str();
-    char* end = nullptr;
-    errno = 0;
-    long long value = std::strtoll(text, &end, 10);
-    if (end == text || *end != '\0' || errno == ERANGE) fail("option " + name + ": '" + it->second + "' is not an integer");
-    return value;
+    const std::optional<int64_t> value = parse_decimal_integer(it->second);
+    if (!value) fail("option " + name + ": '" + it->second + "' is not an integer");
+    return *value;
 }
 
 glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
-    std::istringstream in(it->second);
+    const std::string& text = it->second;
     glm::dvec3 v;
-    char c1 = 0, c2 = 0;
-    if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !in.eof() || !std::isfinite(v.x) ||
-        !std::isfinite(v.y) || !std::isfinite(v.z))
-        fail("option " + name + ": '" + it->second + "' is not three numbers X,Y,Z");
+    size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t comma = i < 2 ? text.find(',', start) : text.size();
+        const std::optional<double> part =
+            comma == std::string::npos ? std::nullopt : parse_decimal(std::string_view(text).substr(start, comma - start));
+        if (!part || (i == 2 && text.find(',', start) != std::string::npos))
+            fail("option " + name + ": '" + text + "' is not three numbers X,Y,Z");
+        v[i] = *part;
+        start = comma + 1;
+    }
     // Read in double so that 1e300 is named for what it is, not "not a number".
     if (glm::any(glm::greaterThan(glm::abs(v), glm::dvec3(std::numeric_limits<float>::max()))))
         fail("option " + name + ": '" + it->second + "' has a number beyond single precision (3.4e+38)");

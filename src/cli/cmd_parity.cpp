@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "gpu/context.hpp"
 #include "render/device_parity.hpp"
 #include "stipple/object_data.hpp"
@@ -44,6 +45,7 @@ int run_parity(const std::vector<std::string>& argv) {
     std::set<std::string> options_set = object_options();
     options_set.insert({"--devices", "--paths", "--yaws", "--width", "--height"});
     Args args(argv, object_flags(), options_set);
+    if (args.has("--density-path")) fail("parity draws each path of --paths (default splat,vertex); --density-path does not apply");
     if (args.positionals().size() > 1) fail("parity takes at most one MODEL (see stipple --help)");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     const std::vector<std::string> names = gpu::Context::list_devices();
@@ -63,6 +65,9 @@ int run_parity(const std::vector<std::string>& argv) {
              std::to_string(height) + ")");
     const ObjectParams params = read_object_params(args);
     const ObjectData object = load_object_data(path, params.generation);
+    if (object.stipples->size() == 0)  // both devices would draw nothing and "agree"
+        fail_file(path, "has no stipple candidates at D_max " + printf_string("%g", params.generation.dmax) +
+                            " (raise --dmax): nothing to compare");
     const std::vector<ParityView> views = parity_views(int(yaws), paths);
     const VkExtent2D extent{uint32_t(width), uint32_t(height)};
 
@@ -71,8 +76,10 @@ int run_parity(const std::vector<std::string>& argv) {
         gpu::ContextOptions context_options;
         context_options.device_index = devices[size_t(d)];
         gpu::Context context(context_options);
-        // The rest pose of an animated model: parity is about drawing, not the animation.
-        runs[d] = run_parity_views(context, *object.mesh, *object.stipples, object.bounds, params, extent, views);
+        // An animated model as render draws it by default (its first animation at 0 s): without its
+        // motion, the candidates generated for stretch were all drawn as rest density (too dark).
+        runs[d] = run_parity_views(context, *object.mesh, *object.stipples, object.bounds, params, extent, views,
+                                   object.motion);
     }
     const ParityReport report = compare_parity(runs[0], runs[1], views);
 

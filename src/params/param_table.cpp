@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 
 namespace stipple {
@@ -245,14 +246,10 @@ double parse_param_text(const ParamSpec& spec, const std::string& text) {
         fail(where + " '" + text + "' is not one of " + choices_text(spec));
     }
     if (spec.type == ParamType::Bool) fail(where + " takes no value");
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double value = std::strtod(begin, &end);
-    if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-        fail(where + ": '" + text + "' is not a finite number");
-    if (auto problem = param_value_problem(spec, value)) fail(where + " = " + *problem);
-    return value;
+    const std::optional<double> value = parse_decimal(text);
+    if (!value) fail(where + ": '" + text + "' is not a finite number");
+    if (auto problem = param_value_problem(spec, *value)) fail(where + " = " + *problem);
+    return *value;
 }
 
 double param_lowest_value(const ParamSpec& spec) {

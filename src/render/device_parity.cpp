@@ -23,11 +23,11 @@ std::vector<ParityView> parity_views(int yaws, const std::vector<DensityPath>& p
 
 DeviceRun run_parity_views(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                            const Sphere& bounds, const ObjectParams& params, VkExtent2D extent,
-                           const std::vector<ParityView>& views) {
+                           const std::vector<ParityView>& views, const anim::Motion& motion) {
     RendererOptions options;
     options.count_drawn = true;
     StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
-    renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
+    renderer.add_object(mesh, stipples, glm::mat4(1.0f), params, motion);
     OffscreenTarget target(context, extent);
     const float aspect = float(extent.width) / float(extent.height);
     DeviceRun run;

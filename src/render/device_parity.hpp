@@ -9,6 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "anim/headroom.hpp"
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
 #include "stipple/stipple_set.hpp"
@@ -41,7 +42,7 @@ struct DeviceRun {
 // The object (framed on `bounds`, default look but `params`) drawn on `context` in every view.
 DeviceRun run_parity_views(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                            const Sphere& bounds, const ObjectParams& params, VkExtent2D extent,
-                           const std::vector<ParityView>& views);
+                           const std::vector<ParityView>& views, const anim::Motion& motion = {});
 
 struct ParityRow {
     ParityView view;

@@ -202,7 +202,7 @@ double ToneSurvey::max_over_min(size_t view) const {
         const double ink = s.mean_ink.at(view);
         lo = std::min(lo, ink), hi = std::max(hi, ink), ++counted;
     }
-    if (counted < 2) return std::numeric_limits<double>::quiet_NaN();
+    if (counted < 2 || hi == 0.0) return std::numeric_limits<double>::quiet_NaN();  // no ink anywhere: no ratio
     return lo > 0.0 ? hi / lo : std::numeric_limits<double>::infinity();
 }
 

@@ -13,6 +13,7 @@
 
 #include <zstd.h>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "core/hash.hpp"
 #include "core/parallel.hpp"
@@ -103,17 +104,14 @@ StippleCacheSettings& stipple_cache_settings() {
 }
 
 uint64_t parse_byte_size(const std::string& option, const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod(text.c_str(), &end);
+    const char last = text.empty() ? '\0' : text.back();
     double unit = 1.0;
-    const std::string suffix = end ? std::string(end) : "";
-    if (suffix == "k" || suffix == "K") unit = 1024.0;
-    else if (suffix == "m" || suffix == "M") unit = 1024.0 * 1024.0;
-    else if (suffix == "g" || suffix == "G") unit = 1024.0 * 1024.0 * 1024.0;
-    else if (!suffix.empty()) unit = -1.0;
-    const double bytes = value * unit;
-    if (end == text.c_str() || errno == ERANGE || unit < 0.0 || !std::isfinite(bytes) || bytes < 0.0 || bytes > 1e18)
+    if (last == 'k' || last == 'K') unit = 1024.0;
+    else if (last == 'm' || last == 'M') unit = 1024.0 * 1024.0;
+    else if (last == 'g' || last == 'G') unit = 1024.0 * 1024.0 * 1024.0;
+    const std::optional<double> value = parse_decimal(unit > 1.0 ? text.substr(0, text.size() - 1) : text);
+    const double bytes = value ? *value * unit : -1.0;
+    if (!std::isfinite(bytes) || bytes < 0.0 || bytes > 1e18)
         fail(option + ": '" + text + "' is not a size (bytes, or a number with k, M or G)");
     return uint64_t(bytes);
 }

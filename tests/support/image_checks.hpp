@@ -14,4 +14,14 @@ inline size_t ink_pixels(const Image& image) {
     return n;
 }
 
+// The mean ink (1 - luminance, 0..1) of `image` where `mask` is white: what `stipple tone` prints per cell.
+inline double mean_ink_inside(const Image& image, const Image& mask) {
+    double ink = 0.0;
+    size_t covered = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (luminance(mask, x, y) > 127) ink += 1.0 - luminance(image, x, y) / 255.0, ++covered;
+    return covered ? ink / double(covered) : 0.0;
+}
+
 }  // namespace stipple::test
