@@ -1,4 +1,5 @@
 // stipple: interactive illustrative stipple drawing of polygonal models (Lu et al., VMV 2002).
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -15,8 +16,8 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
-    // `stipple render --help`: the one usage text covers every command.
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    // `stipple render --help`, or `stipple info MODEL --json --help`: the one usage text covers every command.
+    if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
         stipple::cli::print_usage();
         return 0;
     }

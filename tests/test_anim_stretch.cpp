@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "anim/procedural_rigs.hpp"
+#include "anim/headroom.hpp"
 #include "anim/stretch.hpp"
 #include "support/anim_files.hpp"
 
@@ -75,6 +76,29 @@ TEST(AnimStretch, BendingCylinderAgainstADenseHandSweep) {
     EXPECT_GT(rigid, checked / 2);
     EXPECT_GT(report.max_ratio, 1.1f);  // the outside of the bend stretches
     EXPECT_LT(report.min_ratio, 0.9f);  // the inside is squeezed
+}
+
+// A polygon of no area at rest has no candidates: its ratio (5e-41 at rest, 0.5 posed) went beyond float
+// range and info printed "infx" (inf in --json). It reports 1 and is counted as opened, which info says.
+TEST(AnimStretch, APolygonOfNoAreaAtRestIsCountedAsOpenedNotAsInfiniteStretch) {
+    GltfBuilder quad = rigs::morphed_quad();
+    quad.doc["nodes"][0]["weights"] = {0.0, 0.0};  // the rest pose is the base positions
+    // Vertex 2 on the edge from vertex 0 to 1: triangle 0 1 2 has no area; target 0 ("lift") opens it.
+    const int base = quad.add_floats({0, 0, 0, 1, 0, 0, 0.5f, 0, 0, 0, 1, 0}, "VEC3");
+    const int lift = quad.add_floats({0, 0, 0, 0, 0, 0, 0.5f, 1, 0, 0, 0, 0}, "VEC3");
+    quad.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = base;
+    quad.doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = lift;
+    const AnimatedModel model = load_rig(quad, "anim_stretch_opened", "opened");
+    const StretchReport report = measure_stretch(model, 0);
+    EXPECT_EQ(report.opened_triangles, 1u);
+    EXPECT_TRUE(std::isfinite(report.max_ratio));
+    EXPECT_EQ(report.max_area_ratio[0], 1.0f) << "the opened polygon reports no stretch";
+    const StretchHeadroom headroom = measure_headroom(model);
+    EXPECT_EQ(headroom.opened_triangles, 1u);
+    EXPECT_NE(describe_headroom(headroom, 2).find("; 1 polygon of no area at rest opens in an animation and is drawn "
+                                                  "without stipples"),
+              std::string::npos)
+        << describe_headroom(headroom, 2);
 }
 
 TEST(AnimStretch, SampleTimesAddTheKeyframes) {

@@ -153,6 +153,16 @@ TEST(ParamTable, HelpReadmeAndParamsCommandListTheTablesText) {
         << "README.md's parameter table is not the table's: paste `stipple params --markdown` into it";
 }
 
+// --help anywhere after the command prints the usage (it was "unknown option --help" unless it came first).
+TEST(ParamTable, HelpAnywhereAfterTheCommandPrintsTheUsage) {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"info", "model.obj", "--json", "--help"}, {"params", "--markdown", "--help"}, {"render", "-h"}}) {
+        const test::CommandResult r = test::run_stipple(args);
+        EXPECT_EQ(r.exit_code, 0) << args.back() << ": " << r.err;
+        EXPECT_NE(r.out.find("Usage:"), std::string::npos) << r.out;
+    }
+}
+
 TEST(ParamTable, TheExecutableRejectsAnOutOfRangeValueInOneLine) {
     const test::CommandResult r = test::run_stipple({"render", "--dmax", "20", "-o", "/nonexistent/x.png"});
     EXPECT_EQ(r.exit_code, 1);

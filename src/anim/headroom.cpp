@@ -13,10 +13,14 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
     const Mesh& rest = model.rest;
     const size_t triangles = rest.triangle_count();
     std::vector<float> largest(triangles, 1.0f);
+    std::vector<uint8_t> opened(triangles, 0);
     headroom.bounds = compute_bounds(rest);
     for (size_t a = 0; a < model.animations.size(); ++a) {
         const StretchReport report = measure_stretch(model, static_cast<int>(a));
-        for (size_t t = 0; t < triangles; ++t) largest[t] = std::max(largest[t], report.max_area_ratio[t]);
+        for (size_t t = 0; t < triangles; ++t) {
+            largest[t] = std::max(largest[t], report.max_area_ratio[t]);
+            opened[t] |= report.opened[t];
+        }
         if (report.max_ratio > headroom.max_ratio) {
             headroom.max_ratio = report.max_ratio;
             headroom.max_animation = model.animations[a].name;
@@ -29,6 +33,7 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
         headroom.bounds.min = glm::min(headroom.bounds.min, report.bounds.min);
         headroom.bounds.max = glm::max(headroom.bounds.max, report.bounds.max);
     }
+    headroom.opened_triangles = static_cast<size_t>(std::count(opened.begin(), opened.end(), uint8_t(1)));
     headroom.per_triangle.resize(triangles);
     double weighted = 0.0, area = 0.0;
     for (size_t t = 0; t < triangles; ++t) {
@@ -53,7 +58,11 @@ std::string describe_headroom(const StretchHeadroom& h, size_t triangles) {
                   "polygons stretched, %zu capped; %.2fx the static candidates",
                   double(h.max_ratio), where.c_str(), double(h.cap), h.stretched_triangles, triangles,
                   h.capped_triangles, h.candidate_factor);
-    return line;
+    if (h.opened_triangles == 0) return line;
+    const bool one = h.opened_triangles == 1;
+    return line + std::string("; ") + std::to_string(h.opened_triangles) + (one ? " polygon" : " polygons") +
+           " of no area at rest " + (one ? "opens" : "open") + " in an animation and " + (one ? "is" : "are") +
+           " drawn without stipples";
 }
 
 }  // namespace stipple::anim

@@ -27,6 +27,7 @@ struct StretchHeadroom {
     std::string max_animation;        // the animation where it does ("" for none)
     size_t stretched_triangles = 0;   // polygons given headroom (ratio above 1)
     size_t capped_triangles = 0;      // polygons whose ratio exceeds the cap
+    size_t opened_triangles = 0;      // polygons of no area at rest that an animation opens (no stipples)
     Bounds bounds;                    // every vertex of the rest pose and of every sampled pose
     // The first animation whose sampled poses put a vertex beyond kMaxCoordinate (or at infinity), as
     // "animation 0 'Run'"; "" when every pose stays in range. Keys within range can still compose to

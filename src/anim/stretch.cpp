@@ -41,7 +41,14 @@ StretchReport measure_stretch(const AnimatedModel& model, int animation, uint32_
     const Mesh& rest = model.rest;
     const size_t triangles = rest.triangle_count();
     std::vector<double> rest_area(triangles);
-    for (size_t t = 0; t < triangles; ++t) rest_area[t] = triangle_area(rest, t);
+    double total_rest = 0.0;
+    for (size_t t = 0; t < triangles; ++t) total_rest += rest_area[t] = triangle_area(rest, t);
+    // A polygon of (next to) no area at rest has no candidates, whatever its ratio: 5e-41 at rest and 0.5
+    // posed made a ratio beyond float range ("polygons reach up to infx", inf in info --json). Such a
+    // polygon reports 1, and is counted where a pose opens it to a visible share of the surface.
+    const double mean_rest = triangles > 0 ? total_rest / double(triangles) : 0.0;
+    const double degenerate = 1e-9 * mean_rest, opened = 1e-3 * mean_rest;
+    std::vector<uint8_t> opens(triangles, 0);
     report.max_area_ratio.assign(triangles, -INFINITY);
     report.min_area_ratio.assign(triangles, INFINITY);
 
@@ -52,13 +59,13 @@ StretchReport measure_stretch(const AnimatedModel& model, int animation, uint32_
         evaluate_pose(model, animation, time, /*loop=*/false, pose);
         deform_cpu(model, pose, deformed);
         parallel_for(triangles, 4096, [&](size_t t) {
+            const glm::dvec3 a(deformed.positions[rest.indices[3 * t]]);
+            const glm::dvec3 b(deformed.positions[rest.indices[3 * t + 1]]);
+            const glm::dvec3 c(deformed.positions[rest.indices[3 * t + 2]]);
+            const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
             double ratio = 1.0;
-            if (rest_area[t] > 0.0) {
-                const glm::dvec3 a(deformed.positions[rest.indices[3 * t]]);
-                const glm::dvec3 b(deformed.positions[rest.indices[3 * t + 1]]);
-                const glm::dvec3 c(deformed.positions[rest.indices[3 * t + 2]]);
-                ratio = 0.5 * glm::length(glm::cross(b - a, c - a)) / rest_area[t];
-            }
+            if (rest_area[t] > degenerate) ratio = std::min(area / rest_area[t], 1e30);
+            else if (area > opened) opens[t] = 1;
             report.max_area_ratio[t] = std::max(report.max_area_ratio[t], static_cast<float>(ratio));
             report.min_area_ratio[t] = std::min(report.min_area_ratio[t], static_cast<float>(ratio));
         });
@@ -68,6 +75,8 @@ StretchReport measure_stretch(const AnimatedModel& model, int animation, uint32_
             report.bounds.max = glm::max(report.bounds.max, p);
         }
     }
+    report.opened_triangles = static_cast<size_t>(std::count(opens.begin(), opens.end(), uint8_t(1)));
+    report.opened = std::move(opens);
     if (triangles > 0) {
         report.max_ratio = *std::max_element(report.max_area_ratio.begin(), report.max_area_ratio.end());
         report.min_ratio = *std::min_element(report.min_area_ratio.begin(), report.min_area_ratio.end());

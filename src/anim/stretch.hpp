@@ -16,6 +16,10 @@ struct StretchReport {
     float max_ratio = 1.0f;               // over the mesh
     float min_ratio = 1.0f;
     Bounds bounds;                        // every vertex of every sampled pose
+    // Per triangle, 1 where it has (next to) no area at rest (1e-9 of the mean, so no candidates) and a
+    // pose opens it to over 1e-3 of the mean rest area: drawn without stipples there. And their count.
+    std::vector<uint8_t> opened;
+    size_t opened_triangles = 0;
 };
 
 // `uniform` evenly spaced times from 0 to the duration (both included) plus every keyframe time of

@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "stipple/object_data.hpp"
 
 namespace stipple::cli {
@@ -70,8 +71,9 @@ std::string animation_json(const ObjectData& object) {
     char stretch[256];
     std::snprintf(stretch, sizeof stretch,
                   "], \"stretch\": {\"max_area_ratio\": %.6g, \"headroom_cap\": %.6g, \"stretched_polygons\": %zu, "
-                  "\"capped_polygons\": %zu, \"candidate_factor\": %.6g}",
-                  double(h.max_ratio), double(h.cap), h.stretched_triangles, h.capped_triangles, h.candidate_factor);
+                  "\"capped_polygons\": %zu, \"opened_polygons\": %zu, \"candidate_factor\": %.6g}",
+                  double(h.max_ratio), double(h.cap), h.stretched_triangles, h.capped_triangles, h.opened_triangles,
+                  h.candidate_factor);
     return out + stretch;
 }
 
@@ -96,22 +98,25 @@ int run_info(const std::vector<std::string>& argv) {
         stipples.generation_seconds > 0 ? stipples.size() / stipples.generation_seconds : 0.0;
     if (args.flag("--json")) {
         std::printf(
-            "{\"model\": \"%s\", \"triangles\": %zu, \"vertices\": %zu, \"stipple_candidates\": %zu, "
+            "{\"model\": %s, \"triangles\": %zu, \"vertices\": %zu, \"stipple_candidates\": %zu, "
             "\"surface_area\": %.9g, \"bounds_min\": [%.9g, %.9g, %.9g], \"bounds_max\": [%.9g, %.9g, %.9g], "
             "\"bounding_sphere\": {\"center\": [%.9g, %.9g, %.9g], \"radius\": %.9g}, "
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
-            "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %.1f, "
+            "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %s, "
             "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, "
             "\"parts_turned_outward\": %zu, \"parts_turned_to_normals\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
-            "\"duplicates_dropped\": %zu, \"decoded\": \"%s\", %s}\n",
-            path.c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
+            "\"duplicates_dropped\": %zu, \"decoded\": %s, %s}\n",
+            json_string(path).c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
             object.bounds.center.y, object.bounds.center.z, object.bounds.radius,
             stipples.density_per_area, stipples.poisson_radius, object.load_seconds,
-            stipples.generation_seconds, stipples_per_second, stipples.from_cache ? "true" : "false",
+            // Read from the cache, the figure would be the cache's reading speed (83M/s), not generation's.
+            stipples.generation_seconds,
+            stipples.from_cache || stipples_per_second <= 0.0 ? "null" : printf_string("%.1f", stipples_per_second).c_str(),
+            stipples.from_cache ? "true" : "false",
             mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against,
             mesh.winding.parts_turned_outward, mesh.winding.parts_turned_to_normals, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
-            mesh.duplicates_dropped, mesh.decoded.c_str(),
+            mesh.duplicates_dropped, json_string(mesh.decoded).c_str(),
             animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());

@@ -88,7 +88,10 @@ std::string param_markdown_table() {
         std::string cli = "`--" + std::string(spec.cli) + "`";
         if (spec.type == ParamType::Bool) cli += ", `--no-" + std::string(spec.cli) + "`";
         const std::string effect = spec.effect == ParamEffect::Regenerate ? "new stipples" : "next frame";
-        const std::string deflt = spec.alias ? "" : default_text(spec);
+        // In the scene file's words, as the range column gives them ("on" read as a string there).
+        const std::string deflt = spec.alias                        ? ""
+                                  : spec.type == ParamType::Bool ? (spec.get(ObjectParams{}) != 0.0 ? "true" : "false")
+                                                                 : default_text(spec);
         out << "| `" << spec.key << "` | " << cli << " | " << param_range_text(spec) << " | " << deflt << " | "
             << effect << " | " << spec.help << (spec.alias ? " (alias, never written)" : "") << " |\n";
     }
