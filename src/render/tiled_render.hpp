@@ -22,6 +22,7 @@ uint32_t largest_tile_side(const gpu::Context& context);
 // Draws `view` (its extent the whole image) in tiles of at most `max_tile` pixels a side (and no larger
 // than one target holds: largest_tile_side) and returns the
 // opaque colour image. `renderer` holds the objects; the splat paths need targets that allow it (ours do).
+// Tiles overlap by the reach of the largest dot and keep only their own pixels, so they join without seams.
 Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile);
 
 }  // namespace stipple
