@@ -269,6 +269,26 @@ TEST(CliAnimation, ToneAndParityDrawAnAnimatedModelAsRenderDoes) {
     EXPECT_NE(same.out.find("parity holds"), std::string::npos) << same.out;
 }
 
+// --stats names the time into the animation the frame shows (it printed the scene clock: 5 s into a 2 s
+// loop); --fps spaces a camera_path's frames too (it was refused without --frames).
+TEST(CliAnimation, StatsTimeIsTheAnimationsAndFpsSpacesACameraPath) {
+    const fs::path dir = test::temp_dir("cli_anim_clock");
+    const std::string model = cylinder("cli_anim_clock_model");
+    auto looped = run_stipple(sparse({"render", model, "--time", "5", "--stats", "-o", (dir / "t.png").string(), "--width",
+                                      "96", "--height", "96"}));
+    ASSERT_EQ(looped.exit_code, 0) << looped.err;
+    EXPECT_NE(looped.out.find("'Bend' (2.000 s) at 1.000 s"), std::string::npos) << looped.out;
+
+    write_text(dir / "path.json", "{\"objects\": [{\"model\": \"" + model +
+                                      "\", \"params\": {\"dmax\": 0.05}}], \"camera_path\": [{\"yaw\": 0}, "
+                                      "{\"yaw\": 20}, {\"yaw\": 40}]}");
+    auto spaced = run_stipple({"render", (dir / "path.json").string(), "--fps", "10", "-o", (dir / "p%d.png").string(),
+                               "--width", "96", "--height", "96", "--stats"});
+    ASSERT_EQ(spaced.exit_code, 0) << spaced.err;
+    EXPECT_TRUE(fs::exists(dir / "p2.png"));
+    EXPECT_NE(spaced.out.find("at 0.200 s (last frame)"), std::string::npos) << "frame 2 at 10 fps\n" << spaced.out;
+}
+
 TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     const std::string model = cylinder("cli_anim_info");
     auto r = run_stipple({"info", model});

@@ -84,6 +84,45 @@ TEST(CliFrames, CameraPathFromTheSceneFile) {
     EXPECT_GT(fraction_differing(read_png((dir / "f0.png").string()), read_png((dir / "f1.png").string()), 8), 0.01);
 }
 
+// A scene of the default model and the camera_path given (JSON), written in `dir`'s sibling folder (the
+// test checks that nothing is written in `dir`).
+std::string scene_with_path(const std::filesystem::path& dir, const std::string& path) {
+    const std::filesystem::path scenes = dir.parent_path() / (dir.filename().string() + "-scenes");
+    std::filesystem::create_directories(scenes);
+    const std::filesystem::path file = scenes / (std::to_string(std::hash<std::string>{}(path)) + ".json");
+    std::ofstream(file) << "{\"objects\": [{\"model\": \"" << test::source_path("assets/blobby.glb")
+                        << "\"}], \"camera_path\": " << path << "}";
+    return file.string();
+}
+
+// %0Nd up to 99 wide (%010d was refused, though the message allowed it); %% is a literal % in a single
+// frame's name too (y%%.png was written as named); a camera_path zooming over the whole range the scene
+// file allows draws every frame (the distances' ratio overflowed a float: a blank frame with exit 0).
+TEST(CliFrames, PatternsAndCameraPathsAtTheirLimits) {
+    auto dir = test::temp_dir("frames-limits");
+    auto wide = run_stipple({"render", "-o", (dir / "d%010d.png").string(), "--frames", "2", "--orbit", "90", "--width",
+                             "64", "--height", "64"});
+    ASSERT_EQ(wide.exit_code, 0) << wide.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "d0000000001.png"));
+    auto percent = run_stipple({"render", "-o", (dir / "y%%.png").string(), "--width", "64", "--height", "64"});
+    ASSERT_EQ(percent.exit_code, 0) << percent.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "y%.png"));
+    auto literal = run_stipple({"render", "-o", (dir / "50%.png").string(), "--width", "64", "--height", "64"});
+    ASSERT_EQ(literal.exit_code, 0) << literal.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "50%.png")) << "a name that is no pattern is kept as written";
+
+    const std::string zoom = scene_with_path(dir, "[{\"world_distance\": 1e-20}, {\"world_distance\": 1e20}]");
+    auto frames = run_stipple({"render", zoom, "-o", (dir / "z%d.png").string(), "--frames", "3", "--width", "64",
+                               "--height", "64"});
+    ASSERT_EQ(frames.exit_code, 0) << frames.err;
+    const std::string at_one = scene_with_path(dir, "[{\"world_distance\": 1}]");
+    auto one = run_stipple({"render", at_one, "-o", (dir / "one.png").string(), "--width", "64", "--height", "64"});
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    // Frame 1 sits halfway in the logarithm of the distance: at 1, as the one-camera scene.
+    EXPECT_GT(test::ink_pixels(read_png((dir / "z1.png").string())), 100u);
+    EXPECT_LT(fraction_differing(read_png((dir / "z1.png").string()), read_png((dir / "one.png").string()), 8), 0.01);
+}
+
 TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
     auto dir = test::temp_dir("frames-bad");
     struct Case {
@@ -99,6 +138,15 @@ TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
         {{"render", "-o", (dir / "%d_%d.png").string(), "--frames", "2", "--orbit", "90"}, "more than one"},
         {{"render", "-o", (dir / "%d.png").string(), "--frames", "0", "--orbit", "90"}, "--frames"},
         {{"render", "-o", (dir / "%d.png").string(), "--frames", "3", "--orbit", "90", "--repeat", "2"}, "--repeat"},
+        // printf's %Nd pads with spaces, which no file name wants: %0Nd pads with zeros.
+        {{"render", "-o", (dir / "%10d.png").string(), "--frames", "2", "--orbit", "90"}, "%0Nd"},
+        {{"render", "-o", (dir / "%0100d.png").string(), "--frames", "2", "--orbit", "90"}, "%0Nd"},
+        // Mask frames 0 and 1 (g10, g11) were written over by image frames 10 and 11, in silence.
+        {{"render", "-o", (dir / "g%d.png").string(), "--mask", (dir / "g1%d.png").string(), "--frames", "12", "--orbit",
+          "90"},
+         "names the file of an image of -o"},
+        {{"render", scene_with_path(dir, "[{\"yaw\": 30}]"), "-o", (dir / "b%d.png").string(), "--frames", "5"},
+         "a camera_path of one camera shows every frame the same"},
     };
     for (const Case& c : cases) {
         auto r = run_stipple(c.args);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 
 #include "io/png_io.hpp"
 #include "support/run_command.hpp"
@@ -81,6 +83,34 @@ TEST(CliPrint, A3At600DpiIsTheScreenImageEnlarged) {
     double margin_ink = 0.0;
     for (int x = 0; x < page.width; ++x) margin_ink += darkness(page, size_t(x), 3) + darkness(page, size_t(x), size_t(page.height - 3));
     EXPECT_EQ(margin_ink, 0.0);
+}
+
+// A print records its resolution (a pHYs chunk in pixels per metre), so that it prints at its page size;
+// without it programs assume 72 or 96 dpi. Screen images record none.
+TEST(CliPrint, APrintRecordsItsResolution) {
+    const auto dir = test::temp_dir("cli-print-dpi");
+    const std::string print = (dir / "print.png").string(), screen = (dir / "screen.png").string();
+    run_ok({"render", "--page", "60x80mm", "--dpi", "150", "--height", "128", "-o", print});
+    run_ok({"render", "--width", "64", "--height", "64", "-o", screen});
+    auto chunk_at = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return std::make_pair(bytes, bytes.find("pHYs"));
+    };
+    const auto [bytes, at] = chunk_at(print);
+    ASSERT_NE(at, std::string::npos) << "no pHYs chunk";
+    auto word = [&](size_t i) {
+        return uint32_t(uint8_t(bytes[i])) << 24 | uint32_t(uint8_t(bytes[i + 1])) << 16 | uint32_t(uint8_t(bytes[i + 2])) << 8 |
+               uint32_t(uint8_t(bytes[i + 3]));
+    };
+    EXPECT_EQ(word(at - 4), 9u);                                   // the chunk's length
+    EXPECT_EQ(word(at + 4), uint32_t(std::lround(150 / 0.0254)));  // 5906 pixels a metre
+    EXPECT_EQ(word(at + 8), word(at + 4));
+    EXPECT_EQ(bytes[at + 12], 1) << "the unit is the metre";
+    EXPECT_LT(at, bytes.find("IDAT")) << "PNG wants pHYs before the image data";
+    const Image image = read_png(print);  // still a PNG that reads
+    EXPECT_GT(image.width, 0);
+    EXPECT_EQ(chunk_at(screen).second, std::string::npos);
 }
 
 TEST(CliPrint, TilesJoinWithoutSeams) {

@@ -303,6 +303,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--dot-style", "circle"}, "--dot-style is for vector output"},
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--pen-width", "0.5"}, "--pen-width is for vector output"},
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--fill-paper"}, "a print image has its paper"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--width", "4000"}, "--width does not apply to a print image"},
         {{"render", "-o", "x.png", "--page", "A3", "--dpi", "2400"}, "more than a PNG of 2 GiB of pixels"},
         {{"bench", "--out", ""}, "--out needs a folder"},
         {{"info", "--cache-dir", ""}, "--cache-dir needs a folder"},

@@ -24,7 +24,7 @@ bool any_animated(const std::vector<ObjectData>& objects) {
     return false;
 }
 
-AnimationClock read_animation_clock(const Args& args, bool animated) {
+AnimationClock read_animation_clock(const Args& args, bool animated, bool camera_path) {
     AnimationClock clock;
     for (const char* option : {"--time", "--fps"})
         if (args.has(option) && !animated)
@@ -34,7 +34,8 @@ AnimationClock read_animation_clock(const Args& args, bool animated) {
         if (std::abs(clock.time) > 1e6) fail("--time = " + args.get("--time", "") + " must be in -1e6..1e6 seconds");
     }
     if (args.has("--fps")) {
-        if (!args.has("--frames")) fail("--fps needs --frames N (the number of frames to render)");
+        if (!args.has("--frames") && !camera_path)
+            fail("--fps needs --frames N (the number of frames to render) or a scene's camera_path");
         clock.fps = args.number("--fps", 30.0);
         if (!(clock.fps > 0.0) || clock.fps > 1000.0) fail("--fps = " + args.get("--fps", "") + " must be > 0 and <= 1000");
     }

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "core/unit_direction.hpp"
+#include "anim/pose.hpp"
 #include "cli/animation_options.hpp"
 #include "cli/args.hpp"
 #include "cli/cache_options.hpp"
@@ -61,15 +63,20 @@ bool same_file(const std::string& a, const std::string& b) {
            std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec);
 }
 
-// A single frame keeps -o as written unless it holds a frame number (a name may contain '%').
+// A single frame reads -o as a pattern where it is one (%% a literal %, %d the frame number) and keeps it
+// as written where it is not (50%.png).
 std::string output_path(const std::string& pattern, size_t index, bool sequence) {
     if (sequence) return frame_path(pattern, index);
     try {
-        return has_frame_number(pattern) ? frame_path(pattern, index) : pattern;
+        return frame_path(pattern, index);
     } catch (const Error&) {
         return pattern;
     }
 }
+
+// A path as written, made absolute and normal: two patterns that name one file for different frames
+// (g%d.png and g1%d.png: frame 10 and mask 0) compare equal.
+std::string normal_path(const std::string& path) { return std::filesystem::absolute(path).lexically_normal().string(); }
 
 }  // namespace
 
@@ -169,6 +176,9 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (print && (args.has("--repeat") || args.has("--mask")))
         fail("--dpi renders a print image; --repeat and --mask are for screen images");
+    if (print && args.has("--width"))
+        fail("--width does not apply to a print image: its size follows --page and --dpi (--height sets the screen "
+             "drawing it enlarges)");
     long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
     if (width < 1 || width > 16384 || height < 1 || height > 16384)
         fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
@@ -211,7 +221,7 @@ int run_render(const std::vector<std::string>& argv) {
     double prepare_seconds = seconds_since(start);
 
     const bool animated = any_animated(content.objects);
-    const AnimationClock clock = read_animation_clock(args, animated);
+    const AnimationClock clock = read_animation_clock(args, animated, !scene.camera_path.empty());
     float aspect = float(width) / float(height);
     if (print) {
         const VkExtent2D drawing = app::print_layout(*print).drawing_px;
@@ -231,6 +241,14 @@ int run_render(const std::vector<std::string>& argv) {
         same_file(output_path(args.get("--mask", ""), cameras.size() - 1, true), output_path(output, cameras.size() - 1, true)))
         fail("--mask " + args.get("--mask", "") + " names the same file as -o " + output + " for frame " +
              std::to_string(cameras.size() - 1) + ": give it another");
+    if (sequence && args.has("--mask")) {
+        std::set<std::string> images;
+        for (size_t i = 0; i < cameras.size(); ++i) images.insert(normal_path(output_path(output, i, true)));
+        for (size_t i = 0; i < cameras.size(); ++i)
+            if (images.count(normal_path(output_path(args.get("--mask", ""), i, true))))
+                fail("--mask " + args.get("--mask", "") + " names the file of an image of -o " + output + " for frame " +
+                     std::to_string(i) + " (" + output_path(args.get("--mask", ""), i, true) + "): give it another");
+    }
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 
     gpu::ContextOptions context_options;
@@ -281,7 +299,7 @@ int run_render(const std::vector<std::string>& argv) {
             const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0,
                                                  args.flag("--stats") ? &print_stats : nullptr);
             render_seconds = seconds_since(render_start);
-            write_png(output_path(output, i, sequence), page);
+            write_png(output_path(output, i, sequence), page, print->dpi);
             bar.update(double(i + 1) / double(cameras.size()));
             continue;
         }
@@ -348,8 +366,10 @@ int run_render(const std::vector<std::string>& argv) {
             const ObjectData& o = content.objects[i];
             if (!o.motion) continue;
             const anim::Animation& a = o.motion.model->animations[size_t(resolve_animation(o, scene.objects[i].animation))];
+            // The time into the animation the frame shows (looped or held), not the scene clock's.
             std::printf("animation:          object %zu: '%s' (%.3f s) at %.3f s%s\n", i, a.name.c_str(), a.duration,
-                        scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
+                        anim::animation_time(a, scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
+                                             scene.objects[i].animation.loop),
                         sequence ? " (last frame)" : "");
         }
         for (const auto& [pass, ms] : stats.gpu_ms)

@@ -89,21 +89,24 @@ Vector and print output (render):
                           image-space --silhouette-lines become the outline they trace (the contours).
                           x.csv holds the dots alone, one row each
   --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
-                          (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4)
-  --margin MM             white border around the drawing (default 10)
+                          (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4 for
+                          vector output; a print image names its page)
+  --margin MM             border of bare paper around the drawing (default 10)
   --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
                           dots 0.3)
   --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)
-  --fill-paper            paint the page in the scene's paper colour
+  --fill-paper            SVG and PDF: paint the page in the scene's paper colour (a print image's
+                          page is always the paper colour)
   --show-travel           SVG: draw the pen-up moves in light red, to look at the plot order
   --dpi N                 with -o x.png and --page: a print-resolution page (50..2400 dpi) that looks
                           like the screen image enlarged: the same stipples, each a disc of the same
-                          share of ink, as at --height pixels (default 1024) for the drawing's height
+                          share of ink, as at --height pixels (default 1024) for the drawing's height;
+                          its size follows the page (--width does not apply), its dpi is in the PNG
   --tile N                print images are drawn in tiles of at most N pixels a side (default 4096)
 
-  With several frames, -o (and --mask) must hold a frame number in printf style: -o frames/%%04d.png
-  writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%). A progress bar shows on a
-  terminal; the same command always writes the same files. With a SCENE.json, --yaw, --pitch,
+  With several frames, -o (and --mask) must hold a frame number, %%d or %%0Nd: -o frames/%%04d.png
+  writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
+  progress bar shows on a terminal; the same command always writes the same files. With a SCENE.json, --yaw, --pitch,
   --distance and --light override the scene's camera and light.
 
 View options (view also takes --yaw, --pitch, --distance, --light, --device and the stipple options):

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -53,7 +54,39 @@ bool png_size_writable(int64_t width, int64_t height, int channels) {
     return width > 0 && height > 0 && (width * channels + 1) * height <= std::numeric_limits<int>::max();
 }
 
-void write_png(const std::string& path, const Image& image) {
+namespace {
+
+// The CRC-32 that PNG chunks carry (ISO 3309, as zlib's crc32).
+uint32_t png_crc(const uint8_t* bytes, size_t size) {
+    uint32_t crc = 0xffffffffu;
+    for (size_t i = 0; i < size; ++i) {
+        crc ^= bytes[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return crc ^ 0xffffffffu;
+}
+
+void put_big_endian(std::vector<uint8_t>& out, uint32_t value) {
+    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(value >> shift));
+}
+
+// stb_image_write writes no pHYs: one is put after IHDR (8 bytes of signature, then 25 of IHDR), where
+// PNG wants it (before the image data).
+void insert_resolution(std::vector<uint8_t>& png, double dpi) {
+    const uint32_t per_metre = uint32_t(std::lround(dpi / 0.0254));
+    std::vector<uint8_t> chunk;
+    put_big_endian(chunk, 9);
+    for (char c : {'p', 'H', 'Y', 's'}) chunk.push_back(uint8_t(c));
+    put_big_endian(chunk, per_metre);
+    put_big_endian(chunk, per_metre);
+    chunk.push_back(1);  // unit: the metre
+    put_big_endian(chunk, png_crc(chunk.data() + 4, chunk.size() - 4));
+    png.insert(png.begin() + 33, chunk.begin(), chunk.end());
+}
+
+}  // namespace
+
+void write_png(const std::string& path, const Image& image, double dpi) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4)
         fail_file(path, "cannot write PNG: bad image size " + std::to_string(image.width) + "x" +
                             std::to_string(image.height) + "x" + std::to_string(image.channels));
@@ -70,6 +103,7 @@ void write_png(const std::string& path, const Image& image) {
     if (!stbi_write_png_to_func(append_bytes, &encoded, image.width, image.height, image.channels,
                                 image.pixels.data(), image.width * image.channels))
         fail_file(path, "cannot write PNG: encoding failed");
+    if (dpi > 0.0 && encoded.size() > 33) insert_resolution(encoded, dpi);
 
     const std::filesystem::path fs_path(path);
     if (fs_path.has_parent_path()) {

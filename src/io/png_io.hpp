@@ -13,9 +13,10 @@ struct Image {
     std::vector<uint8_t> pixels;  // width * height * channels bytes
 };
 
-// Writes `image` as PNG, creating missing parent folders.
+// Writes `image` as PNG, creating missing parent folders. `dpi` > 0 records the resolution (a pHYs
+// chunk), so that a print image prints at its page size rather than at a viewer's guess of 72 or 96 dpi.
 // Throws stipple::Error("<path>: cannot write PNG ...") on a malformed image or an I/O failure.
-void write_png(const std::string& path, const Image& image);
+void write_png(const std::string& path, const Image& image, double dpi = 0.0);
 
 // Whether write_png can encode an image of this size (stb_image_write sizes its filtered copy,
 // (width * channels + 1) * height bytes, in an int): callers that draw large images ask first.

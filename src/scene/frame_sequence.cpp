@@ -13,8 +13,9 @@ namespace {
 OrbitCamera lerp(const OrbitCamera& a, const OrbitCamera& b, float t) {
     OrbitCamera c;
     c.target = glm::mix(a.target, b.target, t);
-    // Distances interpolate geometrically so that a zoom proceeds at a steady rate.
-    c.distance = a.distance * std::pow(b.distance / a.distance, t);
+    // Distances interpolate geometrically so that a zoom proceeds at a steady rate; in double, since the
+    // ratio of two distances the scene file allows (1e-21..1e24) overflows a float (a blank frame).
+    c.distance = float(double(a.distance) * std::pow(double(b.distance) / double(a.distance), double(t)));
     c.yaw_deg = a.yaw_deg + (b.yaw_deg - a.yaw_deg) * t;
     c.pitch_deg = a.pitch_deg + (b.pitch_deg - a.pitch_deg) * t;
     c.fov_y_deg = a.fov_y_deg + (b.fov_y_deg - a.fov_y_deg) * t;
@@ -45,6 +46,8 @@ std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_b
     std::vector<OrbitCamera> keys;
     for (const SceneCamera& key : scene.camera_path) keys.push_back(resolve_camera(key, scene_bounds, aspect));
     if (frames == 0) return keys;
+    if (keys.size() == 1 && frames > 1 && !animated)
+        fail("a camera_path of one camera shows every frame the same: give it two or more, or render one frame");
     for (size_t i = 0; i < frames; ++i) {
         if (keys.size() == 1 || frames == 1) {
             cameras.push_back(keys.front());
@@ -75,11 +78,15 @@ Conversion find_conversion(const std::string& pattern) {
             ++i;
             continue;
         }
+        // %d, or %0Nd (N up to 99): zero-padded. printf's %Nd pads with spaces, which no file name wants.
         size_t j = i + 1;
+        const bool zero = j < pattern.size() && pattern[j] == '0';
+        if (zero) ++j;
         int width = 0;
-        while (j < pattern.size() && std::isdigit((unsigned char)pattern[j]) && j - i <= 2)
+        const size_t digits_at = j;
+        while (j < pattern.size() && std::isdigit((unsigned char)pattern[j]) && j - digits_at < 2)
             width = width * 10 + (pattern[j++] - '0');
-        if (j >= pattern.size() || pattern[j] != 'd')
+        if (j >= pattern.size() || pattern[j] != 'd' || (j > digits_at && !zero))
             fail("output pattern '" + pattern + "': only %d or %0Nd (N up to 99) may stand for the frame number");
         if (found.position != std::string::npos)
             fail("output pattern '" + pattern + "' has more than one frame number");
