@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <deque>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
 #include "render/density_formulas.hpp"
@@ -247,6 +249,36 @@ TEST_F(Silhouettes, LinesDoNotSpillInsideAConvexObject) {
     // would ink far deeper.
     EXPECT_LE(deepest, 3u);
     EXPECT_LE(double(spilled), 0.001 * double(total));
+}
+
+// The order of a scene's objects does not show through: a toon object listed before a nearer object
+// without toon had its ink drawn over that object (its stipples were hidden there, its ink not).
+TEST_F(Silhouettes, ToonInkIsHiddenByANearerObjectWhateverTheirOrder) {
+    ObjectParams plain;
+    const Prepared sphere = test::prepare(make_icosphere(4), plain);
+    ObjectParams toon = plain;
+    toon.toon = true;
+    // A small sphere nearer the camera, over the large one's rim (where its toon ink is).
+    const glm::mat4 front = glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 1.2f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f));
+    auto draw = [&](const ObjectParams& back, bool back_first) {
+        StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+        if (back_first) renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), back);
+        renderer.add_object(sphere.mesh, sphere.stipples, front, plain);
+        if (!back_first) renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), back);
+        OffscreenTarget target(*context, {640, 512});
+        const FrameView view = test::framed_view({glm::vec3(0.0f), 1.8f}, target.extent(), 1.0f, 0.0f, 0.0f);
+        return target.render(renderer, view).color;
+    };
+    auto differing = [](const Image& a, const Image& b) {
+        size_t n = 0;
+        for (size_t i = 0; i < a.pixels.size(); i += 4) n += a.pixels[i] != b.pixels[i];
+        return n;
+    };
+    const Image alone_plain = draw(plain, true);
+    EXPECT_EQ(differing(alone_plain, draw(plain, false)), 0u) << "without toon the order changes nothing";
+    const size_t toon_order = differing(draw(toon, true), draw(toon, false));
+    std::printf("toon object listed first or last: %zu pixels differ\n", toon_order);
+    EXPECT_EQ(toon_order, 0u);
 }
 
 TEST_F(Silhouettes, ToonRampDarkensTheRimAndFadesItsStipples) {

@@ -55,7 +55,13 @@ void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
 
 void StippleRenderer::record_depth(VkCommandBuffer cb) {
     VkPipeline bound = VK_NULL_HANDLE;
-    for (const auto& object : objects_) {
+    // Toon objects last: their ink is written with the depth test, so an object without toon that lies
+    // nearer must have its depth in the buffer first (drawn after, it hid the toon object's stipples but
+    // not its ink: the order of a scene's objects showed through). Among toon objects the nearest wins.
+    std::vector<const ObjectGpu*> order;
+    for (const auto& object : objects_) order.push_back(object.get());
+    std::stable_partition(order.begin(), order.end(), [](const ObjectGpu* object) { return !object->params.toon; });
+    for (const ObjectGpu* object : order) {
         if (object->geometry.index_count == 0) continue;
         // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
         bool toon = object->params.toon;
