@@ -484,6 +484,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"flat_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
                  [1,0,0,0, 1,1e-9,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "singular"},
+        // A mirror drew the object inside out (the depth pass kept its far faces).
+        BadScene{"mirror_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
+                 [-1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})",
+                 "objects[0].transform.matrix", "mirrors the object"},
         BadScene{"huge_matrix", R"({"objects": [{"model": "sphere.obj", "transform": {"matrix":
                  [1e20,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "column 0 scales its axis by 1e+20"},

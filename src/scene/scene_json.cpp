@@ -177,6 +177,12 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
         const glm::dvec3 lengths(glm::length(axes[0]), glm::length(axes[1]), glm::length(axes[2]));
         if (!(std::abs(glm::determinant(axes)) > 1e-6 * lengths.x * lengths.y * lengths.z))
             r.error(w, "the matrix is singular (it flattens the object)");
+        // A mirror turns every polygon's winding: the depth pass kept the far faces and the toon shading
+        // flipped every normal (a mirrored object drew inside out). A glTF file's own mirroring transforms
+        // are undone at load; here the model should be mirrored in its file.
+        else if (glm::determinant(axes) < 0.0)
+            r.error(w, "the matrix mirrors the object (its determinant is negative), which stipple does not draw: "
+                       "mirror the model in its file");
         for (int c = 0; c < 3; ++c) {
             if (!(lengths[c] >= 1e-6 && lengths[c] <= 1e6)) {
                 r.error(w, "column " + std::to_string(c) + " scales its axis by " + printf_string("%g", lengths[c]) +
