@@ -439,6 +439,23 @@ TEST(BenchCompare, SaysHowTheRunsDifferAndLeavesOutModelsOfOtherGeometry) {
     const bench::Comparison deep = bench::compare_runs(deep_text, "old.json", bench::json_report(old_run));
     EXPECT_TRUE(deep.not_comparable.empty());
     EXPECT_EQ(deep.compared, 12u);
+    // The depth options and the plot order's dot count change the speeds too (they read as regressions).
+    bench::BenchResults culled = old_run, more_dots = old_run;
+    culled.depth_cull = "on";
+    culled.depth_raster = "fixed";
+    EXPECT_EQ(bench::compare_runs(bench::json_report(old_run), "old.json", bench::json_report(culled)).settings,
+              (std::vector<std::string>{"depth_cull auto -> on", "depth_raster auto -> fixed"}));
+    bench::BenchResults few_dots = old_run;
+    few_dots.plot_order = bench::PlotOrderRow{};
+    few_dots.plot_order->blue_noise = bench::PlotOrderFigures{1000, 0.001};
+    more_dots.plot_order = bench::PlotOrderRow{};
+    more_dots.plot_order->blue_noise = bench::PlotOrderFigures{40000, 0.08};
+    const bench::Comparison dots = bench::compare_runs(bench::json_report(few_dots), "old.json", bench::json_report(more_dots));
+    EXPECT_TRUE(dots.slower.empty());
+    ASSERT_EQ(dots.not_comparable.size(), 1u);
+    EXPECT_EQ(dots.not_comparable[0], "plot order / blue noise: 1000 -> 40000 dots");
+    EXPECT_NE(bench::comparison_text(dots, "old.json").find("not comparable (other dot count), left out: plot order"),
+              std::string::npos);
 }
 
 TEST(BenchCompare, MalformedOrMissingFilesFailWithOneLineNamingThem) {
@@ -512,6 +529,16 @@ TEST(BenchPlotOrder, WithoutTheScanTheBunnyIsLeftOutWithANote) {
 }
 
 // --- stipple bench ----------------------------------------------------------------------------
+
+// Results that cannot be written are said before the run, not after every frame has been timed.
+TEST(BenchCommand, AnUnwritableResultIsRefusedBeforeTheRun) {
+    const std::filesystem::path out = test::temp_dir("bench_unwritable");
+    std::filesystem::create_directories(out / "results.json");  // a folder where the file goes
+    test::CommandResult r = run_stipple({"bench", "--quick", "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "stipple: " + (out / "results.json").string() + ": cannot be written: the results would be lost after the run\n");
+    EXPECT_EQ(r.out, "") << "nothing was run";
+}
 
 TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
     fs::path out = test::temp_dir("bench_quick");

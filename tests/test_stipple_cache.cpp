@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "mesh/primitives.hpp"
 #include "core/hash.hpp"
 #include "stipple/cache_entry_format.hpp"
@@ -227,6 +228,20 @@ TEST(StippleCache, TheFolderStaysUnderItsLimitLeastRecentlyUsedFirst) {
         << "an old entry nobody read should have been evicted";
     EXPECT_GT(clear_cache(dir), 0u);
     EXPECT_TRUE(list_cache_entries(dir).empty());
+    // A folder not made yet is an empty cache; one that cannot be read is said (a path under a file
+    // listed as an empty cache, and clearing it "freed 0 MB", both with exit status 0).
+    EXPECT_TRUE(list_cache_entries(dir / "not-made-yet").empty());
+    const fs::path under_a_file = dir / "plain-file" / "stipples";
+    std::ofstream(dir / "plain-file") << "x";
+    for (int clear = 0; clear < 2; ++clear) {
+        try {
+            if (clear) clear_cache(under_a_file);
+            else list_cache_entries(under_a_file);
+            ADD_FAILURE() << "a folder under a file was read as an empty cache";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("cannot read the stipple cache folder"), std::string::npos) << e.what();
+        }
+    }
 }
 
 TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {

@@ -134,7 +134,8 @@ Comparison compare_runs(const std::string& old_text, const std::string& old_name
     std::map<std::string, double> old_speeds = read_speeds(old_text, old_name), new_speeds = read_speeds(new_text, "this run");
     const json old_root = json::parse(old_text), new_root = json::parse(new_text);
     std::vector<std::string> settings;
-    for (const char* key : {"width", "height", "queued_frames", "timed_frames", "warmup_frames", "quick", "device"}) {
+    for (const char* key : {"width", "height", "queued_frames", "timed_frames", "warmup_frames", "quick", "device",
+                            "depth_cull", "depth_raster"}) {
         const std::string was = field_text(old_root, key), now = field_text(new_root, key);
         if (!was.empty() && !now.empty() && was != now) settings.push_back(std::string(key) + " " + was + " -> " + now);
     }
@@ -148,6 +149,19 @@ Comparison compare_runs(const std::string& old_text, const std::string& old_name
         for (auto* speeds : {&old_speeds, &new_speeds})
             std::erase_if(*speeds, [&](const auto& entry) { return entry.first.rfind(prefix, 0) == 0; });
     }
+    // The plot order's speed depends on how many dots it orders (--plot-dots): 40,000 against 1,000 read
+    // as a 30% regression.
+    const auto plot_dots = [](const json& root, const std::string& what) {
+        if (!root.contains("plot_order") || !root["plot_order"].is_object()) return std::string();
+        return field_text(root["plot_order"].value(what, json()), "dots");
+    };
+    if (old_root.contains("plot_order") && old_root["plot_order"].is_object())
+        for (const auto& [what, entry] : old_root["plot_order"].items()) {
+            const std::string was = plot_dots(old_root, what), now = plot_dots(new_root, what);
+            if (was.empty() || now.empty() || was == now) continue;
+            not_comparable.push_back("plot order / " + what + ": " + was + " -> " + now + " dots");
+            for (auto* speeds : {&old_speeds, &new_speeds}) speeds->erase("plot order / " + what);
+        }
     Comparison c = compare_speeds(old_speeds, new_speeds, threshold);
     c.settings = std::move(settings);
     c.not_comparable = std::move(not_comparable);
@@ -185,7 +199,9 @@ std::string comparison_text(const Comparison& c, const std::string& old_name, do
         for (size_t i = 0; i < c.settings.size(); ++i) text += (i ? "; " : " ") + c.settings[i];
         text += "\n";
     }
-    for (const std::string& model : c.not_comparable) text += "  not comparable (other geometry), left out: " + model + "\n";
+    for (const std::string& what : c.not_comparable)
+        text += "  not comparable (other " + std::string(what.rfind("plot order", 0) == 0 ? "dot count" : "geometry") +
+                "), left out: " + what + "\n";
     for (const SpeedChange& s : c.slower) text += "  slower: " + change_text(s) + "\n";
     for (const std::string& key : c.only_in_old) text += "  missing in this run: " + key + "\n";
     for (const std::string& key : c.only_in_new) text += "  missing in " + old_name + ": " + key + "\n";

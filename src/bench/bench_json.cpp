@@ -139,6 +139,8 @@ std::string json_report(const BenchResults& r) {
         {"queued_frames", r.queued},
         {"timed_frames", r.frames},
         {"quick", r.quick},
+        {"depth_cull", r.depth_cull},
+        {"depth_raster", r.depth_raster},
         {"view", {{"yaw_deg", kViewYawDeg}, {"pitch_deg", kViewPitchDeg}, {"distance", kViewDistance}}},
         {"models_dir", r.models_dir},
         {"scans_found", r.scans_found},

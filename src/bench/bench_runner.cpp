@@ -193,6 +193,8 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
     results.frames = options.frames;
     results.warmup = options.warmup;
     results.quick = options.quick;
+    results.depth_cull = depth_cull_name(options.depth_cull);
+    results.depth_raster = depth_raster_name(options.depth_raster);
     results.models_dir = options.models_dir.string();
     results.cache_dir = options.cache_dir.string();
     results.scans_found = scans_available(options.models_dir);

@@ -143,6 +143,7 @@ struct BenchResults {
     uint32_t width = 0, height = 0;
     int frames = 0, warmup = 0, queued = 1;
     bool quick = false;
+    std::string depth_cull = "auto", depth_raster = "auto";  // the options' names, for --compare
     std::string models_dir;
     bool scans_found = false;
     std::string cache_dir;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,13 @@ int run_bench(const std::vector<std::string>& argv) {
         std::filesystem::create_directories(out, ec);
         if (ec || !std::filesystem::is_directory(out))
             fail_file(out.string(), "cannot make the results folder" + (ec ? ": " + ec.message() : std::string(" (a file is there)")));
+        // And the files in it can be written (a folder results.md, or /proc, failed after every frame was timed).
+        std::filesystem::create_directories(out / "images", ec);
+        for (const std::filesystem::path& file : {out / "results.md", out / "results.json", out / "chart.svg", out / "images" / ".write-test"}) {
+            const bool existed = std::filesystem::exists(file, ec);
+            if (!std::ofstream(file, std::ios::app)) fail_file(file.string(), "cannot be written: the results would be lost after the run");
+            if (!existed) std::filesystem::remove(file, ec);
+        }
     }
     options.image_dir = out / "images";
     // The plot-order row: in a full run 150k dots and the bunny's view; --quick (in the test suite)

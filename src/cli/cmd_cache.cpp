@@ -14,9 +14,10 @@ namespace stipple::cli {
 
 namespace {
 
+// In the units --cache-size reads (500M is 500 MiB): "1073.7 MB" for the default 1G read as another size.
 std::string megabytes(uint64_t bytes) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / 1e6);
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / 1048576.0);
     return text;
 }
 
@@ -43,6 +44,8 @@ int run_cache(const std::vector<std::string>& argv) {
     std::error_code ec;
     if (args.has("--cache-dir") && !std::filesystem::is_directory(settings.dir, ec))
         fail("--cache-dir " + settings.dir.string() + ": no such folder");
+    if (std::filesystem::exists(settings.dir, ec) && !std::filesystem::is_directory(settings.dir, ec))
+        fail_file(settings.dir.string(), "the stipple cache folder is a file");
     if (args.flag("--clear")) {
         const uint64_t freed = clear_cache(settings.dir);
         std::printf("cleared %s: %s freed\n", settings.dir.c_str(), megabytes(freed).c_str());

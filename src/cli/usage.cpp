@@ -181,8 +181,8 @@ reopened with the same generation parameters skips generation (~4-5 bytes per st
 when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
                           $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples)
-  --cache-size SIZE       the folder's limit, e.g. 500M or 2G (default 1G); the least recently used
-                          entries are removed beyond it
+  --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
+                          is written, the least recently used ones are removed beyond it
 
 Tone options (and the stipple options; without MODEL the default scene's model):
   --distances 1,2,4,8,16  camera distances, multiples of the framing distance

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "core/error.hpp"
 #include "stipple/cache_entry_format.hpp"
 #include "stipple/stipple_cache.hpp"
 
@@ -17,10 +18,20 @@ bool is_temporary(const fs::path& path) { return path.filename().string().find("
 
 }  // namespace
 
+// A folder that is not there is an empty cache; one that cannot be read is an error (it listed as empty
+// and "cleared" with exit status 0).
+fs::directory_iterator open_folder(const fs::path& dir) {
+    std::error_code ec;
+    fs::directory_iterator it(dir, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory)
+        fail_file(dir.string(), "cannot read the stipple cache folder: " + ec.message());
+    return it;
+}
+
 std::vector<CacheEntryInfo> list_cache_entries(const fs::path& dir) {
     std::vector<CacheEntryInfo> entries;
     std::error_code ec;
-    for (const fs::directory_entry& file : fs::directory_iterator(dir, ec)) {
+    for (const fs::directory_entry& file : open_folder(dir)) {
         if (!file.is_regular_file(ec) || !is_entry(file.path())) continue;
         CacheEntryInfo info;
         info.path = file.path();
@@ -78,12 +89,19 @@ uint64_t enforce_cache_limit(const fs::path& dir, uint64_t max_bytes, const fs::
 
 uint64_t clear_cache(const fs::path& dir) {
     uint64_t freed = 0;
+    size_t kept = 0;
+    std::string why;
     std::error_code ec;
-    for (const fs::directory_entry& file : fs::directory_iterator(dir, ec)) {
+    for (const fs::directory_entry& file : open_folder(dir)) {
         if (!file.is_regular_file(ec) || !(is_entry(file.path()) || is_temporary(file.path()))) continue;
         const uint64_t bytes = file.file_size(ec);
-        if (fs::remove(file.path(), ec)) freed += bytes;
+        std::error_code removing;
+        if (fs::remove(file.path(), removing)) freed += bytes;
+        else if (removing) ++kept, why = removing.message();  // (gone already: another process cleared it)
     }
+    if (kept > 0)
+        fail_file(dir.string(), "could not remove " + std::to_string(kept) + " cache entr" + (kept == 1 ? "y" : "ies") +
+                                    " (" + why + "); " + std::to_string(freed >> 20) + " MiB freed");
     return freed;
 }
 
