@@ -218,6 +218,7 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", model, "-o", out, "--time", "nan"}, "--time"},
         {{"render", model, "-o", out, "--time", "1e9"}, "--time"},
         {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "0"}, "--fps"},
+        {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "1e-308"}, "must be in 0.001..1000"},
         {{"render", model, "-o", out, "--fps", "30"}, "--fps needs --frames"},
         {{"render", model, "-o", out, "--density-path", "cpu"}, "cannot draw an animated model"},
         {{"render", model, "-o", out, "--density-path", "cpu-splat"}, "cannot draw an animated model"},

@@ -147,6 +147,8 @@ TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
          "names the file of an image of -o"},
         {{"render", scene_with_path(dir, "[{\"yaw\": 30}]"), "-o", (dir / "b%d.png").string(), "--frames", "5"},
          "a camera_path of one camera shows every frame the same"},
+        {{"render", "-o", (dir / "%d.png").string(), "--mask", (dir / "m%s.png").string(), "--frames", "2", "--orbit", "90"},
+         "--mask: output pattern"},
     };
     for (const Case& c : cases) {
         auto r = run_stipple(c.args);

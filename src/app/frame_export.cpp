@@ -50,7 +50,7 @@ PrintLayout print_layout(const PrintOptions& options) {
     const double px_per_mm = options.dpi / 25.4;
     const double inner_w = options.page.width_mm - 2.0 * options.margin_mm, inner_h = options.page.height_mm - 2.0 * options.margin_mm;
     if (!(options.margin_mm >= 0.0) || inner_w < 1.0 || inner_h < 1.0)
-        fail("--margin " + std::to_string(options.margin_mm) + " mm leaves no room on the page");
+        fail("--margin " + printf_string("%g", options.margin_mm) + " mm leaves no room on the page");
     PrintLayout layout;
     layout.page_px = {uint32_t(std::lround(options.page.width_mm * px_per_mm)), uint32_t(std::lround(options.page.height_mm * px_per_mm))};
     if (layout.page_px.width > 65536 || layout.page_px.height > 65536)

@@ -37,7 +37,8 @@ AnimationClock read_animation_clock(const Args& args, bool animated, bool camera
         if (!args.has("--frames") && !camera_path)
             fail("--fps needs --frames N (the number of frames to render) or a scene's camera_path");
         clock.fps = args.number("--fps", 30.0);
-        if (!(clock.fps > 0.0) || clock.fps > 1000.0) fail("--fps = " + args.get("--fps", "") + " must be > 0 and <= 1000");
+        // Below a frame a thousand seconds the frames' times leave any animation (1e-308: 1e308 s apart).
+        if (!(clock.fps >= 0.001) || clock.fps > 1000.0) fail("--fps = " + args.get("--fps", "") + " must be in 0.001..1000");
     }
     return clock;
 }

@@ -233,6 +233,13 @@ int run_render(const std::vector<std::string>& argv) {
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
              " frames: use a pattern such as frames/%04d.png");
+    if (sequence && args.has("--mask")) {  // a bad pattern is named as --mask's, not -o's
+        try {
+            has_frame_number(args.get("--mask", ""));
+        } catch (const Error& e) {
+            fail(std::string("--mask: ") + e.what());
+        }
+    }
     if (sequence && args.has("--mask") && !has_frame_number(args.get("--mask", "")))
         fail("--mask " + args.get("--mask", "") + " has no frame number: use a pattern such as masks/%04d.png");
     // Two frame patterns that name the same file for some frame (%d and %02d from frame 10 on) do so for
