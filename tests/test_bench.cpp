@@ -172,6 +172,16 @@ TEST(ModelSet, DerivationIsDeterministicAndCached) {
     EXPECT_TRUE(bench::prepare_model_set(options)[0].derived_now);
 }
 
+// A run of chosen rows needs only their scans: --models horse with horse.ply alone was reported as
+// procedural spheres throughout.
+TEST(ModelSet, ScansAreLookedForOnlyForTheRowsRun) {
+    const std::filesystem::path dir = test::temp_dir("bench_partial_scans");
+    std::ofstream(dir / "horse.ply") << "ply\n";
+    EXPECT_TRUE(bench::scans_available(dir, {"horse"}));
+    EXPECT_FALSE(bench::scans_available(dir));
+    EXPECT_FALSE(bench::scans_available(dir, {"horse", "bunny"}));
+}
+
 TEST(ModelSet, WithoutScansEveryRowIsAProceduralSphere) {
     bench::ModelSetOptions options;
     options.models_dir = "/nonexistent/stipple/models";

@@ -197,7 +197,7 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
     results.depth_raster = depth_raster_name(options.depth_raster);
     results.models_dir = options.models_dir.string();
     results.cache_dir = options.cache_dir.string();
-    results.scans_found = scans_available(options.models_dir);
+    results.scans_found = scans_available(options.models_dir, options.models);
     results.columns = make_columns(options.paths.empty() ? all_density_paths() : options.paths, options.object_lines);
 
     // The device first: a bad --device fails before any model is derived.

@@ -127,7 +127,13 @@ void derive(const PaperRow& row, const Recipe& recipe, const fs::path& source_pa
         if (subdivisions > 0) how += ", subdivided x" + std::to_string(1 << (2 * subdivisions)) + " to " + with_commas(mesh.triangle_count());
         SimplifyResult simplified = simplify_to(mesh, row.polygons, kRowTolerance);
         how += ", meshopt " + simplified.method;
-        write_ply_binary(ply.string(), simplified.mesh);
+        // Through a temporary file: a run killed while writing left a truncated PLY that every later run
+        // failed to load (the key file said it was there).
+        const fs::path part = ply.string() + ".part" + std::to_string(::getpid());
+        write_ply_binary(part.string(), simplified.mesh);
+        std::error_code ec;
+        fs::rename(part, ply, ec);
+        if (ec) fail_file(ply.string(), "cannot store the derived model: " + ec.message());
         entry.triangles = simplified.mesh.triangle_count();
         entry.source = how;
         entry.path = ply;
@@ -154,9 +160,12 @@ fs::path ModelSetOptions::default_cache_dir() {
     return fs::path(STIPPLE_SHADER_DIR).parent_path() / "bench-models";
 }
 
-bool scans_available(const fs::path& models_dir) {
+bool scans_available(const fs::path& models_dir, const std::vector<std::string>& rows) {
+    // Only the rows run: --models horse with horse.ply alone said every row was a sphere.
     for (const Recipe& r : kRecipes)
-        if (!fs::is_regular_file(models_dir / r.source)) return false;
+        if ((rows.empty() || std::find(rows.begin(), rows.end(), r.row) != rows.end()) &&
+            !fs::is_regular_file(models_dir / r.source))
+            return false;
     return true;
 }
 

@@ -47,8 +47,8 @@ struct ModelSetOptions {
     static std::filesystem::path default_cache_dir();   // $STIPPLE_CACHE_DIR/bench-models, or <build>/bench-models
 };
 
-// True when every scan the recipes need is in `models_dir`.
-bool scans_available(const std::filesystem::path& models_dir);
+// True when every scan the rows need is in `models_dir` (`rows`: names of Table 1's rows; empty: all).
+bool scans_available(const std::filesystem::path& models_dir, const std::vector<std::string>& rows = {});
 
 // Prepares the requested rows: with the scans, derives each missing or stale model into the cache
 // (stale: the key file's source size, mtime, target or derivation version differ); without them,
