@@ -110,6 +110,9 @@ TEST(CliFrames, PatternsAndCameraPathsAtTheirLimits) {
     auto literal = run_stipple({"render", "-o", (dir / "50%.png").string(), "--width", "64", "--height", "64"});
     ASSERT_EQ(literal.exit_code, 0) << literal.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "50%.png")) << "a name that is no pattern is kept as written";
+    auto both = run_stipple({"render", "-o", (dir / "5%%0%.png").string(), "--width", "64", "--height", "64"});
+    ASSERT_EQ(both.exit_code, 0) << both.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "5%0%.png")) << "but for %%, a literal % there too";
 
     const std::string zoom = scene_with_path(dir, "[{\"world_distance\": 1e-20}, {\"world_distance\": 1e20}]");
     auto frames = run_stipple({"render", zoom, "-o", (dir / "z%d.png").string(), "--frames", "3", "--width", "64",
@@ -146,7 +149,7 @@ TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
           "90"},
          "names the file of an image of -o"},
         {{"render", scene_with_path(dir, "[{\"yaw\": 30}]"), "-o", (dir / "b%d.png").string(), "--frames", "5"},
-         "a camera_path of one camera shows every frame the same"},
+         ".json: its camera_path of one camera shows every frame the same (--frames 5)"},
         {{"render", "-o", (dir / "%d.png").string(), "--mask", (dir / "m%s.png").string(), "--frames", "2", "--orbit", "90"},
          "--mask: output pattern"},
     };

@@ -121,7 +121,7 @@ TEST(CliPrint, TilesJoinWithoutSeams) {
     const std::vector<std::string> common = {"render", "--page", "A5", "--dpi", "200", "--height", "200", "--yaw", "30"};
     std::vector<std::string> a = common, b = common;
     a.insert(a.end(), {"-o", whole});
-    b.insert(b.end(), {"-o", tiled, "--tile", "300"});  // 1165 x 1654 pixels: 4 x 6 tiles
+    b.insert(b.end(), {"-o", tiled, "--tile", "300"});  // 1165 x 1654 pixels: 5 x 6 tiles of 300 with their guard bands
     run_ok(a);
     run_ok(b);
     const Image one = read_png(whole), many = read_png(tiled);

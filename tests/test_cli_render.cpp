@@ -59,14 +59,15 @@ TEST(CliRender, NoArgumentsRendersTheDefaultScene) {
 // and a cache read gives no generation speed (it gave the cache's reading speed, 83M stipples/s).
 TEST(CliRender, InfoPrintsFiguresAsJson) {
     auto dir = test::temp_dir("cli-info");
-    const std::string model = (dir / "qu\"a\\d\t.obj").string();
+    // And a byte that is not UTF-8 (a Latin-1 e-acute), which JSON cannot hold: it reads as U+FFFD.
+    const std::string model = (dir / "qu\"a\\d\t\xe9.obj").string();
     write_file(model, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
     for (int run = 0; run < 2; ++run) {  // the second may read the first's stipples from the cache
         auto result = run_stipple({"info", model, "--json", "--cache-dir", (dir / "cache").string()});
         ASSERT_EQ(result.exit_code, 0) << result.err;
         EXPECT_EQ(count_lines(result.out), 1u);
         const nlohmann::json info = nlohmann::json::parse(result.out);
-        EXPECT_EQ(info["model"], model);
+        EXPECT_EQ(info["model"], (dir / "qu\"a\\d\t\xef\xbf\xbd.obj").string());
         EXPECT_EQ(info["triangles"], 2);
         EXPECT_TRUE(info.contains("stipple_candidates"));
         EXPECT_EQ(info["stipples_per_second"].is_null(), info["from_cache"].get<bool>()) << result.out;
@@ -293,7 +294,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "-o", "./same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "-o", "fq/%d.png", "--mask", "fq/%01d.png", "--frames", "2"}, "is the image's own path"},
-        {{"render", "-o", "fq/%d.png", "--mask", "fq/%02d.png", "--frames", "11", "--orbit", "30"}, "names the same file as -o fq/%d.png for frame 10"},
+        {{"render", "-o", "fq/%d.png", "--mask", "fq/%02d.png", "--frames", "11", "--orbit", "30"}, "names the file of an image of -o fq/%d.png for frame 10"},
         {{"render", "--mask", "m.svg"}, "--mask m.svg"},
         {{"tone", "--images", ""}, "--images needs a folder"},
         {{"tone", "--images", "/etc/passwd"}, "--images /etc/passwd is not a folder"},
@@ -328,6 +329,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--light", "1,0,1,"}, "is not three numbers X,Y,Z"},
         {{"tone", "--distances", "0x10"}, "--distances: '0x10' is not a finite number"},
         {{"tone", "--views", "30:10,30.01:10"}, "is the same view as an earlier one to 0.1 degree"},
+        {{"tone", "--views", "30.05:10,30.05:10"}, "is the same view as an earlier one to 0.1 degree"},
     };
     for (const Case& c : cases) {
         auto result = run_stipple(c.args);

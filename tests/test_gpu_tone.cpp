@@ -46,6 +46,7 @@ struct Subject {
     std::shared_ptr<const Mesh> mesh;
     std::shared_ptr<const StippleSet> stipples;
     Sphere bounds;
+    anim::Motion motion;  // an animated model is drawn as render draws it (its first animation at 0 s)
 };
 
 // The model as the commands draw it, its stipples from the cache; empty mesh when the file is absent.
@@ -69,6 +70,7 @@ Subject load_subject(const std::string& name, const GenerationParams& generation
     s.mesh = data.mesh;
     s.stipples = data.stipples;
     s.bounds = data.bounds;
+    s.motion = data.motion;
     return s;
 }
 
@@ -106,7 +108,8 @@ TEST_P(ToneAcrossScale, HoldsOverASixteenfoldRangeOfSize) {
         const Subject subject = load_subject(c.model, params.generation);
         if (!subject.mesh) GTEST_SKIP() << "../shared/models/" << c.model << " is absent";
         StippleRenderer renderer(*context, kColorFormat, context->depth_format);
-        renderer.add_object(*subject.mesh, *subject.stipples, glm::mat4(1.0f), params);
+        // With its motion: without it the fox's stretch headroom was drawn as rest density (until 2026-12-04).
+        renderer.add_object(*subject.mesh, *subject.stipples, glm::mat4(1.0f), params, subject.motion);
 
         ToneSurveyOptions options = survey_options({c.width, c.height});
         seed_surveys.push_back(survey_tone(*context, renderer, 0, subject.bounds, options));

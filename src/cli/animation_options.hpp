@@ -27,7 +27,7 @@ struct AnimationClock {
     double frame_time(size_t frame) const { return time + double(frame) / fps; }
 };
 
-// --time and --fps, checked: finite, --fps in (0, 1000] and only with --frames or a camera_path (a
+// --time and --fps, checked: finite, --fps in [0.001, 1000] and only with --frames or a camera_path (a
 // sequence), and neither when nothing in the scene is animated (they would change nothing).
 AnimationClock read_animation_clock(const Args& args, bool animated, bool camera_path = false);
 

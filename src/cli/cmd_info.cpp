@@ -7,15 +7,30 @@
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "core/printf_string.hpp"
+#include "core/utf8.hpp"
 #include "stipple/object_data.hpp"
 
 namespace stipple::cli {
 
 namespace {
 
+// A JSON string of `text`; bytes that are not UTF-8 (a Latin-1 file name) become U+FFFD, since JSON text
+// is Unicode (they were copied, and the output did not parse).
 std::string json_string(const std::string& text) {
     std::string out = "\"";
-    for (char c : text) {
+    for (size_t i = 0; i < text.size();) {
+        const size_t length = utf8_sequence_length(text, i);
+        if (length == 0) {
+            out += "\\ufffd";
+            ++i;
+            continue;
+        }
+        if (length > 1) {
+            out += text.substr(i, length);
+            i += length;
+            continue;
+        }
+        const char c = text[i++];
         if (c == '"' || c == '\\') out += '\\';
         if (static_cast<unsigned char>(c) < 0x20) {
             char escaped[8];

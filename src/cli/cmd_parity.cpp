@@ -5,8 +5,8 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
+#include "core/decimal.hpp"
 #include "core/error.hpp"
-#include "core/printf_string.hpp"
 #include "gpu/context.hpp"
 #include "render/device_parity.hpp"
 #include "stipple/object_data.hpp"
@@ -18,9 +18,9 @@ namespace {
 std::vector<int> parse_devices(const std::string& text, size_t available) {
     std::vector<int> devices;
     for (const std::string& part : split_list("--devices", text)) {
-        char* end = nullptr;
-        const long index = std::strtol(part.c_str(), &end, 10);
-        if (*end != '\0' || index < 0 || size_t(index) >= available)
+        const std::optional<int64_t> parsed = parse_decimal_integer(part);
+        const int64_t index = parsed.value_or(-1);
+        if (index < 0 || uint64_t(index) >= available)
             fail("--devices: '" + part + "' is not a device index (this machine's are 0 to " +
                  std::to_string(available - 1) + "; stipple render --list-devices shows them)");
         devices.push_back(int(index));
@@ -65,9 +65,7 @@ int run_parity(const std::vector<std::string>& argv) {
              std::to_string(height) + ")");
     const ObjectParams params = read_object_params(args);
     const ObjectData object = load_object_data(path, params.generation);
-    if (object.stipples->size() == 0)  // both devices would draw nothing and "agree"
-        fail_file(path, "has no stipple candidates at D_max " + printf_string("%g", params.generation.dmax) +
-                            " (raise --dmax): nothing to compare");
+    require_candidates(path, object.stipples->size(), params.generation.dmax, "compare");
     const std::vector<ParityView> views = parity_views(int(yaws), paths);
     const VkExtent2D extent{uint32_t(width), uint32_t(height)};
 

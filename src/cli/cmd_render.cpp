@@ -69,8 +69,13 @@ std::string output_path(const std::string& pattern, size_t index, bool sequence)
     if (sequence) return frame_path(pattern, index);
     try {
         return frame_path(pattern, index);
-    } catch (const Error&) {
-        return pattern;
+    } catch (const Error&) {  // not a pattern (50%.png): as written, but for %%, a literal % everywhere
+        std::string name;
+        for (size_t i = 0; i < pattern.size(); ++i) {
+            name += pattern[i];
+            if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') ++i;
+        }
+        return name;
     }
 }
 
@@ -233,28 +238,24 @@ int run_render(const std::vector<std::string>& argv) {
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
              " frames: use a pattern such as frames/%04d.png");
-    if (sequence && args.has("--mask")) {  // a bad pattern is named as --mask's, not -o's
-        try {
-            has_frame_number(args.get("--mask", ""));
-        } catch (const Error& e) {
-            fail(std::string("--mask: ") + e.what());
-        }
-    }
-    if (sequence && args.has("--mask") && !has_frame_number(args.get("--mask", "")))
-        fail("--mask " + args.get("--mask", "") + " has no frame number: use a pattern such as masks/%04d.png");
-    // Two frame patterns that name the same file for some frame (%d and %02d from frame 10 on) do so for
-    // the last one too: a wider number only pads the smaller ones.
-    if (sequence && args.has("--mask") &&
-        same_file(output_path(args.get("--mask", ""), cameras.size() - 1, true), output_path(output, cameras.size() - 1, true)))
-        fail("--mask " + args.get("--mask", "") + " names the same file as -o " + output + " for frame " +
-             std::to_string(cameras.size() - 1) + ": give it another");
     if (sequence && args.has("--mask")) {
+        const std::string mask = args.get("--mask", "");
+        bool numbered = false;
+        try {
+            numbered = has_frame_number(mask);
+        } catch (const Error& e) {
+            fail(std::string("--mask: ") + e.what());  // named as --mask's pattern, not -o's
+        }
+        if (!numbered) fail("--mask " + mask + " has no frame number: use a pattern such as masks/%04d.png");
+        // No mask frame may name an image frame's file (g1%d.png's mask 0 is g%d.png's frame 10): compared as
+        // written, made absolute and normal, and the last frames through links too.
         std::set<std::string> images;
         for (size_t i = 0; i < cameras.size(); ++i) images.insert(normal_path(output_path(output, i, true)));
         for (size_t i = 0; i < cameras.size(); ++i)
-            if (images.count(normal_path(output_path(args.get("--mask", ""), i, true))))
-                fail("--mask " + args.get("--mask", "") + " names the file of an image of -o " + output + " for frame " +
-                     std::to_string(i) + " (" + output_path(args.get("--mask", ""), i, true) + "): give it another");
+            if (images.count(normal_path(output_path(mask, i, true))) ||
+                (i + 1 == cameras.size() && same_file(output_path(mask, i, true), output_path(output, i, true))))
+                fail("--mask " + mask + " names the file of an image of -o " + output + " for frame " + std::to_string(i) +
+                     " (" + output_path(mask, i, true) + "): give it another");
     }
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 

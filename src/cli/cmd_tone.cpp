@@ -57,8 +57,9 @@ std::vector<std::array<float, 2>> parse_views(const std::string& text) {
             fail("--views: '" + part + "' needs a yaw in [-360, 360] and a pitch in [-89, 89]");
         // The table names a view to 0.1 degree and --images by %g: two views closer than that wrote one
         // set of files and two rows that read the same.
+        const float y0 = float(yaw), p0 = float(pitch);  // compared as they are kept (30.05 rounds either way)
         for (const auto& [y, p] : views)
-            if (std::round(10.0 * y) == std::round(10.0 * yaw) && std::round(10.0 * p) == std::round(10.0 * pitch))
+            if (std::round(10.0f * y) == std::round(10.0f * y0) && std::round(10.0f * p) == std::round(10.0f * p0))
                 fail("--views: '" + part + "' is the same view as an earlier one to 0.1 degree (the table shows views to 0.1 degree)");
         views.push_back({float(yaw), float(pitch)});
     }
@@ -241,9 +242,7 @@ int run_tone(const std::vector<std::string>& argv) {
     for (size_t k = 0; k < seeds.size(); ++k) {
         params.generation.seed = seeds[k];
         const ObjectData object = load_object_data(path, params.generation);
-        if (object.stipples->size() == 0)  // every cell would read 0 and max/min 0/0
-            fail_file(path, "has no stipple candidates at D_max " + printf_string("%g", params.generation.dmax) +
-                                " (raise --dmax): no tone to measure");
+        require_candidates(path, object.stipples->size(), params.generation.dmax, "measure");
         StippleRenderer renderer(context, kColorFormat, context.depth_format);
         // An animated model as render draws it by default, its first animation at 0 s (without its motion
         // the candidates generated for stretch were drawn as rest density: 0.52 mean ink for the fox, 0.41).

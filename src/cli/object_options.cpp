@@ -1,6 +1,7 @@
 #include "cli/object_options.hpp"
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "params/param_table.hpp"
 
 namespace stipple::cli {
@@ -59,6 +60,11 @@ std::string first_object_option(const Args& args) {
     for (const std::string& name : object_options())
         if (args.has(name)) return name;
     return "";
+}
+
+void require_candidates(const std::string& path, size_t candidates, double dmax, const std::string& nothing_to) {
+    if (candidates == 0)
+        fail_file(path, "has no stipple candidates at D_max " + printf_string("%g", dmax) + " (raise --dmax): nothing to " + nothing_to);
 }
 
 }  // namespace stipple::cli

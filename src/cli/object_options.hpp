@@ -16,4 +16,8 @@ ObjectParams read_object_params(const Args& args);  // validated
 // True when any object option or flag was given (they cannot be combined with a scene file).
 std::string first_object_option(const Args& args);
 
+// Fails naming the model when its stipples at D_max `dmax` hold no candidate: there is nothing for tone to
+// measure or parity to compare (every figure read 0, and they "agreed").
+void require_candidates(const std::string& path, size_t candidates, double dmax, const std::string& nothing_to);
+
 }  // namespace stipple::cli

@@ -78,8 +78,9 @@ Render options:
   --animation NAME|N      what an animated glTF MODEL plays: an animation's name or index (default:
                           its first); `stipple info MODEL` lists them
   --time SECONDS          the scene clock of the (first) frame (default 0); animations loop
-  --fps F                 frames per second of a --frames N sequence (default 30): frame i shows
-                          --time + i/F; with an animated model --frames alone renders the animation
+  --fps F                 frames per second of a sequence (--frames N or a camera_path; 0.001..1000,
+                          default 30): frame i shows --time + i/F; with an animated model --frames
+                          alone renders the animation
 
 Vector and print output (render):
   -o x.svg | x.pdf | x.csv

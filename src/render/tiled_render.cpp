@@ -42,7 +42,7 @@ uint32_t largest_tile_side(const gpu::Context& context) {
 // How far beyond a tile its dots reach: at print detail a dot is hidden or kept as a whole by the depth at
 // its centre (splat.comp, kWholeDot), which must lie in the target that draws it. A dot astride a tile's
 // edge with its centre in the next tile read the depth at this tile's edge instead: on a sloped surface
-// its part in this tile was dropped (0.34% of the ink of an A6 print at 200 dpi lay in such seams).
+// its part in this tile was dropped (0.34% of the ink of a 105 x 148 mm print at 200 dpi lay in such seams).
 uint32_t dot_reach(StippleRenderer& renderer, const FrameView& view) {
     float side = 0.0f;
     for (size_t i = 0; i < renderer.object_count(); ++i)

@@ -47,7 +47,8 @@ std::vector<OrbitCamera> frame_cameras(const Scene& scene, const Sphere& scene_b
     for (const SceneCamera& key : scene.camera_path) keys.push_back(resolve_camera(key, scene_bounds, aspect));
     if (frames == 0) return keys;
     if (keys.size() == 1 && frames > 1 && !animated)
-        fail("a camera_path of one camera shows every frame the same: give it two or more, or render one frame");
+        fail_file(scene.source, "its camera_path of one camera shows every frame the same (--frames " + std::to_string(frames) +
+                                    "): give it two or more, or render one frame");
     for (size_t i = 0; i < frames; ++i) {
         if (keys.size() == 1 || frames == 1) {
             cameras.push_back(keys.front());

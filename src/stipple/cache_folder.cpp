@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "stipple/cache_entry_format.hpp"
 #include "stipple/stipple_cache.hpp"
 
@@ -101,7 +102,7 @@ uint64_t clear_cache(const fs::path& dir) {
     }
     if (kept > 0)
         fail_file(dir.string(), "could not remove " + std::to_string(kept) + " cache entr" + (kept == 1 ? "y" : "ies") +
-                                    " (" + why + "); " + std::to_string(freed >> 20) + " MiB freed");
+                                    " (" + why + "); " + printf_string("%.1f MiB", double(freed) / 1048576.0) + " freed");
     return freed;
 }
 

@@ -7,6 +7,7 @@
 #include "anim/animated_model.hpp"
 #include "anim/gltf_probe.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
 #include "stipple/stipple_cache.hpp"
@@ -43,7 +44,8 @@ ObjectData load_model_data(const std::string& path) {
         if (model->is_animated()) {
             object.motion.headroom = std::make_shared<const anim::StretchHeadroom>(anim::measure_headroom(*model));
             if (!object.motion.headroom->out_of_range.empty())
-                fail_file(path, object.motion.headroom->out_of_range + " moves the model beyond the +-1e+18 a coordinate may reach");
+                fail_file(path, object.motion.headroom->out_of_range + " moves the model beyond the +-" +
+                                    printf_string("%g", double(kMaxCoordinate)) + " a coordinate may reach");
             object.motion.model = model;
             object.mesh = std::shared_ptr<const Mesh>(object.motion.model, &object.motion.model->rest);
             object.bounds = box_sphere(object.motion.headroom->bounds);
