@@ -97,7 +97,9 @@ TEST(CliPrint, APrintRecordsItsResolution) {
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         return std::make_pair(bytes, bytes.find("pHYs"));
     };
-    const auto [bytes, at] = chunk_at(print);
+    const auto found = chunk_at(print);  // (clang 15 cannot capture a structured binding in the lambda below)
+    const std::string& bytes = found.first;
+    const size_t at = found.second;
     ASSERT_NE(at, std::string::npos) << "no pHYs chunk";
     auto word = [&](size_t i) {
         return uint32_t(uint8_t(bytes[i])) << 24 | uint32_t(uint8_t(bytes[i + 1])) << 16 | uint32_t(uint8_t(bytes[i + 2])) << 8 |
