@@ -70,12 +70,7 @@ std::string output_path(const std::string& pattern, size_t index, bool sequence)
     try {
         return frame_path(pattern, index);
     } catch (const Error&) {  // not a pattern (50%.png): as written, but for %%, a literal % everywhere
-        std::string name;
-        for (size_t i = 0; i < pattern.size(); ++i) {
-            name += pattern[i];
-            if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') ++i;
-        }
-        return name;
+        return unescape_percent(pattern);
     }
 }
 

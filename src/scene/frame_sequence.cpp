@@ -97,6 +97,8 @@ Conversion find_conversion(const std::string& pattern) {
     return found;
 }
 
+}  // namespace
+
 std::string unescape_percent(const std::string& text) {
     std::string out;
     for (size_t i = 0; i < text.size(); ++i) {
@@ -105,8 +107,6 @@ std::string unescape_percent(const std::string& text) {
     }
     return out;
 }
-
-}  // namespace
 
 bool has_frame_number(const std::string& pattern) { return find_conversion(pattern).position != std::string::npos; }
 

@@ -25,5 +25,7 @@ bool has_frame_number(const std::string& pattern);
 
 // `pattern` with its frame number replaced by `index` ("frames/%04d.png", 7 -> "frames/0007.png").
 std::string frame_path(const std::string& pattern, size_t index);
+// `text` with each %% made one % (a name that is no pattern, such as 50%%.png, keeps its other characters).
+std::string unescape_percent(const std::string& text);
 
 }  // namespace stipple
