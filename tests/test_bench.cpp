@@ -693,7 +693,9 @@ TEST(BenchCommand, BadArgumentsFailWithOneLine) {
           // Refused before any model is made (until 2026-12-04 these failed only at the end of the run, or ran
           // twice and wrote a results.json that --compare refused).
           {"bench", "--models", "horse,horse"}, {"bench", "--paths", "vertex,cpu,vertex"}, {"bench", "--cache-dir", ""},
-          {"bench", "--out", test::write_file(test::temp_dir("bench_out_file") / "a_file", "x")}}) {
+          {"bench", "--out", test::write_file(test::temp_dir("bench_out_file") / "a_file", "x")},
+          // A file where the scans' folder should be (until 2026-12-04 it drew spheres as if none were there).
+          {"bench", "--models-dir", test::write_file(test::temp_dir("bench_models_file") / "models.obj", "x")}}) {
         test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 1) << args.back();
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

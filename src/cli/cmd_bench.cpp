@@ -1,4 +1,5 @@
 // stipple bench: the paper's Table 1 on this machine (see src/bench/).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -100,6 +101,11 @@ int run_bench(const std::vector<std::string>& argv) {
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
     if (args.has("--models-dir") && options.models_dir.empty()) fail("--models-dir needs a folder");
+    // A missing folder means a machine without the scans (the bench says so and draws spheres); a file
+    // named where the folder should be is a mistake.
+    if (args.has("--models-dir") && std::filesystem::exists(options.models_dir) &&
+        !std::filesystem::is_directory(options.models_dir))
+        fail("--models-dir " + options.models_dir.string() + " is a file, not a folder");
     if (args.has("--cache-dir") && options.cache_dir.empty()) fail("--cache-dir needs a folder");
     const std::filesystem::path out = args.get("--out", "bench-results");
     if (out.empty()) fail("--out needs a folder");
@@ -128,7 +134,7 @@ int run_bench(const std::vector<std::string>& argv) {
     // unless asked.
     const bool plot_asked = args.has("--plot-dots");
     const size_t plot_dots = size_t(bounded(args, "--plot-dots", options.quick ? 15'000 : 150'000, 0, 10'000'000));
-    const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && (options.quick || options.models.empty())));
+    const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && options.models.empty()));
     options.command = "stipple bench";
     for (const std::string& a : argv) options.command += " " + a;
 
@@ -150,9 +156,9 @@ int run_bench(const std::vector<std::string>& argv) {
     bench::write_text_file((out / "results.json").string(), bench::json_report(results));
     bench::write_text_file((out / "chart.svg").string(), bench::svg_chart(results));
     std::printf("\n%s", markdown.c_str());
-    std::error_code ec;
-    const bool images = std::filesystem::is_directory(out / "images", ec) &&
-                        !std::filesystem::is_empty(out / "images", ec);
+    // This run's frames, not whatever an earlier run left in the folder.
+    const bool images = std::any_of(results.models.begin(), results.models.end(),
+                                    [](const bench::ModelResult& m) { return !m.image.empty(); });
     std::printf("wrote %s, %s, %s%s%s (%.0f s)\n", (out / "results.md").c_str(), (out / "results.json").c_str(),
                 (out / "chart.svg").c_str(), images ? " and the standard frames in " : "",
                 images ? (out / "images").c_str() : "", results.total_seconds);
