@@ -5,6 +5,7 @@
 // transpose of that blended matrix. src/anim/deform_cpu.cpp is the reference this must match.
 #extension GL_GOOGLE_include_directive : require
 #include "deform_types.h"
+#include "dispatch.h"
 
 layout(local_size_x = kDeformWorkgroupSize) in;
 
@@ -45,7 +46,7 @@ void add_influence(inout Blend m, float weight, uint slot) {
 }
 
 void main() {
-    uint v = gl_GlobalInvocationID.x;
+    uint v = linear_invocation();
     if (v >= push.vertex_count) return;
     int texel = int(5u * v);
     uvec4 position_morph = texelFetch(vertex_texels, texel);      // position, morph_first

@@ -13,6 +13,7 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_formulas.h"
 #include "uniform_branch.h"
 #include "triangle_draws.h"
@@ -60,7 +61,7 @@ layout(set = 0, binding = kBindingGradientPolygons, std430) buffer GradientList 
 // of the subgroup.
 void write_facing_bits(bool in_range, PolygonView p) {
     uvec4 bits = subgroupBallot(in_range && polygon_faces_away(p.center, p.normal));
-    uint first = gl_GlobalInvocationID.x - gl_SubgroupInvocationID;  // the subgroup's first polygon
+    uint first = linear_invocation() - gl_SubgroupInvocationID;  // the subgroup's first polygon
     if (!subgroupElect()) return;
     uint words = (gl_SubgroupSize + 31u) / 32u;
     for (uint k = 0u; k < words && k < 4u; ++k)
@@ -74,15 +75,14 @@ uint groups_starting_in(uint base, uint n) {
 }
 
 // n consecutive slots of the work list (or of the varying polygons' list, VaryingList); the splat's dispatch
-// gains the workgroups that start in them.
+// grows to the workgroups that start in them.
 uint claim_slots(uint n, bool to_varied) {
     uint base = to_varied ? atomicAdd(varied.count, n) : atomicAdd(drawn.count, n);
-    uint starts = groups_starting_in(base, n);
-    if (starts > 0u) {
+    if (groups_starting_in(base, n) > 0u) {
         if (to_varied)
-            atomicAdd(varied.groups_x, starts);
+            GROW_DISPATCH(varied, base + n)
         else
-            atomicAdd(drawn.groups_x, starts);
+            GROW_DISPATCH(drawn, base + n)
     }
     return base;
 }
@@ -96,8 +96,7 @@ void list_gradient(bool large, uint t) {
     uint base = 0u;
     if (subgroupElect()) {
         base = atomicAdd(gradient.count, listed);
-        uint starts = groups_starting_in(base, listed);
-        if (starts > 0u) atomicAdd(gradient.groups_x, starts);
+        if (groups_starting_in(base, listed) > 0u) GROW_DISPATCH(gradient, base + listed)
     }
     base = subgroupBroadcastFirst(base);
     if (large) gradient_polygons[base + subgroupBallotExclusiveBitCount(ballot)] = t;
@@ -142,7 +141,7 @@ void list_gradient_chunks(bool listing, uint first, float candidates, float most
 // The gradient pass: a polygon the density pass listed as large on screen gets the bounds of the density
 // across it (below the least every stipple is whole; lists and work items run to the most).
 void gradient_main() {
-    uint k = gl_GlobalInvocationID.x;
+    uint k = linear_invocation();
     if (k >= gradient.count) return;
     uint t = gradient_polygons[k];
     TriangleDraw draw = triangle_draw(t);
@@ -167,7 +166,7 @@ void main() {
         gradient_main();
         return;
     }
-    uint t = gl_GlobalInvocationID.x;
+    uint t = linear_invocation();
     uint flags = object.flags[unfoldable_zero()];  // object.flags.x, see uniform_branch.h
     bool in_range = t < object.flags.y;
     // The candidates run from this polygon's first stipple to the next one's (first_stipple is constant,

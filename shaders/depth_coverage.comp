@@ -5,6 +5,7 @@
 // is scratch until the splat fills it later in the frame.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
+#include "dispatch.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 
@@ -21,10 +22,11 @@ bool covered(uint word) {  // as splat.comp's uncovered(), negated
 
 void main() {
     uint pixels = uint(frame.viewport.x) * uint(frame.viewport.y);
-    uint first = gl_GlobalInvocationID.x * 4u;
+    uint word = linear_invocation();
+    uint first = word * 4u;
     if (first >= pixels) return;
     uint bytes = 0u;
     for (uint k = 0u; k < 4u; ++k)
         if (first + k < pixels && covered(scene_depth[first + k])) bytes |= 1u << (8u * k);
-    coverage_bytes[gl_GlobalInvocationID.x] = bytes;
+    coverage_bytes[word] = bytes;
 }

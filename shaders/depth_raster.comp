@@ -29,6 +29,7 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_position.h"
 #include "uniform_branch.h"
 
@@ -273,7 +274,7 @@ void large_pass() {  // at most kRasterMaxGroups workgroups: each takes every th
 }
 
 void triangle_pass() {
-    uint t = gl_GlobalInvocationID.x;
+    uint t = linear_invocation();
     bool large = false;
     if (t < object.flags.y) {
         uvec3 corners = mesh_triangle(t);
@@ -304,7 +305,7 @@ void triangle_pass() {
     base = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(large ? 1u : 0u);
     if (large) {
         large_triangles[base] = t;
-        atomicMax(header.groups_x, min(base + 1u, kRasterMaxGroups));
+        atomicMax(header.groups_x, min(base + 1u, min(kRasterMaxGroups, kMaxGroupsX)));
     }
 }
 

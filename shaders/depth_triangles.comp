@@ -18,6 +18,7 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_position.h"
 #include "uniform_branch.h"
 
@@ -80,7 +81,7 @@ bool may_cover_pixel_centre(vec4 c0, vec4 c1, vec4 c2, bool one_sided) {
 void main() {
     // object.flags.x, read where lavapipe cannot fold it (uniform_branch.h)
     bool one_sided = (object.flags[unfoldable_zero()] & kFlagDepthOneSided) != 0u;
-    uint t = gl_GlobalInvocationID.x;
+    uint t = linear_invocation();
     bool keep = false;
     uvec3 corners = uvec3(0u);
     if (t < object.flags.y) {

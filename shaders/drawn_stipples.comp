@@ -12,6 +12,7 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_formulas.h"
 #include "triangle_draws.h"
 #include "stipple_position.h"
@@ -29,7 +30,7 @@ layout(set = 0, binding = kBindingDrawnStipples, std430) buffer DrawnStipples {
 };
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = linear_invocation();
     uint first = 0u;
     uint count = 0u;
     if (slot < drawn.count) {

@@ -11,6 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_formulas.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
@@ -38,7 +39,7 @@ vec3 polygon_normal(uint polygon) {
 }
 
 void main() {
-    uint e = gl_GlobalInvocationID.x;
+    uint e = linear_invocation();
     uint flags = object.flags.x;
     bool raskar_cohen = false;
     uint kind = 0u;
@@ -73,7 +74,7 @@ void main() {
         }
     }
 
-    // The slot ranges tile 0, 1, 2, ..., so each range adds the walk's workgroups that start in it.
+    // The slot ranges tile 0, 1, 2, ..., so a range in which a workgroup starts grows the walk's dispatch.
     ballot = subgroupBallot(kind != 0u);
     here = subgroupBallotBitCount(ballot);
     if (here > 0u) {
@@ -81,8 +82,7 @@ void main() {
         if (subgroupElect()) {
             base = atomicAdd(candidates.count, here);
             const uint group = kDensityWorkgroupSize;
-            uint starts = (base + here + group - 1u) / group - (base + group - 1u) / group;
-            if (starts > 0u) atomicAdd(candidates.groups_x, starts);
+            if ((base + here + group - 1u) / group > (base + group - 1u) / group) GROW_DISPATCH(candidates, base + here)
         }
         base = subgroupBroadcastFirst(base);
         if (kind != 0u) candidate[base + subgroupBallotExclusiveBitCount(ballot)] = e | kind << kLineKindShift;

@@ -5,6 +5,7 @@
 // piece in pixels, drawn as a capsule by line_pieces.vert and read back by the CPU for vector output.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_position.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
@@ -171,7 +172,7 @@ void walk_edge(vec3 p0, vec3 p1, uint edge, uint kind, vec3 away_point) {
 }
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = linear_invocation();
     if (slot >= candidates.count) return;
     uint listed = candidate[slot];
     uint e = listed & kLineEdgeMask;

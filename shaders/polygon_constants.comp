@@ -7,6 +7,7 @@
 // GPU a fetch gathers a texel at once, where a storage buffer is read float by float, lane by lane.
 #extension GL_GOOGLE_include_directive : require
 #include "deform_types.h"
+#include "dispatch.h"
 #include "stipple_formulas.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
@@ -30,7 +31,7 @@ uvec3 triangle_at(uint t) {
 }
 
 void main() {
-    uint t = gl_GlobalInvocationID.x;
+    uint t = linear_invocation();
     if (t >= push.triangle_count) return;
     // The arithmetic of pack_polygon_constants, so a rest pose packs as a static object does.
     uvec3 corners = triangle_at(t);

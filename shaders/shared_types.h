@@ -20,6 +20,9 @@ using uint = uint32_t;
 #endif
 
 STIPPLE_CONST uint kDensityWorkgroupSize = 64;
+// Every compute pipeline's specialisation constant for the widest dispatch row (shaders/dispatch.h); an id
+// no shader uses for anything else.
+STIPPLE_CONST uint kSpecMaxGroupsX = 31;
 
 // The splat's work items: a polygon's drawn stipples in runs of at most this many, one invocation each.
 // lavapipe (gallivm) stops every loop of an invocation once it has run LP_MAX_TGSI_LOOP_ITERATIONS

@@ -31,6 +31,7 @@
 //   frame. The alpha of the finished image is 1 - ink coverage; read-backs make it opaque.
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
+#include "dispatch.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
 #include "triangle_draws.h"
@@ -233,7 +234,7 @@ bool splat(uint index, float fraction, float intensity, bool full, float side, m
 }
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = linear_invocation();
     uint listed = kList == kSplatListDrawn ? drawn.count : kList == kSplatListVarying ? varied.count : ring.count;
     if (slot >= listed) return;
     // The run's first stipple.
@@ -297,7 +298,7 @@ void main() {
     // The run goes to the ring pass, which walks it again and inks only its dots' lost pixels.
     if (!kRingPass && astride) {
         uint at = atomicAdd(ring.count, 1u);
-        if (at % kDensityWorkgroupSize == 0u) atomicAdd(ring.groups_x, 1u);  // a workgroup starts there
+        if (at % kDensityWorkgroupSize == 0u) GROW_DISPATCH(ring, at + 1u)  // a workgroup starts there
         ring_items[at] = item;
     }
 }

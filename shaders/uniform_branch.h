@@ -10,9 +10,10 @@
 #ifndef UNIFORM_BRANCH_H
 #define UNIFORM_BRANCH_H
 
-// Zero in every dispatch of the passes that include this: they are one-dimensional (y = 1).
+// Zero in every dispatch of the passes that include this: they are flat (z = 1; their y holds the rows
+// of a wide dispatch, shaders/dispatch.h).
 uint unfoldable_zero() {
-    return gl_NumWorkGroups.y - 1u;
+    return gl_NumWorkGroups.z - 1u;
 }
 
 #endif

@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     try {
+        stipple::worker_count();  // a bad STIPPLE_THREADS fails here, not in whatever thread first asks
         if (command == "render") return stipple::cli::run_render(args);
         if (command == "info") return stipple::cli::run_info(args);
         if (command == "view") return stipple::cli::run_view(args);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -244,6 +245,25 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
 // motion: the candidates generated for stretch all drawn as rest density (the fox read 0.52 mean ink in
 // tone, 0.41 in render). parity, changed alike, frames its views its own way and compares a device with
 // itself here: it is only run on the animated model.
+// The deformation and polygon passes dispatched in rows (see CliRender.WideDispatchesGoInRowsAndDrawTheSame):
+// the bent cylinder is drawn exactly as in one row.
+TEST(CliAnimation, DeformationInRowsDrawsTheSame) {
+    const fs::path dir = test::temp_dir("cli_anim_rows");
+    const std::string model = cylinder("cli_anim_rows_model");
+    std::string bytes[2];
+    for (int rows = 0; rows < 2; ++rows) {
+        const std::string out = (dir / (rows ? "rows.png" : "one.png")).string();
+        if (rows) ::setenv("STIPPLE_MAX_WORKGROUPS", "2", 1);
+        auto r = run_stipple({"render", model, "--time", "0.7", "--contours", "--width", "320", "--height", "256", "-o", out});
+        ::unsetenv("STIPPLE_MAX_WORKGROUPS");
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        std::ifstream in(out, std::ios::binary);
+        bytes[rows].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    ASSERT_GT(bytes[0].size(), 1000u);
+    EXPECT_TRUE(bytes[0] == bytes[1]) << "the deformed drawing in rows differs from the drawing in one row";
+}
+
 TEST(CliAnimation, ToneDrawsAnAnimatedModelAsRenderDoes) {
     const fs::path dir = test::temp_dir("cli_anim_tone");
     const std::string model = cylinder("cli_anim_tone_model");

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -180,6 +181,58 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
         EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
         EXPECT_NE(e.err.find(std::string("STIPPLE_GPU_MEMORY_LIMIT=") + bad + " is not a size"), std::string::npos) << e.err;
     }
+}
+
+std::string file_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A dispatch wider than the device allows along x (65535 groups on lavapipe: 4.2M polygons at 64 a group,
+// 16.8M pixels for the depth words' coverage) goes in rows along y (gpu::dispatch_groups, shaders/dispatch.h);
+// until 2026-12-04 such a model drew with validation errors and undefined results. Made so here with
+// STIPPLE_MAX_WORKGROUPS=3 on the default scene: every pass dispatched over polygons, edges, pixel words or a
+// list then runs in rows, and draws exactly what one row does, on every path and line kind.
+TEST(CliRender, WideDispatchesGoInRowsAndDrawTheSame) {
+    const auto dir = test::temp_dir("cli-dispatch-rows");
+    const std::vector<std::vector<std::string>> variants = {
+        {"--density-path", "vertex", "--contours", "--borders", "--creases"},
+        {"--density-path", "indirect", "--silhouette-lines"},
+        {"--density-path", "splat", "--contours", "--depth-raster", "compute", "--depth-cull", "on"},
+        {"--density-path", "cpu-splat", "--creases"},
+        {"--density-path", "cpu", "--toon"},
+    };
+    for (size_t v = 0; v < variants.size(); ++v) {
+        std::string images[2];
+        for (int rows = 0; rows < 2; ++rows) {
+            images[rows] = (dir / ("v" + std::to_string(v) + (rows ? "_rows.png" : ".png"))).string();
+            std::vector<std::string> args{"render", "-o", images[rows], "--width", "320", "--height", "256"};
+            args.insert(args.end(), variants[v].begin(), variants[v].end());
+            if (rows) ::setenv("STIPPLE_MAX_WORKGROUPS", "3", 1);
+            const test::CommandResult r = test::run_stipple(args);
+            ::unsetenv("STIPPLE_MAX_WORKGROUPS");
+            ASSERT_EQ(r.exit_code, 0) << r.err;
+        }
+        const std::string one = file_bytes(images[0]), in_rows = file_bytes(images[1]);
+        ASSERT_GT(one.size(), 1000u);
+        EXPECT_TRUE(one == in_rows) << variants[v][1] << ": the drawing in rows differs from the drawing in one row";
+    }
+    for (const char* bad : {"abc", "0", "-3", "7x"}) {
+        ::setenv("STIPPLE_MAX_WORKGROUPS", bad, 1);
+        const test::CommandResult e = test::run_stipple({"render", "-o", (dir / "never.png").string()});
+        ::unsetenv("STIPPLE_MAX_WORKGROUPS");
+        EXPECT_EQ(e.exit_code, 1) << bad;
+        EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
+        EXPECT_NE(e.err.find(std::string("STIPPLE_MAX_WORKGROUPS=") + bad + " is not a workgroup count"), std::string::npos) << e.err;
+    }
+    for (const char* bad : {"abc", "0", "-3"}) {  // read as decimal counts too (until 2026-12-04 ignored)
+        ::setenv("STIPPLE_THREADS", bad, 1);
+        const test::CommandResult e = test::run_stipple({"render", "-o", (dir / "never.png").string()});
+        ::unsetenv("STIPPLE_THREADS");
+        EXPECT_EQ(e.exit_code, 1) << bad;
+        EXPECT_NE(e.err.find(std::string("STIPPLE_THREADS=") + bad + " is not a thread count"), std::string::npos) << e.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "never.png"));
 }
 
 // STIPPLE_VALIDATION and STIPPLE_NO_CACHE are 1 or 0: "yes" or "off" read as set (anything but "0") and

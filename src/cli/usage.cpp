@@ -250,6 +250,8 @@ Environment:
                           smaller GPU refuses an object or scene too big for it, tried on a big one
   STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
                           draws an image whose pixel words do not fit one in tiles (lavapipe: 128M)
+  STIPPLE_MAX_WORKGROUPS=N  act as if a compute dispatch could have at most N workgroups along x: how
+                          a model of millions of polygons is dispatched (in rows; lavapipe: 65535)
 
 Exit status: 0 on success, 1 on bad input, a bad option or a failed render (one line on stderr
 naming the file or option and the problem), 2 on an unknown command or Vulkan validation messages.

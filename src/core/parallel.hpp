@@ -11,8 +11,11 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
+
+#include "core/error.hpp"
 
 namespace stipple {
 
@@ -29,9 +32,13 @@ inline std::atomic<unsigned>& worker_override() {
 inline unsigned worker_count() {
     if (const unsigned forced = detail::worker_override().load(std::memory_order_relaxed)) return forced;
     static const unsigned count = [] {
-        if (const char* env = std::getenv("STIPPLE_THREADS")) {
-            const int n = std::atoi(env);
-            if (n >= 1) return static_cast<unsigned>(n);
+        if (const char* env = std::getenv("STIPPLE_THREADS"); env && *env) {
+            char* end = nullptr;
+            const long n = std::strtol(env, &end, 10);
+            // Until 2026-12-04 "abc" or "-3" silently meant the hardware's count.
+            if (end == env || *end != '\0' || n < 1 || n > 1024)
+                fail(std::string("STIPPLE_THREADS=") + env + " is not a thread count from 1 to 1024");
+            return static_cast<unsigned>(n);
         }
         const unsigned hw = std::thread::hardware_concurrency();
         return hw == 0 ? 1u : hw;

@@ -68,11 +68,26 @@ bool ContextOptions::default_validation() {
 #endif
 }
 
+// STIPPLE_MAX_WORKGROUPS, read before anything is created (a typo fails without a device to clean up); 0 when unset.
+static uint32_t workgroups_from_environment() {
+    const char* text = std::getenv("STIPPLE_MAX_WORKGROUPS");
+    if (!text || !*text) return 0;
+    char* end = nullptr;
+    const unsigned long long limit = std::strtoull(text, &end, 10);
+    // A test setting: a typo must not silently test nothing.
+    if (end == text || *end != '\0' || text[0] == '-' || limit < 1 || limit > 0xFFFFFFFFull)
+        fail(std::string("STIPPLE_MAX_WORKGROUPS=") + text + " is not a workgroup count such as 7");
+    return uint32_t(limit);
+}
+
 Context::Context(const ContextOptions& options) {
     // The loader needs a runtime dir on some set-ups; an unset XDG_RUNTIME_DIR only causes warnings.
+    const uint32_t asked_groups_x = workgroups_from_environment();
     create_instance(options);
     pick_physical_device(options);
     create_device(options);
+    const uint32_t device_groups_x = properties.limits.maxComputeWorkGroupCount[0];
+    max_groups_x_ = asked_groups_x ? std::min(asked_groups_x, device_groups_x) : device_groups_x;
 }
 
 Context::~Context() {
@@ -358,6 +373,7 @@ uint64_t Context::max_storage_buffer_bytes() const {
     const uint64_t limit = size_from_environment("STIPPLE_MAX_STORAGE_BUFFER");
     return limit ? std::min(device, limit) : device;
 }
+
 
 uint64_t Context::max_pixel_words() const {
     return std::min<uint64_t>(max_storage_buffer_bytes() / 4u, properties.limits.maxTexelBufferElements);

@@ -99,6 +99,10 @@ public:
     // The most pixels a frame's word buffers may hold: a word each, in a storage buffer that the compute
     // passes also read as texels (the lesser of max_storage_buffer_bytes / 4 and maxTexelBufferElements).
     uint64_t max_pixel_words() const;
+    // The most workgroups a compute dispatch may have along x (maxComputeWorkGroupCount[0]); wider work goes
+    // in rows along y (gpu::dispatch_groups, shaders/dispatch.h). Lowered by STIPPLE_MAX_WORKGROUPS (e.g. 7:
+    // how a huge model is dispatched, tried on a small one).
+    uint32_t max_groups_x() const { return max_groups_x_; }
 
     // Lists the devices Vulkan sees, "index: name (type)", for --help-style output and errors.
     static std::vector<std::string> list_devices();
@@ -110,6 +114,7 @@ private:
 
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     bool memory_budget_ = false;  // VK_EXT_memory_budget enabled
+    uint32_t max_groups_x_ = 65535;
     std::atomic<uint32_t> validation_messages_{0};
     mutable std::atomic<uint64_t> allocated_bytes_{0};
     static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,

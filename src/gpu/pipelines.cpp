@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "gpu/context.hpp"
 #include "gpu/vk_check.hpp"
+#include "shared_types.h"
 
 namespace stipple::gpu {
 
@@ -177,7 +178,9 @@ VkPipeline create_graphics_pipeline(const Context& context, const GraphicsPipeli
 VkPipeline create_compute_pipeline(const Context& context, const std::string& shader, VkPipelineLayout layout,
                                    const Specialization& specialization) {
     ShaderModules modules{context, {}};
-    SpecializationData spec(specialization);
+    Specialization with_rows = specialization;
+    with_rows.constants.emplace_back(kSpecMaxGroupsX, context.max_groups_x());
+    SpecializationData spec(with_rows);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -188,6 +191,22 @@ VkPipeline create_compute_pipeline(const Context& context, const std::string& sh
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     return pipeline;
+}
+
+GroupGrid split_groups(uint64_t groups, uint32_t max_x) {
+    STIPPLE_CHECK(max_x > 0, "a dispatch row of no workgroups");
+    if (groups == 0) return {0, 1};
+    const uint64_t x = std::min<uint64_t>(groups, max_x);
+    return {uint32_t(x), uint32_t(std::min<uint64_t>((groups + x - 1) / x, UINT32_MAX))};
+}
+
+void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups) {
+    const GroupGrid grid = split_groups(groups, context.max_groups_x());
+    if (grid.x == 0) return;
+    // 65535 rows of 65535 groups of 64 are 2^38 invocations: no buffer a pass walks is that long.
+    STIPPLE_CHECK(grid.y <= context.properties.limits.maxComputeWorkGroupCount[1],
+                  "a dispatch of " + std::to_string(groups) + " workgroups exceeds this device's limits");
+    vkCmdDispatch(cb, grid.x, grid.y, 1);
 }
 
 }  // namespace stipple::gpu

@@ -47,7 +47,16 @@ struct GraphicsPipelineDesc {
 };
 
 VkPipeline create_graphics_pipeline(const Context& context, const GraphicsPipelineDesc& desc, VkPipelineLayout layout);
+// Every compute pipeline also gets kSpecMaxGroupsX (shaders/dispatch.h) from the context.
 VkPipeline create_compute_pipeline(const Context& context, const std::string& shader, VkPipelineLayout layout,
                                    const Specialization& specialization = {});
+
+// A dispatch of `groups` workgroups, in rows of at most context.max_groups_x() along y (the shaders number
+// their invocations with dispatch.h's linear_invocation and return past their work).
+struct GroupGrid {
+    uint32_t x = 0, y = 1;
+};
+GroupGrid split_groups(uint64_t groups, uint32_t max_x);
+void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups);
 
 }  // namespace stipple::gpu

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <vector>
 
+#include "gpu/pipelines.hpp"
 #include "core/parallel.hpp"
 #include "render/density_formulas.hpp"
 #include "render/object_gpu.hpp"
@@ -31,7 +32,7 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
     }
 }
 
-double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
+double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame, uint32_t max_groups_x) {
     const ObjectGeometry& geometry = object.geometry;
     ObjectFrame& state = object.frame;
     std::vector<float> densities(geometry.triangle_count);
@@ -70,7 +71,8 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame) {
             for (uint32_t k = 0; k < drawn; k += run) items[count++] = first + k;
         });
         const uint32_t group = gpu::kDensityWorkgroupSize;
-        const gpu::DrawnPolygons header{(count + group - 1) / group, 1u, 1u, count};
+        const gpu::GroupGrid grid = gpu::split_groups((uint64_t(count) + group - 1) / group, max_groups_x);
+        const gpu::DrawnPolygons header{grid.x, grid.y, 1u, count};
         std::memcpy(list, &header, sizeof header);
     } else {
         uint32_t* stipples = list + sizeof(gpu::DrawCommand) / sizeof(uint32_t);  // the survivors, drawn as one

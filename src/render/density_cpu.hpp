@@ -30,7 +30,8 @@ struct ObjectGpu;
 // polygon order: the list shaders/drawn_stipples.comp writes on the GPU); for cpu-splat, the splat's
 // work items (DrawnPolygons). Reads the object's documented CPU
 // inputs only: PolygonConstants::cpu, ObjectGeometry::first_stipple and this frame's uniforms.
+// The list's header is its dispatch, in rows of at most max_groups_x (gpu::split_groups).
 // Returns the sum of the densities.
-double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame);
+double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame, uint32_t max_groups_x);
 
 }  // namespace stipple

@@ -4,6 +4,7 @@
 // stipples that draw. Also which path an object takes (splat, work items, gradient chunks).
 #include <algorithm>
 
+#include "gpu/pipelines.hpp"
 #include "gpu/context.hpp"
 #include "render/path_buffers.hpp"
 #include "render/shared_types.hpp"
@@ -44,7 +45,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     };
     auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
         bind(object, pipeline);
-        vkCmdDispatch(cb, (object.geometry.triangle_count + group - 1) / group, 1, 1);
+        gpu::dispatch_groups(cb, context_, (uint64_t(object.geometry.triangle_count) + group - 1) / group);
     };
     // Over a list a pass wrote, whose header is the dispatch (DrawnPolygons).
     auto dispatch_over = [&](const ObjectGpu& object, VkPipeline pipeline, const gpu::Buffer& list) {

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "gpu/pipelines.hpp"
 #include "gpu/context.hpp"
 #include "render/depth_triangles.hpp"
 #include "render/shared_types.hpp"
@@ -46,7 +47,7 @@ void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
         if (!object->frame.depth_listed) continue;
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
-        vkCmdDispatch(cb, (object->geometry.triangle_count + group - 1) / group, 1, 1);
+        gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.triangle_count) + group - 1) / group);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "gpu/pipelines.hpp"
 #include "gpu/context.hpp"
 #include "render/shared_types.hpp"
 #include "render/stipple_renderer.hpp"
@@ -79,7 +80,7 @@ void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0, nullptr);
-        vkCmdDispatch(cb, (object->geometry.silhouette_edge_count + group - 1) / group, 1, 1);
+        gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.silhouette_edge_count) + group - 1) / group);
     }
     if (any_walk) {  // the listed edges, walked against the depth pass (copied by copy_scene_depth)
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -239,7 +239,7 @@ void StippleRenderer::prepare(const FrameView& view) {
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
         object->frame.depth_listed = false;
-        if (density_on_cpu(object->params.density_path)) run_cpu_density(*object, frame_);
+        if (density_on_cpu(object->params.density_path)) run_cpu_density(*object, frame_, context_.max_groups_x());
         stats_.triangles += object->geometry.triangle_count;
         stats_.candidate_stipples += object->geometry.stipple_count;
     }
