@@ -75,6 +75,26 @@ TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
         EXPECT_NE(r.err.find(std::string(missing) + ": shader not found"), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(shaders / "never.png"));
     }
+    // A module cut short, or not SPIR-V at all: named as such (until 2026-12-04 "out of memory" with the
+    // validation layer on, VkResult(unknown) without it).
+    for (const auto& [broken, bytes] : {std::pair<const char*, size_t>{"depth.vert.spv", 100}, {"deform.comp.spv", 0}}) {
+        fs::remove_all(shaders);
+        fs::create_directories(shaders);
+        for (const auto& entry : fs::directory_iterator(STIPPLE_SHADER_DIR))
+            if (entry.path().extension() == ".spv") fs::copy_file(entry.path(), shaders / entry.path().filename());
+        if (bytes > 0) fs::resize_file(shaders / broken, bytes);
+        else test::write_file(shaders / broken, "#version 450 not compiled");
+        ::setenv("STIPPLE_SHADER_DIR", shaders.string().c_str(), 1);
+        const test::CommandResult r =
+            run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
+        if (saved) ::setenv("STIPPLE_SHADER_DIR", before.c_str(), 1);
+        else ::unsetenv("STIPPLE_SHADER_DIR");
+        EXPECT_EQ(r.exit_code, 1) << broken;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(std::string(broken) + (bytes > 0 ? ": a truncated or corrupt SPIR-V module" : ": not a SPIR-V module")),
+                  std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(shaders / "never.png"));
+    }
 }
 
 size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }

@@ -1,6 +1,8 @@
 #include "gpu/pipelines.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -59,6 +61,36 @@ VkShaderModule load_shader(const Context& context, const std::string& name) {
     if (!file) fail_file(path, "shader not found (was the project built? set STIPPLE_SHADER_DIR to move it)");
     std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
+    // Its instructions must tile the file: a truncated or overwritten module reached the driver (and the
+    // validation layer) before, which answered "out of memory" or VkResult(unknown).
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    constexpr uint32_t kSpirvMagic = 0x07230203u;
+    if (words.size() < 5 || words[0] != kSpirvMagic) fail_file(path, "not a SPIR-V module (rebuild the project)");
+    // A module cut at an instruction's end passes that, and lavapipe crashed on one cut in its decorations:
+    // the last instruction must close a function (functions come last in a module), and the entry point and
+    // every function called must be defined.
+    constexpr uint32_t kOpEntryPoint = 15, kOpFunction = 54, kOpFunctionEnd = 56, kOpFunctionCall = 57;
+    std::vector<uint32_t> functions, needed;
+    uint32_t last_opcode = 0;
+    bool sound = true;
+    for (size_t at = 5; at < words.size() && sound;) {
+        const uint32_t count = words[at] >> 16, opcode = words[at] & 0xFFFFu;
+        if (count == 0 || count > words.size() - at) {
+            sound = false;
+            break;
+        }
+        if (opcode == kOpFunction && count > 2) functions.push_back(words[at + 2]);
+        if (opcode == kOpEntryPoint && count > 2) needed.push_back(words[at + 2]);
+        if (opcode == kOpFunctionCall && count > 3) needed.push_back(words[at + 3]);
+        last_opcode = opcode;
+        at += count;
+    }
+    sound = sound && last_opcode == kOpFunctionEnd &&
+            std::all_of(needed.begin(), needed.end(), [&](uint32_t id) {
+                return std::find(functions.begin(), functions.end(), id) != functions.end();
+            });
+    if (!sound) fail_file(path, "a truncated or corrupt SPIR-V module (rebuild the project)");
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes.size();
     info.pCode = reinterpret_cast<const uint32_t*>(bytes.data());

@@ -135,7 +135,11 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     alloc.allocationSize = requirements.size;
     alloc.memoryTypeIndex =
         context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    if (const VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory_); result != VK_SUCCESS) {
+        reset();  // the image made above, not leaked
+        fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory for a " +
+             std::to_string(extent.width) + "x" + std::to_string(extent.height) + " image (" + vk_result_name(result) + ")");
+    }
     tally_ = MemoryTally(context.memory_tally(), alloc.allocationSize);
     VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
     view_ = create_view_2d(device_, image_, format, aspect);

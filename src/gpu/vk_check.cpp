@@ -1,5 +1,7 @@
 #include "gpu/vk_check.hpp"
 
+#include <cstdio>
+
 namespace stipple::gpu {
 
 const char* vk_result_name(VkResult result) {
@@ -25,8 +27,22 @@ const char* vk_result_name(VkResult result) {
         STIPPLE_RESULT(VK_ERROR_SURFACE_LOST_KHR)
         STIPPLE_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
         STIPPLE_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
+        STIPPLE_RESULT(VK_ERROR_FRAGMENTED_POOL)
+        STIPPLE_RESULT(VK_ERROR_UNKNOWN)
+        STIPPLE_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+        STIPPLE_RESULT(VK_ERROR_INVALID_EXTERNAL_HANDLE)
+        STIPPLE_RESULT(VK_ERROR_FRAGMENTATION)
+        STIPPLE_RESULT(VK_ERROR_INVALID_OPAQUE_CAPTURE_ADDRESS)
+        STIPPLE_RESULT(VK_PIPELINE_COMPILE_REQUIRED)
+        STIPPLE_RESULT(VK_ERROR_INCOMPATIBLE_DISPLAY_KHR)
+        STIPPLE_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
+        STIPPLE_RESULT(VK_ERROR_INVALID_SHADER_NV)
 #undef STIPPLE_RESULT
-        default: return "VkResult(unknown)";
+        default: {
+            thread_local char text[40];
+            std::snprintf(text, sizeof text, "VkResult(%d)", int(result));
+            return text;
+        }
     }
 }
 

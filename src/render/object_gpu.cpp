@@ -263,6 +263,12 @@ void ensure_line_buffers(ObjectGpu& object) {
     if (edges.size() > context.properties.limits.maxTexelBufferElements)
         fail(std::to_string(edges.size()) + " edges: the device's texel buffers hold at most " +
              std::to_string(context.properties.limits.maxTexelBufferElements));
+    // The edge table is the largest of the lines' buffers a shader reads whole (16 bytes an edge; the index
+    // list 8, a piece each below is capped).
+    if (sizeof(gpu::SilhouetteEdge) * uint64_t(edges.size()) > context.max_storage_buffer_bytes())
+        fail(std::to_string(edges.size()) + " edges: their lines need a " +
+             mebibytes(sizeof(gpu::SilhouetteEdge) * uint64_t(edges.size())) + " buffer, and this device's largest is " +
+             mebibytes(context.max_storage_buffer_bytes()) + ": draw it without lines, or use a simplified model");
     geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges), kEdgeUsage);
     // The placeholder's view goes with the placeholder it views (write_object_descriptors below rewrites the set).
     vkDestroyBufferView(context.device, geometry.silhouette_edge_texels, nullptr);
@@ -277,7 +283,9 @@ void ensure_line_buffers(ObjectGpu& object) {
         make_index_list_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
     // Room for one visible piece per edge: most edges draw no object-space line, and few of those
     // that do are split by an occluder. Pieces beyond it are dropped (and reported by the read-back).
-    object.frame.line_piece_capacity = uint32_t(edges.size()) + 256;
+    // At most what one storage buffer holds (a model of millions of edges: 153 MiB of pieces for 6.4M).
+    const uint64_t most_pieces = (context.max_storage_buffer_bytes() - sizeof(gpu::LinePiecesHeader)) / sizeof(gpu::LinePiece);
+    object.frame.line_piece_capacity = uint32_t(std::min<uint64_t>(uint64_t(edges.size()) + 256, most_pieces));
     object.frame.line_pieces =
         make_index_list_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
     write_object_descriptors(object);

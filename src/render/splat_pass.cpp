@@ -106,6 +106,11 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                            VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        // The words are a buffer bound to the image's memory: an image barrier's scopes cover accesses to the
+        // image only, so the buffer's copies and fills get a memory barrier of their own.
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
         if (paper_only) {
             vkCmdFillBuffer(cb, words, 0, pixels * 4, glm::packUnorm4x8(paper));
         } else {
@@ -181,6 +186,10 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
                                VK_ACCESS_2_TRANSFER_READ_BIT);
+        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                VK_ACCESS_2_TRANSFER_READ_BIT);
         return;
     }
     // Back into the colour image, and back to an attachment for what follows.
@@ -200,6 +209,12 @@ void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
     const VkDeviceSize bytes =
         sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * VkDeviceSize(object.geometry.stipple_count);
     if (object.frame.visible_stipples.size() >= bytes) return;
+    // 16 bytes a candidate where drawing needs 8 (check_device_fits): vector output of 8.4M-16.8M candidates on
+    // a device of 128 MiB storage buffers wrote past the descriptor's range.
+    if (bytes > context_.max_storage_buffer_bytes())
+        fail("vector output of " + std::to_string(object.geometry.stipple_count) + " candidate stipples needs a " + std::to_string(bytes >> 20) +
+             " MiB list, and this device's largest buffer is " + std::to_string(context_.max_storage_buffer_bytes() >> 20) +
+             " MiB: lower --dmax or --max-stipples, or write a PNG");
     object.frame.visible_stipples = gpu::Buffer(
         context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
     write_object_descriptors(object);

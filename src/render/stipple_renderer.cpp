@@ -377,6 +377,13 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
         vkCmdEndRendering(cb);
         timer_.mark(cb, "lines");
     }
+    // collect() and drawn_mask() read the counters through their mapping once the frame's fence signals; a
+    // fence alone does not make device writes visible to the host (lavapipe's coherent memory hides it).
+    if (options_.count_drawn)
+        gpu::memory_barrier(cb,
+                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 void StippleRenderer::begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, bool clear,
