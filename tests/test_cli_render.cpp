@@ -378,6 +378,10 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"info"}, "MODEL"},
         {{"parity", "--devices", "0,99"}, "--devices"},
         {{"parity", "--devices", "0"}, "--devices"},
+        {{"parity", "--devices", "0,1,2"}, "--devices needs two device indices"},  // not "'1' is not a device"
+        {{"cache", "--list", "--clear"}, "--list or --clear, not both"},
+        {{"render", "-o", "x.svg", "--dpi", "300"}, "--dpi is for PNG output"},  // not "--dpi needs --page"
+        {{"render", "-o", "x.csv", "--fill-paper"}, "a CSV (x.csv) has no page"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},

@@ -38,7 +38,8 @@ int run_cache(const std::vector<std::string>& argv) {
     std::set<std::string> options = cache_options();
     Args args(argv, {"--list", "--clear"}, options);
     if (!args.positionals().empty()) fail("cache takes no MODEL (see stipple --help)");
-    if (args.flag("--list") == args.flag("--clear")) fail("cache needs one of --list or --clear");
+    if (args.flag("--list") && args.flag("--clear")) fail("cache takes --list or --clear, not both");
+    if (!args.flag("--list") && !args.flag("--clear")) fail("cache needs one of --list or --clear");
     apply_cache_options(args);
     const StippleCacheSettings& settings = stipple_cache_settings();
     std::error_code ec;

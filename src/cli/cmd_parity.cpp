@@ -17,7 +17,10 @@ namespace {
 
 std::vector<int> parse_devices(const std::string& text, size_t available) {
     std::vector<int> devices;
-    for (const std::string& part : split_list("--devices", text)) {
+    const std::vector<std::string> parts = split_list("--devices", text);
+    // The count first: "0,1,2" on a machine of one device was refused for its '1'.
+    if (parts.size() != 2) fail("--devices needs two device indices, as 0,1 (got " + text + ")");
+    for (const std::string& part : parts) {
         const std::optional<int64_t> parsed = parse_decimal_integer(part);
         const int64_t index = parsed.value_or(-1);
         if (index < 0 || uint64_t(index) >= available)

@@ -157,10 +157,13 @@ int run_render(const std::vector<std::string>& argv) {
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
     if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
-    // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles.
+    // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
+    // --page" sent the user to add a page that was then refused for the format.
+    if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
     const std::optional<app::PrintOptions> print = read_print_options(args);
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
-    if (print && vector) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
+    if (args.flag("--fill-paper") && plot::is_csv_path(output))
+        fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && !print) {

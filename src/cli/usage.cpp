@@ -32,7 +32,8 @@ Usage:
                                   inside its footprint per distance, extrinsic enhancement on and off
   stipple parity [MODEL] [options]
                                   do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
-  stipple params [--markdown]     list the per-object parameters: ranges, defaults, scene keys
+  stipple params [--markdown]     list the per-object parameters: options, ranges, defaults (with
+                                  --markdown the README's table, with each one's scene key)
   stipple cache --list | --clear  what the stipple cache holds, or empty it
   stipple --help                  this text
 
