@@ -283,7 +283,8 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     uint64_t fingerprint = 0;
     GenerationParams params;
     params.dmax = 0.01f;
-    for (const Mesh& mesh : {make_icosphere(2), make_grid(1)}) {  // small triangles; two large ones, cut in pieces
+    // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density).
+    for (const Mesh& mesh : {make_icosphere(2), make_grid(1), make_cad_cylinder(48)}) {
         const StippleSet set = generate_stipples(mesh, params);
         ASSERT_GT(set.size(), 1000u);
         for (const glm::vec3& p : set.positions) {

@@ -134,7 +134,7 @@ int run_bench(const std::vector<std::string>& argv) {
     // unless asked.
     const bool plot_asked = args.has("--plot-dots");
     const size_t plot_dots = size_t(bounded(args, "--plot-dots", options.quick ? 15'000 : 150'000, 0, 10'000'000));
-    const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && options.models.empty()));
+    const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && !args.has("--models")));
     options.command = "stipple bench";
     for (const std::string& a : argv) options.command += " " + a;
 

@@ -24,11 +24,12 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // candidate count and area (the stipples unchanged); 11: the relaxation's grid at one bucket a point
 // instead of two (its Gauss-Seidel chunks, fixed ranges of buckets, hold other stipples); 12: the
 // relaxation's force with a single falloff, 5 iterations by default instead of 6; 13: the progressive
-// order's search reaching 24 spacings instead of 12 (the prefixes down to 1/256 spread)
-inline constexpr uint32_t kVersion = 13;
+// order's search reaching 24 spacings instead of 12 (the prefixes down to 1/256 spread); 14: the pieces of
+// a cut triangle merged with phases rotated per triangle (slivers side by side drew their prefixes in bands)
+inline constexpr uint32_t kVersion = 14;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0xd51d9f438516ac46;
+inline constexpr uint64_t kGenerationFingerprint = 0x83664ee40fb478dc;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {
