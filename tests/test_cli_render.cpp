@@ -288,7 +288,7 @@ TEST(CliRender, ImagesLargerThanOneFrameAreDrawnInTiles) {
     ::unsetenv("STIPPLE_MAX_STORAGE_BUFFER");
     EXPECT_EQ(small_svg.exit_code, 1);
     EXPECT_EQ(count_lines(small_svg.err), 1u) << small_svg.err;
-    EXPECT_NE(small_svg.err.find("candidate stipples needs a 11 MiB list, and this device's largest buffer is 6 MiB"), std::string::npos) << small_svg.err;
+    EXPECT_NE(small_svg.err.find("candidate stipples needs a 11.2 MiB list, and this device's largest buffer is 6.0 MiB"), std::string::npos) << small_svg.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "y.svg"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -381,6 +381,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"parity", "--devices", "0,1,2"}, "--devices needs two device indices"},  // not "'1' is not a device"
         {{"cache", "--list", "--clear"}, "--list or --clear, not both"},
         {{"render", "-o", "x.svg", "--dpi", "300"}, "--dpi is for PNG output"},  // not "--dpi needs --page"
+        {{"render", "-o", "x.svg", "--tile", "512"}, "--tile is for print-resolution PNG output"},  // not "give --dpi too"
         {{"render", "-o", "x.csv", "--fill-paper"}, "a CSV (x.csv) has no page"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},

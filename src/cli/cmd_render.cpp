@@ -160,6 +160,7 @@ int run_render(const std::vector<std::string>& argv) {
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
     // --page" sent the user to add a page that was then refused for the format.
     if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
+    if (vector && args.has("--tile")) fail("--tile is for print-resolution PNG output; vector output (" + output + ") has no tiles");
     const std::optional<app::PrintOptions> print = read_print_options(args);
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
     if (args.flag("--fill-paper") && plot::is_csv_path(output))

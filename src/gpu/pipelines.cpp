@@ -237,7 +237,7 @@ void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups
     if (grid.x == 0) return;
     // 65535 rows of 65535 groups of 64 are 2^38 invocations: no buffer a pass walks is that long.
     STIPPLE_CHECK(grid.y <= context.properties.limits.maxComputeWorkGroupCount[1],
-                  "a dispatch of " + std::to_string(groups) + " workgroups exceeds this device's limits");
+                  "a dispatch of " + std::to_string(groups) + " workgroups exceeds this device's limits (or STIPPLE_MAX_WORKGROUPS)");
     vkCmdDispatch(cb, grid.x, grid.y, 1);
 }
 

@@ -136,7 +136,8 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     alloc.memoryTypeIndex =
         context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     if (const VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory_); result != VK_SUCCESS) {
-        reset();  // the image made above, not leaked
+        memory_ = VK_NULL_HANDLE;  // undefined after a failed call
+        reset();                   // the image made above, not leaked
         fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory for a " +
              std::to_string(extent.width) + "x" + std::to_string(extent.height) + " image (" + vk_result_name(result) + ")");
     }
@@ -285,9 +286,11 @@ std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer,
     return bytes;
 }
 
-void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                   VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
-                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+namespace {
+
+void record_image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                          VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                          VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access, bool aliased) {
     VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     barrier.srcStageMask = src_stage;
     barrier.srcAccessMask = src_access;
@@ -299,10 +302,31 @@ void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect,
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = image;
     barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkMemoryBarrier2 memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    memory.srcStageMask = src_stage;
+    memory.srcAccessMask = src_access;
+    memory.dstStageMask = dst_stage;
+    memory.dstAccessMask = dst_access;
     VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dependency.imageMemoryBarrierCount = 1;
     dependency.pImageMemoryBarriers = &barrier;
+    dependency.memoryBarrierCount = aliased ? 1 : 0;
+    dependency.pMemoryBarriers = aliased ? &memory : nullptr;
     vkCmdPipelineBarrier2(cb, &dependency);
+}
+
+}  // namespace
+
+void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                   VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                   VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    record_image_barrier(cb, image, aspect, from, to, src_stage, src_access, dst_stage, dst_access, false);
+}
+
+void aliased_image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                           VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                           VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    record_image_barrier(cb, image, aspect, from, to, src_stage, src_access, dst_stage, dst_access, true);
 }
 
 void memory_barrier(VkCommandBuffer cb, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,

@@ -158,6 +158,13 @@ std::vector<std::byte> read_buffer(const Context& context, const Buffer& buffer,
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
                    VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+// The same, with a global memory barrier of the same scopes in the same dependency: for an image whose
+// memory a buffer also reaches (Image::linear_with_words), since an image barrier's access scopes cover
+// accesses to the image alone, and two barriers recorded apart would not order the buffer's accesses
+// around the layout change.
+void aliased_image_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
+                           VkImageLayout to, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                           VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
 
 // A global memory dependency (cheaper to write than one barrier per buffer).
 void memory_barrier(VkCommandBuffer cb, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,

@@ -102,15 +102,11 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     const VkBuffer words = targets.color_words;
     if (words) {
         // The splat draws in the image's own pixels: GENERAL, where a linear image's memory is its pixels.
-        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                           VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                           VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        // The words are a buffer bound to the image's memory: an image barrier's scopes cover accesses to the
-        // image only, so the buffer's copies and fills get a memory barrier of their own.
-        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        // The copies and fills below reach it through the words buffer: an aliased barrier.
+        gpu::aliased_image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                   VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
         if (paper_only) {
             vkCmdFillBuffer(cb, words, 0, pixels * 4, glm::packUnorm4x8(paper));
         } else {
@@ -180,16 +176,12 @@ void StippleRenderer::record_splat(VkCommandBuffer cb, const RenderTargets& targ
     timer_.mark(cb, "splat");
 
     if (words) {  // already in the image: back to an attachment for what follows (lines, a read-back)
-        gpu::image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
-                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                               VK_ACCESS_2_TRANSFER_READ_BIT);
-        gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                                VK_ACCESS_2_TRANSFER_READ_BIT);
+        gpu::aliased_image_barrier(cb, targets.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
+                                       VK_ACCESS_2_TRANSFER_READ_BIT);
         return;
     }
     // Back into the colour image, and back to an attachment for what follows.
@@ -212,8 +204,9 @@ void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
     // 16 bytes a candidate where drawing needs 8 (check_device_fits): vector output of 8.4M-16.8M candidates on
     // a device of 128 MiB storage buffers wrote past the descriptor's range.
     if (bytes > context_.max_storage_buffer_bytes())
-        fail("vector output of " + std::to_string(object.geometry.stipple_count) + " candidate stipples needs a " + std::to_string(bytes >> 20) +
-             " MiB list, and this device's largest buffer is " + std::to_string(context_.max_storage_buffer_bytes() >> 20) +
+        fail("vector output of " + std::to_string(object.geometry.stipple_count) + " candidate stipples needs a " +
+             printf_string("%.1f", double(bytes) / 1048576.0) + " MiB list, and this device's largest buffer is " +
+             printf_string("%.1f", double(context_.max_storage_buffer_bytes()) / 1048576.0) +
              " MiB: lower --dmax or --max-stipples, or write a PNG");
     object.frame.visible_stipples = gpu::Buffer(
         context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);

@@ -55,24 +55,12 @@ constexpr uint32_t kMaxCandidates = 16;
 // fastest: cells of 2 spacings made ordering 3x slower (bucket lookups), 8 the same as 6.
 constexpr double kPushCell = 6.0;
 // What the greedy orders: a triangle's stipples, or the piece of a large triangle's stipples that
-// lies in one slab. Slot k of a unit of N stipples appears at tau = (k + phase) / N: a whole triangle's
-// phase is 0.5, a piece's its own (merge_pieces), so that the greedy places each piece's slots at the
-// times the merged triangle draws them.
+// lies in one slab. Slot k of a unit of N stipples appears at tau = (k + 0.5) / N.
 struct Unit {
     uint32_t begin, end;  // its stipples: positions_[begin, end)
     uint32_t triangle;
     uint32_t piece;       // 0: the whole triangle; else 1 + the slab of this piece
-    double phase = 0.5;   // in [0, 1)
-    double tau(uint32_t k) const { return (k + phase) / (end - begin); }
 };
-
-// The radical inverse in base 2 of r: 0, 1/2, 1/4, 3/4, 1/8, ...
-double radical_inverse(uint32_t r) {
-    double value = 0.0, digit = 0.5;
-    for (; r != 0; r >>= 1, digit *= 0.5)
-        if (r & 1u) value += digit;
-    return value;
-}
 
 class Orderer {
 public:
@@ -88,7 +76,7 @@ private:
     // One slab's ordering, kept across windows.
     struct SlabState {
         // The unit (by position in the slab's list) of each slot, in order. A slot's time is
-        // Unit::tau(k), k counted in placed_count: equal fractions give equal doubles (correctly
+        // (k + 0.5) / N_u, k counted in placed_count: equal fractions give equal doubles (correctly
         // rounded division), so it need not be stored (it would double the list's size).
         std::vector<uint32_t> slots;
         size_t next = 0;                      // the next slot to fill
@@ -105,7 +93,6 @@ private:
     void take_in_neighbours(size_t slab);
     void finish_slab(size_t slab);
     void place(const Unit& unit, uint32_t k, double tau, SlabState& state);
-    void set_piece_phases(uint32_t triangle, uint32_t first_unit, uint32_t end_unit);
     void merge_pieces();
 
     // Read by make_units and start_slab, freed while ordering, written in the new order by finish_slab.
@@ -259,9 +246,7 @@ void Orderer::make_units() {
         const uint32_t first_unit = static_cast<uint32_t>(units_.size());
         for (size_t s = 0; s < slabs; ++s)
             if (count[s + 1] > count[s]) add_unit({b + count[s], b + count[s + 1], uint32_t(t), uint32_t(s + 1)}, s);
-        const uint32_t end_unit = static_cast<uint32_t>(units_.size());
-        set_piece_phases(uint32_t(t), first_unit, end_unit);
-        split_.push_back({uint32_t(t), first_unit, end_unit});
+        split_.push_back({uint32_t(t), first_unit, static_cast<uint32_t>(units_.size())});
     }
 }
 
@@ -277,19 +262,13 @@ void Orderer::make_units() {
 // side (a CAD cylinder's sides, a fan's blades) all took their first stipples from the same pieces, and the
 // prefixes they draw at a distance lay in bands across them (a cylinder of 1024 sides read 1.28 max/min
 // over a 16x range of size, its rows of pixels up to 2.9 times as dark as each other; until 2026-12-04).
-// The greedy places each piece's slots at these same times (Unit::tau), so that the stipple a piece
-// gives the triangle's prefix is chosen away from what its neighbours' prefixes hold by then.
-void Orderer::set_piece_phases(uint32_t triangle, uint32_t first_unit, uint32_t end_unit) {
-    const uint32_t pieces = end_unit - first_unit;
-    const double start = double(mix64(seed_ ^ 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53;
-    const double offset = start + double(triangle) * 0.6180339887498949;
-    for (uint32_t u = first_unit; u < end_unit; ++u) {
-        double rotated = radical_inverse(u - first_unit) + 0.5 / pieces + offset;
-        units_[u].phase = rotated - std::floor(rotated);
-    }
-}
-
 void Orderer::merge_pieces() {
+    auto radical_inverse = [](uint32_t r) {
+        double value = 0.0, digit = 0.5;
+        for (; r != 0; r >>= 1, digit *= 0.5)
+            if (r & 1u) value += digit;
+        return value;
+    };
     parallel_for(split_.size(), 1, [&](size_t i) {
         const Split& split = split_[i];
         const uint32_t pieces = split.end_unit - split.first_unit;
@@ -302,10 +281,18 @@ void Orderer::merge_pieces() {
             uint32_t unit, k;
         };
         auto later = [](const Next& a, const Next& b) { return a.tau != b.tau ? a.tau > b.tau : a.unit > b.unit; };
+        std::vector<double> phase(pieces);
         std::vector<Next> heap;
         heap.reserve(pieces);
-        for (uint32_t u = split.first_unit; u < split.end_unit; ++u)
-            if (units_[u].end > units_[u].begin) heap.push_back({units_[u].tau(0), u, 0});
+        const double start = double(mix64(seed_ ^ 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53;
+        const double offset = start + double(split.triangle) * 0.6180339887498949;
+        for (uint32_t u = split.first_unit; u < split.end_unit; ++u) {
+            const Unit& unit = units_[u];
+            double rotated = radical_inverse(u - split.first_unit) + 0.5 / pieces + offset;
+            rotated -= std::floor(rotated);
+            phase[u - split.first_unit] = rotated;  // in [0, 1)
+            if (unit.end > unit.begin) heap.push_back({phase[u - split.first_unit] / (unit.end - unit.begin), u, 0});
+        }
         std::make_heap(heap.begin(), heap.end(), later);
         std::vector<glm::vec3> merged;
         merged.reserve(first_[split.triangle + 1] - first_[split.triangle]);
@@ -316,7 +303,7 @@ void Orderer::merge_pieces() {
             merged.push_back(positions_[unit.begin + next.k]);
             const uint32_t count = unit.end - unit.begin;
             if (++next.k < count) {
-                next.tau = unit.tau(next.k);
+                next.tau = (next.k + phase[next.unit - split.first_unit]) / count;
                 std::push_heap(heap.begin(), heap.end(), later);
             } else {
                 heap.pop_back();
@@ -326,39 +313,30 @@ void Orderer::merge_pieces() {
     });
 }
 
-// The slots of the slab's units by increasing tau (Unit::tau), ties by unit. Without a sort over all
-// slots: the whole triangles with N stipples share their N tau values, so the slots come from the
-// (N, k) classes in tau order, each class listing its units in unit order; a piece, of a phase of its
-// own, is a class of one unit.
+// The slots of the slab's units by increasing tau = (k + 0.5) / N_u, ties by unit. Without a sort
+// over all slots: the units with N stipples share their N tau values, so the slots come from the
+// (N, k) classes in tau order, each class listing its units in unit order.
 std::vector<uint32_t> Orderer::slots_in_order(const std::vector<uint32_t>& units) const {
     std::vector<std::pair<uint32_t, uint32_t>> by_count;  // (N, local), grouped by N
     by_count.reserve(units.size());
     size_t total = 0;
-    std::vector<uint32_t> pieces;  // local indices of the pieces of cut triangles
     for (uint32_t local = 0; local < units.size(); ++local) {
         const uint32_t count = units_[units[local]].end - units_[units[local]].begin;
+        by_count.push_back({count, local});
         total += count;
-        if (units_[units[local]].piece != 0) pieces.push_back(local);
-        else by_count.push_back({count, local});
     }
     std::sort(by_count.begin(), by_count.end());
-    const uint32_t whole = uint32_t(by_count.size());
-    for (const uint32_t local : pieces) by_count.push_back({units_[units[local]].end - units_[units[local]].begin, local});
     struct Class {
         double tau;
         uint32_t begin, end;  // its units: by_count[begin, end)
     };
     std::vector<Class> classes;
-    for (uint32_t b = 0; b < whole;) {
+    for (uint32_t b = 0; b < by_count.size();) {
         uint32_t e = b;
-        while (e < whole && by_count[e].first == by_count[b].first) ++e;
+        while (e < by_count.size() && by_count[e].first == by_count[b].first) ++e;
         const uint32_t count = by_count[b].first;
         for (uint32_t k = 0; k < count; ++k) classes.push_back({(k + 0.5) / count, b, e});
         b = e;
-    }
-    for (uint32_t b = whole; b < by_count.size(); ++b) {
-        const Unit& unit = units_[units[by_count[b].second]];
-        for (uint32_t k = 0; k < by_count[b].first; ++k) classes.push_back({unit.tau(k), b, b + 1});
     }
     std::sort(classes.begin(), classes.end(), [](const Class& a, const Class& b) {
         return a.tau < b.tau || (a.tau == b.tau && a.begin < b.begin);
@@ -407,7 +385,7 @@ void Orderer::fill_slab(size_t slab, double until) {
         const uint32_t local = state.slots[state.next];
         const Unit& unit = units_[units[local]];
         const uint32_t k = state.placed_count[local];
-        const double tau = unit.tau(k);
+        const double tau = (k + 0.5) / (unit.end - unit.begin);
         if (!(tau <= until)) break;
         place(unit, k, tau, state);
         ++state.placed_count[local];
