@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include <nlohmann/json.hpp>
@@ -59,41 +60,40 @@ TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
     const fs::path shaders = test::temp_dir("cli_anim_missing_shader_dir");
     const char* saved = std::getenv("STIPPLE_SHADER_DIR");
     const std::string before = saved ? saved : "";
-    for (const char* missing : {"depth.vert.spv", "polygon_constants.comp.spv", "deform.comp.spv"}) {
-        fs::remove_all(shaders);
-        fs::create_directories(shaders);
-        for (const auto& entry : fs::directory_iterator(STIPPLE_SHADER_DIR))
-            if (entry.path().extension() == ".spv" && entry.path().filename() != missing)
-                fs::copy_file(entry.path(), shaders / entry.path().filename());
-        ::setenv("STIPPLE_SHADER_DIR", shaders.string().c_str(), 1);
-        const test::CommandResult r =
-            run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
-        if (saved) ::setenv("STIPPLE_SHADER_DIR", before.c_str(), 1);
-        else ::unsetenv("STIPPLE_SHADER_DIR");
-        EXPECT_EQ(r.exit_code, 1) << missing;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        EXPECT_NE(r.err.find(std::string(missing) + ": shader not found"), std::string::npos) << r.err;
-        EXPECT_FALSE(fs::exists(shaders / "never.png"));
-    }
-    // A module cut short, or not SPIR-V at all: named as such (until 2026-12-04 "out of memory" with the
-    // validation layer on, VkResult(unknown) without it).
-    for (const auto& [broken, bytes] : {std::pair<const char*, size_t>{"depth.vert.spv", 100}, {"deform.comp.spv", 0}}) {
+    // The build's shaders copied, `alter` applied to the copy, and the bent cylinder rendered with them.
+    const auto render_with = [&](const std::function<void(const fs::path&)>& alter) {
         fs::remove_all(shaders);
         fs::create_directories(shaders);
         for (const auto& entry : fs::directory_iterator(STIPPLE_SHADER_DIR))
             if (entry.path().extension() == ".spv") fs::copy_file(entry.path(), shaders / entry.path().filename());
-        if (bytes > 0) fs::resize_file(shaders / broken, bytes);
-        else test::write_file(shaders / broken, "#version 450 not compiled");
+        alter(shaders);
         ::setenv("STIPPLE_SHADER_DIR", shaders.string().c_str(), 1);
         const test::CommandResult r =
             run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
         if (saved) ::setenv("STIPPLE_SHADER_DIR", before.c_str(), 1);
         else ::unsetenv("STIPPLE_SHADER_DIR");
+        EXPECT_FALSE(fs::exists(shaders / "never.png"));
+        return r;
+    };
+    for (const char* missing : {"depth.vert.spv", "polygon_constants.comp.spv", "deform.comp.spv"}) {
+        const test::CommandResult r = render_with([&](const fs::path& dir) { fs::remove(dir / missing); });
+        EXPECT_EQ(r.exit_code, 1) << missing;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(std::string(missing) + ": shader not found"), std::string::npos) << r.err;
+    }
+    // A module cut short, or not SPIR-V at all: named as such (until 2026-12-04 "out of memory" with the
+    // validation layer on, VkResult(unknown) without it).
+    for (const auto& [broken, bytes] : {std::pair<const char*, size_t>{"depth.vert.spv", 100}, {"deform.comp.spv", 0}}) {
+        const char* name = broken;
+        const size_t size = bytes;
+        const test::CommandResult r = render_with([&](const fs::path& dir) {
+            if (size > 0) fs::resize_file(dir / name, size);
+            else test::write_file(dir / name, "#version 450 not compiled");
+        });
         EXPECT_EQ(r.exit_code, 1) << broken;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_NE(r.err.find(std::string(broken) + (bytes > 0 ? ": a truncated or corrupt SPIR-V module" : ": not a SPIR-V module")),
                   std::string::npos) << r.err;
-        EXPECT_FALSE(fs::exists(shaders / "never.png"));
     }
 }
 

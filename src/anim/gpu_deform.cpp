@@ -197,7 +197,7 @@ void GpuDeformer::record(VkCommandBuffer cb, const Pose& pose) {
     vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set_, 0, nullptr);
     const gpu::DeformPush push{vertex_count_, 0, 0, 0};
     vkCmdPushConstants(cb, pipeline_layout_, gpu::kPushConstantStages, 0, sizeof push, &push);
-    gpu::dispatch_groups(cb, context_, (uint64_t(vertex_count_) + gpu::kDeformWorkgroupSize - 1) / gpu::kDeformWorkgroupSize);
+    gpu::dispatch_items(cb, context_, vertex_count_, gpu::kDeformWorkgroupSize);
 }
 
 }  // namespace stipple::anim

@@ -374,7 +374,6 @@ uint64_t Context::max_storage_buffer_bytes() const {
     return limit ? std::min(device, limit) : device;
 }
 
-
 uint64_t Context::max_pixel_words() const {
     return std::min<uint64_t>(max_storage_buffer_bytes() / 4u, properties.limits.maxTexelBufferElements);
 }

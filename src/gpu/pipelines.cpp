@@ -55,12 +55,8 @@ std::string shader_path(const std::string& name) {
     return dir + "/" + name + ".spv";
 }
 
-VkShaderModule load_shader(const Context& context, const std::string& name) {
-    std::string path = shader_path(name);
-    std::ifstream file(path, std::ios::binary);
-    if (!file) fail_file(path, "shader not found (was the project built? set STIPPLE_SHADER_DIR to move it)");
-    std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
+// Refuses, naming the file, a module the driver should never see.
+static void check_spirv_module(const std::string& path, const std::vector<char>& bytes) {
     // Its instructions must tile the file: a truncated or overwritten module reached the driver (and the
     // validation layer) before, which answered "out of memory" or VkResult(unknown).
     std::vector<uint32_t> words(bytes.size() / 4);
@@ -74,7 +70,7 @@ VkShaderModule load_shader(const Context& context, const std::string& name) {
     std::vector<uint32_t> functions, needed;
     uint32_t last_opcode = 0;
     bool sound = true;
-    for (size_t at = 5; at < words.size() && sound;) {
+    for (size_t at = 5; at < words.size();) {
         const uint32_t count = words[at] >> 16, opcode = words[at] & 0xFFFFu;
         if (count == 0 || count > words.size() - at) {
             sound = false;
@@ -91,6 +87,15 @@ VkShaderModule load_shader(const Context& context, const std::string& name) {
                 return std::find(functions.begin(), functions.end(), id) != functions.end();
             });
     if (!sound) fail_file(path, "a truncated or corrupt SPIR-V module (rebuild the project)");
+}
+
+VkShaderModule load_shader(const Context& context, const std::string& name) {
+    std::string path = shader_path(name);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) fail_file(path, "shader not found (was the project built? set STIPPLE_SHADER_DIR to move it)");
+    std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
+    check_spirv_module(path, bytes);
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes.size();
     info.pCode = reinterpret_cast<const uint32_t*>(bytes.data());

@@ -58,5 +58,9 @@ struct GroupGrid {
 };
 GroupGrid split_groups(uint64_t groups, uint32_t max_x);
 void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups);
+// The groups of group_size invocations that cover `items`, dispatched as above.
+inline void dispatch_items(VkCommandBuffer cb, const Context& context, uint64_t items, uint32_t group_size) {
+    dispatch_groups(cb, context, (items + group_size - 1) / group_size);
+}
 
 }  // namespace stipple::gpu

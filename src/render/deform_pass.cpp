@@ -130,7 +130,7 @@ void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique
         push.box_size = glm::vec4(object->polygons.box_size, 0.0f);
         push.triangle_count = object->geometry.triangle_count;
         vkCmdPushConstants(cb, layout_, gpu::kPushConstantStages, 0, sizeof push, &push);
-        gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.triangle_count) + group - 1) / group);
+        gpu::dispatch_items(cb, context_, object->geometry.triangle_count, group);
     }
     // Deformed vertices and polygons before everything that draws or densifies from them.
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -45,7 +45,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
     };
     auto dispatch = [&](const ObjectGpu& object, VkPipeline pipeline) {
         bind(object, pipeline);
-        gpu::dispatch_groups(cb, context_, (uint64_t(object.geometry.triangle_count) + group - 1) / group);
+        gpu::dispatch_items(cb, context_, object.geometry.triangle_count, group);
     };
     // Over a list a pass wrote, whose header is the dispatch (DrawnPolygons).
     auto dispatch_over = [&](const ObjectGpu& object, VkPipeline pipeline, const gpu::Buffer& list) {

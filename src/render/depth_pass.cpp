@@ -47,7 +47,7 @@ void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
         if (!object->frame.depth_listed) continue;
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
-        gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.triangle_count) + group - 1) / group);
+        gpu::dispatch_items(cb, context_, object->geometry.triangle_count, group);
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT,

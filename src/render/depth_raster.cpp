@@ -80,8 +80,7 @@ void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTarget
             if (large)
                 vkCmdDispatchIndirect(cb, object->frame.depth_triangles.handle(), 0);
             else
-                gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.triangle_count) + gpu::kDensityWorkgroupSize - 1) /
-                                                       gpu::kDensityWorkgroupSize);
+                gpu::dispatch_items(cb, context_, object->geometry.triangle_count, gpu::kDensityWorkgroupSize);
         }
         if (!large)  // the lists and the first pass's depths before the second pass
             gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -106,7 +105,7 @@ void StippleRenderer::copy_depth_words_to_image(VkCommandBuffer cb, const Render
         VkDescriptorSet sets[] = {objects_.front()->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0, nullptr);
         const uint32_t words = (targets.extent.width * targets.extent.height + 3) / 4;
-        gpu::dispatch_groups(cb, context_, (uint64_t(words) + gpu::kDensityWorkgroupSize - 1) / gpu::kDensityWorkgroupSize);
+        gpu::dispatch_items(cb, context_, words, gpu::kDensityWorkgroupSize);
         gpu::buffer_barrier(cb, splat_background_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_READ_BIT);

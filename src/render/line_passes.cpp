@@ -80,7 +80,7 @@ void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.pipeline, 0, 1, &object->set, 0, nullptr);
-        gpu::dispatch_groups(cb, context_, (uint64_t(object->geometry.silhouette_edge_count) + group - 1) / group);
+        gpu::dispatch_items(cb, context_, object->geometry.silhouette_edge_count, group);
     }
     if (any_walk) {  // the listed edges, walked against the depth pass (copied by copy_scene_depth)
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -23,6 +23,12 @@ namespace stipple {
 using gpu::Buffer;
 using gpu::MemoryUse;
 
+std::string mebibytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / 1048576.0);
+    return text;
+}
+
 namespace {
 
 // The edge table, read as RGBA32UI texels (line_edges.comp, line_walk.comp).
@@ -34,12 +40,6 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
     for (size_t i = 0; i < vertices.size(); ++i)
         vertices[i] = {pack_barycentric(mesh, stipples.triangle[i], stipples.positions[i]), stipples.triangle[i]};
     return vertices;
-}
-
-std::string mebibytes(uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / 1048576.0);
-    return text;
 }
 
 // Before anything is staged: an object the device cannot hold is refused in one line saying what it

@@ -145,6 +145,9 @@ gpu::Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize byt
 // object (StippleRenderer::prepare's contract).
 void ensure_line_buffers(ObjectGpu& object);
 
+// A byte count as the refusals print it: "12.3 MiB".
+std::string mebibytes(uint64_t bytes);
+
 // Stipples of this size in pixels and below are square points (the rasteriser's, and the splat's
 // copy of them); above, round dots.
 inline constexpr float kRoundPointsAbovePx = 2.5f;

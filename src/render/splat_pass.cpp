@@ -205,9 +205,8 @@ void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
     // a device of 128 MiB storage buffers wrote past the descriptor's range.
     if (bytes > context_.max_storage_buffer_bytes())
         fail("vector output of " + std::to_string(object.geometry.stipple_count) + " candidate stipples needs a " +
-             printf_string("%.1f", double(bytes) / 1048576.0) + " MiB list, and this device's largest buffer is " +
-             printf_string("%.1f", double(context_.max_storage_buffer_bytes()) / 1048576.0) +
-             " MiB: lower --dmax or --max-stipples, or write a PNG");
+             mebibytes(bytes) + " list, and this device's largest buffer is " +
+             mebibytes(context_.max_storage_buffer_bytes()) + ": lower --dmax or --max-stipples, or write a PNG");
     object.frame.visible_stipples = gpu::Buffer(
         context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
     write_object_descriptors(object);
