@@ -195,6 +195,7 @@ void Context::pick_physical_device(const ContextOptions& options) {
         const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
         if ((families[i].queueFlags & need) == need) queue_family = i, found = true;
         features.timestamps = found && families[i].timestampValidBits > 0;
+        features.timestamp_valid_bits = families[i].timestampValidBits;
     }
     if (!found) fail(std::string("device '") + device_name + "' has no graphics+compute queue");
     if (options.verbose)

@@ -35,6 +35,7 @@ struct DeviceFeatures {
     float max_point_size = 1.0f;
     float max_line_width = 1.0f;
     double timestamp_period_ns = 1.0;
+    uint32_t timestamp_valid_bits = 64;  // the queue's; the bits above are undefined, and the count wraps there
 };
 
 inline constexpr VkImageAspectFlags kDepthStencilAspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;

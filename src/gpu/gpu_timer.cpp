@@ -38,8 +38,13 @@ std::vector<std::pair<std::string, double>> GpuTimer::read() const {
     std::vector<uint64_t> ticks(passes_.size() + 1);
     VK_CHECK(vkGetQueryPoolResults(context_.device, pool_, 0, uint32_t(ticks.size()), ticks.size() * sizeof(uint64_t),
                                    ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    // Only the queue's valid bits count (36-64 on real devices): masked, a difference across the counter's
+    // wrap is still right.
+    const uint32_t bits = context_.features.timestamp_valid_bits;
+    const uint64_t valid = bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
     for (size_t i = 0; i < passes_.size(); ++i)
-        result.emplace_back(passes_[i], double(ticks[i + 1] - ticks[i]) * context_.features.timestamp_period_ns * 1e-6);
+        result.emplace_back(passes_[i],
+                            double((ticks[i + 1] - ticks[i]) & valid) * context_.features.timestamp_period_ns * 1e-6);
     return result;
 }
 
