@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -58,8 +59,6 @@ void write_text(const fs::path& path, const std::string& text) {
 TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
     const std::string model = cylinder("cli_anim_missing_shader");
     const fs::path shaders = test::temp_dir("cli_anim_missing_shader_dir");
-    const char* saved = std::getenv("STIPPLE_SHADER_DIR");
-    const std::string before = saved ? saved : "";
     // The build's shaders copied, `alter` applied to the copy, and the bent cylinder rendered with them.
     const auto render_with = [&](const std::function<void(const fs::path&)>& alter) {
         fs::remove_all(shaders);
@@ -67,11 +66,10 @@ TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
         for (const auto& entry : fs::directory_iterator(STIPPLE_SHADER_DIR))
             if (entry.path().extension() == ".spv") fs::copy_file(entry.path(), shaders / entry.path().filename());
         alter(shaders);
-        ::setenv("STIPPLE_SHADER_DIR", shaders.string().c_str(), 1);
-        const test::CommandResult r =
-            run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
-        if (saved) ::setenv("STIPPLE_SHADER_DIR", before.c_str(), 1);
-        else ::unsetenv("STIPPLE_SHADER_DIR");
+        const test::CommandResult r = [&] {
+            test::ScopedEnv env("STIPPLE_SHADER_DIR", shaders.string());
+            return run_stipple(sparse({"render", model, "--time", "0.3", "-o", (shaders / "never.png").string(), "--width", "64", "--height", "64"}));
+        }();
         EXPECT_FALSE(fs::exists(shaders / "never.png"));
         return r;
     };
@@ -274,9 +272,10 @@ TEST(CliAnimation, DeformationInRowsDrawsTheSame) {
     for (int rows = 0; rows < 2; ++rows) {
         const std::string out = (dir / (rows ? "rows.png" : "one.png")).string();
         // Rows of one group: the cylinder's 110 vertices are two groups of the deformation, 216 polygons four.
-        if (rows) ::setenv("STIPPLE_MAX_WORKGROUPS", "1", 1);
+        std::optional<test::ScopedEnv> in_rows;
+        if (rows) in_rows.emplace("STIPPLE_MAX_WORKGROUPS", "1");
         auto r = run_stipple({"render", model, "--time", "0.7", "--contours", "--width", "320", "--height", "256", "-o", out});
-        ::unsetenv("STIPPLE_MAX_WORKGROUPS");
+        in_rows.reset();
         ASSERT_EQ(r.exit_code, 0) << r.err;
         std::ifstream in(out, std::ios::binary);
         bytes[rows].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -257,9 +257,10 @@ TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {
                 << sphere.indices[3 * t + 2] + 1 << "\n";
     }
     const std::vector<std::string> info = {"info", model, "--dmax", "0.02", "--cache-dir", cache.string()};
-    ::setenv("STIPPLE_CACHE_CRASH_AFTER_BYTES", "300", 1);  // dies inside the entry's data, as a kill would
-    const test::CommandResult killed = test::run_stipple(info);
-    ::unsetenv("STIPPLE_CACHE_CRASH_AFTER_BYTES");
+    const test::CommandResult killed = [&] {
+        test::ScopedEnv crash("STIPPLE_CACHE_CRASH_AFTER_BYTES", "300");  // dies inside the entry's data, as a kill would
+        return test::run_stipple(info);
+    }();
     EXPECT_EQ(killed.exit_code, 137);
     size_t temporaries = 0;
     for (const fs::directory_entry& file : fs::directory_iterator(cache)) temporaries += file.path().extension() != ".stipples";

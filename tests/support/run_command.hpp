@@ -1,5 +1,7 @@
 #pragma once
 // Runs the stipple executable as a user would, capturing exit status, stdout and stderr.
+#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,5 +15,25 @@ struct CommandResult {
 
 // Arguments are quoted for the shell; runs `<build>/stipple args...`.
 CommandResult run_stipple(const std::vector<std::string>& args);
+
+// An environment variable set for the guard's life (the commands run meanwhile see it), then restored to what
+// it was before, or unset if it was not set.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) {
+        if (const char* before = std::getenv(name)) before_ = before;
+        ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (before_) ::setenv(name_.c_str(), before_->c_str(), 1);
+        else ::unsetenv(name_.c_str());
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    std::string name_;
+    std::optional<std::string> before_;
+};
 
 }  // namespace stipple::test
