@@ -107,9 +107,9 @@ void list_gradient(bool large, uint t) {
 // items, each polygon's consecutive (a prefix sum over the lanes). Slot ranges tile 0, 1, 2, ..., so each
 // range adds the workgroups of the splat's dispatch that start in it. Called by every invocation of the
 // subgroup (listing nothing where `listing` is false), with the same `to_varied` (the list: VaryingList).
-void list_work_items(bool listing, bool to_varied, uint first, float candidates, float density, float most) {
+void list_work_items(bool listing, bool to_varied, uint first, float candidates, float most) {
     uint drawn_here = listing ? drawn_stipple_count(most, uint(candidates)) : 0u;
-    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, density, candidates));
+    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, most, candidates));
     uint items = (drawn_here + run - 1u) / run;
     uint listed_here = subgroupAdd(items);
     if (listed_here == 0u) return;
@@ -150,14 +150,18 @@ void gradient_main() {
     q.flags = object.flags[unfoldable_zero()];
     vec3 a, b, c;
     view_corners(t, object.model_view, a, b, c);
+    if (draw.density < 0.0f) {  // its centroid nearer than the near plane (large_polygon_stored_density)
+        draw.density = large_polygon_density(draw.density, a, b, c, q);
+        draws[t].density = draw.density;
+    }
     vec2 bounds = polygon_density_bounds(draw.density, a, b, c, q);
     draws[t].least = bounds.x;
     draws[t].most = bounds.y;
     // With kListVaryingApart the work items of a polygon whose density does vary go to their own list; the
     // others (listed as large by the cheap test, yet flat) join the work list.
     bool apart = kListVaryingApart && bounds.x != bounds.y;
-    if (kListDrawn) list_work_items(!apart, false, draw.first_stipple, candidates, draw.density, bounds.y);
-    if (kListDrawn && kListVaryingApart) list_work_items(apart, true, draw.first_stipple, candidates, draw.density, bounds.y);
+    if (kListDrawn) list_work_items(!apart, false, draw.first_stipple, candidates, bounds.y);
+    if (kListDrawn && kListVaryingApart) list_work_items(apart, true, draw.first_stipple, candidates, bounds.y);
     if (kListGradientChunks) list_gradient_chunks(bounds.x != bounds.y, draw.first_stipple, candidates, bounds.y);
 }
 
@@ -188,13 +192,14 @@ void main() {
     if ((flags & kFlagStretch) != 0u) p.due = stretched_due(candidates, info.area, full_areas[t]);
     DensityParams q = density_params(frame, object);
     q.flags = flags;
-    float density = polygon_density(p, q);
+    PolygonDensity terms = polygon_density_terms(p, q);
+    float density = selected_density(terms, p.selection);
     // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here):
     // the gradient pass writes the bounds of that density over it, and lists its work items after them.
     bool large = may_carry_gradient(p, q, density);
     list_gradient(large, t);
-    draws[t].density = density;
+    draws[t].density = large ? large_polygon_stored_density(terms, density) : density;
     draws[t].least = density;
     draws[t].most = density;
-    if (kListDrawn) list_work_items(!large, false, first, candidates, density, density);
+    if (kListDrawn) list_work_items(!large, false, first, candidates, density);
 }

@@ -341,6 +341,8 @@ struct VisibleStipple {
     float x, y;       // window pixels, origin top-left, y down (the PNG's)
     float intensity;  // (0, 1]
     uint index;       // the candidate (its polygon: ObjectGeometry::first_stipple)
+    float scale;      // the dot's side over the point size: above 1 where the candidates cannot carry the
+                      // density (stipple_scale), as the frame draws it
 };
 
 // One indirect draw, laid out as VkDrawIndirectCommand.
@@ -382,7 +384,8 @@ struct ObjectUniforms {
                             // w: 1 where the model matrix scales its axes unequally (polygon_view), else 0
     uvec4 flags;            // x: kFlag* bits; y: triangle count; z: silhouette edge count; w: candidate count
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
-    vec4 box_size;          // xyz: the box's extent
+    vec4 box_size;          // xyz: the box's extent; w: how far a centroid quantised in it may lie from the true one, in
+                            // view depth (DensityParams::near_margin)
     vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; zw: unused
 };
 

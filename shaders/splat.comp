@@ -146,7 +146,7 @@ uint optical_depth_units(float intensity) {
 // records for vector output; `intensity` and `side`: the dot drawn (a round fractional one is smaller and
 // of full ink, fractional_round_dot). Returns whether the dot lies astride the outline (some of its pixels
 // have no surface): outside the ring pass its lost pixels are left to that pass, which inks only them.
-bool splat(uint index, float fraction, float intensity, bool full, float side, mat4 model_view_proj,
+bool splat(uint index, float fraction, float intensity, bool full, float side, float scale, mat4 model_view_proj,
            PolygonFrame polygon, SplatConstants c, float depth_pull) {
     if (kCountDrawn && !kRingPass) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
@@ -191,7 +191,7 @@ bool splat(uint index, float fraction, float intensity, bool full, float side, m
         }
     if (kRecordVisible && inked && !kRingPass) {
         uint slot = atomicAdd(visible.count, 1u);
-        visible_stipples[slot] = VisibleStipple(window.x, window.y, fraction, index);
+        visible_stipples[slot] = VisibleStipple(window.x, window.y, fraction, index, scale);
     }
     // At print detail the dot is enlarged as a whole and its outline band is the screen's, enlarged.
     if (lost == 0u || whole_dot) return false;
@@ -247,7 +247,9 @@ void main() {
     mat4 model_view_proj = object.model_view_proj;
     uint begin, end;
     float side;
-    work_item_run(item, t, draw, polygon_candidates(t, first, object.flags), object.shading.y, begin, end, side);
+    uint candidates = polygon_candidates(t, first, object.flags);
+    const float point_size = object.shading.y;
+    work_item_run(item, t, draw, candidates, point_size, begin, end, side);
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
     // Large dots stay on their own slanted surface (large_dot_depth_pull); the small dots' variant has none
     // of this code.
@@ -264,9 +266,15 @@ void main() {
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     // Below the least density any stipple of the polygon sees, they are whole wherever they lie.
     uint whole_end = clamp(uint(floor(draw.least)), begin, end);
+    // Where the density changes across the polygon beyond what its candidates carry, its dots' sizes change
+    // with it (stipple_scale): each stipple is then drawn by the second loop, at its own size, up to `side`
+    // (the largest, work_item_run).
+    bool sizes_vary = kVaryingDensity && draw.least != draw.most && draw.most > float(candidates);
+    if (sizes_vary) whole_end = begin;
     bool astride = false;  // a dot of the run lies astride the outline (see splat)
     for (uint k = begin; k < whole_end; ++k)
-        if (splat(first + k, 1.0f, 1.0f, true, side, model_view_proj, polygon, c, depth_pull)) astride = true;
+        if (splat(first + k, 1.0f, 1.0f, true, side, side / point_size, model_view_proj, polygon, c, depth_pull))
+            astride = true;
     // A polygon whose density changes across it: its corners and terms once for all of its stipples (only
     // in the variants that draw such polygons: kVaryingDensity).
     bool varies = kVaryingDensity && draw.least != draw.most;
@@ -285,13 +293,15 @@ void main() {
         }
         float fraction = stipple_intensity(here, float(k));
         if (fraction <= 0.0f) continue;  // where it lies, the density does not reach it
+        float side_here = sizes_vary ? splat_dot_side(point_size, here, float(candidates)) : side;
         bool lost;
         if (kRoundPoints) {  // a smaller dot, of full ink where it is large enough to show its area
-            vec2 dot_now = fractional_round_dot(fraction, side);
-            lost = splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, model_view_proj, polygon, c,
-                         large_dot_depth_pull(depth_slope, dot_now.x));
+            vec2 dot_now = fractional_round_dot(fraction, side_here);
+            lost = splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, side_here / point_size, model_view_proj,
+                         polygon, c, large_dot_depth_pull(depth_slope, dot_now.x));
         } else {
-            lost = splat(first + k, fraction, fraction, false, side, model_view_proj, polygon, c, depth_pull);
+            lost = splat(first + k, fraction, fraction, false, side_here, side_here / point_size, model_view_proj, polygon, c,
+                         depth_pull);
         }
         if (lost) astride = true;
     }

@@ -37,9 +37,11 @@ layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
 layout(location = 0) out float out_intensity;
 
 // The density at this stipple: its polygon's, but on a polygon large on screen whose density changes
-// across it, where the stipple lies (stipple_density_here), for the stipples whose index that decides.
-float density_where_it_lies(TriangleDraw draw, uint triangle, float index, vec2 barycentric) {
-    if (draw.least == draw.most || index + 1.0f <= draw.least || index >= draw.most) return draw.density;
+// across it, where the stipple lies (stipple_density_here), for the stipples whose index that decides and,
+// where its candidates cannot carry that density, for every stipple (its dot's size, stipple_scale).
+float density_where_it_lies(TriangleDraw draw, uint triangle, float index, vec2 barycentric, uint candidates) {
+    bool decides = index + 1.0f > draw.least && index < draw.most;  // whole below the least, culled above the most
+    if (draw.least == draw.most || !(decides || draw.most > float(candidates))) return draw.density;
     vec3 a, b, c;
     view_corners(triangle, object.model_view, a, b, c);
     DensityParams q = density_params(frame, object);
@@ -69,10 +71,13 @@ void main() {
     }
     TriangleDraw draw = triangle_draw(triangle);
     float index = float(stipple - draw.first_stipple);
-    // Without the density across a polygon: its candidates are drawn in chunks (kSpecGradientListed).
-    float intensity = kGradientListed && !kDrawnList && !kGradientChunks
-                          ? (draw.least == draw.most ? stipple_intensity(draw.density, index) : 0.0f)
-                          : stipple_intensity(density_where_it_lies(draw, triangle, index, barycentric), index);
+    // The vertex path's draw of every candidate leaves the polygons whose density changes across them to its
+    // chunk draw (kSpecGradientListed) and has none of their code; the other variants read the candidates
+    // first (nearly all they draw survive).
+    const bool kFlatOnly = kGradientListed && !kDrawnList && !kGradientChunks;
+    uint candidates = kFlatOnly ? 0u : polygon_candidates(triangle, draw.first_stipple, object.flags);
+    float here = kFlatOnly ? draw.density : density_where_it_lies(draw, triangle, index, barycentric, candidates);
+    float intensity = kFlatOnly && draw.least != draw.most ? 0.0f : stipple_intensity(here, index);
     if (!in_chunk) intensity = 0.0f;
     out_intensity = intensity;
     if (intensity <= 0.0f) {
@@ -80,9 +85,11 @@ void main() {
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);  // z > w: beyond the far plane, clipped
         return;
     }
-    // Larger dots where the polygon's candidates cannot carry its density (stipple_scale).
-    uint candidates = polygon_candidates(triangle, draw.first_stipple, object.flags);
-    gl_PointSize = object.shading.y * stipple_scale(draw.density, float(candidates));
+    // Larger dots where the polygon's candidates cannot carry its density (stipple_scale): on a polygon whose
+    // density changes across it, the density where the stipple lies (a floor close up needs large dots near
+    // the eye, not far away).
+    if (kFlatOnly) candidates = polygon_candidates(triangle, draw.first_stipple, object.flags);
+    gl_PointSize = object.shading.y * stipple_scale(here, float(candidates));
     if (kRoundPoints && intensity < 1.0f) {  // the fractional last dot: smaller, of full ink
         vec2 dot_now = fractional_round_dot(intensity, gl_PointSize);
         gl_PointSize = dot_now.x;

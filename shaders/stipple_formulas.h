@@ -145,9 +145,13 @@ STIPPLE_FN vec2 fractional_round_dot(float fraction, float side) {
 // surface would be drawn with blots, and the tone is let go). The density a polygon carries may
 // therefore exceed its candidates; these two functions are how every drawing path reads it.
 STIPPLE_CONST float kMaxStippleScale = 4.0f;
+// The most density any stipple is given (large_polygon_density, stipple_density_here): far beyond any
+// polygon's candidates, far below the float range.
+STIPPLE_CONST float kMostDensity = 1.0e30f;
 
 STIPPLE_FN uint drawn_stipple_count(float density, uint candidates) {
-    return min(uint(ceil(max(density, 0.0f))), candidates);
+    // Compared as floats first: a large polygon close up may carry a density beyond any uint.
+    return density >= float(candidates) ? candidates : min(uint(ceil(max(density, 0.0f))), candidates);
 }
 
 STIPPLE_FN float stipple_scale(float density, float candidates) {
@@ -212,6 +216,8 @@ struct DensityParams {
     float de;                  // intrinsic rate
     float half_range;          // A: the object's depth half-range (bounding-sphere radius)
     float center_depth;        // view distance of the object's centre
+    float near_plane;          // view distance of the near plane: nearer points are never drawn
+    float near_margin;         // how far a quantised centroid may lie from the true one, in view depth
     uint flags;                // kFlag* bits
 };
 
@@ -303,6 +309,8 @@ STIPPLE_FN DensityParams density_params(FrameUniforms f, ObjectUniforms o) {
     q.de = o.intrinsic.x;
     q.half_range = o.intrinsic.y;
     q.center_depth = o.intrinsic.z;
+    q.near_plane = f.projection.y;
+    q.near_margin = o.box_size.w;
     q.flags = o.flags.x;
     return q;
 }
@@ -314,6 +322,8 @@ struct PolygonDensity {
     float probability;
     float owed;         // every term applied, before the candidates cap: the stipples the tone asks for
     float screen_area;  // approximate projected area in px^2 (0 without the extrinsic enhancement)
+    float unplaced;     // a centroid nearer than the near plane: the density without the terms that depend on
+                        // where a point lies (large_polygon_density takes them elsewhere); else 0
 };
 
 // §2.1-2.3: shading, intrinsic and extrinsic enhancement, in both regimes; density in stipples (above the
@@ -324,19 +334,30 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     result.probability = 1.0f;
     result.owed = 0.0f;
     result.screen_area = 0.0f;
+    result.unplaced = 0.0f;
+    if (p.candidates <= 0.0f || p.due <= 0.0f) return result;
     float distance = -p.center.z;
-    if (distance <= 0.0f || p.candidates <= 0.0f || p.due <= 0.0f) return result;
-    float facing = dot(p.normal, -p.center) / length(p.center);
+    // Which side of its plane the eye is on: the same seen from any point of the plane, so known even where
+    // the centroid lies behind the eye.
+    float side = dot(p.normal, -p.center);
     // Two-sided: a polygon facing away is seen from its inside (through an opening), so it takes the
     // outside's tone rule with its normal flipped (shading, orientation, toon fade).
-    if ((q.flags & kFlagTwoSided) != 0u && facing < 0.0f) {
+    if ((q.flags & kFlagTwoSided) != 0u && side < 0.0f) {
         p.normal = -p.normal;
-        facing = -facing;
+        side = -side;
     }
-    if ((q.flags & kFlagBackfaceCull) != 0u && facing <= 0.0f) return result;
+    if ((q.flags & kFlagBackfaceCull) != 0u && side <= 0.0f) return result;
+    float facing = side / length(p.center);
 
     float density = p.due;
     if ((q.flags & kFlagShading) != 0u) density *= shading_fraction(p.normal, q.to_light, q.shading_exponent);
+    // A centroid nearer than the near plane (or within the centroids' quantisation of it: near_margin) is no
+    // place to take the terms that depend on where a point lies; the polygon is large on screen, and its
+    // gradient pass takes them at its reference point (large_polygon_density).
+    if (distance < q.near_plane + q.near_margin) {
+        result.unplaced = (q.flags & kFlagExtrinsic) != 0u ? density * extrinsic_factor(p.scale_ratio, q.pr) : density;
+        return result;
+    }
     if ((q.flags & kFlagIntrinsic) != 0u) density *= intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
     if ((q.flags & kFlagToonFade) != 0u) density *= toon_stipple_fade(facing, q.toon_sharpness);
     if ((q.flags & kFlagExtrinsic) == 0u) {
@@ -369,11 +390,13 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     return result;
 }
 
-// The density of a polygon this frame: 0 when it is not selected.
-STIPPLE_FN float polygon_density(PolygonView p, DensityParams q) {
-    PolygonDensity d = polygon_density_terms(p, q);
-    if (d.probability < 1.0f && p.selection >= d.probability) return 0.0f;
+// The density of a polygon this frame with its selection value drawn: 0 when it is not selected.
+STIPPLE_FN float selected_density(PolygonDensity d, float selection) {
+    if (d.probability < 1.0f && selection >= d.probability) return 0.0f;
     return d.density;
+}
+STIPPLE_FN float polygon_density(PolygonView p, DensityParams q) {
+    return selected_density(polygon_density_terms(p, q), p.selection);
 }
 
 // Beyond the paper: the density across a large polygon. The paper evaluates a polygon's density once, and
@@ -400,7 +423,9 @@ STIPPLE_CONST float kGradientAreaFull = 64.0f;
 // them as the density does. Only their ratios over the centroid's are used, so the polygon's own
 // scale_ratio (a constant factor of s^pr) cancels and is left out.
 STIPPLE_FN vec3 point_term_parts(vec3 x, vec3 normal, DensityParams q) {
-    float distance = max(-x.z, 1e-20f);
+    // A point nearer than the near plane is never drawn; taken there, a corner behind the eye bounds the
+    // density with a finite value.
+    float distance = max(-x.z, max(q.near_plane, 1e-20f));
     vec3 parts = vec3(1.0f, 1.0f, abs(dot(normal, -x)) / max(length(x), 1e-20f));
     if ((q.flags & kFlagIntrinsic) != 0u) parts.x = intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
     if ((q.flags & kFlagExtrinsic) != 0u) parts.y = extrinsic_factor(q.pixels_per_unit / (distance * q.reference_ppu), q.pr);
@@ -449,10 +474,30 @@ STIPPLE_FN vec3 view_normal_of(vec3 a, vec3 b, vec3 c, DensityParams q) {
     return n;
 }
 
+// Where a large polygon's density is evaluated (the point whose terms stipple_density_here divides by): its
+// centroid, or, where the centroid lies nearer than the near plane (a floor of two huge triangles with the
+// camera above it, whose centroids may lie behind the eye), a point of the part that can be drawn: on the way
+// from the centroid to the farthest corner, halfway between the near plane and that corner in depth (inside
+// the triangle, and not at a corner, which may be seen edge-on). Until 2026-12-05 such a polygon drew
+// nothing (its density, taken at a centroid behind the eye, was zero). Each stipple's density is the
+// reference's times the terms where it lies over the reference's, so where the reference is does not change
+// it. No loop and no array: lavapipe runs this for every stipple of a varying polygon, whichever side of its
+// branches a lane takes.
+STIPPLE_FN vec3 density_reference_point(vec3 a, vec3 b, vec3 c, DensityParams q) {
+    vec3 centre = (a + b + c) * (1.0f / 3.0f);
+    vec3 far_corner = -a.z >= -b.z ? a : b;
+    far_corner = -far_corner.z >= -c.z ? far_corner : c;
+    float centre_depth = -centre.z, far_depth = -far_corner.z;
+    // Nothing of it beyond the near plane, or the centroid already there: the centroid.
+    if (centre_depth >= q.near_plane || !(far_depth > q.near_plane)) return centre;
+    float t = (0.5f * (q.near_plane + far_depth) - centre_depth) / (far_depth - centre_depth);
+    return mix(centre, far_corner, t);
+}
+
 // How much of the place-dependent density a polygon carries, from its approximate screen area (its
 // view-space corners a, b, c): 0 below kGradientAreaStart px^2, 1 from kGradientAreaFull.
 STIPPLE_FN float density_gradient_weight(vec3 a, vec3 b, vec3 c, DensityParams q) {
-    vec3 centre = (a + b + c) * (1.0f / 3.0f);
+    vec3 centre = density_reference_point(a, b, c, q);
     float distance = -centre.z;
     if (distance <= 0.0f) return 0.0f;
     vec3 n = cross(b - a, c - a);
@@ -466,7 +511,9 @@ STIPPLE_FN float density_gradient_weight(vec3 a, vec3 b, vec3 c, DensityParams q
 // are read; generous: its area estimate is the centroid's, not the corners').
 STIPPLE_FN bool may_carry_gradient(PolygonView p, DensityParams q, float density) {
     float distance = -p.center.z;
-    if (!(density > 0.0f) || distance <= 0.0f) return false;
+    // A centroid nearer than the near plane: the density there is not the polygon's (PolygonDensity::unplaced).
+    if (distance < q.near_plane + q.near_margin) return p.candidates > 0.0f && p.due > 0.0f;
+    if (!(density > 0.0f)) return false;
     float facing = abs(dot(p.normal, -p.center)) / length(p.center);
     float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
     return 2.0f * screen_area > kGradientAreaStart;
@@ -478,9 +525,9 @@ STIPPLE_FN float stipple_density_here(float density, vec3 x, vec3 a, vec3 b, vec
     float weight = density_gradient_weight(a, b, c, q);
     if (!(weight > 0.0f)) return density;
     vec3 normal = view_normal_of(a, b, c, q);
-    float at_centre = point_terms((a + b + c) * (1.0f / 3.0f), normal, q);
+    float at_centre = point_terms(density_reference_point(a, b, c, q), normal, q);
     if (!(at_centre > 0.0f)) return density;
-    return density * mix(1.0f, point_terms(x, normal, q) / at_centre, weight);
+    return min(density * mix(1.0f, point_terms(x, normal, q) / at_centre, weight), kMostDensity);
 }
 
 // Bounds of stipple_density_here over the polygon: (least, most). Each term's extremes are at the corners
@@ -489,14 +536,35 @@ STIPPLE_FN float stipple_density_here(float density, vec3 x, vec3 a, vec3 b, vec
 STIPPLE_FN vec2 polygon_density_bounds(float density, vec3 a, vec3 b, vec3 c, DensityParams q) {
     float weight = density_gradient_weight(a, b, c, q);
     vec3 normal = view_normal_of(a, b, c, q);
-    float at_centre = point_terms((a + b + c) * (1.0f / 3.0f), normal, q);
+    float at_centre = point_terms(density_reference_point(a, b, c, q), normal, q);
     if (!(at_centre > 0.0f) || !(weight > 0.0f)) return vec2(density);
     vec3 pa = point_term_parts(a, normal, q), pb = point_term_parts(b, normal, q), pc = point_term_parts(c, normal, q);
     vec3 lo = min(pa, min(pb, pc)), hi = max(pa, max(pb, pc));
     float facing_most = point_term_parts(triangle_point_nearest_eye(a, b, c), normal, q).z;
     float least = lo.x * lo.y * facing_terms(lo.z, q) / at_centre;
     float most = hi.x * hi.y * facing_terms(max(hi.z, facing_most), q) / at_centre;
-    return density * vec2(mix(1.0f, least, weight), mix(1.0f, most, weight)) * vec2(0.999f, 1.001f);
+    return min(density * vec2(mix(1.0f, least, weight), mix(1.0f, most, weight)) * vec2(0.999f, 1.001f),
+               vec2(kMostDensity));
+}
+
+// What the density pass stores for a polygon large on screen (listed for the gradient pass by
+// may_carry_gradient), which stipple_density_here scales to each of its stipples: its density not capped at
+// what its candidates can carry at the largest dots (kMaxStippleScale), the cap applying to each stipple
+// (drawn_stipple_count, stipple_scale); capped and then scaled, a floor of two triangles close up read 0.057
+// where the same floor in 40 x 40 cells read 0.099 (until 2026-12-05). With its centroid nearer than the near
+// plane, minus the part of its density that does not depend on where a point lies (its gradient pass
+// multiplies in the rest at the reference point: large_polygon_density). `density`: selected_density's.
+STIPPLE_FN float large_polygon_stored_density(PolygonDensity d, float density) {
+    if (d.unplaced > 0.0f) return -d.unplaced;
+    return d.probability < 1.0f ? density : min(d.owed, kMostDensity);
+}
+
+// The density a large polygon carries at its reference point (density_reference_point), from what the density
+// pass stored (large_polygon_stored_density) and its view-space corners.
+STIPPLE_FN float large_polygon_density(float stored, vec3 a, vec3 b, vec3 c, DensityParams q) {
+    if (!(stored < 0.0f)) return stored;
+    vec3 normal = view_normal_of(a, b, c, q);
+    return min(-stored * point_terms(density_reference_point(a, b, c, q), normal, q), kMostDensity);
 }
 
 #endif

@@ -27,7 +27,9 @@ void work_item_run(uint item, uint t, TriangleDraw draw, uint candidates, float 
                    out float side) {
     begin = item - draw.first_stipple;
     uint drawn = drawn_stipple_count(draw.most, candidates);
-    side = splat_dot_side(point_size, draw.density, float(candidates));  // larger when owed more
+    // Larger when owed more; on a polygon whose density changes across it, the largest of its dots
+    // (each is drawn at its own, splat.comp).
+    side = splat_dot_side(point_size, draw.most, float(candidates));
     end = min(drawn, begin + splat_run_length(drawn, side));
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -146,9 +147,10 @@ INSTANTIATE_TEST_SUITE_P(
 // the object needs, what the device has and what to lower; no image; never an abort or a lost device.
 TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
     const auto out = test::temp_dir("cli-device-limit") / "never.png";
-    ::setenv("STIPPLE_GPU_MEMORY_LIMIT", "2M", 1);
-    const test::CommandResult r = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
-    ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
+    const test::CommandResult r = [&] {
+        test::ScopedEnv limit("STIPPLE_GPU_MEMORY_LIMIT", "2M");
+        return test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+    }();
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     for (const char* part : {"blobby.glb: its ", " stipples on ", "of GPU memory, and the device has 2.0 MiB free",
@@ -164,19 +166,18 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
         scene["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
     const std::string scene_path = test::write_file(test::temp_dir("cli-device-limit-scene") / "five.json", scene.dump());
     for (const auto& [limit, refused] : {std::pair<const char*, bool>{"30M", true}, {"80M", false}}) {
-        ::setenv("STIPPLE_GPU_MEMORY_LIMIT", limit, 1);
+        test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", limit);
         const test::CommandResult five = test::run_stipple({"render", scene_path, "-o", out.string(), "--width", "64", "--height", "64"});
-        ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
         EXPECT_EQ(five.exit_code, refused ? 1 : 0) << limit << ": " << five.err;
-        if (refused)
+        if (refused) {
             EXPECT_NE(five.err.find("MiB free ("), std::string::npos) << five.err;
+        }
     }
     std::filesystem::remove(out);
     // A size that is not one is refused, not ignored (a typo would test nothing).
     for (const char* bad : {"foo", "0", "-1", "2X", "99999999999G"}) {
-        ::setenv("STIPPLE_GPU_MEMORY_LIMIT", bad, 1);
+        test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", bad);
         const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
-        ::unsetenv("STIPPLE_GPU_MEMORY_LIMIT");
         EXPECT_EQ(e.exit_code, 1) << bad;
         EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
         EXPECT_NE(e.err.find(std::string("STIPPLE_GPU_MEMORY_LIMIT=") + bad + " is not a size"), std::string::npos) << e.err;
@@ -208,9 +209,9 @@ TEST(CliRender, WideDispatchesGoInRowsAndDrawTheSame) {
             images[rows] = (dir / ("v" + std::to_string(v) + (rows ? "_rows.png" : ".png"))).string();
             std::vector<std::string> args{"render", "-o", images[rows], "--width", "320", "--height", "256"};
             args.insert(args.end(), variants[v].begin(), variants[v].end());
-            if (rows) ::setenv("STIPPLE_MAX_WORKGROUPS", "3", 1);
+            std::optional<test::ScopedEnv> in_rows;
+            if (rows) in_rows.emplace("STIPPLE_MAX_WORKGROUPS", "3");
             const test::CommandResult r = test::run_stipple(args);
-            ::unsetenv("STIPPLE_MAX_WORKGROUPS");
             ASSERT_EQ(r.exit_code, 0) << r.err;
         }
         const std::string one = file_bytes(images[0]), in_rows = file_bytes(images[1]);
@@ -218,17 +219,15 @@ TEST(CliRender, WideDispatchesGoInRowsAndDrawTheSame) {
         EXPECT_TRUE(one == in_rows) << variants[v][1] << ": the drawing in rows differs from the drawing in one row";
     }
     for (const char* bad : {"abc", "0", "-3", "7x"}) {
-        ::setenv("STIPPLE_MAX_WORKGROUPS", bad, 1);
+        test::ScopedEnv env("STIPPLE_MAX_WORKGROUPS", bad);
         const test::CommandResult e = test::run_stipple({"render", "-o", (dir / "never.png").string()});
-        ::unsetenv("STIPPLE_MAX_WORKGROUPS");
         EXPECT_EQ(e.exit_code, 1) << bad;
         EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
         EXPECT_NE(e.err.find(std::string("STIPPLE_MAX_WORKGROUPS=") + bad + " is not a workgroup count"), std::string::npos) << e.err;
     }
     for (const char* bad : {"abc", "0", "-3"}) {  // read as decimal counts too (until 2026-12-04 ignored)
-        ::setenv("STIPPLE_THREADS", bad, 1);
+        test::ScopedEnv env("STIPPLE_THREADS", bad);
         const test::CommandResult e = test::run_stipple({"render", "-o", (dir / "never.png").string()});
-        ::unsetenv("STIPPLE_THREADS");
         EXPECT_EQ(e.exit_code, 1) << bad;
         EXPECT_NE(e.err.find(std::string("STIPPLE_THREADS=") + bad + " is not a thread count"), std::string::npos) << e.err;
     }
@@ -240,17 +239,13 @@ TEST(CliRender, WideDispatchesGoInRowsAndDrawTheSame) {
 TEST(CliRender, OnOffSettingsAreOneOrZero) {
     const auto out = test::temp_dir("cli-validation-env") / "never.png";
     for (const char* setting : {"STIPPLE_VALIDATION", "STIPPLE_NO_CACHE"}) {
-        const char* before = std::getenv(setting);
-        const std::string saved = before ? before : "";
         for (const char* bad : {"yes", "off", "2"}) {
-            ::setenv(setting, bad, 1);
+            test::ScopedEnv env(setting, bad);
             const test::CommandResult e = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
             EXPECT_EQ(e.exit_code, 1) << setting << "=" << bad;
             EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << e.err;
             EXPECT_NE(e.err.find(std::string(setting) + "=" + bad + " must be 1"), std::string::npos) << e.err;
         }
-        if (before) ::setenv(setting, saved.c_str(), 1);
-        else ::unsetenv(setting);
     }
     EXPECT_FALSE(std::filesystem::exists(out));
 }
@@ -276,19 +271,19 @@ TEST(CliRender, ImagesLargerThanOneFrameAreDrawnInTiles) {
     const test::CommandResult one = run_stipple({"render", "-o", whole, "--width", "2000", "--height", "1500"});
     ASSERT_EQ(one.exit_code, 0) << one.err;
     // 1,572,864 pixels (the default scene's own buffers need 5.6 MiB): tiles of 1254 x 1254, 2 x 2 of them.
-    ::setenv("STIPPLE_MAX_STORAGE_BUFFER", "6M", 1);
+    std::optional<test::ScopedEnv> small_buffers(std::in_place, "STIPPLE_MAX_STORAGE_BUFFER", "6M");
     const test::CommandResult r = run_stipple({"render", "-o", tiled, "--width", "2000", "--height", "1500", "--stats"});
     const test::CommandResult mask = run_stipple(
         {"render", "-o", tiled + ".x.png", "--width", "2000", "--height", "1500", "--mask", (dir / "m.png").string()});
     const test::CommandResult svg = run_stipple({"render", "-o", (dir / "x.svg").string(), "--width", "2000", "--height", "1500"});
     const test::CommandResult tone = run_stipple({"tone", "--width", "2000", "--height", "1500", "--frames", "1"});
-    // A frame that fits, but whose list of visible stipples (16 bytes a candidate, where drawing needs 8)
+    // A frame that fits, but whose list of visible stipples (20 bytes a candidate, where drawing needs 8)
     // does not: refused in one line (until 2026-12-04 the descriptor reached past the buffer's range).
     const test::CommandResult small_svg = run_stipple({"render", "-o", (dir / "y.svg").string(), "--width", "320", "--height", "256"});
-    ::unsetenv("STIPPLE_MAX_STORAGE_BUFFER");
+    small_buffers.reset();
     EXPECT_EQ(small_svg.exit_code, 1);
     EXPECT_EQ(count_lines(small_svg.err), 1u) << small_svg.err;
-    EXPECT_NE(small_svg.err.find("candidate stipples needs a 11.2 MiB list, and this device's largest buffer is 6.0 MiB"), std::string::npos) << small_svg.err;
+    EXPECT_NE(small_svg.err.find("candidate stipples needs a 14.0 MiB list, and this device's largest buffer is 6.0 MiB"), std::string::npos) << small_svg.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "y.svg"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -383,6 +378,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "x.svg", "--dpi", "300"}, "--dpi is for PNG output"},  // not "--dpi needs --page"
         {{"render", "-o", "x.svg", "--tile", "512"}, "--tile is for print-resolution PNG output"},  // not "give --dpi too"
         {{"render", "-o", "x.csv", "--fill-paper"}, "a CSV (x.csv) has no page"},
+        {{"render", "-o", "x.csv", "--dot-style", "tick"}, "--dot-style sets how SVG or PDF output draws its dots; a CSV (x.csv) lists"},
+        {{"render", "-o", "x.csv", "--pen-width", "0.3"}, "--pen-width sets how SVG or PDF output draws its dots"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},

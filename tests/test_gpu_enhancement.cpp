@@ -2,6 +2,8 @@
 // enhancement (§2.3, Figures 3-6), shading by stipple density (§2.2), and frame coherence (§2.1).
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
@@ -221,6 +223,81 @@ TEST_F(DistanceEnhancement, TheEnhancementsHoldAcrossALargePolygon) {
     std::printf("; worst difference %.3f\n", worst);
     EXPECT_LE(worst, 0.05);
     EXPECT_LT(farthest_share, 0.75 * nearest_share) << "the depth cue should act within each triangle";
+}
+
+// The same square as two_triangle_square, tessellated into n x n cells of two triangles.
+Mesh tessellated_square(int n) {
+    Mesh mesh;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) mesh.positions.push_back({-10.0f + 20.0f * i / n, 0.0f, -10.0f + 20.0f * j / n});
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n) + 1, d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, d, a, d, b});
+        }
+    compute_vertex_normals(mesh);
+    return mesh;
+}
+
+// A floor of two triangles seen from just above it draws as the same floor finely tessellated does, where
+// the density pass cannot take a triangle's density at its centroid (density_needs_reference). Until
+// 2026-12-05: (a) with a centroid behind the eye that triangle drew nothing (ink 0 against 0.048); (b) with
+// the centroid close in front, the density there exceeded what the candidates carry at the largest dots, and
+// the cap, scaled across the triangle, and dots sized for the centroid everywhere gave 0.057 against 0.099 on
+// the GPU paths; the cpu paths drew nothing at all (a corner behind the eye made the most density infinite,
+// and its conversion to a count 0). Every drawing path, each against the tessellated floor on the same path.
+TEST_F(DistanceEnhancement, AFloorOfTwoTrianglesCloseUpDrawsAsATessellatedOne) {
+    ObjectParams params;
+    Prepared coarse = test::prepare(two_triangle_square(), params);
+    Prepared fine = test::prepare(tessellated_square(40), params);
+    const Sphere sphere = compute_bounding_sphere(coarse.mesh);
+    const VkExtent2D extent{320, 256};
+    const float aspect = float(extent.width) / float(extent.height);
+    // One renderer a floor, each path chosen in turn.
+    std::vector<std::unique_ptr<StippleRenderer>> renderers;
+    for (const Prepared* floor : {&coarse, &fine}) {
+        renderers.push_back(std::make_unique<StippleRenderer>(*context, kColorFormat, context->depth_format));
+        renderers.back()->add_object(floor->mesh, floor->stipples, glm::mat4(1.0f), params);
+    }
+    OffscreenTarget target(*context, extent);
+    struct Case {
+        const char* name;
+        glm::vec3 target;
+        float distance, yaw, pitch;
+        bool centroid_behind;
+    };
+    for (const Case& c : {Case{"a centroid behind the eye", {8.0f, 0.0f, 8.0f}, 3.0f, 225.0f, 30.0f, true},
+                          Case{"a centroid close in front", {2.0f, 0.0f, 3.0f}, 2.5f, 20.0f, 25.0f, false}}) {
+        OrbitCamera camera;
+        camera.target = c.target;
+        camera.distance = c.distance;
+        camera.yaw_deg = c.yaw;
+        camera.pitch_deg = c.pitch;
+        FrameView view;
+        view.extent = extent;
+        view.camera = camera_matrices(camera, aspect, sphere);
+        // The case's premise: where the centroid of the coarse floor's triangle nearest the eye lies.
+        float nearest_centroid = 1e30f;
+        for (int t = 0; t < 2; ++t) {
+            glm::vec3 centre(0.0f);
+            for (int k = 0; k < 3; ++k) centre += coarse.mesh.positions[coarse.mesh.indices[3 * t + k]] / 3.0f;
+            nearest_centroid = std::min(nearest_centroid, -(view.camera.view * glm::vec4(centre, 1.0f)).z);
+        }
+        if (c.centroid_behind)
+            ASSERT_LT(nearest_centroid, 0.0f);
+        else
+            ASSERT_GT(nearest_centroid, 0.0f);
+        for (DensityPath path : kAllDensityPaths) {
+            double ink[2];
+            for (int k = 0; k < 2; ++k) {
+                renderers[k]->params(0).density_path = path;
+                ink[k] = test::mean_ink(target.render(*renderers[k], view));
+            }
+            std::printf("%s, %s path: mean ink %.4f (two triangles) against %.4f (40 x 40 cells)\n", c.name,
+                        density_path_name(path), ink[0], ink[1]);
+            EXPECT_NEAR(ink[0] / ink[1], 1.0, 0.06) << c.name << ", " << density_path_name(path);
+        }
+    }
 }
 
 }  // namespace

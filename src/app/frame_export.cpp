@@ -120,7 +120,8 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
         for (const gpu::VisibleStipple& s : renderer.read_visible_stipples(i)) {
             // The polygon whose candidates hold this index.
             const uint32_t polygon = uint32_t(std::upper_bound(first.begin(), first.end(), s.index) - first.begin() - 1);
-            drawing.dots.push_back({{s.x, s.y}, radius, s.intensity, uint32_t(i), polygon});
+            // Enlarged as the frame draws it where the candidates cannot carry the density (stipple_scale).
+            drawing.dots.push_back({{s.x, s.y}, radius * s.scale, s.intensity, uint32_t(i), polygon});
         }
         // The visible pieces of the object-space lines (contours, borders, creases), walked against the
         // depth pass on the GPU; the contours stand for the silhouette where only it was asked for.

@@ -165,6 +165,10 @@ int run_render(const std::vector<std::string>& argv) {
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
     if (args.flag("--fill-paper") && plot::is_csv_path(output))
         fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
+    for (const char* name : {"--dot-style", "--pen-width"})
+        if (args.has(name) && plot::is_csv_path(output))
+            fail(std::string(name) + " sets how SVG or PDF output draws its dots; a CSV (" + output +
+                 ") lists each dot's centre and ink radius");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && !print) {

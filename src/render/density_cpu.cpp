@@ -21,13 +21,16 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
     for (size_t t = 0; t < triangles.size(); ++t) {
         float candidates = float(first_stipple[t + 1] - first_stipple[t]);
         const formulas::PolygonView view = formulas::polygon_view(triangles[t], candidates, object);
-        densities[t] = formulas::polygon_density(view, params);
+        const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
+        densities[t] = formulas::selected_density(terms, view.selection);
         bounds[t] = glm::vec2(densities[t]);
-        if (formulas::may_carry_gradient(view, params, densities[t])) {  // as the density pass
+        if (formulas::may_carry_gradient(view, params, densities[t])) {  // as the density pass and its gradient pass
             const uint32_t* corner = &indices[3 * (first_triangle + t)];
             auto in_view = [&](uint32_t i) { return glm::vec3(object.model_view * glm::vec4(positions[i], 1.0f)); };
-            bounds[t] = formulas::polygon_density_bounds(densities[t], in_view(corner[0]), in_view(corner[1]),
-                                                         in_view(corner[2]), params);
+            const glm::vec3 a = in_view(corner[0]), b = in_view(corner[1]), c = in_view(corner[2]);
+            densities[t] = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, densities[t]), a, b,
+                                                           c, params);
+            bounds[t] = formulas::polygon_density_bounds(densities[t], a, b, c, params);
         }
     }
 }
@@ -61,7 +64,7 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame, uint3
             const uint32_t first = geometry.first_stipple[t], candidates = geometry.first_stipple[t + 1] - first;
             // To the most density any of its stipples sees (the vertex shader and the splat cull the rest).
             visit(first, formulas::drawn_stipple_count(bounds[t].y, candidates),
-                  formulas::splat_dot_side(point_size, densities[t], float(candidates)));
+                  formulas::splat_dot_side(point_size, bounds[t].y, float(candidates)));
         }
     };
     if (draws_by_splat(object.params.density_path)) {  // runs of splat_run_length drawn stipples

@@ -362,7 +362,10 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     }
     u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);
     u.box_min = glm::vec4(object.polygons.box_min, 0.0f);
-    u.box_size = glm::vec4(object.polygons.box_size, 0.0f);
+    // w: how far a centroid quantised in the box (16 bits an axis, TriangleInfo) may lie from the true one, in
+    // view depth (twice the bound), so that the density pass and the stipples agree on which centroids lie
+    // nearer than the near plane (PolygonDensity::unplaced, density_reference_point).
+    u.box_size = glm::vec4(object.polygons.box_size, glm::length(object.polygons.box_size) * scale.most / 65535.0f);
     u.lines = glm::vec4(line_width, std::cos(glm::radians(p.crease_angle)), 0.0f, 0.0f);
     return u;
 }

@@ -44,9 +44,10 @@ static_assert(sizeof(DebugCounters) == 16);
 static_assert(offsetof(DebugCounters, drawn) == 0);
 
 static_assert(sizeof(VisibleStipplesHeader) == 16);
-static_assert(sizeof(VisibleStipple) == 16);
+static_assert(sizeof(VisibleStipple) == 20);
 static_assert(offsetof(VisibleStipple, intensity) == 8);
 static_assert(offsetof(VisibleStipple, index) == 12);
+static_assert(offsetof(VisibleStipple, scale) == 16);
 
 static_assert(sizeof(DrawCommand) == 16);
 static_assert(offsetof(DrawCommand, first_vertex) == 8);

@@ -89,9 +89,9 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
     for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
         const formulas::PolygonView view =
             formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
-        const float density = formulas::polygon_density(view, params);
+        const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
+        float density = formulas::selected_density(terms, view.selection);
         const uint32_t candidates = object.geometry.first_stipple[t + 1] - object.geometry.first_stipple[t];
-        const float side = formulas::splat_dot_side(object.params.point_size, density, float(candidates));
         // A large polygon's stipples, each at the density where it lies, as the shaders draw them.
         const uint32_t* corner = &object.polygons.corner_indices[3 * t];
         const glm::mat4& model_view = object.frame.uniforms.model_view;
@@ -100,13 +100,20 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
         glm::vec2 bounds(density);
         if (formulas::may_carry_gradient(view, params, density)) {
             a = in_view(corners[corner[0]]), b = in_view(corners[corner[1]]), c = in_view(corners[corner[2]]);
+            density = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, density), a, b, c, params);
             bounds = formulas::polygon_density_bounds(density, a, b, c, params);
         }
+        // The dots' side, as the splat draws them: each at the density where it lies where that changes the size.
+        const bool sizes_vary = bounds.x != bounds.y && bounds.y > float(candidates);
         for (uint32_t k = 0; k < formulas::drawn_stipple_count(bounds.y, candidates); ++k) {
             float here = density;
             if (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y)
                 here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
                                                       b, c, params);
+            if (sizes_vary)
+                here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
+                                                      b, c, params);
+            const float side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
             const float intensity = formulas::stipple_intensity(here, float(k));
             if (intensity <= 0.0f) continue;
             const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
