@@ -251,11 +251,12 @@ void main() {
     const float point_size = object.shading.y;
     work_item_run(item, t, draw, candidates, point_size, begin, end, side);
     PolygonFrame polygon = polygon_frame(t);  // once for all of its stipples
-    // Large dots stay on their own slanted surface (large_dot_depth_pull); the small dots' variant has none
-    // of this code.
+    // Large dots stay on their own slanted surface (large_dot_depth_pull): round ones, and square ones enlarged
+    // where the candidates cannot carry the density (a 6-px square on a steep floor lost a row of its pixels
+    // behind its own surface, the PNG reading 0.8 of the SVG's ink).
     float depth_pull = 0.0;
     vec2 depth_slope = vec2(0.0);
-    if (kRoundPoints) {
+    if (kRoundPoints || side > point_size) {
         depth_slope = window_depth_slope(polygon, model_view_proj, frame.viewport.xy);
         depth_pull = large_dot_depth_pull(depth_slope, side);
     }
@@ -265,7 +266,8 @@ void main() {
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic
     // runs both for every lane, and a run of a dense mesh is a stipple or two, half of them fractional.)
     // Below the least density any stipple of the polygon sees, they are whole wherever they lie.
-    uint whole_end = clamp(uint(floor(draw.least)), begin, end);
+    // Compared as floats first: a large polygon close up may carry a density beyond any uint.
+    uint whole_end = draw.least >= float(end) ? end : clamp(uint(floor(max(draw.least, 0.0))), begin, end);
     // Where the density changes across the polygon beyond what its candidates carry, its dots' sizes change
     // with it (stipple_scale): each stipple is then drawn by the second loop, at its own size, up to `side`
     // (the largest, work_item_run).
@@ -301,7 +303,7 @@ void main() {
                          polygon, c, large_dot_depth_pull(depth_slope, dot_now.x));
         } else {
             lost = splat(first + k, fraction, fraction, false, side_here, side_here / point_size, model_view_proj, polygon, c,
-                         depth_pull);
+                         sizes_vary ? large_dot_depth_pull(depth_slope, side_here) : depth_pull);
         }
         if (lost) astride = true;
     }

@@ -102,7 +102,9 @@ void main() {
     PolygonFrame polygon = polygon_frame(triangle);
     vec3 position = stipple_position(polygon, barycentric);  // survivors only
     gl_Position = object.model_view_proj * vec4(position, 1.0);
-    if (kRoundPoints) {  // large dots stay on their own slanted surface (large_dot_depth_pull)
+    // Large dots stay on their own slanted surface (large_dot_depth_pull): round ones, and square ones enlarged
+    // where the candidates cannot carry the density.
+    if (kRoundPoints || gl_PointSize > object.shading.y) {
         vec2 slope = window_depth_slope(polygon, object.model_view_proj, frame.viewport.xy);
         gl_Position.z -= large_dot_depth_pull(slope, gl_PointSize) * gl_Position.w;
     }

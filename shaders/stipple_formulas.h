@@ -522,6 +522,9 @@ STIPPLE_FN bool may_carry_gradient(PolygonView p, DensityParams q, float density
 // The density where a stipple at view-space x lies, on a polygon with view-space corners a, b, c drawing
 // `density` at its centroid.
 STIPPLE_FN float stipple_density_here(float density, vec3 x, vec3 a, vec3 b, vec3 c, DensityParams q) {
+    // A stipple nearer than the near plane is clipped: not drawn (nor counted, nor sized), whatever the
+    // density its polygon reaches at the near plane.
+    if (-x.z < q.near_plane) return 0.0f;
     float weight = density_gradient_weight(a, b, c, q);
     if (!(weight > 0.0f)) return density;
     vec3 normal = view_normal_of(a, b, c, q);
@@ -563,6 +566,9 @@ STIPPLE_FN float large_polygon_stored_density(PolygonDensity d, float density) {
 // pass stored (large_polygon_stored_density) and its view-space corners.
 STIPPLE_FN float large_polygon_density(float stored, vec3 a, vec3 b, vec3 c, DensityParams q) {
     if (!(stored < 0.0f)) return stored;
+    // Nothing of it beyond the near plane: nothing to draw (its reference would be its centroid, where the
+    // terms, taken at the near plane, would have every candidate drawn and clipped).
+    if (!(max(-a.z, max(-b.z, -c.z)) > q.near_plane)) return 0.0f;
     vec3 normal = view_normal_of(a, b, c, q);
     return min(-stored * point_terms(density_reference_point(a, b, c, q), normal, q), kMostDensity);
 }

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "io/png_io.hpp"
+#include "support/model_files.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
@@ -83,7 +84,8 @@ Svg read_svg(const std::string& path) {
 }
 
 // The PNG, its mask and the vector files of one view, the page the image's size in mm (1 mm a pixel).
-void expect_vector_is_the_png(const std::string& name, std::vector<std::string> model_args) {
+// `min_dots`: enough that the figures mean something (a close-up's few enlarged dots ink as much as many).
+void expect_vector_is_the_png(const std::string& name, std::vector<std::string> model_args, size_t min_dots = 1000) {
     for (const char* tool : {"rsvg-convert", "pdftoppm"})
         if (!have_tool(tool)) GTEST_SKIP() << tool << " is not installed (librsvg2-bin, poppler-utils)";
     const auto dir = test::temp_dir("cli-export-" + name);
@@ -126,7 +128,7 @@ void expect_vector_is_the_png(const std::string& name, std::vector<std::string> 
     EXPECT_EQ(doc.view_box, "0 0 " + std::to_string(kWidth) + " " + std::to_string(kHeight));
     ASSERT_FALSE(doc.layers.empty());
     EXPECT_EQ(doc.layers[0].substr(0, 2), "1 ") << "an AxiDraw layer label starts with its number";
-    ASSERT_GT(doc.dots.size(), 1000u);
+    ASSERT_GT(doc.dots.size(), min_dots);
     // The closing line names the page and what is on it.
     const std::string said = "wrote " + svg + " (" + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
                              " mm page: " + std::to_string(doc.dots.size()) + " dots, ";
@@ -162,6 +164,30 @@ TEST(CliExport, TheDefaultSceneAsSvgAndPdfIsItsPng) { expect_vector_is_the_png("
 // of the framing distance the SVG and the PDF read 0.68 and 0.69 of the PNG's ink (now 1.00 and 1.02).
 TEST(CliExport, EnlargedDotsCloseUpAreEnlargedInTheSvgAndPdf) {
     expect_vector_is_the_png("close-up", {"--distance", "0.3"});
+}
+
+// The same on a steep surface: a floor of 40 x 40 cells seen from above at 80 degrees and close, its dots
+// enlarged up to 6-px squares. Square dots were tested against the depth pass flat, at their centre's depth,
+// and on the steep slope an enlarged one lost a row of its pixels behind its own surface: the SVG read 1.14
+// times the PNG's ink (until 2026-12-05; now enlarged squares are pulled onto their surface as round dots are).
+TEST(CliExport, EnlargedDotsOnASteepSurfaceAreWholeInThePng) {
+    const auto dir = test::temp_dir("cli-export-steep");
+    std::string obj;
+    const int n = 40;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            obj += "v " + std::to_string(-10.0 + 20.0 * i / n) + " 0 " + std::to_string(-10.0 + 20.0 * j / n) + "\n";
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
+            obj += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\nf " + std::to_string(b) +
+                   " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+        }
+    const std::string model = test::write_file(dir / "floor.obj", obj);
+    const std::string scene = test::write_file(
+        dir / "steep.json", "{\"objects\": [{\"model\": \"" + model +
+                                "\"}], \"camera\": {\"target\": [3, 0, -2], \"world_distance\": 1.2, \"yaw\": 30, \"pitch\": 80}}");
+    expect_vector_is_the_png("steep-floor", {scene}, 200);  // 271 dots, most of them 6 px wide
 }
 
 TEST(CliExport, TheBunnyAsSvgAndPdfIsItsPng) {

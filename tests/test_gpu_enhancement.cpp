@@ -287,16 +287,21 @@ TEST_F(DistanceEnhancement, AFloorOfTwoTrianglesCloseUpDrawsAsATessellatedOne) {
             ASSERT_LT(nearest_centroid, 0.0f);
         else
             ASSERT_GT(nearest_centroid, 0.0f);
-        for (DensityPath path : kAllDensityPaths) {
-            double ink[2];
-            for (int k = 0; k < 2; ++k) {
-                renderers[k]->params(0).density_path = path;
-                ink[k] = test::mean_ink(target.render(*renderers[k], view));
+        // The default square dots, and round ones (above 2.5 px), which a polygon with a corner behind the eye
+        // drew as half discs (their depth pull onto their own slanted surface was zero there: 0.85 of the fine
+        // floor's ink in the close-in-front case, until 2026-12-05).
+        for (float point_size : {1.5f, 4.0f})
+            for (DensityPath path : kAllDensityPaths) {
+                double ink[2];
+                for (int k = 0; k < 2; ++k) {
+                    renderers[k]->params(0).density_path = path;
+                    renderers[k]->params(0).point_size = point_size;
+                    ink[k] = test::mean_ink(target.render(*renderers[k], view));
+                }
+                std::printf("%s, %.1f-px dots, %s path: mean ink %.4f (two triangles) against %.4f (40 x 40 cells)\n",
+                            c.name, point_size, density_path_name(path), ink[0], ink[1]);
+                EXPECT_NEAR(ink[0] / ink[1], 1.0, 0.06) << c.name << ", " << point_size << " px, " << density_path_name(path);
             }
-            std::printf("%s, %s path: mean ink %.4f (two triangles) against %.4f (40 x 40 cells)\n", c.name,
-                        density_path_name(path), ink[0], ink[1]);
-            EXPECT_NEAR(ink[0] / ink[1], 1.0, 0.06) << c.name << ", " << density_path_name(path);
-        }
     }
 }
 
