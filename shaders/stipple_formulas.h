@@ -353,9 +353,13 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     if ((q.flags & kFlagShading) != 0u) density *= shading_fraction(p.normal, q.to_light, q.shading_exponent);
     // A centroid nearer than the near plane (or within the centroids' quantisation of it: near_margin) is no
     // place to take the terms that depend on where a point lies; the polygon is large on screen, and its
-    // gradient pass takes them at its reference point (large_polygon_density).
-    if (distance < q.near_plane + q.near_margin) {
-        result.unplaced = (q.flags & kFlagExtrinsic) != 0u ? density * extrinsic_factor(p.scale_ratio, q.pr) : density;
+    // gradient pass takes them at its reference point (large_polygon_density). Of the extrinsic term only the
+    // polygon's own scale is kept (one pow for both cases: lavapipe computes both under its mask).
+    bool unplaced = distance < q.near_plane + q.near_margin;
+    float screen_scale = unplaced ? p.scale_ratio : p.scale_ratio * q.pixels_per_unit / (distance * q.reference_ppu);
+    float extrinsic = extrinsic_factor(screen_scale, q.pr);
+    if (unplaced) {
+        result.unplaced = (q.flags & kFlagExtrinsic) != 0u ? density * extrinsic : density;
         return result;
     }
     if ((q.flags & kFlagIntrinsic) != 0u) density *= intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
@@ -366,8 +370,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
         return result;
     }
     float orientation = orientation_factor(facing);
-    float screen_scale = p.scale_ratio * q.pixels_per_unit / (distance * q.reference_ppu);
-    result.owed = density * extrinsic_factor(screen_scale, q.pr) * orientation;
+    result.owed = density * extrinsic * orientation;
     // Not capped at the candidates: a polygon owed more draws all of them, larger (stipple_scale).
     density = min(result.owed, p.candidates * kMaxStippleScale * kMaxStippleScale);
     result.density = density;

@@ -59,31 +59,24 @@ vec3 stipple_position(PolygonFrame polygon, vec2 barycentric) {
     return polygon.origin + barycentric.x * polygon.edge_u + barycentric.y * polygon.edge_v;
 }
 
-// The polygon's window depth change per pixel along x and y (rows from the top), from its projected
-// corners; zero where the polygon is seen edge-on.
+// The window depth change per pixel along x and y (rows from the top) of a plane through clip-space point
+// `at` spanned by clip-space directions u and v (the model-view-projection applied with w = 0); zero where
+// the plane is seen edge-on. The window depth is affine in the window coordinates, z/w = k0 + kx x/w + ky y/w,
+// so z = k0 w + kx x + ky y at every clip-space point of the plane: solved for (kx, ky, k0) from the point
+// and the two directions, with no division by w, so a polygon with a corner behind the eye has its slope too
+// (a floor seen from just above it, whose large dots near the eye were half discs until 2026-12-05).
+vec2 window_depth_slope_at(vec4 at, vec4 u, vec4 v, vec2 viewport) {
+    mat3 rows = transpose(mat3(vec3(at.x, at.y, at.w), vec3(u.x, u.y, u.w), vec3(v.x, v.y, v.w)));
+    float det = determinant(rows);
+    float scale = length(vec3(at.x, at.y, at.w)) * length(vec3(u.x, u.y, u.w)) * length(vec3(v.x, v.y, v.w));
+    if (!(abs(det) > 1e-6 * scale)) return vec2(0.0);
+    vec3 k = inverse(rows) * vec3(at.z, u.z, v.z);
+    return vec2(k.x, -k.y) / (0.5 * viewport);
+}
+
+// The polygon's window depth slope (window_depth_slope_at), from its corner and edges.
 vec2 window_depth_slope(PolygonFrame polygon, mat4 model_view_proj, vec2 viewport) {
-    vec4 a = model_view_proj * vec4(polygon.origin, 1.0);
-    vec4 b = model_view_proj * vec4(polygon.origin + polygon.edge_u, 1.0);
-    vec4 c = model_view_proj * vec4(polygon.origin + polygon.edge_v, 1.0);
-    vec2 half_size = 0.5 * viewport;
-    if (a.w <= 0.0 || b.w <= 0.0 || c.w <= 0.0) {
-        // A corner behind the eye (a floor seen from just above it, whose stipples near the eye are large
-        // dots that were cut in half): the plane's window depth is still affine in the window coordinates,
-        // z/w = k0 + kx x/w + ky y/w, so z = k0 w + kx x + ky y holds at every clip-space point of the plane;
-        // solved for (kx, ky, k0) from its corner and two edge directions, no division by w.
-        vec4 u = b - a, v = c - a;
-        mat3 rows = transpose(mat3(vec3(a.x, a.y, a.w), vec3(u.x, u.y, u.w), vec3(v.x, v.y, v.w)));
-        float det = determinant(rows);
-        float scale = length(vec3(a.x, a.y, a.w)) * length(vec3(u.x, u.y, u.w)) * length(vec3(v.x, v.y, v.w));
-        if (!(abs(det) > 1e-6 * scale)) return vec2(0.0);
-        vec3 k = inverse(rows) * vec3(a.z, u.z, v.z);
-        return vec2(k.x / half_size.x, -k.y / half_size.y);
-    }
-    vec3 wa = vec3(a.xy / a.w * vec2(half_size.x, -half_size.y), a.z / a.w);
-    vec3 e1 = vec3(b.xy / b.w * vec2(half_size.x, -half_size.y), b.z / b.w) - wa;
-    vec3 e2 = vec3(c.xy / c.w * vec2(half_size.x, -half_size.y), c.z / c.w) - wa;
-    float det = e1.x * e2.y - e1.y * e2.x;
-    if (abs(det) < 1e-3) return vec2(0.0);
-    return vec2(e1.z * e2.y - e2.z * e1.y, e2.z * e1.x - e1.z * e2.x) / det;
+    return window_depth_slope_at(model_view_proj * vec4(polygon.origin, 1.0), model_view_proj * vec4(polygon.edge_u, 0.0),
+                                 model_view_proj * vec4(polygon.edge_v, 0.0), viewport);
 }
 #endif
