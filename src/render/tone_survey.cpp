@@ -103,14 +103,12 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             density = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, density), a, b, c, params);
             bounds = formulas::polygon_density_bounds(density, a, b, c, params);
         }
-        // The dots' side, as the splat draws them: each at the density where it lies where that changes the size.
+        // Where the density changes across the polygon: at each stipple whose index it decides, and at every
+        // stipple where the candidates cannot carry it (its dot's size), as the shaders take it.
         const bool sizes_vary = bounds.x != bounds.y && bounds.y > float(candidates);
         for (uint32_t k = 0; k < formulas::drawn_stipple_count(bounds.y, candidates); ++k) {
             float here = density;
-            if (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y)
-                here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
-                                                      b, c, params);
-            if (sizes_vary)
+            if (sizes_vary || (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y))
                 here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
                                                       b, c, params);
             const float side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
