@@ -24,6 +24,7 @@
 #include "core/timing.hpp"
 #include "gpu/context.hpp"
 #include "io/png_io.hpp"
+#include "render/object_gpu.hpp"
 #include "render/offscreen.hpp"
 #include "render/tiled_render.hpp"
 #include "scene/frame_sequence.hpp"
@@ -224,8 +225,18 @@ int run_render(const std::vector<std::string>& argv) {
                                         "camera: edit the path, or render without it");
     }
 
+    gpu::ContextOptions context_options;
+    context_options.device_index = int(device);
+    context_options.verbose = args.flag("--verbose");
+    // Made once the models are read (a bad file is named without starting Vulkan) and before their stipples
+    // are generated, so that a count the device cannot hold is refused before minutes of generation.
+    std::optional<gpu::Context> device_context;
+    const auto check_fits = [&](const ObjectData& model, uint64_t stipples) {
+        if (!device_context) device_context.emplace(context_options);
+        check_object_fits(*device_context, *model.mesh, stipples);
+    };
     auto start = std::chrono::steady_clock::now();
-    SceneContent content = load_scene_content(scene);
+    SceneContent content = load_scene_content(scene, check_fits);
     double prepare_seconds = seconds_since(start);
 
     const bool animated = any_animated(content.objects);
@@ -262,10 +273,8 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 
-    gpu::ContextOptions context_options;
-    context_options.device_index = int(device);
-    context_options.verbose = args.flag("--verbose");
-    gpu::Context context(context_options);
+    if (!device_context) device_context.emplace(context_options);
+    gpu::Context& context = *device_context;
     VkExtent2D extent{uint32_t(width), uint32_t(height)};
 
     RendererOptions renderer_options;

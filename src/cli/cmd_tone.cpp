@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/printf_string.hpp"
 #include "gpu/context.hpp"
+#include "render/object_gpu.hpp"
 #include "render/tone_survey.hpp"
 #include "stipple/object_data.hpp"
 
@@ -239,9 +240,12 @@ int run_tone(const std::vector<std::string>& argv) {
     gpu::Context context(context_options);
     const bool several = seeds.size() > 1;
     std::vector<ToneSurvey> ons, offs;
+    const ObjectData model = load_model_data(path);
+    check_object_fits(context, *model.mesh, planned_stipple_count(model, params.generation));  // before generating
     for (size_t k = 0; k < seeds.size(); ++k) {
         params.generation.seed = seeds[k];
-        const ObjectData object = load_object_data(path, params.generation);
+        ObjectData object = model;
+        object.stipples = make_stipples(model, params.generation);
         require_candidates(path, object.stipples->size(), params.generation.dmax, "measure");
         StippleRenderer renderer(context, kColorFormat, context.depth_format);
         // An animated model as render draws it by default, its first animation at 0 s (without its motion

@@ -42,9 +42,9 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
     return vertices;
 }
 
-// Before anything is staged: an object the device cannot hold is refused in one line saying what it
-// needs, what there is and what to lower, instead of a failed allocation half way or a lost device.
-void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples) {
+}  // namespace
+
+void check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples) {
     const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
     const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
     // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
@@ -77,6 +77,8 @@ void check_device_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
              mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + in_use + lower);
     }
 }
+
+namespace {
 
 enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
 
@@ -170,7 +172,7 @@ ObjectGpu::~ObjectGpu() {
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                                    uint64_t seed, const anim::Motion& motion) {
     STIPPLE_CHECK(stipples.first.size() == mesh.triangle_count() + 1, "stipple set does not match the mesh");
-    check_device_fits(context, mesh, stipples.size());
+    check_object_fits(context, mesh, stipples.size());
     ObjectUpload upload;
     upload.index_count = uint32_t(mesh.indices.size());
     upload.triangle_count = uint32_t(mesh.triangle_count());
@@ -218,7 +220,7 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     double surface_area = 0.0;
     for (const gpu::TriangleInfo& info : upload.polygons.cpu) surface_area += double(info.area);
     object->geometry.surface_area = float(surface_area);
-    // Within the device's texel buffer limit (check_device_fits).
+    // Within the device's texel buffer limit (check_object_fits).
     ObjectGeometry& geometry = object->geometry;
     geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
                                                       vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);

@@ -131,6 +131,12 @@ struct ObjectUpload {
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                                    uint64_t seed, const anim::Motion& motion = {});
 
+// An object of `stipples` candidates on `mesh` that this device cannot hold is refused in one line saying
+// what it needs, what there is and what to lower: before anything is staged (prepare_object_upload), and
+// before its stipples are generated (load_scene_content's check, with planned_stipple_count), instead of a
+// failed allocation half way, a lost device or minutes of generation for nothing.
+void check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples);
+
 // `vec3_texels`: the texel views' layout, as the renderer's pipelines read it (kSpecMeshVec3Texels).
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,

@@ -19,7 +19,7 @@ using GenerationKey = std::pair<std::string, std::vector<double>>;
 
 }  // namespace
 
-SceneContent load_scene_content(const Scene& scene) {
+SceneContent load_scene_content(const Scene& scene, const BeforeGeneration& before_generation) {
     SceneContent content;
     std::map<std::string, ObjectData> models;
     std::map<GenerationKey, std::shared_ptr<const StippleSet>> stipples;
@@ -48,15 +48,21 @@ SceneContent load_scene_content(const Scene& scene) {
         } catch (const Error& e) {
             in_scene("animation.name", e);
         }
-        const GenerationKey key{path, generation_values(params.generation)};
+        content.objects.push_back(std::move(object));
+    }
+    // Every model is read before any generation starts, so that a bad file is named at once.
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        ObjectData& object = content.objects[i];
+        const GenerationParams& generation = scene.objects[i].params.generation;
+        const GenerationKey key{scene.model_path(i), generation_values(generation)};
         auto set = stipples.find(key);
         if (set == stipples.end()) {
+            if (before_generation) before_generation(object, planned_stipple_count(object, generation));
             const auto start = Clock::now();
-            set = stipples.emplace(key, make_stipples(object, params.generation)).first;
+            set = stipples.emplace(key, make_stipples(object, generation)).first;
             content.generation_seconds += seconds_since(start);
         }
         object.stipples = set->second;
-        content.objects.push_back(std::move(object));
     }
     return content;
 }

@@ -2,6 +2,8 @@
 // A scene's models loaded and their stipples generated, ready for a StippleRenderer; the camera and
 // FrameView of a scene. Used by `render` (offscreen) and `view` (window) alike, so both draw the
 // same image of the same scene.
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,10 +22,15 @@ struct SceneContent {
     double generation_seconds = 0.0;
 };
 
+// Called with each model and the count of stipples about to be made for it, after every model is loaded
+// and before its stipples are generated or read from the cache: may throw to refuse it (a device that
+// cannot hold them, checked before minutes of generation).
+using BeforeGeneration = std::function<void(const ObjectData& model, uint64_t stipples)>;
+
 // Loads every model once and generates stipples (a progress bar for big models on a terminal).
 // A scene from a file prefixes loader errors with "<scene>: objects[i].model: " and an unknown
 // animation with "<scene>: objects[i].animation.name: ".
-SceneContent load_scene_content(const Scene& scene);
+SceneContent load_scene_content(const Scene& scene, const BeforeGeneration& before_generation = {});
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.

@@ -200,18 +200,52 @@ std::optional<UnitFrame> frame_to_rescale(const Mesh& mesh) {
     return frame;
 }
 
+// Counts by cumulative rounding (see the top of this file): the stipples of triangles 0..t together, for
+// every t, into `running_counts` when given; returns the total.
+uint64_t cumulative_counts(const Mesh& mesh, double density_per_area, std::span<const float> headroom,
+                           uint32_t* running_counts) {
+    double running = 0.0;  // S_t; never decreases (E_t >= 0), so neither does its rounding
+    for_each_area_block(mesh, [&](size_t first, std::span<const double> areas) {
+        for (size_t k = 0; k < areas.size(); ++k) {
+            const size_t t = first + k;
+            running += density_per_area * areas[k] * (headroom.empty() ? 1.0 : double(headroom[t]));
+            if (!running_counts) continue;
+            const double rounded = std::floor(running + 0.5);
+            if (rounded > double(UINT32_MAX - 1))
+                fail_file(source_name(mesh), "more than 2^32 stipples requested; lower D_max or the stipple budget");
+            running_counts[t] = static_cast<uint32_t>(rounded);
+        }
+    });
+    const double total = std::floor(running + 0.5);
+    if (total > double(UINT32_MAX - 1))
+        fail_file(source_name(mesh), "more than 2^32 stipples requested; lower D_max or the stipple budget");
+    return static_cast<uint64_t>(total);
+}
+
+// The mesh scaled to unit radius about its centre (see UnitFrame).
+Mesh unit_copy(const Mesh& mesh, const UnitFrame& frame) {
+    Mesh unit;
+    unit.source = mesh.source;
+    unit.indices = mesh.indices;
+    unit.positions.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions) unit.positions.push_back(glm::vec3((glm::dvec3(p) - frame.centre) / frame.radius));
+    return unit;
+}
+
 }  // namespace
+
+uint64_t planned_stipple_count(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
+    check_params(mesh, params, headroom);
+    if (const std::optional<UnitFrame> frame = frame_to_rescale(mesh))
+        return planned_stipple_count(unit_copy(mesh, *frame), params, headroom);
+    return cumulative_counts(mesh, density_for_area(mesh, params, total_area_in_order(mesh)), headroom, nullptr);
+}
 
 StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
     const auto start = std::chrono::steady_clock::now();
     check_params(mesh, params, headroom);
     if (const std::optional<UnitFrame> frame = frame_to_rescale(mesh)) {
-        Mesh unit;
-        unit.source = mesh.source;
-        unit.indices = mesh.indices;
-        unit.positions.reserve(mesh.positions.size());
-        for (const glm::vec3& p : mesh.positions) unit.positions.push_back(glm::vec3((glm::dvec3(p) - frame->centre) / frame->radius));
-        StippleSet set = generate_stipples(unit, params, headroom);
+        StippleSet set = generate_stipples(unit_copy(mesh, *frame), params, headroom);
         for (glm::vec3& p : set.positions) p = glm::vec3(frame->centre + glm::dvec3(p) * frame->radius);
         set.density_per_area /= frame->radius * frame->radius;
         set.poisson_radius *= frame->radius;
@@ -226,20 +260,9 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
     if (set.density_per_area > 0.0)
         set.poisson_radius = std::sqrt(2.0 / (std::sqrt(3.0) * set.density_per_area));
 
-    // Counts by cumulative rounding (see the top of this file).
     set.first.resize(triangles + 1);
     set.first[0] = 0;
-    double running = 0.0;  // S_t; never decreases (E_t >= 0), so neither does its rounding
-    for_each_area_block(mesh, [&](size_t first, std::span<const double> areas) {
-        for (size_t k = 0; k < areas.size(); ++k) {
-            const size_t t = first + k;
-            running += set.density_per_area * areas[k] * (headroom.empty() ? 1.0 : double(headroom[t]));
-            const double rounded = std::floor(running + 0.5);
-            if (rounded > double(UINT32_MAX - 1))
-                fail_file(source_name(mesh), "more than 2^32 stipples requested; lower D_max or the stipple budget");
-            set.first[t + 1] = static_cast<uint32_t>(rounded);
-        }
-    });
+    cumulative_counts(mesh, set.density_per_area, headroom, set.first.data() + 1);
     const size_t n = set.first[triangles];
 
     auto fill_triangles = [&] {  // the triangle of every stipple, from the counts

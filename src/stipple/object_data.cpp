@@ -81,6 +81,12 @@ std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const G
     return make_stipples(*model.mesh, generation, source, headroom);
 }
 
+uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& generation) {
+    std::span<const float> headroom;
+    if (model.motion) headroom = model.motion.headroom->per_triangle;
+    return planned_stipple_count(*model.mesh, generation, headroom);
+}
+
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
     ObjectData object = load_model_data(path);
     object.stipples = make_stipples(object, generation, source);

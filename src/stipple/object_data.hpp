@@ -46,6 +46,9 @@ std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const Generati
 std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const GenerationParams& generation,
                                                 StippleSource source = StippleSource::Cache);
 
+// How many stipples make_stipples makes for this model (planned_stipple_count, with its headroom).
+uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& generation);
+
 // Both: loads the model at `path` and makes its stipples.
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation,
                             StippleSource source = StippleSource::Cache);

@@ -43,6 +43,10 @@ struct StippleSet {
 // (src/anim/headroom.hpp); the density per area, the reference view and the spacing stay the rest's.
 StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom = {});
 
+// How many stipples generate_stipples makes for these arguments, counted without making them (a pass over
+// the areas): what a device must hold is checked before a long generation.
+uint64_t planned_stipple_count(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom = {});
+
 // Stipples per object-space unit area for this mesh and parameters (the paper's N_max per area).
 double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params);
 
