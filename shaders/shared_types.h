@@ -386,7 +386,7 @@ struct ObjectUniforms {
     vec4 box_min;           // xyz: corner of the object-space box the TriangleInfo centroids are quantised in
     vec4 box_size;          // xyz: the box's extent; w: how far a centroid quantised in it may lie from the true one, in
                             // view depth (DensityParams::near_margin)
-    vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; zw: unused
+    vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; z: crease width px; w: unused
 };
 
 #ifdef __cplusplus

@@ -48,7 +48,7 @@ Path parse_path(std::string d) {
     return path;
 }
 
-// The paths of every "... lines" layer.
+// The paths of every "... lines" and "... creases" layer.
 std::vector<Path> line_paths(const std::string& svg) {
     tinyxml2::XMLDocument doc;
     EXPECT_EQ(doc.LoadFile(svg.c_str()), tinyxml2::XML_SUCCESS) << svg << " is not XML";
@@ -57,7 +57,8 @@ std::vector<Path> line_paths(const std::string& svg) {
     if (!root) return paths;
     for (const tinyxml2::XMLElement* g = root->FirstChildElement("g"); g; g = g->NextSiblingElement("g")) {
         const char* label = g->Attribute("inkscape:label");
-        if (!label || std::string(label).find(" lines") == std::string::npos) continue;
+        if (!label || (std::string(label).find(" lines") == std::string::npos && std::string(label).find(" creases") == std::string::npos))
+            continue;
         for (const tinyxml2::XMLElement* p = g->FirstChildElement("path"); p; p = p->NextSiblingElement("path"))
             paths.push_back(parse_path(p->Attribute("d") ? p->Attribute("d") : ""));
     }

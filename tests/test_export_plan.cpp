@@ -13,6 +13,7 @@
 #include "export/plot_file.hpp"
 #include "export/plot_plan.hpp"
 #include "export/plot_stats.hpp"
+#include "export/polylines.hpp"
 #include "support/export_helpers.hpp"
 #include "support/test_paths.hpp"
 
@@ -21,17 +22,37 @@ namespace {
 using namespace stipple::plot;
 using stipple::test::grid_drawing;
 
+// Three layers an object, numbered whether or not each has anything (a layer keeps its number from drawing
+// to drawing): stipples, outline, creases. Creases are drawn with their own pen width, the frame's
+// crease width where no pen is given, and with the one pen where one is.
 TEST(ExportPlan, LayersNumberedPerObjectAndKind) {
     Drawing drawing = grid_drawing(3, 3);
-    // Object 0 ("cube") keeps only its lines; object 1 ("", unnamed) has dots only.
+    // Object 0 ("cube") keeps only its lines, a square outline and a crease across it; object 1 ("",
+    // unnamed) has dots only.
+    drawing.objects[0].crease_width_px = 0.5f;
+    drawing.segments.push_back({{250, 150}, {350, 150}, 0, LineKind::Crease});
     drawing.objects.push_back({"", 1.0f});
     for (Dot& dot : drawing.dots) dot.object = 1;
     const PlotPlan plan = make_plot_plan(drawing, {});
-    ASSERT_EQ(plan.layers.size(), 2u);
+    ASSERT_EQ(plan.layers.size(), 3u);
     EXPECT_EQ(plan.layers[0].label, "2 cube lines");
     EXPECT_EQ(plan.layers[0].kind, LayerKind::Lines);
-    EXPECT_EQ(plan.layers[1].label, "3 object2 stipples");
-    EXPECT_EQ(plan.layers[1].dots.size(), 9u);
+    EXPECT_EQ(plan.layers[0].lines.size(), 1u) << "the square outline alone";
+    EXPECT_EQ(plan.layers[1].label, "3 cube creases");
+    EXPECT_EQ(plan.layers[1].kind, LayerKind::Creases);
+    ASSERT_EQ(plan.layers[1].lines.size(), 1u) << "the crease alone";
+    EXPECT_NEAR(polyline_length(plan.layers[0].lines[0]), 400.0 * plan.layout.mm_per_px, 1e-6);
+    EXPECT_NEAR(polyline_length(plan.layers[1].lines[0]), 100.0 * plan.layout.mm_per_px, 1e-6);
+    EXPECT_NEAR(plan.layers[0].stroke_mm, 2.0 * plan.layout.mm_per_px, 1e-9);
+    EXPECT_NEAR(plan.layers[1].stroke_mm, 0.5 * plan.layout.mm_per_px, 1e-9);
+    EXPECT_EQ(plan.layers[2].label, "4 object2 stipples");
+    EXPECT_EQ(plan.layers[2].dots.size(), 9u);
+    ExportOptions one_pen;
+    one_pen.pen_width_mm = 0.3;
+    const PlotPlan pen = make_plot_plan(drawing, one_pen);
+    ASSERT_EQ(pen.layers.size(), 3u);
+    EXPECT_EQ(pen.layers[0].stroke_mm, 0.3);
+    EXPECT_EQ(pen.layers[1].stroke_mm, 0.3);
 }
 
 // The page holds the frame: a dot centred beyond the image's edge is left out, and a line piece that

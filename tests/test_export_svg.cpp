@@ -68,7 +68,7 @@ TEST(ExportSvg, PageLayersAndCounts) {
     ASSERT_EQ(layers.size(), 3u);
     EXPECT_STREQ(layers[0]->Attribute("inkscape:label"), "1 bunny stipples");
     EXPECT_STREQ(layers[1]->Attribute("inkscape:label"), "2 bunny lines");
-    EXPECT_STREQ(layers[2]->Attribute("inkscape:label"), "3 horse & co stipples");
+    EXPECT_STREQ(layers[2]->Attribute("inkscape:label"), "4 horse & co stipples");
     // Styles on the layer, none on the dots.
     EXPECT_STREQ(layers[0]->Attribute("fill"), "#000000");
     EXPECT_STREQ(layers[1]->Attribute("fill"), "none");

@@ -45,7 +45,8 @@ struct Lines {
     Frame with, without;  // the same frame with the lines on and off
     std::vector<gpu::LinePiece> pieces;
     uint32_t appended = 0;
-    float width = 0.0f;  // the line width drawn
+    float width = 0.0f;         // the line width drawn
+    float crease_width = 0.0f;  // and the creases'
     bool inked(int x, int y) const { return with.red(x, y) + 64 < without.red(x, y); }
 };
 
@@ -64,6 +65,7 @@ Lines render_lines(gpu::Context& context, const test::Prepared& prepared, Object
     lines.pieces = pieces.pieces;
     lines.appended = pieces.appended;
     lines.width = renderer.object(0).frame.line_width;
+    lines.crease_width = renderer.object(0).frame.crease_width;
     return lines;
 }
 
@@ -319,6 +321,47 @@ TEST_F(ObjectLines, CreasesAreACubesTwelveEdgesAndNoneOnASphere) {
     std::printf("finely tessellated sphere: %zu crease pieces, %zu ink px\n", round.pieces.size(), ink);
     EXPECT_EQ(round.pieces.size(), 0u);
     EXPECT_EQ(ink, 0u);
+}
+
+// Creases are interior lines, drawn crease_width wide (thinner than the outline by default, as illustrators
+// draw them); contours and borders keep silhouette_width. Both thin alike with the object's size (§3.1).
+TEST_F(ObjectLines, CreasesHaveTheirOwnWidth) {
+    test::Prepared cube = test::prepare(triangle_soup(test::make_box(glm::vec3(1.0f))), line_params());
+    struct Drawn {
+        double ink = 0.0;
+        float outline = 0.0f, crease = 0.0f;  // the widths drawn
+    };
+    const auto draw = [&](void (*on)(ObjectParams&), float crease_width, bool thinning, float distance,
+                          float outline_width = 6.0f) {
+        ObjectParams params = line_params();
+        params.silhouette_width = outline_width;
+        params.crease_width = crease_width;
+        params.silhouette_thinning = thinning;
+        Lines lines = render_lines(*context, cube, params, on, {320, 320}, 30.0f, 25.0f, distance);
+        Drawn d;
+        for (int y = 0; y < lines.with.height; ++y)
+            for (int x = 0; x < lines.with.width; ++x) d.ink += lines.inked(x, y);
+        d.outline = lines.width;
+        d.crease = lines.crease_width;
+        return d;
+    };
+    // Every visible edge of the cube is a crease (9 of them).
+    const Drawn thin = draw(set_creases, 2.0f, false, 1.0f), wide = draw(set_creases, 6.0f, false, 1.0f);
+    const Drawn outline_thin = draw(set_contours, 2.0f, false, 1.0f), outline_wide = draw(set_contours, 6.0f, false, 1.0f);
+    std::printf("cube's creases 2 px wide: %.0f ink px, 6 px: %.0f; its contours (6 px) beside creases of 2 and 6 px: "
+                "%.0f / %.0f\n", thin.ink, wide.ink, outline_thin.ink, outline_wide.ink);
+    EXPECT_EQ(thin.crease, 2.0f);
+    EXPECT_EQ(thin.outline, 6.0f);
+    ASSERT_GT(thin.ink, 500.0);
+    // A little under 3: the lines cross stipples already black, and the wider ones overlap more at corners.
+    EXPECT_NEAR(wide.ink / thin.ink, 3.0, 0.4) << "the creases' ink follows their width";
+    EXPECT_EQ(outline_thin.ink, outline_wide.ink) << "the crease width changed the outline";
+    // Thinned: both by the same factor (down to a pixel; wide enough here to stay above it).
+    const Drawn thinned = draw(set_creases, 32.0f, true, 1.0f, 64.0f);
+    std::printf("thinned at 320 x 320: outline %.2f px, creases %.2f px\n", thinned.outline, thinned.crease);
+    EXPECT_LT(thinned.outline, 64.0f) << "the outline did not thin";
+    EXPECT_GT(thinned.crease, 1.0f);
+    EXPECT_NEAR(thinned.crease / thinned.outline, 0.5f, 1e-4f);
 }
 
 TEST_F(ObjectLines, BordersAreADiscsRimAndNothingElse) {

@@ -39,7 +39,8 @@ struct Segment {
 
 struct DrawnObject {
     std::string name;           // shown in the layer labels ("1 bunny stipples")
-    float line_width_px = 1.0f;  // the width the frame drew its lines with (used when no pen width is set)
+    float line_width_px = 1.0f;  // the width the frame drew its outline with (used when no pen width is set)
+    float crease_width_px = 1.0f;  // and its creases
 };
 
 struct Drawing {

@@ -41,8 +41,8 @@ double tick_length(double radius_mm, double pen_mm) {
 namespace {
 
 std::string layer_label(uint32_t number, const std::string& name, uint32_t object, LayerKind kind) {
-    return std::to_string(number) + " " + (name.empty() ? "object" + std::to_string(object + 1) : name) +
-           (kind == LayerKind::Stipples ? " stipples" : " lines");
+    const char* what = kind == LayerKind::Stipples ? " stipples" : kind == LayerKind::Lines ? " lines" : " creases";
+    return std::to_string(number) + " " + (name.empty() ? "object" + std::to_string(object + 1) : name) + what;
 }
 
 bool finite(glm::vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -75,7 +75,7 @@ bool in_frame(glm::vec2 p, uint32_t w, uint32_t h) { return p.x >= 0.0f && p.y >
 PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot_indices, uint32_t object, const PlotPlan& plan,
                         double pen_mm, bool plotter_order, glm::dvec2& pen) {
     PlotLayer layer;
-    layer.number = 2 * object + 1;
+    layer.number = 3 * object + 1;
     layer.label = layer_label(layer.number, drawing.objects[object].name, object, LayerKind::Stipples);
     layer.object = object;
     layer.kind = LayerKind::Stipples;
@@ -101,14 +101,16 @@ PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot
     return layer;
 }
 
-PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segment_indices, uint32_t object, const PlotPlan& plan,
-                     const ExportOptions& options, glm::dvec2& pen) {
+// `kind`: Lines or Creases.
+PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segment_indices, uint32_t object, LayerKind kind,
+                     const PlotPlan& plan, const ExportOptions& options, glm::dvec2& pen) {
     PlotLayer layer;
-    layer.number = 2 * object + 2;
-    layer.label = layer_label(layer.number, drawing.objects[object].name, object, LayerKind::Lines);
+    layer.number = 3 * object + (kind == LayerKind::Lines ? 2 : 3);
+    layer.label = layer_label(layer.number, drawing.objects[object].name, object, kind);
     layer.object = object;
-    layer.kind = LayerKind::Lines;
-    layer.stroke_mm = options.pen_width_mm.value_or(std::max(0.0f, drawing.objects[object].line_width_px) * plan.layout.mm_per_px);
+    layer.kind = kind;
+    const float width_px = kind == LayerKind::Lines ? drawing.objects[object].line_width_px : drawing.objects[object].crease_width_px;
+    layer.stroke_mm = options.pen_width_mm.value_or(std::max(0.0f, width_px) * plan.layout.mm_per_px);
     // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).
     std::vector<std::array<glm::dvec2, 2>> pieces;
     pieces.reserve(segment_indices.size());
@@ -143,7 +145,7 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
     plan.show_travel = options.show_travel;
 
     const uint32_t objects = static_cast<uint32_t>(drawing.objects.size());
-    std::vector<std::vector<uint32_t>> dots_of(objects), segments_of(objects);
+    std::vector<std::vector<uint32_t>> dots_of(objects), segments_of(objects), creases_of(objects);
     for (uint32_t i = 0; i < drawing.dots.size(); ++i) {
         const Dot& dot = drawing.dots[i];
         if (dot.object >= objects)
@@ -157,7 +159,7 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
         if (segment.object >= objects)
             fail("export: line segment " + std::to_string(i) + " belongs to object " + std::to_string(segment.object) + " of " +
                  std::to_string(objects));
-        segments_of[segment.object].push_back(i);
+        (segment.kind == LineKind::Crease ? creases_of : segments_of)[segment.object].push_back(i);
     }
 
     const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);
@@ -165,8 +167,10 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
     for (uint32_t object = 0; object < objects; ++object) {
         if (!dots_of[object].empty())
             plan.layers.push_back(stipple_layer(drawing, dots_of[object], object, plan, dot_pen, options.plotter_order, pen));
-        if (!segments_of[object].empty()) {
-            PlotLayer lines = line_layer(drawing, segments_of[object], object, plan, options, pen);
+        for (const LayerKind kind : {LayerKind::Lines, LayerKind::Creases}) {
+            const std::vector<uint32_t>& segments = kind == LayerKind::Lines ? segments_of[object] : creases_of[object];
+            if (segments.empty()) continue;
+            PlotLayer lines = line_layer(drawing, segments, object, kind, plan, options, pen);
             if (!lines.lines.empty()) plan.layers.push_back(std::move(lines));
         }
     }

@@ -2,9 +2,9 @@
 // A Drawing laid out on a page and put in plotter order: what the SVG, PDF and CSV writers and
 // the statistics read.
 //
-// Layers: one per object and kind, stipples then lines, numbered 2k+1 and 2k+2 for object k (the
-// numbers stay the same whichever layers are empty; empty layers are left out), labelled
-// "<number> <object name> stipples|lines" as the AxiDraw driver expects. Everything is in
+// Layers: one per object and kind, stipples, outline lines then creases, numbered 3k+1, 3k+2 and 3k+3 for
+// object k (the numbers stay the same whichever layers are empty; empty layers are left out), labelled
+// "<number> <object name> stipples|lines|creases" as the AxiDraw driver expects. Everything is in
 // millimetres on the page (see page.hpp). The pen starts at the page's top-left corner (a
 // plotter's home) and visits the layers in number order; within a layer the dots follow
 // dot_order.hpp and the strokes polyline_order.hpp, each starting where the pen is.
@@ -51,7 +51,8 @@ struct ExportOptions {
     MergeOptions merge;         // welding and overlap tolerances, in pixels
 };
 
-enum class LayerKind { Stipples, Lines };
+// Creases have a layer of their own, drawn with a pen of their own width (ObjectParams::crease_width).
+enum class LayerKind { Stipples, Lines, Creases };
 
 struct PlotDot {
     glm::dvec2 mm{0.0};

@@ -68,6 +68,8 @@ struct ObjectParams {
     bool borders = false;             // edges of one polygon (the rims of open surfaces)
     bool creases = false;             // edges whose polygons' normals differ by more than crease_angle
     float crease_angle = 60.0f;       // degrees
+    float crease_width = 2.0f;        // crease lines' width in pixels at the reference size (interior lines
+                                      // thinner than the outline, as illustrators draw them)
     // Open surfaces: polygons facing away, seen through an opening, get stipples with the flipped normal.
     bool two_sided = false;
     UpAxis up = UpAxis::Y;

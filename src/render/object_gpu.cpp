@@ -324,7 +324,7 @@ glm::mat4 object_to_world(const ObjectGpu& object) {
     return object.model * up_axis_rotation(object.params.up, object.polygons.bounds.center);
 }
 
-gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, float line_width) {
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, LineWidths widths) {
     const ObjectParams& p = object.params;
     const Sphere& bounds = object.polygons.bounds;
     gpu::ObjectUniforms u{};
@@ -368,11 +368,11 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     // view depth (twice the bound), so that the density pass and the stipples agree on which centroids lie
     // nearer than the near plane (PolygonDensity::unplaced, density_reference_point).
     u.box_size = glm::vec4(object.polygons.box_size, glm::length(object.polygons.box_size) * scale.most / 65535.0f);
-    u.lines = glm::vec4(line_width, std::cos(glm::radians(p.crease_angle)), 0.0f, 0.0f);
+    u.lines = glm::vec4(widths.outline, std::cos(glm::radians(p.crease_angle)), widths.crease, 0.0f);
     return u;
 }
 
-float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width) {
+LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, float max_width) {
     const Sphere& bounds = object.polygons.bounds;
     float radius_world = bounds.radius * model_scale(object.model).most;
     glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
@@ -380,9 +380,11 @@ float object_line_width(const ObjectGpu& object, const FrameView& view, float ma
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
     float projected_radius =
         radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);
-    float width = formulas::silhouette_line_width(object.params.silhouette_width, projected_radius,
-                                                  object.params.silhouette_thinning);
-    return std::min(width * view.detail_scale, max_width);
+    const auto width = [&](float user_width) {
+        const float thinned = formulas::silhouette_line_width(user_width, projected_radius, object.params.silhouette_thinning);
+        return std::min(thinned * view.detail_scale, max_width);
+    };
+    return {width(object.params.silhouette_width), width(object.params.crease_width)};
 }
 
 }  // namespace stipple

@@ -90,7 +90,8 @@ struct ObjectFrame {
     gpu::Buffer debug;             // DebugCounters + drawn bit mask, when counting
     gpu::Buffer visible_stipples;  // VisibleStipplesHeader + VisibleStipple per candidate, when recording
     uint32_t cpu_listed = 0;          // CPU paths: entries of this frame's list (work items or stipples)
-    float line_width = 1.0f;          // line width this frame (thinned, §3.1), every kind of line
+    float line_width = 1.0f;          // line width this frame (thinned, §3.1): silhouettes, contours, borders
+    float crease_width = 1.0f;        // crease lines' width this frame, thinned alike
     bool splatted = false;            // drawn by the compute splat this frame
 };
 
@@ -175,10 +176,17 @@ glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center);
 // Object to world as drawn: the scene's transform after the up-axis rotation.
 glm::mat4 object_to_world(const ObjectGpu& object);
 
-// The object's uniforms for this frame (view-dependent terms included); `line_width` from object_line_width.
-gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, float line_width);
+// The object's line widths this frame in pixels (§3.1 thinning): the outline's (silhouette, contour and
+// border lines) and the creases'.
+struct LineWidths {
+    float outline = 1.0f;
+    float crease = 1.0f;
+};
 
-// The silhouette line width this frame (§3.1 thinning), at most `max_width` (the device's limit).
-float object_line_width(const ObjectGpu& object, const FrameView& view, float max_width);
+// The object's uniforms for this frame (view-dependent terms included); `widths` from object_line_widths.
+gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, LineWidths widths);
+
+// The line widths this frame (§3.1 thinning), at most `max_width` (the device's limit for wide lines).
+LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, float max_width);
 
 }  // namespace stipple

@@ -234,8 +234,10 @@ void StippleRenderer::prepare(const FrameView& view) {
         ensure_path_buffers(*object, object->params.density_path);
         if (draws_edge_lines(object->params)) ensure_line_buffers(*object);  // before the uniforms, which count the edges
         if (options_.record_visible) ensure_visible_list(*object);
-        object->frame.line_width = object_line_width(*object, view, context_.features.max_line_width);
-        object->frame.uniforms = make_object_uniforms(*object, view, object->frame.line_width);
+        const LineWidths widths = object_line_widths(*object, view, context_.features.max_line_width);
+        object->frame.line_width = widths.outline;
+        object->frame.crease_width = widths.crease;
+        object->frame.uniforms = make_object_uniforms(*object, view, widths);
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
         object->frame.depth_listed = false;

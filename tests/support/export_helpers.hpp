@@ -26,7 +26,7 @@ void expect_plot_error(Fn&& fn, const std::string& needle) {
 }
 
 // A 400x300 px drawing with one object "cube" holding `dots` dots on a grid (intensity 1,
-// radius 1.5 px) and a square outline 100 px wide given as four segments.
+// radius 1.5 px) and a square outline 100 px wide given as four contour segments, drawn 2 px wide.
 inline plot::Drawing grid_drawing(int dots_x = 10, int dots_y = 10) {
     plot::Drawing d;
     d.width_px = 400;
@@ -36,7 +36,7 @@ inline plot::Drawing grid_drawing(int dots_x = 10, int dots_y = 10) {
         for (int x = 0; x < dots_x; ++x)
             d.dots.push_back({glm::vec2(50.0f + 20.0f * x, 50.0f + 20.0f * y), 1.5f, 1.0f, 0, static_cast<uint32_t>(y * dots_x + x)});
     const glm::vec2 c[4] = {{250, 100}, {350, 100}, {350, 200}, {250, 200}};
-    for (int i = 0; i < 4; ++i) d.segments.push_back({c[i], c[(i + 1) % 4], 0, plot::LineKind::Crease});
+    for (int i = 0; i < 4; ++i) d.segments.push_back({c[i], c[(i + 1) % 4], 0, plot::LineKind::Contour});
     return d;
 }
 
