@@ -230,6 +230,35 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
         EXPECT_NE(refused.err.find(": its " + std::to_string(generated) + " stipples on "), std::string::npos)
             << "info made " << generated << "; " << refused.err;
     }
+    // Vector output's list of visible stipples (20 bytes a candidate) and a scene's objects together are
+    // checked before generation too: the default model's 735,511 candidates fit an 8 MiB buffer as drawing
+    // needs them (8 bytes each) but not as vector output's list; two copies of it fit a 14 MiB device one
+    // at a time (about 8 MiB each) but not together.
+    const std::string blobby = test::source_path("assets/blobby.glb");
+    const auto cache = dir / "cache-vector-and-scene";
+    std::filesystem::create_directories(cache);
+    test::ScopedEnv cache_dir("STIPPLE_CACHE_DIR", cache.string());
+    {
+        test::ScopedEnv small("STIPPLE_MAX_STORAGE_BUFFER", "8M");
+        const test::CommandResult r = run_stipple({"render", blobby, "--seed", "424243", "-o", (dir / "never.svg").string()});
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find("vector output of 735511 candidate stipples needs a 14.0 MiB list"), std::string::npos) << r.err;
+        EXPECT_TRUE(std::filesystem::is_empty(cache)) << "vector output generated before refusing";
+    }
+    nlohmann::json scene = {{"objects", nlohmann::json::array()}};
+    for (int i = 0; i < 2; ++i)
+        scene["objects"].push_back({{"model", blobby}, {"params", {{"seed", 424243}}}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
+    const std::string scene_path = test::write_file(dir / "two.json", scene.dump());
+    for (const auto& [limit, refused] : {std::pair<const char*, bool>{"14M", true}, {"40M", false}}) {
+        test::ScopedEnv memory("STIPPLE_GPU_MEMORY_LIMIT", limit);
+        const test::CommandResult r = run_stipple({"render", scene_path, "-o", (dir / "two.png").string(), "--width", "64", "--height", "64"});
+        EXPECT_EQ(r.exit_code, refused ? 1 : 0) << limit << ": " << r.err;
+        if (!refused) continue;
+        EXPECT_NE(r.err.find("MiB free ("), std::string::npos) << r.err;
+        EXPECT_TRUE(std::filesystem::is_empty(cache)) << "the scene generated before refusing";
+    }
+    EXPECT_FALSE(std::filesystem::is_empty(cache)) << "the scene that fits was drawn from generated stipples";
 }
 
 std::string file_bytes(const std::string& path) {

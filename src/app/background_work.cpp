@@ -113,12 +113,10 @@ FinishedWork BackgroundWork::execute(const Job& job) {
     work.object_id = job.object_id;
     work.path = job.path;
     work.params = job.params;
-    if (job.kind == FinishedWork::Kind::Loaded) {
-        work.data = load_object_data(job.path, job.params.generation);
-    } else {
-        work.data = job.model;
-        work.data.stipples = make_stipples(job.model, job.params.generation);
-    }
+    work.data = job.kind == FinishedWork::Kind::Loaded ? load_model_data(job.path) : job.model;
+    // A count this device cannot hold is refused before the stipples are made (minutes at a high D_max).
+    check_object_fits(context_, *work.data.mesh, planned_stipple_count(work.data, job.params.generation));
+    work.data.stipples = make_stipples(work.data, job.params.generation);
     work.upload = std::make_unique<ObjectUpload>(
         prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed,
                               work.data.motion));

@@ -225,18 +225,10 @@ int run_render(const std::vector<std::string>& argv) {
                                         "camera: edit the path, or render without it");
     }
 
-    gpu::ContextOptions context_options;
-    context_options.device_index = int(device);
-    context_options.verbose = args.flag("--verbose");
-    // Made once the models are read (a bad file is named without starting Vulkan) and before their stipples
-    // are generated, so that a count the device cannot hold is refused before minutes of generation.
-    std::optional<gpu::Context> device_context;
-    const auto check_fits = [&](const ObjectData& model, uint64_t stipples) {
-        if (!device_context) device_context.emplace(context_options);
-        check_object_fits(*device_context, *model.mesh, stipples);
-    };
+    // The models first: what depends on them is checked before their stipples are generated (minutes for a
+    // large model at a high density), and before Vulkan starts.
     auto start = std::chrono::steady_clock::now();
-    SceneContent content = load_scene_content(scene, check_fits);
+    SceneContent content = load_scene_models(scene);
     double prepare_seconds = seconds_since(start);
 
     const bool animated = any_animated(content.objects);
@@ -273,8 +265,10 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 
-    if (!device_context) device_context.emplace(context_options);
-    gpu::Context& context = *device_context;
+    gpu::ContextOptions context_options;
+    context_options.device_index = int(device);
+    context_options.verbose = args.flag("--verbose");
+    gpu::Context context(context_options);
     VkExtent2D extent{uint32_t(width), uint32_t(height)};
 
     RendererOptions renderer_options;
@@ -294,6 +288,16 @@ int run_render(const std::vector<std::string>& argv) {
         if (args.has("--mask")) fail("--mask needs one frame, and " + why);
         if (repeat > 0) fail("--repeat times one frame, and " + why);
     }
+    // Whether this device can hold the stipples, counted before they are made: the scene's objects together.
+    const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
+    uint64_t planned_bytes = 0;
+    for (size_t i = 0; i < planned.size(); ++i) {
+        planned_bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_bytes);
+        if (vector) check_visible_list_fits(context, planned[i]);
+    }
+    start = std::chrono::steady_clock::now();
+    make_scene_stipples(scene, content);
+    prepare_seconds += seconds_since(start);
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     // A print is drawn by a renderer of its own (app::render_print), and so is vector output
     // (app::export_frame): this one would only hold a second copy of every object's buffers, unless the

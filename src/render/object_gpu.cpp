@@ -44,7 +44,7 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
 
 }  // namespace
 
-void check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples) {
+uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before) {
     const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
     const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
     // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
@@ -68,14 +68,26 @@ void check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t sti
              std::to_string(s) + " stipples exceed this device's texel buffer limit (" +
              std::to_string(context.properties.limits.maxTexelBufferElements) +
              " texels): lower --dmax or --max-stipples, or use a simplified model");
-    const uint64_t available = context.device_memory_available();
+    const uint64_t free_now = context.device_memory_available();
+    const uint64_t available = free_now > planned_before ? free_now - planned_before : 0;
     if (needed > available) {
-        // A scene's objects count together: say what the ones before hold.
-        const uint64_t held = context.bytes_allocated();
+        // A scene's objects count together: say what the ones before hold (or will).
+        const uint64_t held = context.bytes_allocated() + planned_before;
         const std::string in_use = held >= (uint64_t(1) << 20) ? " (" + mebibytes(held) + " in use by this drawing)" : "";
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
              mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + in_use + lower);
     }
+    return needed;
+}
+
+void check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
+    const uint64_t bytes = sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * candidates;
+    // 20 bytes a candidate where drawing needs 8 (check_object_fits): vector output of 8.4M-16.8M candidates on
+    // a device of 128 MiB storage buffers wrote past the descriptor's range.
+    if (bytes > context.max_storage_buffer_bytes())
+        fail("vector output of " + std::to_string(candidates) + " candidate stipples needs a " + mebibytes(bytes) +
+             " list, and this device's largest buffer is " + mebibytes(context.max_storage_buffer_bytes()) +
+             ": lower --dmax or --max-stipples, or write a PNG");
 }
 
 namespace {

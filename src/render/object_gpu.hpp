@@ -134,9 +134,13 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
 
 // An object of `stipples` candidates on `mesh` that this device cannot hold is refused in one line saying
 // what it needs, what there is and what to lower: before anything is staged (prepare_object_upload), and
-// before its stipples are generated (load_scene_content's check, with planned_stipple_count), instead of a
-// failed allocation half way, a lost device or minutes of generation for nothing.
-void check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples);
+// before its stipples are generated (render, tone and the viewer, with planned_stipple_count), instead of a
+// failed allocation half way, a lost device or minutes of generation for nothing. `planned_before`: the
+// bytes of a scene's objects checked before this one and not yet allocated. Returns the bytes it needs.
+uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0);
+// Vector output's list of visible stipples (20 bytes a candidate) must fit one storage buffer: refused in
+// one line otherwise.
+void check_visible_list_fits(const gpu::Context& context, uint64_t candidates);
 
 // `vec3_texels`: the texel views' layout, as the renderer's pipelines read it (kSpecMeshVec3Texels).
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,

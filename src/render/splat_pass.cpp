@@ -201,12 +201,7 @@ void StippleRenderer::ensure_visible_list(ObjectGpu& object) {
     const VkDeviceSize bytes =
         sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * VkDeviceSize(object.geometry.stipple_count);
     if (object.frame.visible_stipples.size() >= bytes) return;
-    // 20 bytes a candidate where drawing needs 8 (check_object_fits): vector output of 8.4M-16.8M candidates on
-    // a device of 128 MiB storage buffers wrote past the descriptor's range.
-    if (bytes > context_.max_storage_buffer_bytes())
-        fail("vector output of " + std::to_string(object.geometry.stipple_count) + " candidate stipples needs a " +
-             mebibytes(bytes) + " list, and this device's largest buffer is " +
-             mebibytes(context_.max_storage_buffer_bytes()) + ": lower --dmax or --max-stipples, or write a PNG");
+    check_visible_list_fits(context_, object.geometry.stipple_count);
     object.frame.visible_stipples = gpu::Buffer(
         context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
     write_object_descriptors(object);

@@ -19,14 +19,12 @@ using GenerationKey = std::pair<std::string, std::vector<double>>;
 
 }  // namespace
 
-SceneContent load_scene_content(const Scene& scene, const BeforeGeneration& before_generation) {
+SceneContent load_scene_models(const Scene& scene) {
     SceneContent content;
     std::map<std::string, ObjectData> models;
-    std::map<GenerationKey, std::shared_ptr<const StippleSet>> stipples;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const std::string path = scene.model_path(i);
-        const ObjectParams& params = scene.objects[i].params;
-        validate_params(params);
+        validate_params(scene.objects[i].params);
         ObjectData object;
         // A scene file names itself and the object; a bare model keeps the loader's own line.
         const auto in_scene = [&](const std::string& field, const Error& e) {
@@ -50,20 +48,43 @@ SceneContent load_scene_content(const Scene& scene, const BeforeGeneration& befo
         }
         content.objects.push_back(std::move(object));
     }
-    // Every model is read before any generation starts, so that a bad file is named at once.
+    return content;
+}
+
+void make_scene_stipples(const Scene& scene, SceneContent& content) {
+    STIPPLE_CHECK(scene.objects.size() == content.objects.size(), "one ObjectData per scene object");
+    std::map<GenerationKey, std::shared_ptr<const StippleSet>> stipples;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         ObjectData& object = content.objects[i];
         const GenerationParams& generation = scene.objects[i].params.generation;
         const GenerationKey key{scene.model_path(i), generation_values(generation)};
         auto set = stipples.find(key);
         if (set == stipples.end()) {
-            if (before_generation) before_generation(object, planned_stipple_count(object, generation));
             const auto start = Clock::now();
             set = stipples.emplace(key, make_stipples(object, generation)).first;
             content.generation_seconds += seconds_since(start);
         }
         object.stipples = set->second;
     }
+}
+
+std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneContent& content) {
+    STIPPLE_CHECK(scene.objects.size() == content.objects.size(), "one ObjectData per scene object");
+    std::map<GenerationKey, uint64_t> counted;
+    std::vector<uint64_t> planned;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const GenerationParams& generation = scene.objects[i].params.generation;
+        const GenerationKey key{scene.model_path(i), generation_values(generation)};
+        auto found = counted.find(key);
+        if (found == counted.end()) found = counted.emplace(key, planned_stipple_count(content.objects[i], generation)).first;
+        planned.push_back(found->second);
+    }
+    return planned;
+}
+
+SceneContent load_scene_content(const Scene& scene) {
+    SceneContent content = load_scene_models(scene);
+    make_scene_stipples(scene, content);
     return content;
 }
 

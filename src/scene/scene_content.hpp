@@ -3,7 +3,6 @@
 // FrameView of a scene. Used by `render` (offscreen) and `view` (window) alike, so both draw the
 // same image of the same scene.
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,15 +21,20 @@ struct SceneContent {
     double generation_seconds = 0.0;
 };
 
-// Called with each model and the count of stipples about to be made for it, after every model is loaded
-// and before its stipples are generated or read from the cache: may throw to refuse it (a device that
-// cannot hold them, checked before minutes of generation).
-using BeforeGeneration = std::function<void(const ObjectData& model, uint64_t stipples)>;
+// Loads every model once and generates stipples (a progress bar for big models on a terminal): the two
+// steps below. A scene from a file prefixes loader errors with "<scene>: objects[i].model: " and an
+// unknown animation with "<scene>: objects[i].animation.name: ".
+SceneContent load_scene_content(const Scene& scene);
 
-// Loads every model once and generates stipples (a progress bar for big models on a terminal).
-// A scene from a file prefixes loader errors with "<scene>: objects[i].model: " and an unknown
-// animation with "<scene>: objects[i].animation.name: ".
-SceneContent load_scene_content(const Scene& scene, const BeforeGeneration& before_generation = {});
+// The first step: every model loaded, no stipples yet. What needs only the models (the options that
+// depend on them, whether a device can hold the stipples: planned_scene_stipples) is checked before the
+// second, which may take minutes.
+SceneContent load_scene_models(const Scene& scene);
+// The second: every object's stipples generated or read from the cache (objects of one model and equal
+// generation parameters share them).
+void make_scene_stipples(const Scene& scene, SceneContent& content);
+// The count of stipples make_scene_stipples makes for each object, counted without making them.
+std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneContent& content);
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.
