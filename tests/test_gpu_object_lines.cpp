@@ -323,19 +323,19 @@ TEST_F(ObjectLines, CreasesAreACubesTwelveEdgesAndNoneOnASphere) {
     EXPECT_EQ(ink, 0u);
 }
 
-// Creases are interior lines, drawn crease_width wide (thinner than the outline by default, as illustrators
-// draw them); contours and borders keep silhouette_width. Both thin alike with the object's size (§3.1).
+// Creases are interior lines, drawn crease_weight times the outline's width (half by default, as
+// illustrators draw them); contours and borders keep silhouette_width. Both thin alike with the object's size (§3.1).
 TEST_F(ObjectLines, CreasesHaveTheirOwnWidth) {
     test::Prepared cube = test::prepare(triangle_soup(test::make_box(glm::vec3(1.0f))), line_params());
     struct Drawn {
         double ink = 0.0;
         float outline = 0.0f, crease = 0.0f;  // the widths drawn
     };
-    const auto draw = [&](void (*on)(ObjectParams&), float crease_width, bool thinning, float distance,
+    const auto draw = [&](void (*on)(ObjectParams&), float crease_weight, bool thinning, float distance,
                           float outline_width = 6.0f) {
         ObjectParams params = line_params();
         params.silhouette_width = outline_width;
-        params.crease_width = crease_width;
+        params.crease_weight = crease_weight;
         params.silhouette_thinning = thinning;
         Lines lines = render_lines(*context, cube, params, on, {320, 320}, 30.0f, 25.0f, distance);
         Drawn d;
@@ -346,18 +346,18 @@ TEST_F(ObjectLines, CreasesHaveTheirOwnWidth) {
         return d;
     };
     // Every visible edge of the cube is a crease (9 of them).
-    const Drawn thin = draw(set_creases, 2.0f, false, 1.0f), wide = draw(set_creases, 6.0f, false, 1.0f);
-    const Drawn outline_thin = draw(set_contours, 2.0f, false, 1.0f), outline_wide = draw(set_contours, 6.0f, false, 1.0f);
+    const Drawn thin = draw(set_creases, 1.0f / 3.0f, false, 1.0f), wide = draw(set_creases, 1.0f, false, 1.0f);
+    const Drawn outline_thin = draw(set_contours, 1.0f / 3.0f, false, 1.0f), outline_wide = draw(set_contours, 1.0f, false, 1.0f);
     std::printf("cube's creases 2 px wide: %.0f ink px, 6 px: %.0f; its contours (6 px) beside creases of 2 and 6 px: "
                 "%.0f / %.0f\n", thin.ink, wide.ink, outline_thin.ink, outline_wide.ink);
-    EXPECT_EQ(thin.crease, 2.0f);
+    EXPECT_FLOAT_EQ(thin.crease, 2.0f);
     EXPECT_EQ(thin.outline, 6.0f);
     ASSERT_GT(thin.ink, 500.0);
     // A little under 3: the lines cross stipples already black, and the wider ones overlap more at corners.
     EXPECT_NEAR(wide.ink / thin.ink, 3.0, 0.4) << "the creases' ink follows their width";
-    EXPECT_EQ(outline_thin.ink, outline_wide.ink) << "the crease width changed the outline";
+    EXPECT_EQ(outline_thin.ink, outline_wide.ink) << "the crease weight changed the outline";
     // Thinned: both by the same factor (down to a pixel; wide enough here to stay above it).
-    const Drawn thinned = draw(set_creases, 32.0f, true, 1.0f, 64.0f);
+    const Drawn thinned = draw(set_creases, 0.5f, true, 1.0f, 64.0f);
     std::printf("thinned at 320 x 320: outline %.2f px, creases %.2f px\n", thinned.outline, thinned.crease);
     EXPECT_LT(thinned.outline, 64.0f) << "the outline did not thin";
     EXPECT_GT(thinned.crease, 1.0f);

@@ -51,7 +51,7 @@ struct ExportOptions {
     MergeOptions merge;         // welding and overlap tolerances, in pixels
 };
 
-// Creases have a layer of their own, drawn with a pen of their own width (ObjectParams::crease_width).
+// Creases have a layer of their own, drawn with a pen of their own width (ObjectParams::crease_weight).
 enum class LayerKind { Stipples, Lines, Creases };
 
 struct PlotDot {

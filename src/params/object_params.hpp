@@ -60,7 +60,8 @@ struct ObjectParams {
     // Lines, each kind its own switch (§3.1 and beyond the paper).
     bool silhouette_lines = false;    // §3.1 Raskar-Cohen: back-face edges as wide lines (image space)
     bool toon = false;                // §3.1 toon N.E ramp: surfaces darken edge-on, stipples fade there
-    float silhouette_width = 4.0f;    // line width in pixels at the object's reference size
+    float silhouette_width = 4.0f;    // outline width in pixels at the object's reference size (silhouette,
+                                      // contour and border lines; creases crease_weight times it)
     bool silhouette_thinning = true;  // lines thin as the projected bounding sphere shrinks (Fig. 8)
     float toon_sharpness = 4.0f;      // steepness of the toon ramps (surface darkening, stipple fade)
     // Object-space lines from the mesh's edges (beyond the paper), hidden parts removed.
@@ -68,7 +69,7 @@ struct ObjectParams {
     bool borders = false;             // edges of one polygon (the rims of open surfaces)
     bool creases = false;             // edges whose polygons' normals differ by more than crease_angle
     float crease_angle = 60.0f;       // degrees
-    float crease_width = 2.0f;        // crease lines' width in pixels at the reference size (interior lines
+    float crease_weight = 0.5f;       // crease lines' width as a fraction of silhouette_width (interior lines
                                       // thinner than the outline, as illustrators draw them)
     // Open surfaces: polygons facing away, seen through an opening, get stipples with the flipped normal.
     bool two_sided = false;

@@ -112,9 +112,9 @@ const ParamSpec kTable[] = {
     {"toon", "toon", "toon", kLines, "the toon N.E ramp: surfaces darken where seen edge-on, stipples fade there",
      ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
      [](const P& p) { return double(p.toon); }, [](P& p, double v) { p.toon = v != 0.0; }},
-    {"silhouette_width", "silhouette-width", "line width px", kLines,
-     "line width in pixels at the object's reference size: silhouette, contour and border lines (creases have "
-     "crease_width)", ParamType::Float, 1.0, 64.0, false, {},
+    {"silhouette_width", "silhouette-width", "outline width px", kLines,
+     "line width in pixels at the object's reference size: silhouette, contour and border lines (creases are "
+     "crease_weight times as wide)", ParamType::Float, 1.0, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.silhouette_width); },
      [](P& p, double v) { p.silhouette_width = float(v); }},
     {"silhouette_thinning", "thinning", "thinning", kLines,
@@ -143,11 +143,11 @@ const ParamSpec kTable[] = {
      "the dihedral angle in degrees above which an edge is a crease", ParamType::Float, 0.0, 180.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.crease_angle); },
      [](P& p, double v) { p.crease_angle = float(v); }},
-    {"crease_width", "crease-width", "crease width px", kLines,
-     "crease lines' width in pixels at the object's reference size (interior lines, thinner than the outline's "
-     "silhouette_width by default), thinned alike",
-     ParamType::Float, 1.0, 64.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
-     [](const P& p) { return double(p.crease_width); }, [](P& p, double v) { p.crease_width = float(v); }},
+    {"crease_weight", "crease-weight", "crease weight", kLines,
+     "crease lines' width as a fraction of silhouette_width: interior lines thinner than the outline, as "
+     "illustrators draw them (thinned alike, down to a pixel)",
+     ParamType::Float, 0.1, 4.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
+     [](const P& p) { return double(p.crease_weight); }, [](P& p, double v) { p.crease_weight = float(v); }},
     {"silhouette", "silhouette", "silhouette", kLines,
      "the old single switch: none, lines (silhouette lines), toon, or both; sets silhouette_lines and toon",
      ParamType::Choice, 0, 0, false, kSilhouetteNames, ParamEffect::Frame, ParamWidget::Hidden, true,

@@ -396,7 +396,7 @@ LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, fl
         const float thinned = formulas::silhouette_line_width(user_width, projected_radius, object.params.silhouette_thinning);
         return std::min(thinned * view.detail_scale, max_width);
     };
-    return {width(object.params.silhouette_width), width(object.params.crease_width)};
+    return {width(object.params.silhouette_width), width(object.params.silhouette_width * object.params.crease_weight)};
 }
 
 }  // namespace stipple
