@@ -60,6 +60,9 @@ STIPPLE_CONST uint kSplatIterationBudget = 32768;
 STIPPLE_CONST uint kSplatRingFactor = 32;
 STIPPLE_CONST uint kSplatRingCap = 2048;
 STIPPLE_CONST float kSplatMaxSide = 100.0f;
+// Stipples of this size in pixels and below are square points; above, round dots (draws_round_points), and
+// square ones enlarged beyond it become discs (enlarged_square_extent).
+STIPPLE_CONST float kRoundPointsAbovePx = 2.5f;
 
 // Specialisation constants (variants without copied shader files).
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer

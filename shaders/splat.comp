@@ -144,9 +144,10 @@ uint optical_depth_units(float intensity) {
 
 // `fraction`: the stipple's intensity as the paper has it (stipple_intensity), which the visible list
 // records for vector output; `intensity` and `side`: the dot drawn (a round fractional one is smaller and
-// of full ink, fractional_round_dot). Returns whether the dot lies astride the outline (some of its pixels
+// of full ink, fractional_round_dot), a disc of diameter `side` where `round_dot` (round points, and square
+// ones enlarged into discs: enlarged_square_extent). Returns whether the dot lies astride the outline (some of its pixels
 // have no surface): outside the ring pass its lost pixels are left to that pass, which inks only them.
-bool splat(uint index, float fraction, float intensity, bool full, float side, float scale, mat4 model_view_proj,
+bool splat(uint index, float fraction, float intensity, bool full, float side, bool round_dot, float scale, mat4 model_view_proj,
            PolygonFrame polygon, SplatConstants c, float depth_pull) {
     if (kCountDrawn && !kRingPass) {  // drawn = survived the density cut, as the vertex path counts it
         atomicAdd(counters.drawn, 1u);
@@ -161,7 +162,7 @@ bool splat(uint index, float fraction, float intensity, bool full, float side, f
     vec2 window = vec2(0.5 * (ndc.x + 1.0) * size.x, 0.5 * (1.0 - ndc.y) * size.y);
     ivec2 lo = max(ivec2(ceil(window - 0.5 * side - 0.5)), ivec2(0));  // pixel centres inside the square
     ivec2 hi = min(ivec2(floor(window + 0.5 * side - 0.5)), ivec2(size) - 1);
-    const bool round_points = kRoundPoints;
+    const bool round_points = kRoundPoints || round_dot;
     // Print detail (kWholeDot: FrameView::detail_scale > 1): a stipple is a disc many pixels wide while the depth pass's
     // polygon offset is set for one-pixel points, so on a sloped surface half the disc would fall behind
     // its own surface. The disc is one dot on the page: hidden or not as a whole, by its centre's pixel;
@@ -256,9 +257,12 @@ void main() {
     // behind its own surface, the PNG reading 0.8 of the SVG's ink).
     float depth_pull = 0.0;
     vec2 depth_slope = vec2(0.0);
+    // Square dots enlarged beyond kRoundPointsAbovePx are discs of their area (enlarged_square_extent).
+    const bool whole_round = kRoundPoints || enlarged_square_is_round(side);
+    const float whole_extent = kRoundPoints ? side : enlarged_square_extent(side);
     if (kRoundPoints || side > point_size) {
         depth_slope = window_depth_slope(polygon, model_view_proj, frame.viewport.xy);
-        depth_pull = large_dot_depth_pull(depth_slope, side);
+        depth_pull = large_dot_depth_pull(depth_slope, whole_extent);
     }
     SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0), frame.ink_color.rgb,
                                       frame.paper_color.rgb);
@@ -275,7 +279,7 @@ void main() {
     if (sizes_vary) whole_end = begin;
     bool astride = false;  // a dot of the run lies astride the outline (see splat)
     for (uint k = begin; k < whole_end; ++k)
-        if (splat(first + k, 1.0f, 1.0f, true, side, side / point_size, model_view_proj, polygon, c, depth_pull))
+        if (splat(first + k, 1.0f, 1.0f, true, whole_extent, whole_round, side / point_size, model_view_proj, polygon, c, depth_pull))
             astride = true;
     // A polygon whose density changes across it: its corners and terms once for all of its stipples (only
     // in the variants that draw such polygons: kVaryingDensity).
@@ -299,11 +303,12 @@ void main() {
         bool lost;
         if (kRoundPoints) {  // a smaller dot, of full ink where it is large enough to show its area
             vec2 dot_now = fractional_round_dot(fraction, side_here);
-            lost = splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, side_here / point_size, model_view_proj,
+            lost = splat(first + k, fraction, dot_now.y, dot_now.y >= 1.0f, dot_now.x, true, side_here / point_size, model_view_proj,
                          polygon, c, large_dot_depth_pull(depth_slope, dot_now.x));
         } else {
-            lost = splat(first + k, fraction, fraction, false, side_here, side_here / point_size, model_view_proj, polygon, c,
-                         sizes_vary ? large_dot_depth_pull(depth_slope, side_here) : depth_pull);
+            float extent = enlarged_square_extent(side_here);
+            lost = splat(first + k, fraction, fraction, false, extent, enlarged_square_is_round(side_here), side_here / point_size,
+                         model_view_proj, polygon, c, sizes_vary ? large_dot_depth_pull(depth_slope, extent) : depth_pull);
         }
         if (lost) astride = true;
     }

@@ -34,7 +34,7 @@ layout(set = 0, binding = kBindingDebug, std430) buffer Debug {
     uint drawn_mask[];
 };
 
-layout(location = 0) out float out_intensity;
+layout(location = 0) out float out_intensity;  // negative: a square dot enlarged into a disc (stipple.frag)
 
 // The density at this stipple: its polygon's, but on a polygon large on screen whose density changes
 // across it, where the stipple lies (stipple_density_here), for the stipples whose index that decides and,
@@ -94,6 +94,10 @@ void main() {
         vec2 dot_now = fractional_round_dot(intensity, gl_PointSize);
         gl_PointSize = dot_now.x;
         out_intensity = dot_now.y;
+    }
+    if (!kRoundPoints && enlarged_square_is_round(gl_PointSize)) {  // a disc of the square's area
+        gl_PointSize = enlarged_square_extent(gl_PointSize);
+        out_intensity = -intensity;  // stipple.frag: negative, a disc
     }
     if (kCountDrawn) {
         atomicAdd(counters.drawn, 1u);

@@ -169,6 +169,16 @@ STIPPLE_FN float large_dot_depth_pull(vec2 depth_slope, float side) {
     return max(across - kDepthBiasSlopeFactor * max(abs(depth_slope.x), abs(depth_slope.y)), 0.0f);
 }
 
+// Beyond the paper: a square dot (points of kRoundPointsAbovePx and below) enlarged beyond that size where the
+// candidates cannot carry the density (stipple_scale) is drawn as a disc of the same area, as round points
+// are (close up the 6-px squares of a coarse mesh read as blocks, until 2026-12-05). Its diameter, or the
+// side itself where it stays square; enlarged_square_is_round says which.
+STIPPLE_CONST float kSquareToDiscDiameter = 1.1283792f;  // 2 / sqrt(pi): a disc of this diameter inks side^2
+STIPPLE_FN bool enlarged_square_is_round(float side) { return side > kRoundPointsAbovePx; }
+STIPPLE_FN float enlarged_square_extent(float side) {
+    return enlarged_square_is_round(side) ? side * kSquareToDiscDiameter : side;
+}
+
 // The side of a polygon's dots on the splat, in pixels: the point size, larger where the candidates cannot
 // carry the density (stipple_scale), and at most kSplatMaxSide (shared_types.h).
 STIPPLE_FN float splat_dot_side(float point_size, float density, float candidates) {

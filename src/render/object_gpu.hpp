@@ -159,12 +159,12 @@ void ensure_line_buffers(ObjectGpu& object);
 // A byte count as the refusals print it: "12.3 MiB".
 std::string mebibytes(uint64_t bytes);
 
-// Stipples of this size in pixels and below are square points (the rasteriser's, and the splat's
-// copy of them); above, round dots.
-inline constexpr float kRoundPointsAbovePx = 2.5f;
-inline bool draws_round_points(float point_size) { return point_size > kRoundPointsAbovePx; }
+// Stipples of kRoundPointsAbovePx (shared_types.h) and below are square points (the rasteriser's, and the
+// splat's copy of them); above, round dots.
+inline bool draws_round_points(float point_size) { return point_size > gpu::kRoundPointsAbovePx; }
 // The radius of the disc with a stipple's ink area: a square point of side s inks s^2, so r = s / sqrt(pi);
-// a round dot is a disc of diameter s. Vector output draws stipples as discs of this radius.
+// a round dot is a disc of diameter s. Vector output draws stipples as discs of this radius (and square
+// dots enlarged into discs are drawn with this area, enlarged_square_extent).
 inline float stipple_ink_radius(float point_size) {
     return draws_round_points(point_size) ? 0.5f * point_size : point_size / 1.7724539f;
 }
