@@ -81,12 +81,23 @@ int main(int argc, char** argv) {
     cylinder.rings = 400;
     cylinder.segments = 256;
     int frames = 60;
+    const char* usage =
+        "usage: animation_speed [FOX.glb] [--rings R --segments S] [--frames N]\n"
+        "  times loading, posing and the GPU deformation of the fox (default ../shared/models/fox.glb) and of a\n"
+        "  skinned cylinder of R x S vertices (default 400 x 256); prints figures only\n";
     for (int i = 1; i < argc; ++i) {
         const bool value = i + 1 < argc;
+        if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+            std::printf("%s", usage);
+            return 0;
+        }
         if (!std::strcmp(argv[i], "--rings") && value) cylinder.rings = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--segments") && value) cylinder.segments = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--frames") && value) frames = std::max(2, std::atoi(argv[++i]));
-        else fox = argv[i];
+        else if (argv[i][0] == '-') {
+            std::fprintf(stderr, "animation_speed: unknown or incomplete option '%s'\n%s", argv[i], usage);
+            return 2;
+        } else fox = argv[i];
     }
     try {
         gpu::ContextOptions options;

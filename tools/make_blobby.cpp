@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <sstream>
@@ -467,8 +468,13 @@ int run(const std::string& out_path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: make_blobby OUT.glb\n");
+    const char* usage = "usage: make_blobby OUT.glb\n  writes the default scene's model, a blobby metaball surface like the paper's Figure 1, as glTF\n";
+    if (argc == 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))) {
+        std::printf("%s", usage);
+        return 0;
+    }
+    if (argc != 2 || argv[1][0] == '-') {
+        std::fprintf(stderr, "%s", usage);
         return 2;
     }
     try {

@@ -170,6 +170,12 @@ int main(int argc, char** argv) {
     std::string out_dir;
     std::vector<size_t> counts;
     for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+            std::printf("usage: plot_order_speed [--compare] [--out DIR] [COUNT ...]   (default: 150000)\n"
+                        "  times the plotter order on COUNT blue-noise dots and prints its travel against the lower\n"
+                        "  bound; --compare also times nanoflann's dynamic index; --out DIR writes a whole plot there\n");
+            return 0;
+        }
         if (std::strcmp(argv[i], "--compare") == 0) compare = true;
         else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) out_dir = argv[++i];
         else if (const unsigned long long n = std::strtoull(argv[i], nullptr, 10); n > 0) counts.push_back(n);
