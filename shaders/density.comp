@@ -109,7 +109,7 @@ void list_gradient(bool large, uint t) {
 // subgroup (listing nothing where `listing` is false), with the same `to_varied` (the list: VaryingList).
 void list_work_items(bool listing, bool to_varied, uint first, float candidates, float most) {
     uint drawn_here = listing ? drawn_stipple_count(most, uint(candidates)) : 0u;
-    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, most, candidates));
+    uint run = splat_run_length(drawn_here, splat_dot_side(object.shading.y, most, candidates), object.shading.y);
     uint items = (drawn_here + run - 1u) / run;
     uint listed_here = subgroupAdd(items);
     if (listed_here == 0u) return;

@@ -106,10 +106,10 @@ void main() {
     PolygonFrame polygon = polygon_frame(triangle);
     vec3 position = stipple_position(polygon, barycentric);  // survivors only
     gl_Position = object.model_view_proj * vec4(position, 1.0);
-    // Large dots stay on their own slanted surface (large_dot_depth_pull). Only round ones here: pulling the
-    // square ones enlarged where the candidates cannot carry the density too (as the splat does) cost 5% of
+    // Large dots stay on their own slanted surface (large_dot_depth_pull). Only round points' here: pulling the
+    // small dots enlarged where the candidates cannot carry the density too (as the splat does) cost 5% of
     // this pass (the hand and the bunny, every survivor computing the slope under lavapipe's mask), so on a
-    // steep close-up such a square may lose a row of its pixels behind its own surface.
+    // steep close-up such a dot (a disc since 2026-12-05) may lose an edge behind its own surface.
     if (kRoundPoints) {
         vec2 slope = window_depth_slope_at(gl_Position, object.model_view_proj * vec4(polygon.edge_u, 0.0),
                                            object.model_view_proj * vec4(polygon.edge_v, 0.0), frame.viewport.xy);

@@ -195,10 +195,13 @@ STIPPLE_FN uint splat_ring_budget(float side) { return min(kSplatRingFactor * sp
 
 // The splat's work items: a polygon drawing `drawn` stipples of side `side` is cut into runs of this many
 // (kSplatShortRun, kSplatChunk and kSplatIterationBudget in shared_types.h say why). The density pass,
-// the CPU's list and the splat all cut alike.
-STIPPLE_FN uint splat_run_length(uint drawn, float side) {
+// the CPU's list and the splat all cut alike. A square dot enlarged into a disc covers a box of its
+// diameter (enlarged_square_extent), which the object's point size says: round points are drawn at
+// their side.
+STIPPLE_FN uint splat_run_length(uint drawn, float side, float point_size) {
     uint longest = drawn <= kSplatChunk ? kSplatShortRun : kSplatChunk;
-    uint per_dot = splat_box_iterations(side) + splat_ring_budget(side);
+    float extent = point_size > kRoundPointsAbovePx ? side : enlarged_square_extent(side);
+    uint per_dot = splat_box_iterations(extent) + splat_ring_budget(extent);
     return clamp(kSplatIterationBudget / per_dot, kSplatShortRun, longest);
 }
 

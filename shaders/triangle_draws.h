@@ -30,7 +30,7 @@ void work_item_run(uint item, uint t, TriangleDraw draw, uint candidates, float 
     // Larger when owed more; on a polygon whose density changes across it, the largest of its dots
     // (each is drawn at its own, splat.comp).
     side = splat_dot_side(point_size, draw.most, float(candidates));
-    end = min(drawn, begin + splat_run_length(drawn, side));
+    end = min(drawn, begin + splat_run_length(drawn, side, point_size));
 }
 
 #endif

@@ -246,6 +246,16 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
         EXPECT_NE(r.err.find("vector output of 735511 candidate stipples needs a 14.0 MiB list"), std::string::npos) << r.err;
         EXPECT_TRUE(std::filesystem::is_empty(cache)) << "vector output generated before refusing";
     }
+    {
+        // Vector output with --stats holds the objects twice (the screen frame's renderer and the export's)
+        // and the list (about 12 + 12 + 14 MiB here): refused under 30 MiB, which holds one copy and the list.
+        test::ScopedEnv memory("STIPPLE_GPU_MEMORY_LIMIT", "30M");
+        const test::CommandResult r = run_stipple({"render", blobby, "--seed", "424243", "-o", (dir / "never.svg").string(),
+                                                   "--width", "320", "--height", "256", "--stats"});
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_NE(r.err.find("MiB taken by this drawing)"), std::string::npos) << r.err;
+        EXPECT_TRUE(std::filesystem::is_empty(cache)) << "vector output with --stats generated before refusing";
+    }
     nlohmann::json scene = {{"objects", nlohmann::json::array()}};
     for (int i = 0; i < 2; ++i)
         scene["objects"].push_back({{"model", blobby}, {"params", {{"seed", 424243}}}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});

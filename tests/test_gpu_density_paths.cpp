@@ -67,7 +67,7 @@ void expect_splat_work_list(const gpu::Context& context, StippleRenderer& render
         const uint32_t candidates = stipples.first[t + 1] - stipples.first[t];
         uint32_t drawn = formulas::drawn_stipple_count(bounds[t].y, candidates);
         const float side = formulas::splat_dot_side(renderer.params(0).point_size, densities[t], float(candidates));
-        const uint32_t run = formulas::splat_run_length(drawn, side);
+        const uint32_t run = formulas::splat_run_length(drawn, side, renderer.params(0).point_size);
         std::vector<uint32_t>& into = apart && bounds[t].x != bounds[t].y ? expected_varied : expected;
         for (uint32_t k = 0; k < drawn; k += run) into.push_back(stipples.first[t] + k);
     }

@@ -356,6 +356,8 @@ TEST_F(ObjectLines, CreasesHaveTheirOwnWidth) {
     // A little under 3: the lines cross stipples already black, and the wider ones overlap more at corners.
     EXPECT_NEAR(wide.ink / thin.ink, 3.0, 0.4) << "the creases' ink follows their width";
     EXPECT_EQ(outline_thin.ink, outline_wide.ink) << "the crease weight changed the outline";
+    // No crease thinner than a pixel (a weight of 0.1 drew broken dots).
+    EXPECT_FLOAT_EQ(draw(set_creases, 0.1f, false, 1.0f).crease, 1.0f);
     // Thinned: both by the same factor (down to a pixel; wide enough here to stay above it).
     const Drawn thinned = draw(set_creases, 0.5f, true, 1.0f, 64.0f);
     std::printf("thinned at 320 x 320: outline %.2f px, creases %.2f px\n", thinned.outline, thinned.crease);

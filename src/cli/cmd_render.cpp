@@ -288,21 +288,24 @@ int run_render(const std::vector<std::string>& argv) {
         if (args.has("--mask")) fail("--mask needs one frame, and " + why);
         if (repeat > 0) fail("--repeat times one frame, and " + why);
     }
-    // Whether this device can hold the stipples, counted before they are made: the scene's objects together.
-    const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
-    uint64_t planned_bytes = 0;
-    for (size_t i = 0; i < planned.size(); ++i) {
-        planned_bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_bytes);
-        if (vector) check_visible_list_fits(context, planned[i]);
-    }
-    start = std::chrono::steady_clock::now();
-    make_scene_stipples(scene, content);
-    prepare_seconds += seconds_since(start);
-    StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     // A print is drawn by a renderer of its own (app::render_print), and so is vector output
     // (app::export_frame): this one would only hold a second copy of every object's buffers, unless the
     // screen's frame is asked for too (its mask, figures or timings).
     const bool screen_frame = !vector || args.has("--mask") || args.flag("--stats") || repeat > 0;
+    // Whether this device can hold the stipples, counted before they are made: the scene's objects together,
+    // twice where vector output's renderer and the screen's both hold them, and vector output's lists.
+    const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
+    const int copies = vector && screen_frame && !print ? 2 : 1;
+    uint64_t planned_bytes = 0;
+    for (int copy = 0; copy < copies; ++copy)
+        for (size_t i = 0; i < planned.size(); ++i) {
+            planned_bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_bytes);
+            if (vector && copy == 0) planned_bytes += check_visible_list_fits(context, planned[i]);
+        }
+    start = std::chrono::steady_clock::now();
+    make_scene_stipples(scene, content);
+    prepare_seconds += seconds_since(start);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     if (!print && screen_frame) add_scene_objects(renderer, scene, content.objects);
     std::optional<OffscreenTarget> target;
     if (!tiled && !print && screen_frame) target.emplace(context, extent);

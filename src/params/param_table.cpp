@@ -82,7 +82,9 @@ const ParamSpec kTable[] = {
      [](const P& p) { return double(p.de); }, [](P& p, double v) { p.de = float(v); }},
 
     {"point_size", "point-size", "point size px", kDrawing,
-     "stipple diameter in pixels (above 2.5 the dots are round, and a polygon's fractional last dot is smaller rather than fainter)", ParamType::Float, 1.0, 64.0, false, {},
+     "stipple size in pixels: the side of a square dot up to 2.5, above it the diameter of a round one, whose "
+     "polygon's fractional last dot is smaller rather than fainter (square dots enlarged close up beyond 2.5 are "
+     "discs of their area)", ParamType::Float, 1.0, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.point_size); },
      [](P& p, double v) { p.point_size = float(v); }},
     {"density_path", "density-path", "density path", kDrawing,

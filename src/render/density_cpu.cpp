@@ -70,7 +70,7 @@ double run_cpu_density(ObjectGpu& object, const gpu::FrameUniforms& frame, uint3
     if (draws_by_splat(object.params.density_path)) {  // runs of splat_run_length drawn stipples
         uint32_t* items = list + sizeof(gpu::DrawnPolygons) / sizeof(uint32_t);
         for_each_drawing_polygon([&](uint32_t first, uint32_t drawn, float side) {
-            const uint32_t run = formulas::splat_run_length(drawn, side);
+            const uint32_t run = formulas::splat_run_length(drawn, side, point_size);
             for (uint32_t k = 0; k < drawn; k += run) items[count++] = first + k;
         });
         const uint32_t group = gpu::kDensityWorkgroupSize;

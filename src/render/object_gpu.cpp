@@ -71,16 +71,17 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
     const uint64_t free_now = context.device_memory_available();
     const uint64_t available = free_now > planned_before ? free_now - planned_before : 0;
     if (needed > available) {
-        // A scene's objects count together: say what the ones before hold (or will).
+        // A scene's objects count together: say what the ones before hold, or will.
         const uint64_t held = context.bytes_allocated() + planned_before;
-        const std::string in_use = held >= (uint64_t(1) << 20) ? " (" + mebibytes(held) + " in use by this drawing)" : "";
+        const std::string in_use =
+            held >= (uint64_t(1) << 20) ? " (" + mebibytes(held) + (planned_before ? " taken" : " in use") + " by this drawing)" : "";
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need about " +
              mebibytes(needed) + " of GPU memory, and the device has " + mebibytes(available) + " free" + in_use + lower);
     }
     return needed;
 }
 
-void check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
+uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
     const uint64_t bytes = sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * candidates;
     // 20 bytes a candidate where drawing needs 8 (check_object_fits): vector output of 8.4M-16.8M candidates on
     // a device of 128 MiB storage buffers wrote past the descriptor's range.
@@ -88,6 +89,7 @@ void check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
         fail("vector output of " + std::to_string(candidates) + " candidate stipples needs a " + mebibytes(bytes) +
              " list, and this device's largest buffer is " + mebibytes(context.max_storage_buffer_bytes()) +
              ": lower --dmax or --max-stipples, or write a PNG");
+    return bytes;
 }
 
 namespace {
@@ -396,7 +398,9 @@ LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, fl
         const float thinned = formulas::silhouette_line_width(user_width, projected_radius, object.params.silhouette_thinning);
         return std::min(thinned * view.detail_scale, max_width);
     };
-    return {width(object.params.silhouette_width), width(object.params.silhouette_width * object.params.crease_weight)};
+    // Creases no thinner than a pixel, the floor thinning keeps (a weight of 0.1 drew them in broken dots).
+    const float crease = std::max(1.0f, object.params.silhouette_width * object.params.crease_weight);
+    return {width(object.params.silhouette_width), width(crease)};
 }
 
 }  // namespace stipple

@@ -139,8 +139,8 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
 // bytes of a scene's objects checked before this one and not yet allocated. Returns the bytes it needs.
 uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0);
 // Vector output's list of visible stipples (20 bytes a candidate) must fit one storage buffer: refused in
-// one line otherwise.
-void check_visible_list_fits(const gpu::Context& context, uint64_t candidates);
+// one line otherwise. Returns its bytes.
+uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates);
 
 // `vec3_texels`: the texel views' layout, as the renderer's pipelines read it (kSpecMeshVec3Texels).
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,

@@ -111,14 +111,17 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             if (sizes_vary || (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y))
                 here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
                                                       b, c, params);
-            const float side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
+            // A square dot enlarged beyond kRoundPointsAbovePx is a disc of its area (enlarged_square_extent).
+            const float square_side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
+            const bool disc = round || formulas::enlarged_square_is_round(square_side);
+            const float side = round ? square_side : formulas::enlarged_square_extent(square_side);
             const float intensity = formulas::stipple_intensity(here, float(k));
             if (intensity <= 0.0f) continue;
             const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
             if (clip.w <= 0.0f) continue;
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
             const glm::vec2 window(0.5f * (ndc.x + 1.0f) * float(width), 0.5f * (1.0f - ndc.y) * float(height));
-            // The splat's pixels: centres inside the square (or the disc) of side point_size.
+            // The splat's pixels: centres inside the square (or the disc) of side `side`.
             const glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(window - 0.5f * side - 0.5f)), glm::ivec2(0));
             const glm::ivec2 hi = glm::min(glm::ivec2(glm::floor(window + 0.5f * side - 0.5f)), glm::ivec2(width - 1, height - 1));
             double dot_hidden = 0.0;
@@ -126,7 +129,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x) {
                     const glm::vec2 d = (glm::vec2(x, y) + 0.5f - window) / side;
-                    if (round && glm::dot(d, d) > 0.25f) continue;
+                    if (disc && glm::dot(d, d) > 0.25f) continue;
                     const float surface = rendered.depth[size_t(y) * size_t(width) + size_t(x)];
                     if (surface >= 1.0f)
                         off_surface += intensity;
