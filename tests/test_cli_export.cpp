@@ -221,6 +221,25 @@ TEST(CliExport, AHiddenObjectContributesNoDot) {
     EXPECT_EQ(inner, 0u);
 }
 
+// --stats with vector output prints two counts: the stipples the density drew and the plot's dots, those of
+// them left visible by hidden-stipple removal; each says which it is (they differed without a word).
+TEST(CliExport, StatsSayWhichCountIsWhich) {
+    const auto dir = test::temp_dir("cli-export-stats");
+    const std::string said = run_ok({"render", "-o", (dir / "x.svg").string(), "--width", "320", "--height", "256", "--stats"});
+    const std::string drawn_label = "drawn stipples:     ", plot_label = "plot: ";
+    const size_t drawn_at = said.find(drawn_label), plot_at = said.find(plot_label);
+    ASSERT_NE(drawn_at, std::string::npos) << said;
+    ASSERT_NE(plot_at, std::string::npos) << said;
+    const long drawn = std::stol(said.substr(drawn_at + drawn_label.size()));
+    const long dots = std::stol(said.substr(plot_at + plot_label.size()));
+    std::printf("drawn %ld, plotted %ld\n", drawn, dots);
+    EXPECT_NE(said.find("(by the density, before hidden-stipple removal; the plot's dots are those visible)"), std::string::npos) << said;
+    EXPECT_GT(dots, 0.5 * double(drawn));
+    EXPECT_LT(dots, drawn) << "the default scene hides some of the stipples the density draws";
+    const std::string png = run_ok({"render", "-o", (dir / "x.png").string(), "--width", "320", "--height", "256", "--stats"});
+    EXPECT_EQ(png.find("before hidden-stipple removal"), std::string::npos) << "a PNG has no plot to tell apart";
+}
+
 // --show-travel (the README's plot-order picture): the SVG gains the pen's path with the pen up, one
 // move to each dot, in a plain group after the layers; without it the file has none; PDF refuses it.
 TEST(CliExport, ShowTravelAddsThePenUpMovesToTheSvg) {

@@ -383,7 +383,9 @@ int run_render(const std::vector<std::string>& argv) {
                         stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
                         depth_cull_name(*depth_cull));
         std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
-        std::printf("drawn stipples:     %lld\n", (long long)stats.drawn_stipples);
+        // Vector output's plot line counts the dots left after hidden-stipple removal: say which this is.
+        std::printf("drawn stipples:     %lld%s\n", (long long)stats.drawn_stipples,
+                    vector ? " (by the density, before hidden-stipple removal; the plot's dots are those visible)" : "");
         std::string paths;
         for (const SceneObject& o : scene.objects)
             if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
