@@ -258,8 +258,8 @@ void main() {
     float depth_pull = 0.0;
     vec2 depth_slope = vec2(0.0);
     // Square dots enlarged beyond kRoundPointsAbovePx are discs of their area (enlarged_square_extent).
-    const bool whole_round = kRoundPoints || enlarged_square_is_round(side);
-    const float whole_extent = kRoundPoints ? side : enlarged_square_extent(side);
+    const bool whole_round = drawn_dot_is_round(kRoundPoints, side);
+    const float whole_extent = drawn_dot_extent(kRoundPoints, side);
     if (kRoundPoints || side > point_size) {
         depth_slope = window_depth_slope(polygon, model_view_proj, frame.viewport.xy);
         depth_pull = large_dot_depth_pull(depth_slope, whole_extent);

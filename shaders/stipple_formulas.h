@@ -178,6 +178,10 @@ STIPPLE_FN bool enlarged_square_is_round(float side) { return side > kRoundPoint
 STIPPLE_FN float enlarged_square_extent(float side) {
     return enlarged_square_is_round(side) ? side * kSquareToDiscDiameter : side;
 }
+// A dot of side `side` as drawn: a disc where the object draws round points (`round_points`) or the square
+// is enlarged into one, and the width of the box it covers.
+STIPPLE_FN bool drawn_dot_is_round(bool round_points, float side) { return round_points || enlarged_square_is_round(side); }
+STIPPLE_FN float drawn_dot_extent(bool round_points, float side) { return round_points ? side : enlarged_square_extent(side); }
 
 // The side of a polygon's dots on the splat, in pixels: the point size, larger where the candidates cannot
 // carry the density (stipple_scale), and at most kSplatMaxSide (shared_types.h).
@@ -200,7 +204,7 @@ STIPPLE_FN uint splat_ring_budget(float side) { return min(kSplatRingFactor * sp
 // their side.
 STIPPLE_FN uint splat_run_length(uint drawn, float side, float point_size) {
     uint longest = drawn <= kSplatChunk ? kSplatShortRun : kSplatChunk;
-    float extent = point_size > kRoundPointsAbovePx ? side : enlarged_square_extent(side);
+    float extent = drawn_dot_extent(point_size > kRoundPointsAbovePx, side);
     uint per_dot = splat_box_iterations(extent) + splat_ring_budget(extent);
     return clamp(kSplatIterationBudget / per_dot, kSplatShortRun, longest);
 }

@@ -115,7 +115,7 @@ FinishedWork BackgroundWork::execute(const Job& job) {
     work.params = job.params;
     work.data = job.kind == FinishedWork::Kind::Loaded ? load_model_data(job.path) : job.model;
     // A count this device cannot hold is refused before the stipples are made (minutes at a high D_max).
-    check_object_fits(context_, *work.data.mesh, planned_stipple_count(work.data, job.params.generation));
+    check_model_fits(context_, work.data, job.params.generation);
     work.data.stipples = make_stipples(work.data, job.params.generation);
     work.upload = std::make_unique<ObjectUpload>(
         prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed,

@@ -103,7 +103,7 @@ ObjectParams LiveScene::params_for_new_object() const {
 bool LiveScene::regenerate_if_changed(size_t object) {
     if (!generation_changed(object)) return false;
     const GenerationParams wanted = scene_.objects.at(object).params.generation;
-    check_object_fits(renderer_.context(), *data_[object].mesh, planned_stipple_count(data_[object], wanted));
+    check_model_fits(renderer_.context(), data_[object], wanted);
     auto stipples = make_stipples(data_[object], wanted);
     apply_stipples(ids_[object], wanted, stipples,
                    prepare_object_upload(renderer_.context(), *data_[object].mesh, *stipples, wanted.seed,
@@ -115,7 +115,7 @@ void LiveScene::add_model(const std::string& path) {
     if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
     const ObjectParams params = params_for_new_object();
     ObjectData data = load_model_data(path);
-    check_object_fits(renderer_.context(), *data.mesh, planned_stipple_count(data, params.generation));
+    check_model_fits(renderer_.context(), data, params.generation);
     data.stipples = make_stipples(data, params.generation);
     const ObjectUpload upload =
         prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed, data.motion);

@@ -241,7 +241,7 @@ int run_tone(const std::vector<std::string>& argv) {
     const bool several = seeds.size() > 1;
     std::vector<ToneSurvey> ons, offs;
     const ObjectData model = load_model_data(path);
-    check_object_fits(context, *model.mesh, planned_stipple_count(model, params.generation));  // before generating
+    check_model_fits(context, model, params.generation);  // before generating
     for (size_t k = 0; k < seeds.size(); ++k) {
         params.generation.seed = seeds[k];
         ObjectData object = model;

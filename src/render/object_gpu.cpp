@@ -81,6 +81,11 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
     return needed;
 }
 
+uint64_t check_model_fits(const gpu::Context& context, const ObjectData& model, const GenerationParams& generation,
+                          uint64_t planned_before) {
+    return check_object_fits(context, *model.mesh, planned_stipple_count(model, generation), planned_before);
+}
+
 uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
     const uint64_t bytes = sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * candidates;
     // 20 bytes a candidate where drawing needs 8 (check_object_fits): vector output of 8.4M-16.8M candidates on

@@ -17,6 +17,7 @@
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
 #include "shared_types.h"
+#include "stipple/object_data.hpp"
 #include "stipple/stipple_set.hpp"
 
 namespace stipple {
@@ -138,6 +139,10 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
 // failed allocation half way, a lost device or minutes of generation for nothing. `planned_before`: the
 // bytes of a scene's objects checked before this one and not yet allocated. Returns the bytes it needs.
 uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0);
+// check_object_fits for the stipples make_stipples would make for `model` (planned_stipple_count), before
+// they are made.
+uint64_t check_model_fits(const gpu::Context& context, const ObjectData& model, const GenerationParams& generation,
+                          uint64_t planned_before = 0);
 // Vector output's list of visible stipples (20 bytes a candidate) must fit one storage buffer: refused in
 // one line otherwise. Returns its bytes.
 uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates);

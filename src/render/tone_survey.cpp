@@ -113,8 +113,8 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
                                                       b, c, params);
             // A square dot enlarged beyond kRoundPointsAbovePx is a disc of its area (enlarged_square_extent).
             const float square_side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
-            const bool disc = round || formulas::enlarged_square_is_round(square_side);
-            const float side = round ? square_side : formulas::enlarged_square_extent(square_side);
+            const bool disc = formulas::drawn_dot_is_round(round, square_side);
+            const float side = formulas::drawn_dot_extent(round, square_side);
             const float intensity = formulas::stipple_intensity(here, float(k));
             if (intensity <= 0.0f) continue;
             const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);

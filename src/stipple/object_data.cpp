@@ -74,17 +74,22 @@ std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const Generati
     return std::make_shared<const StippleSet>(std::move(set));
 }
 
+namespace {
+
+// An animated model's stretch headroom per triangle (generate_stipples); empty for a static one.
+std::span<const float> stretch_headroom(const ObjectData& model) {
+    return model.motion ? std::span<const float>(model.motion.headroom->per_triangle) : std::span<const float>();
+}
+
+}  // namespace
+
 std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const GenerationParams& generation,
                                                 StippleSource source) {
-    std::span<const float> headroom;
-    if (model.motion) headroom = model.motion.headroom->per_triangle;
-    return make_stipples(*model.mesh, generation, source, headroom);
+    return make_stipples(*model.mesh, generation, source, stretch_headroom(model));
 }
 
 uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& generation) {
-    std::span<const float> headroom;
-    if (model.motion) headroom = model.motion.headroom->per_triangle;
-    return planned_stipple_count(*model.mesh, generation, headroom);
+    return planned_stipple_count(*model.mesh, generation, stretch_headroom(model));
 }
 
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
