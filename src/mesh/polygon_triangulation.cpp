@@ -109,7 +109,9 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
     const glm::dvec2 extent = glm::max(hi - lo, glm::dvec2(1e-300));
     const double aspect = extent.x / extent.y;
     const auto cells_along = [&](double share) {
-        return size_t(std::clamp(std::ceil(std::sqrt(double(reflex_count) * share)), 1.0, double(std::max<size_t>(reflex_count, 1))));
+        const double cells = std::ceil(std::sqrt(double(reflex_count) * share));
+        // NaN (an infinite extent: inf / inf) or under one: one cell (converting NaN to a size is undefined).
+        return cells >= 1.0 ? size_t(std::min(cells, double(std::max<size_t>(reflex_count, 1)))) : size_t(1);
     };
     const size_t nx = cells_along(aspect), ny = cells_along(1.0 / aspect);
     const glm::dvec2 scale = glm::dvec2(double(nx), double(ny)) / extent;
