@@ -96,6 +96,25 @@ TEST(CliView, ScriptScreenshotNotWrittenFailsTheRun) {
     EXPECT_NE(session.err().find("/dev/null/shot.png: cannot write PNG"), std::string::npos) << session.err();
 }
 
+// A model too big for the device is refused before its stipples are made, as render refuses it: the viewer
+// made them first (minutes for a large model at a high density) and refused them after.
+TEST(CliView, AModelTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
+    if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
+    auto dir = test::temp_dir("cli-view-refused-before-generation");
+    const auto cache = dir / "cache";
+    std::filesystem::create_directories(cache);
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x(180)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    // A seed no other test uses: the cache cannot hold these stipples from before.
+    session.start_viewer({test::source_path("assets/blobby.glb"), "--dmax", "1.5", "--seed", "424244", "--width", "320",
+                          "--height", "256", "--no-panel", "--cache-dir", cache.string()},
+                         {{"STIPPLE_MAX_STORAGE_BUFFER", "1M"}});
+    EXPECT_EQ(session.viewer().wait_exit(120s), 1) << session.out() << session.err();
+    EXPECT_NE(session.err().find("this device's largest is 1.0 MiB: lower --dmax or --max-stipples"), std::string::npos)
+        << session.err();
+    EXPECT_TRUE(std::filesystem::is_empty(cache)) << "the viewer generated the stipples before refusing them";
+}
+
 TEST(CliView, ExportsTheViewAsSvg) {
     if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
     auto dir = test::temp_dir("cli-view-export");

@@ -1,5 +1,6 @@
 #include "app/live_scene.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -9,8 +10,18 @@
 namespace stipple::app {
 
 LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer)
-    : scene_(std::move(scene)), data_(std::move(content.objects)), renderer_(renderer) {
+    : scene_(std::move(scene)), renderer_(renderer) {
     STIPPLE_CHECK(renderer.object_count() == 0, "LiveScene needs an empty renderer");
+    // Models given without their stipples (`stipple view` reads them before its window and device exist) are
+    // checked against this device before they are made: a model too big for it is refused at once, not after
+    // minutes of generation.
+    const bool generated = std::all_of(content.objects.begin(), content.objects.end(),
+                                       [](const ObjectData& o) { return o.stipples != nullptr; });
+    if (!generated) {
+        check_scene_fits(renderer_.context(), scene_, content);
+        make_scene_stipples(scene_, content);
+    }
+    data_ = std::move(content.objects);
     for (const SceneObject& o : scene_.objects) {
         generated_with_.push_back(o.params);
         ids_.push_back(next_id_++);

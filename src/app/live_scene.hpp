@@ -16,7 +16,8 @@ namespace stipple::app {
 
 class LiveScene {
 public:
-    // Adds every object to `renderer`, which must be empty and outlive this.
+    // Adds every object to `renderer`, which must be empty and outlive this. Objects given without stipples
+    // (load_scene_models) are checked against the renderer's device (check_scene_fits) and then generated.
     LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer);
 
     Scene& scene() { return scene_; }

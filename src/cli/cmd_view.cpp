@@ -52,7 +52,8 @@ int run_view(const std::vector<std::string>& argv) {
 
     Scene scene = scene_from_command_line(args, "view");
     viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
-    SceneContent content = load_scene_content(scene);
+    // The stipples are made by the viewer once its device is open, which says first whether it can hold them.
+    SceneContent content = load_scene_models(scene);
     viewer.start_time = read_animation_clock(args, any_animated(content.objects)).time;
     if (scene.source.empty() && scene.objects.size() > 1) {
         // Models given side by side on the command line come in any units; line them up.

@@ -82,6 +82,15 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
     return planned;
 }
 
+uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
+                          uint64_t planned_before) {
+    const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
+    uint64_t bytes = 0;
+    for (size_t i = 0; i < planned.size(); ++i)
+        bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_before + bytes);
+    return bytes;
+}
+
 SceneContent load_scene_content(const Scene& scene) {
     SceneContent content = load_scene_models(scene);
     make_scene_stipples(scene, content);

@@ -35,6 +35,10 @@ SceneContent load_scene_models(const Scene& scene);
 void make_scene_stipples(const Scene& scene, SceneContent& content);
 // The count of stipples make_scene_stipples makes for each object, counted without making them.
 std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneContent& content);
+// Whether `context`'s device holds every object's planned stipples together, beside `planned_before` bytes
+// (check_object_fits, object by object); throws its one-line refusal otherwise. Returns the bytes planned.
+uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
+                          uint64_t planned_before = 0);
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.
