@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "render/density_formulas.hpp"
 #include "render/polygon_constants.hpp"
+#include "render/tone_survey.hpp"
 #include "stipple/barycentric.hpp"
 #include "stipple/object_data.hpp"
 #include "support/anim_files.hpp"
@@ -206,6 +207,43 @@ TEST_F(GpuAnimation, DensityFollowsStretchAndToneHolds) {
     EXPECT_GT(double(covered_after.covered), 1.8 * double(covered_before.covered)) << "the plane doubled on screen";
     EXPECT_GT(ink_before, 0.02);
     EXPECT_NEAR(ink_after, ink_before, 0.10 * ink_before);
+}
+
+// `stipple tone --regimes` tallies an animated object in the pose it drew (tally_tone, add_unshared_dot_ink):
+// until 2026-12-05 it took the rest shape and every candidate as due, and printed for the fox 265k drawn
+// stipples where the GPU drew 207k, and 47% of them hidden.
+TEST_F(GpuAnimation, ToneDiagnosticsTallyThePoseDrawn) {
+    // Stretch: the plane at rest is due half its candidates, stretched all of them (as the GPU's densities).
+    const Loaded plane = load(test::write_rig(anim::rigs::stretching_plane(6), "gpu_anim_tally", "plane"));
+    OffscreenTarget target(*context, {640, 512});
+    ObjectParams plain;
+    plain.shading = plain.extrinsic = plain.intrinsic = false;
+    auto r = renderer();
+    r->add_object(*plane.model.mesh, *plane.stipples, glm::mat4(1.0f), plain, plane.model.motion);
+    const FrameView face_on = test::framed_view(plane.model.bounds, target.extent(), 1.0f, 0.0f, 0.0f);
+    for (double seconds : {0.0, 1.0}) {
+        r->set_animation(0, 0, seconds, /*loop=*/false);
+        target.render(*r, face_on);
+        double gpu = 0.0;
+        for (float d : r->read_densities(0)) gpu += d;
+        const double tallied = tally_tone(r->object(0), r->frame_uniforms()).total().drawn;
+        std::printf("stretching plane at %g s: the GPU's densities sum to %.1f, the tally's drawn %.1f\n", seconds, gpu, tallied);
+        EXPECT_NEAR(tallied, gpu, 0.001 * gpu) << "at " << seconds << " s";
+    }
+    // Place: the cylinder bent a quarter turn; its dots lie on the bent surface, not the straight one.
+    const Loaded cylinder = load(test::write_rig(anim::rigs::bending_cylinder(), "gpu_anim_tally", "cylinder"));
+    auto c = renderer();
+    c->add_object(*cylinder.model.mesh, *cylinder.stipples, glm::mat4(1.0f), ObjectParams{}, cylinder.model.motion);
+    c->set_animation(0, 0, 1.0);  // "Bend": straight at 0 and 2 s, bent at 1 s
+    const RenderedFrame frame = target.render(*c, test::framed_view(cylinder.model.bounds, target.extent()));
+    InkFigures ink;
+    add_unshared_dot_ink(c->object(0), c->frame_uniforms(), cylinder.stipples->positions, frame, ink);
+    const double footprint = ink.unshared_ink + ink.off_surface_ink + ink.hidden_ink;
+    ASSERT_GT(footprint, 1000.0);
+    std::printf("bent cylinder: of the dots' pixels %.3f show, %.3f off the surface, %.3f hidden\n",
+                ink.unshared_ink / footprint, ink.off_surface_ink / footprint, ink.hidden_ink / footprint);
+    EXPECT_LT(ink.off_surface_ink / footprint, 0.03);
+    EXPECT_GT(ink.unshared_ink / footprint, 0.6);
 }
 
 TEST_F(GpuAnimation, CpuDensityPathsAreRefused) {

@@ -5,8 +5,11 @@
 #include <limits>
 #include <cstdio>
 
+#include "anim/deform_cpu.hpp"
 #include "core/error.hpp"
+#include "render/deform_pass.hpp"
 #include "render/density_formulas.hpp"
+#include "render/polygon_constants.hpp"
 
 namespace stipple {
 
@@ -32,22 +35,94 @@ RegimeTally ToneTally::total() const {
     return sum;
 }
 
+namespace {
+
+// The shape the last frame drew: a static object's polygons and corners; an animated object's in the pose
+// the renderer drew (the CPU reference deformation of that pose, anim/deform_cpu.hpp), each polygon due the
+// share of its candidates the stretch rule gives it (stretched_due, as density.comp takes it). Until
+// 2026-12-05 an animated object's regimes and dots were tallied on its rest shape, which its drawing does
+// not have (the fox at 0 s of its first animation: 47% of its drawn dots "hidden" framed).
+class DrawnShape {
+public:
+    explicit DrawnShape(const ObjectGpu& object) : object_(object) {
+        if (!object.animation) return;
+        const anim::Motion& motion = object.animation->motion;
+        Mesh posed;
+        posed.positions = anim::deform_cpu(*motion.model, object.animation->pose).positions;
+        posed.indices = object.polygons.corner_indices;
+        STIPPLE_CHECK(posed.positions.size() == object.polygons.corner_positions.size(), "the pose is not of this mesh");
+        polygons_ = pack_polygon_constants(posed, std::vector<float>(posed.triangle_count(), 0.0f), object.polygons.box_min,
+                                           object.polygons.box_size);
+        for (size_t t = 0; t < polygons_.size(); ++t)  // the selection values (the high half) are the object's
+            polygons_[t].center_z_selection =
+                (polygons_[t].center_z_selection & 0xFFFFu) | (object.polygons.cpu[t].center_z_selection & 0xFFFF0000u);
+        Mesh rest;
+        rest.positions = object.polygons.corner_positions;
+        rest.indices = object.polygons.corner_indices;
+        full_areas_ = animated_full_areas(rest, motion);
+        corners_ = std::move(posed.positions);
+    }
+
+    bool posed() const { return object_.animation != nullptr; }
+    const std::vector<gpu::TriangleInfo>& polygons() const { return posed() ? polygons_ : object_.polygons.cpu; }
+    const std::vector<glm::vec3>& corners() const { return posed() ? corners_ : object_.polygons.corner_positions; }
+    // What the density takes for polygon t, with `candidates` of them: its view and the candidates due.
+    formulas::PolygonView view(size_t t, float candidates) const {
+        formulas::PolygonView view = formulas::polygon_view(polygons()[t], candidates, object_.frame.uniforms);
+        if (posed()) view.due = formulas::stretched_due(candidates, polygons_[t].area, full_areas_[t]);
+        return view;
+    }
+    // The rest area at which all of a polygon's candidates are due, summed: the area the candidates were made for.
+    double full_area() const {
+        double area = 0.0;
+        if (posed())
+            for (float a : full_areas_) area += a;
+        else
+            for (const gpu::TriangleInfo& info : object_.polygons.cpu) area += info.area;
+        return area;
+    }
+    // Candidate k of polygon t (its rest position `rest`) where the drawn shape holds it: the same barycentric
+    // coordinates in the posed triangle.
+    glm::vec3 place(size_t t, const glm::vec3& rest) const {
+        if (!posed()) return rest;
+        const uint32_t* corner = &object_.polygons.corner_indices[3 * t];
+        const std::vector<glm::vec3>& at_rest = object_.polygons.corner_positions;
+        const glm::vec3 a = at_rest[corner[0]], e1 = at_rest[corner[1]] - a, e2 = at_rest[corner[2]] - a, d = rest - a;
+        const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        const float det = d11 * d22 - d12 * d12;
+        if (!(det > 0.0f)) return corners_[corner[0]];
+        const float u = (d22 * glm::dot(d, e1) - d12 * glm::dot(d, e2)) / det;
+        const float v = (d11 * glm::dot(d, e2) - d12 * glm::dot(d, e1)) / det;
+        const glm::vec3 pa = corners_[corner[0]];
+        return pa + u * (corners_[corner[1]] - pa) + v * (corners_[corner[2]] - pa);
+    }
+
+private:
+    const ObjectGpu& object_;
+    std::vector<gpu::TriangleInfo> polygons_;
+    std::vector<glm::vec3> corners_;
+    std::vector<float> full_areas_;
+};
+
+}  // namespace
+
 ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
     const formulas::DensityParams params = formulas::density_params(frame, object.frame.uniforms);
-    const std::vector<gpu::TriangleInfo>& polygons = object.polygons.cpu;
+    const DrawnShape shape(object);
+    const std::vector<gpu::TriangleInfo>& polygons = shape.polygons();
     // The stipples per unit area generation used (its total is within one stipple of it), so that a
-    // polygon's owed ink follows its area, not its rounded candidate count.
-    double area = 0.0;
-    for (const gpu::TriangleInfo& info : polygons) area += info.area;
+    // polygon's owed ink follows its area, not its rounded candidate count; an animated object's per unit
+    // of the area its candidates were made for (its rest area times its stretch headroom).
+    const double area = shape.full_area();
     const double per_area = area > 0.0 ? double(object.geometry.stipple_count) / area : 0.0;
 
     ToneTally tally;
     for (size_t t = 0; t < polygons.size(); ++t) {
         const float candidates = object.geometry.candidates(t);
-        formulas::PolygonView view = formulas::polygon_view(polygons[t], candidates, object.frame.uniforms);
+        formulas::PolygonView view = shape.view(t, candidates);
         const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
         const float drawn = formulas::polygon_density(view, params);
-        view.candidates = float(polygons[t].area * per_area);
+        view.candidates = view.due = float(polygons[t].area * per_area);
         const formulas::PolygonDensity ideal = formulas::polygon_density_terms(view, params);
 
         const bool faces_away = formulas::polygon_faces_away(view.center, view.normal);
@@ -85,10 +160,10 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
     const int width = int(frame.viewport.x), height = int(frame.viewport.y);
     const bool round = (object.frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u;
     double ink = 0.0, off_surface = 0.0, hidden = 0.0, hidden_whole = 0.0;
-    const std::vector<glm::vec3>& corners = object.polygons.corner_positions;
-    for (size_t t = 0; t < object.polygons.cpu.size(); ++t) {
-        const formulas::PolygonView view =
-            formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
+    const DrawnShape shape(object);
+    const std::vector<glm::vec3>& corners = shape.corners();
+    for (size_t t = 0; t < shape.polygons().size(); ++t) {
+        const formulas::PolygonView view = shape.view(t, object.geometry.candidates(t));
         const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
         float density = formulas::selected_density(terms, view.selection);
         const uint32_t candidates = object.geometry.first_stipple[t + 1] - object.geometry.first_stipple[t];
@@ -107,9 +182,10 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
         // stipple where the candidates cannot carry it (its dot's size), as the shaders take it.
         const bool sizes_vary = bounds.x != bounds.y && bounds.y > float(candidates);
         for (uint32_t k = 0; k < formulas::drawn_stipple_count(bounds.y, candidates); ++k) {
+            const glm::vec3 position = shape.place(t, positions[object.geometry.first_stipple[t] + k]);
             float here = density;
             if (sizes_vary || (bounds.x != bounds.y && float(k) + 1.0f > bounds.x && float(k) < bounds.y))
-                here = formulas::stipple_density_here(density, in_view(positions[object.geometry.first_stipple[t] + k]), a,
+                here = formulas::stipple_density_here(density, in_view(position), a,
                                                       b, c, params);
             // A square dot enlarged beyond kRoundPointsAbovePx is a disc of its area (enlarged_square_extent).
             const float square_side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
@@ -117,7 +193,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             const float side = formulas::drawn_dot_extent(round, square_side);
             const float intensity = formulas::stipple_intensity(here, float(k));
             if (intensity <= 0.0f) continue;
-            const glm::vec4 clip = model_view_proj * glm::vec4(positions[object.geometry.first_stipple[t] + k], 1.0f);
+            const glm::vec4 clip = model_view_proj * glm::vec4(position, 1.0f);
             if (clip.w <= 0.0f) continue;
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
             const glm::vec2 window(0.5f * (ndc.x + 1.0f) * float(width), 0.5f * (1.0f - ndc.y) * float(height));
