@@ -59,6 +59,25 @@ Mesh unwelded(const Mesh& mesh) {
     return soup;
 }
 
+// A sphere of radius 1 about `centre` with `holes` holes, as a scan has: the triangles whose centroids lie
+// within 0.1 of the poles (5% of its area each, their caps 5% more) left out.
+Mesh holed_sphere(int holes, glm::vec3 centre = glm::vec3(0.0f)) {
+    const Mesh sphere = make_icosphere(3, 1.0f, centre);
+    Mesh holed = sphere;
+    holed.indices.clear();
+    for (size_t t = 0; t < sphere.triangle_count(); ++t) {
+        const glm::vec3 c = glm::vec3(face_centroid(sphere, t)) - centre;
+        if ((holes >= 1 && c.y > 0.9f) || (holes >= 2 && c.y < -0.9f)) continue;
+        holed.indices.insert(holed.indices.end(), &sphere.indices[3 * t], &sphere.indices[3 * t + 3]);
+    }
+    return holed;
+}
+
+// The triangles of `mesh` wound the other way.
+void reverse_all(Mesh& mesh) {
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+}
+
 TEST(Winding, MixedTrianglesOfAClosedMeshAgreeAndFaceOutward) {
     for (bool soup : {false, true}) {
         Mesh sphere = make_icosphere(4);
@@ -100,11 +119,11 @@ TEST(Winding, EachPartIsTurnedOutwardOnItsOwn) {
     EXPECT_EQ(facing_inward(pair, glm::dvec3(2.0, 0.0, 0.0), first), 0u);
 }
 
-TEST(Winding, AnOpenPartIsTurnedOnlyWithTheWholeModel) {
-    // A bowl wound to face its hollow (its concave side) beside a closed sphere: seen from its own box the
-    // bowl's volume is negative, but an open part's volume says nothing alone; the model's is positive.
+TEST(Winding, AnOpenPartIsTurnedOnlyWhenNearlyClosed) {
+    // A bowl wound to face its hollow (its concave side) beside a closed sphere: open wide, it encloses
+    // nothing, and keeps its winding (a dish, a valley, a room is seen from its hollow).
     Mesh bowl = test::make_open_hemisphere(48, 12);
-    for (size_t t = 0; t < bowl.triangle_count(); ++t) std::swap(bowl.indices[3 * t + 1], bowl.indices[3 * t + 2]);
+    reverse_all(bowl);
     EXPECT_LT(signed_volume(bowl), 0.0);
     Mesh scene = make_icosphere(3, 1.0f, glm::vec3(3.0f, 0.0f, 0.0f));
     const size_t sphere_triangles = scene.triangle_count();
@@ -116,18 +135,33 @@ TEST(Winding, AnOpenPartIsTurnedOnlyWithTheWholeModel) {
     EXPECT_EQ(scene.indices, before);
     // Everything reversed: the sphere is turned back by its own volume; the bowl, now facing its convex
     // side, keeps that.
-    for (size_t t = 0; t < scene.triangle_count(); ++t) std::swap(scene.indices[3 * t + 1], scene.indices[3 * t + 2]);
+    reverse_all(scene);
     const std::vector<uint32_t> reversed = scene.indices;
     const WindingRepair sphere_turned = orient_consistently(scene);
     EXPECT_EQ(sphere_turned.parts_turned_outward, 1u);
     EXPECT_EQ(facing_inward(scene, glm::dvec3(3.0, 0.0, 0.0), 0, sphere_triangles), 0u);
     EXPECT_TRUE(std::equal(scene.indices.begin() + 3 * sphere_triangles, scene.indices.end(),
                            reversed.begin() + 3 * sphere_triangles));
-    // The bowl alone facing its hollow, as a scan with holes wound inward would: the model is open parts
-    // only, its volume negative, and it is turned.
+    // The bowl alone facing its hollow: kept too. Until 2026-12-05 the whole model's volume about its box's
+    // centre decided the open parts, and it was turned to face away from where it is seen.
+    const std::vector<uint32_t> hollow = bowl.indices;
     const WindingRepair alone = orient_consistently(bowl);
-    EXPECT_EQ(alone.parts_turned_outward, 1u);
-    EXPECT_GT(signed_volume(bowl), 0.0);
+    EXPECT_EQ(alone.parts_turned_outward, 0u);
+    EXPECT_EQ(bowl.indices, hollow);
+    // A scan with holes wound inward (one hole, or two at opposite poles, a few percent of its area each):
+    // nearly closed, its holes capped, it is inside out, and turned.
+    for (int holes : {1, 2}) {
+        Mesh scan = holed_sphere(holes, glm::vec3(0.5f, 0.0f, 0.0f));
+        reverse_all(scan);
+        const WindingRepair turned = orient_consistently(scan);
+        EXPECT_EQ(turned.parts_turned_outward, 1u) << holes << " hole(s)";
+        EXPECT_EQ(facing_inward(scan, glm::dvec3(0.5, 0.0, 0.0)), 0u) << holes << " hole(s)";
+        // Wound outward, it stays.
+        Mesh outward = holed_sphere(holes);
+        const std::vector<uint32_t> right = outward.indices;
+        EXPECT_EQ(orient_consistently(outward).triangles_turned, 0u) << holes << " hole(s)";
+        EXPECT_EQ(outward.indices, right);
+    }
 }
 
 // A closed part's own volume decides however little of its box it fills: a thin rod lying across its box
@@ -195,27 +229,27 @@ TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
         EXPECT_EQ(kept.winding.triangles_turned, 0u);
         EXPECT_GT(signed_volume(kept), 0.0);
     }
-    // A bowl wound toward its hollow with normals that agree (a scan inside out, normals included): the
-    // volume turns it, normals and all.
-    Mesh bowl = test::make_open_hemisphere(48, 12);
-    for (size_t t = 0; t < bowl.triangle_count(); ++t) std::swap(bowl.indices[3 * t + 1], bowl.indices[3 * t + 2]);
-    compute_vertex_normals(bowl);
-    std::string text;
-    for (size_t v = 0; v < bowl.vertex_count(); ++v) {
-        const glm::vec3 p = bowl.positions[v], n = bowl.normals[v];
-        text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-        text += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
+    // A bowl wound toward its hollow with normals that agree (a valley, a dish): kept, normals and all. Until
+    // 2026-12-05 the volume turned it, and from above it drew no stipples.
+    {
+        Mesh bowl = test::make_open_hemisphere(48, 12);
+        reverse_all(bowl);
+        compute_vertex_normals(bowl);
+        write_file((dir / "bowl.obj").string(), bowl_text(bowl, 1.0f));
+        const Mesh kept = load_mesh((dir / "bowl.obj").string());
+        EXPECT_EQ(kept.winding.triangles_turned, 0u);
+        EXPECT_EQ(kept.winding.normals_turned, 0u);
+        EXPECT_LT(signed_volume(kept), 0.0);
     }
-    for (size_t t = 0; t < bowl.triangle_count(); ++t) {
-        text += "f";
-        for (int k = 0; k < 3; ++k) text += " " + std::to_string(bowl.indices[3 * t + k] + 1) + "//" + std::to_string(bowl.indices[3 * t + k] + 1);
-        text += "\n";
-    }
-    write_file((dir / "bowl.obj").string(), text);
-    const Mesh turned = load_mesh((dir / "bowl.obj").string());
+    // A scan with a hole wound inward, normals included: nearly closed, its volume turns it, normals and all.
+    Mesh scan = holed_sphere(1);
+    reverse_all(scan);
+    compute_vertex_normals(scan);
+    write_file((dir / "scan.obj").string(), bowl_text(scan, 1.0f));
+    const Mesh turned = load_mesh((dir / "scan.obj").string());
     EXPECT_EQ(turned.winding.parts_turned_outward, 1u);
     EXPECT_EQ(turned.winding.parts_turned_to_normals, 0u);
-    EXPECT_GT(signed_volume(turned), 0.0);
+    EXPECT_EQ(facing_inward(turned, glm::dvec3(0.0)), 0u);
 }
 
 TEST(Winding, AnOpenSheetKeepsItsMajoritysWinding) {

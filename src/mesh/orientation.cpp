@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <utility>
@@ -15,6 +16,10 @@ namespace stipple {
 namespace {
 
 constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
+// An open part whose holes, capped, add less than this share of its area is nearly closed: its volume says
+// which way is out. A scan's holes add a few percent; a hemisphere's mouth a half, a valley's or a sheet's
+// about its whole area; a sphere open over 60 degrees of its polar angle about a quarter.
+constexpr double kNearlyClosed = 0.2;
 
 bool indices_in_range(const Mesh& mesh, size_t t) {
     const size_t n = mesh.positions.size();
@@ -23,11 +28,18 @@ bool indices_in_range(const Mesh& mesh, size_t t) {
 
 // Each triangle's neighbours across its manifold edges, as (neighbour << 1 | same): `same` when both
 // walk the shared edge in the same direction, i.e. when exactly one of them must be turned.
+// An edge of one triangle only (a hole's rim, a sheet's edge), walked from `from` to `to` (welded corners) in
+// the triangle's own winding.
+struct BorderEdge {
+    uint32_t triangle, from, to;
+};
+
 struct Adjacency {
     std::vector<uint32_t> first;  // triangle t's entries are [first[t], first[t + 1])
     std::vector<uint32_t> entries;
     std::vector<uint8_t> on_border;  // the triangle has an edge that joins it to no neighbour (a border, a
                                      // non-manifold or folded edge): its part is not closed
+    std::vector<BorderEdge> borders;  // the edges of one triangle (not the non-manifold or folded ones)
 };
 
 glm::dvec3 corner_position(const Mesh& mesh, size_t t, int k) {
@@ -87,6 +99,7 @@ Adjacency manifold_adjacency(const Mesh& mesh, std::span<const uint32_t> corner)
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     pairs.reserve(half_edges.size() / 2);
     std::vector<uint32_t> unpaired;  // triangles with an edge that joins them to no neighbour
+    std::vector<BorderEdge> borders;
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         const auto begin = half_edges.begin() + bucket_first[v], end = half_edges.begin() + bucket_first[v + 1];
         std::sort(begin, end, [](const HalfEdge& x, const HalfEdge& y) {
@@ -100,10 +113,15 @@ Adjacency manifold_adjacency(const Mesh& mesh, std::span<const uint32_t> corner)
                 pairs.emplace_back(run[0].walked, run[1].walked);
             else
                 for (auto h = run; h != run_end; ++h) unpaired.push_back(h->walked >> 1);
+            if (run_end - run == 1) {
+                const bool ascending = (run->walked & 1u) != 0u;  // the triangle walks from v to the larger corner
+                borders.push_back({run->walked >> 1, ascending ? uint32_t(v) : run->larger, ascending ? run->larger : uint32_t(v)});
+            }
             run = run_end;
         }
     }
     Adjacency adjacency;
+    adjacency.borders = std::move(borders);
     adjacency.on_border.assign(triangles, 0);
     for (uint32_t t : unpaired) adjacency.on_border[t] = 1;
     adjacency.first.assign(triangles + 1, 0);
@@ -117,6 +135,72 @@ Adjacency manifold_adjacency(const Mesh& mesh, std::span<const uint32_t> corner)
         adjacency.entries[fill[y >> 1]++] = (x >> 1) << 1 | same;
     }
     return adjacency;
+}
+
+// Each open part's holes closed by fans: a rim (border edges of one part joined through shared corners) from
+// the centroid of its edges' midpoints, each fan triangle walking its border edge against the triangle that
+// has it (`flipped`: the triangle's winding is to be reversed). With its caps a part encloses a volume that
+// does not depend on where it is taken from, and the caps' area says how open the part is: small holes of a
+// scan, or the wide mouth of a bowl, a valley, a room.
+struct PartCaps {
+    std::vector<double> area;             // per part
+    std::vector<double> volume;           // per part, about `centre[part]`
+    std::vector<double> unsigned_volume;  // the same with every tetrahedron taken positive
+};
+
+PartCaps cap_holes(const Mesh& mesh, const std::vector<BorderEdge>& borders, const std::vector<uint32_t>& part,
+                   const std::function<bool(uint32_t)>& flipped, const std::vector<glm::dvec3>& centre, size_t parts) {
+    PartCaps caps{std::vector<double>(parts, 0.0), std::vector<double>(parts, 0.0), std::vector<double>(parts, 0.0)};
+    // Rims: border edges joined where they share a corner within one part (union-find over the edges).
+    std::vector<uint32_t> root(borders.size());
+    for (uint32_t i = 0; i < root.size(); ++i) root[i] = i;
+    auto find = [&](uint32_t i) {
+        while (root[i] != i) i = root[i] = root[root[i]];
+        return i;
+    };
+    struct End {
+        uint32_t part, corner, edge;
+    };
+    std::vector<End> ends;
+    ends.reserve(2 * borders.size());
+    for (uint32_t i = 0; i < borders.size(); ++i) {
+        const uint32_t p = part[borders[i].triangle];
+        if (p == kUnassigned) continue;
+        ends.push_back({p, borders[i].from, i}), ends.push_back({p, borders[i].to, i});
+    }
+    std::sort(ends.begin(), ends.end(), [](const End& a, const End& b) {
+        return a.part != b.part ? a.part < b.part : a.corner != b.corner ? a.corner < b.corner : a.edge < b.edge;
+    });
+    for (size_t k = 1; k < ends.size(); ++k)
+        if (ends[k].part == ends[k - 1].part && ends[k].corner == ends[k - 1].corner) {
+            const uint32_t a = find(ends[k].edge), b = find(ends[k - 1].edge);
+            if (a != b) root[std::max(a, b)] = std::min(a, b);
+        }
+    // A welded corner is a vertex index (weld_by_position: the first vertex at that position).
+    std::vector<glm::dvec3> apex(borders.size(), glm::dvec3(0.0));
+    std::vector<double> weight(borders.size(), 0.0);
+    for (uint32_t i = 0; i < borders.size(); ++i) {
+        if (part[borders[i].triangle] == kUnassigned) continue;
+        const glm::dvec3 a(mesh.positions[borders[i].from]), b(mesh.positions[borders[i].to]);
+        const uint32_t r = find(i);
+        apex[r] += 0.5 * (a + b), weight[r] += 1.0;
+    }
+    for (uint32_t i = 0; i < borders.size(); ++i) {
+        const uint32_t p = part[borders[i].triangle];
+        if (p == kUnassigned) continue;
+        const uint32_t r = find(i);
+        const glm::dvec3 o = centre[p];
+        glm::dvec3 a = glm::dvec3(mesh.positions[borders[i].from]) - o, b = glm::dvec3(mesh.positions[borders[i].to]) - o;
+        if (flipped(borders[i].triangle)) std::swap(a, b);  // the triangle walks a -> b; its fan triangle b -> a
+        const glm::dvec3 c = apex[r] / weight[r] - o;
+        const double area = 0.5 * glm::length(glm::cross(a - c, b - c));
+        const double volume = glm::dot(b, glm::cross(a, c)) / 6.0;
+        if (!std::isfinite(area) || !std::isfinite(volume)) continue;
+        caps.area[p] += area;
+        caps.volume[p] += volume;
+        caps.unsigned_volume[p] += std::abs(volume);
+    }
+    return caps;
 }
 
 }  // namespace
@@ -191,10 +275,8 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
     for (size_t p = 0; p < repair.parts; ++p) invert[p] = figures[p].turned_area > 0.5 * figures[p].area;
     for (size_t t = 0; t < triangles; ++t) repair.wound_against += part[t] != kUnassigned && turn[t] != invert[part[t]];
 
-    // 3. Outward. A closed part by its own signed volume; the open parts (sheets, scans with holes, whose
-    // volume depends on where it is taken from) together, by the whole model's volume about its box's
-    // centre, closed parts included: an open part on its own may rightly have a negative volume (a patch
-    // of a concave region, seen from its own box), a whole model rarely does.
+    // 3. Outward. A closed part by its own signed volume; an open part nearly closed by its volume with its
+    // holes capped (cap_holes); an open part open wider keeps its winding.
     auto signed_volume_about = [&](size_t t, glm::dvec3 centre) {
         const glm::dvec3 a = corner_position(mesh, t, 0) - centre;
         glm::dvec3 b = corner_position(mesh, t, 1) - centre, c = corner_position(mesh, t, 2) - centre;
@@ -207,12 +289,6 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
     // across its box encloses far less than 1% of it (a diagonal prism inside out, 0.5%, was left so until
     // 2026-12-04). A thousandth of the unsigned sum is far above rounding and far below any real solid.
     auto closed_part_inside_out = [](const PartFigures& f) { return f.volume < -1e-3 * f.unsigned_volume; };
-    // Open parts together: "clearly" negative, beyond 1% of the box's volume, and beyond what rounding leaves
-    // of a flat sheet's zero.
-    auto clearly_inside_out = [](double volume, glm::dvec3 lo, glm::dvec3 hi, double area) {
-        const glm::dvec3 extent = hi - lo;
-        return volume < -std::max(0.01 * extent.x * extent.y * extent.z, 1e-9 * area * glm::length(extent));
-    };
     for (size_t t = 0; t < triangles; ++t) {
         if (part[t] == kUnassigned || !figures[part[t]].closed) continue;
         PartFigures& f = figures[part[t]];
@@ -256,25 +332,34 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
             }
         }
     }
-    bool any_open = false;
-    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
-    double area = 0.0;
-    for (size_t p = 0; p < repair.parts; ++p) {
-        const PartFigures& f = figures[p];
-        lo = glm::min(lo, f.lo), hi = glm::max(hi, f.hi), area += f.area;
-        any_open |= !f.closed && !decided_by_normals[p];
-        if (f.closed && closed_part_inside_out(f)) {
+    for (size_t p = 0; p < repair.parts; ++p)
+        if (figures[p].closed && closed_part_inside_out(figures[p])) {
             invert[p] ^= 1;
             ++repair.parts_turned_outward;
         }
+    // An open part nearly closed (its holes' caps under kNearlyClosed of its area: a scan with holes) is turned
+    // when, its holes capped, it is inside out as a closed part is. A part open wider (a bowl, a valley, a room
+    // open at the front, a sheet) encloses nothing: which side it shows is the file's, its majority's winding.
+    // Until 2026-12-05 the open parts were turned together by the whole model's volume about its box's centre,
+    // which turned a valley or a room wound to face its hollow (the side it is seen from) away, and it drew no
+    // stipples from there.
+    std::vector<glm::dvec3> centre(repair.parts);
+    for (size_t p = 0; p < repair.parts; ++p) centre[p] = 0.5 * (figures[p].lo + figures[p].hi);
+    for (size_t t = 0; t < triangles; ++t) {
+        if (part[t] == kUnassigned || figures[part[t]].closed || decided_by_normals[part[t]]) continue;
+        PartFigures& f = figures[part[t]];
+        const double volume = signed_volume_about(t, centre[part[t]]);
+        f.volume += volume;
+        f.unsigned_volume += std::abs(volume);
     }
-    if (any_open) {
-        double volume = 0.0;
-        for (size_t t = 0; t < triangles; ++t)
-            if (part[t] != kUnassigned) volume += signed_volume_about(t, 0.5 * (lo + hi));
-        if (clearly_inside_out(volume, lo, hi, area))
-            for (size_t p = 0; p < repair.parts; ++p)
-                if (!figures[p].closed && !decided_by_normals[p]) invert[p] ^= 1, ++repair.parts_turned_outward;
+    const PartCaps caps = cap_holes(mesh, adjacency.borders, part, [&](uint32_t t) { return turn[t] != invert[part[t]]; },
+                                    centre, repair.parts);
+    for (size_t p = 0; p < repair.parts; ++p) {
+        PartFigures& f = figures[p];
+        if (f.closed || decided_by_normals[p] || !(caps.area[p] < kNearlyClosed * f.area)) continue;
+        f.volume += caps.volume[p];
+        f.unsigned_volume += caps.unsigned_volume[p];
+        if (closed_part_inside_out(f)) invert[p] ^= 1, ++repair.parts_turned_outward;
     }
 
     for (size_t t = 0; t < triangles; ++t) {

@@ -27,11 +27,10 @@ double signed_volume(const Mesh& mesh);
 // 3. Outward, where the volume says so clearly: scans are sometimes wound
 //    inside out (the Cyberware horse is), and mirrored parts of an assembly are. A closed part (no border
 //    edge) is turned whole when its own signed volume is negative (below a thousandth of the sum of its
-//    tetrahedra's volumes taken positive, so that a thin rod across its box counts too). Open parts (sheets, scans with holes)
-//    are turned together when the whole model's signed volume about its box's centre is below -1% of the
-//    box's volume: the
-//    volume of an open part alone depends on where it is taken from (a patch of a concave region reads
-//    negative from its own box), and a flat sheet's is zero, so it keeps its majority's winding.
+//    tetrahedra's volumes taken positive, so that a thin rod across its box counts too). An open part nearly
+//    closed (a scan with holes: its holes, capped by fans from each rim's centre, add under a fifth of its
+//    area) is turned by the same rule with its caps. A part open wider (a bowl, a valley, a room, a sheet)
+//    encloses nothing: it keeps its majority's winding, the side the file shows.
 //    A closed part inside another (the wall of a cavity) is turned outward too; it is hidden in any view.
 //    With normals_from_file, an open part whose faces the file's normals clearly contradict is turned to
 //    them first, where the normals clearly agree with more of the open parts' area than they contradict
