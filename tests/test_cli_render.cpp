@@ -443,8 +443,12 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--dmax", "1e-300"}, "--dmax = 1e-300 is out of range"},
         {{"render", "--light", "1e300,0,0"}, "has a number beyond single precision"},
         {{"render", "-o", "x.svg", "--page", "5x5mm"}, "smaller than 10 mm a side"},
-        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--dot-style", "circle"}, "--dot-style is for vector output"},
-        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--pen-width", "0.5"}, "--pen-width is for vector output"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--dot-style", "circle"},
+         "--dot-style sets how SVG or PDF output draws its dots; a print image (--dpi) draws them as the screen does"},
+        {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--pen-width", "0.5"}, "--pen-width sets how SVG or PDF"},
+        // A PNG is pointed at the outputs that take them (it named CSV and print images, which refuse them too).
+        {{"render", "-o", "x.png", "--dot-style", "tick"}, "--dot-style sets how SVG or PDF output draws its dots: give -o x.svg or x.pdf"},
+        {{"render", "-o", "x.png", "--pen-width", "0.3"}, "--pen-width sets how SVG or PDF output draws its dots: give"},
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--fill-paper"}, "a print image has its paper"},
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--width", "4000"}, "--width does not apply to a print image"},
         {{"render", "-o", "x.png", "--page", "A3", "--dpi", "2400"}, "more than a PNG of 2 GiB of pixels"},
@@ -559,9 +563,45 @@ TEST(CliRender, StatsPrintTheDepthPassTriangles) {
                           "--depth-raster", "compute", "--stats"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("depth pass:         by compute (--depth-raster compute)"), std::string::npos) << r.out;
+    // Compute asked, but a toon object needs the fixed-function pass: said so, not silently.
+    auto toon = run_stipple({"render", "-o", (dir / "toon.png").string(), "--width", "320", "--height", "256",
+                             "--depth-raster", "compute", "--toon", "--stats"});
+    ASSERT_EQ(toon.exit_code, 0) << toon.err;
+    EXPECT_NE(toon.out.find("; fixed, not compute: a toon object's shading needs the fixed-function pass"), std::string::npos)
+        << toon.out;
     auto bad = run_stipple({"render", "-o", (dir / "bad.png").string(), "--depth-raster", "gpu"});
     EXPECT_NE(bad.exit_code, 0);
     EXPECT_NE(bad.err.find("--depth-raster = gpu must be auto, compute or fixed"), std::string::npos) << bad.err;
+}
+
+// --stats' ink is the tone as `tone` measures it: 1 - luminance over the covered pixels, grey ink included.
+// It counted the pixels darker than half: a faint drawing's grey dots read as no ink (spot at --dmax 0.01:
+// 0.1% for 1.08%), toon shading's grey as all ink (100%).
+TEST(CliRender, StatsInkIsTheMeanInkOverTheCoveredPixels) {
+    const std::filesystem::path dir = test::temp_dir("cli-stats-ink");
+    for (const std::vector<std::string>& look : {std::vector<std::string>{"--dmax", "0.01"}, std::vector<std::string>{"--toon"}}) {
+        std::vector<std::string> args = {"render", "-o", (dir / "ink.png").string(), "--mask", (dir / "mask.png").string(),
+                                         "--width", "320", "--height", "256", "--stats"};
+        args.insert(args.end(), look.begin(), look.end());
+        const test::CommandResult r = run_stipple(args);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const size_t at = r.out.find("mean ink inside:");
+        ASSERT_NE(at, std::string::npos) << r.out;
+        const double printed = std::stod(r.out.substr(at + std::strlen("mean ink inside:"))) / 100.0;
+        const Image image = read_png((dir / "ink.png").string()), mask = read_png((dir / "mask.png").string());
+        double ink = 0.0;
+        size_t covered = 0;
+        for (size_t i = 0; i < size_t(image.width) * size_t(image.height); ++i) {
+            if (mask.pixels[size_t(mask.channels) * i] < 128) continue;
+            ++covered;
+            ink += 1.0 - image.pixels[size_t(image.channels) * i] / 255.0;
+        }
+        ASSERT_GT(covered, 1000u);
+        std::printf("%s: --stats %.4f, the PNG's mean ink over its mask %.4f\n", look[0].c_str(), printed, ink / double(covered));
+        EXPECT_NEAR(printed, ink / double(covered), 0.0001) << look[0];
+        EXPECT_GT(printed, 0.0) << look[0];
+        EXPECT_LT(printed, 0.9) << look[0];
+    }
 }
 
 // --repeat N --queued K times N batches of K frames recorded back to back (on a GPU the default is 8, on a

@@ -26,7 +26,7 @@ struct Regression {
 
 const Regression kRegressions[] = {
     // An n-gon of infinite extent made ear clipping's grid cell count NaN, converted to a size (UBSan, 2026-12-05).
-    {"obj_polygon_infinite_extent_nan_cells.obj", "vertex 0 has a coordinate of 5.55556e+32, beyond the 1e+18 units it can be drawn within"},
+    {"obj_polygon_infinite_extent_nan_cells.obj", "a vertex at (1, 1, 5.55556e+32) has a coordinate of 5.55556e+32, beyond the 1e+18 units it can be drawn within"},
     // A POSITION accessor of no elements: the accessor reader gave memcpy a null destination for 0 bytes
     // (2026-12-03, when the static glTF loader came to read through it).
     {"gltf_empty_position_accessor.gltf", "mesh 'tri' primitive 0: index 0 refers to vertex 0 but there are only 0 vertices"},

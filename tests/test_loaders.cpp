@@ -549,6 +549,10 @@ TEST(BadInput, UnusedVerticesSetNeitherTheModelsSizeNorItsPlace) {
                       "units across, below the 1e-15");
     const Mesh m = load_mesh(write_file(dir / "stray.obj", "v 1e19 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"));
     EXPECT_EQ(m.triangle_count(), 1u);
+    // A used vertex beyond the coordinates drawing allows is named by where it lies: the loaded order's
+    // number (from 0, after an OBJ's vertices are split by their normals) named another line of the file.
+    expect_load_error(write_file(dir / "huge.obj", "v 0 0 0\nv 1e20 0 0\nv 0 1 0\nf 1 2 3\n"),
+                      "a vertex at (1e+20, 0, 0) has a coordinate of 1e+20, beyond the 1e+18 units it can be drawn within");
     // NaN stays an error wherever it is: the file is damaged.
     expect_load_error(write_file(dir / "nan.obj", "v nan 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"),
                       "has a NaN coordinate");

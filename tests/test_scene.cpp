@@ -455,6 +455,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"not_an_object", "[1, 2, 3]", "scene.json: expected an object", "got array"},
         BadScene{"wrong_type", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": "dark"}}]})",
                  "objects[0].params.dmax", "expected a number, got string"},
+        // Finite, but beyond a float: said so (it said "not finite").
+        BadScene{"beyond_float", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": 1e300}}]})",
+                 "objects[0].params.dmax", "1e+300 is beyond single precision (3.4e+38)"},
         BadScene{"wrong_type_vector", R"({"objects": [{"model": "sphere.obj"}], "light": [1, 2]})", "light",
                  "expected an array of 3 numbers"},
         BadScene{"unknown_param", R"({"objects": [{"model": "sphere.obj", "params": {"dmx": 0.2}}]})",

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "mesh/primitives.hpp"
 #include "core/hash.hpp"
@@ -59,6 +60,27 @@ void flip_byte(const fs::path& path, std::streamoff at) {
 
 // Where the cache lives: an empty STIPPLE_CACHE_DIR or XDG_CACHE_HOME, or a relative XDG_CACHE_HOME (invalid
 // by the XDG specification), counts as unset; each made a cache folder in the current directory.
+// Sizes read alike wherever they are given (--cache-size, STIPPLE_MAX_STORAGE_BUFFER, STIPPLE_GPU_MEMORY_LIMIT):
+// the environment's own reader refused "64K" where --cache-size took it (until 2026-12-05).
+TEST(StippleCache, SizesReadAlikeWithEitherCaseOfUnit) {
+    EXPECT_EQ(parse_byte_size("64k"), 65536u);
+    EXPECT_EQ(parse_byte_size("64K"), 65536u);
+    EXPECT_EQ(parse_byte_size("1.5M"), 1572864u);
+    EXPECT_EQ(parse_byte_size("2g"), 2147483648u);
+    EXPECT_EQ(parse_byte_size("123456"), 123456u);
+    for (const char* bad : {"", "K", "64KB", "-1k", "0x10", "1e30", " 64k"})
+        EXPECT_FALSE(parse_byte_size(bad).has_value()) << "'" << bad << "'";
+    EXPECT_EQ(parse_byte_size("--cache-size", "64K"), 65536u);
+    EXPECT_THROW(parse_byte_size("--cache-size", "64KB"), Error);
+    // The environment, read through the same rule: a device limited to 1024K is 1.0 MiB.
+    const auto cache = test::temp_dir("cache-size-units");
+    test::ScopedEnv limit("STIPPLE_MAX_STORAGE_BUFFER", "1024K");
+    const test::CommandResult r = test::run_stipple({"render", test::source_path("assets/blobby.glb"), "--seed", "424245", "-o",
+                                                     (cache / "never.png").string(), "--cache-dir", cache.string()});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("this device's largest is 1.0 MiB"), std::string::npos) << r.err;
+}
+
 TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
     struct Saved {
         const char* name;

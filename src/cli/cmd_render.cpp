@@ -26,6 +26,7 @@
 #include "io/png_io.hpp"
 #include "render/object_gpu.hpp"
 #include "render/offscreen.hpp"
+#include "render/tone_survey.hpp"
 #include "render/tiled_render.hpp"
 #include "scene/frame_sequence.hpp"
 #include "scene/scene_content.hpp"
@@ -40,15 +41,13 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
-double ink_fraction_inside(const RenderedFrame& frame, size_t* covered_out) {
-    size_t covered = 0, inked = 0;
-    for (size_t i = 0; i < frame.depth.size(); ++i) {
-        if (frame.depth[i] >= 1.0f) continue;
-        ++covered;
-        if (frame.color.pixels[4 * i] < 128) ++inked;
-    }
-    *covered_out = covered;
-    return covered ? double(inked) / double(covered) : 0.0;
+// Why the fixed-function depth pass ran where --depth-raster compute was asked (depth_by_compute_this_frame).
+std::string fixed_depth_reason(DepthRaster asked, const gpu::Context& context, const Scene& scene) {
+    if (asked != DepthRaster::Compute) return "";
+    if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.params.toon; }))
+        return "; fixed, not compute: a toon object's shading needs the fixed-function pass";
+    if (!depth_raster_by_compute(asked, context)) return "; fixed, not compute: this device has no 64-bit atomics";
+    return "; fixed, not compute";
 }
 
 // The object options belong to a model given on the command line; a scene file sets them per object.
@@ -173,14 +172,17 @@ int run_render(const std::vector<std::string>& argv) {
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && !print) {
-        for (const char* name : {"--page", "--margin", "--pen-width", "--dot-style"})
+        for (const char* name : {"--page", "--margin"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
+        // As the refusals for CSV and print images say: these set how SVG or PDF output draws its dots only.
+        for (const char* name : {"--pen-width", "--dot-style"})
+            if (args.has(name)) fail(std::string(name) + " sets how SVG or PDF output draws its dots: give -o x.svg or x.pdf");
         if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a PNG has its paper");
     }
     if (print) {
         // A print image draws the stipples and lines as the screen does, at the page's resolution.
         for (const char* name : {"--pen-width", "--dot-style"})
-            if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv); a print image (--dpi) draws as the screen does");
+            if (args.has(name)) fail(std::string(name) + " sets how SVG or PDF output draws its dots; a print image (--dpi) draws them as the screen does");
         if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a print image has its paper");
     }
     if (print && (args.has("--repeat") || args.has("--mask")))
@@ -364,8 +366,9 @@ int run_render(const std::vector<std::string>& argv) {
         // A print is drawn by a renderer of its own (the splat, in tiles); `renderer` drew nothing then.
         const FrameStats& stats = print ? print_stats : renderer.stats();
         const bool in_tiles = tiled || print.has_value();
-        size_t covered = 0;
-        double ink = ink_fraction_inside(frame, &covered);
+        // The tone as `tone` measures it (measure_ink: 1 - luminance over the covered pixels), grey ink included:
+        // counting the pixels darker than half (until 2026-12-05) read a faint drawing's 1.08% as 0.1%.
+        const InkFigures ink = measure_ink(frame);
         if (scene.source.empty())
             std::printf("model:              %s\n", what.c_str());
         else
@@ -379,9 +382,9 @@ int run_render(const std::vector<std::string>& argv) {
         else if (renderer.depth_words())
             std::printf("depth pass:         by compute (--depth-raster %s)\n", depth_raster_name(*depth_raster));
         else
-            std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)\n", (unsigned long long)depth_triangles,
+            std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)%s\n", (unsigned long long)depth_triangles,
                         stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
-                        depth_cull_name(*depth_cull));
+                        depth_cull_name(*depth_cull), fixed_depth_reason(*depth_raster, context, scene).c_str());
         std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
         // Vector output's plot line counts the dots left after hidden-stipple removal: say which this is.
         std::printf("drawn stipples:     %lld%s\n", (long long)stats.drawn_stipples,
@@ -408,8 +411,9 @@ int run_render(const std::vector<std::string>& argv) {
         if (in_tiles) {
             std::printf("covered pixels:     not measured (drawn in tiles)\n");
         } else {
-            std::printf("covered pixels:     %zu\n", covered);
-            std::printf("ink inside object:  %.1f%%\n", 100.0 * ink);
+            std::printf("covered pixels:     %zu\n", ink.covered);
+            std::printf("mean ink inside:    %.2f%% (1 - luminance over the covered pixels, as tone measures)\n",
+                        100.0 * ink.mean());
         }
         std::printf("load + generation:  %.3f s (generation %.3f s)\n", prepare_seconds, content.generation_seconds);
         std::printf("render + readback:  %.3f s%s\n", render_seconds, sequence ? " (last frame)" : "");

@@ -53,8 +53,8 @@ Render options:
   --distance D            camera distance as a multiple of the framing distance (default 1 = framed)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
-  --stats                 print triangles, candidate and drawn stipples (counted on the GPU), ink
-                          coverage, and the GPU time of each pass
+  --stats                 print triangles, candidate and drawn stipples (counted on the GPU), the
+                          mean ink inside the object (as tone measures it), and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
                           frame time and GPU time per pass, and the least
   --queued K              with --repeat: each timed frame is K frames queued back to back in one
@@ -66,9 +66,10 @@ Render options:
   --depth-raster MODE     auto, compute or fixed: the depth pass as a compute pass over the triangles,
                           spread over every core, or the fixed-function pass. auto: compute on a CPU
                           device (lavapipe) while triangles average under 24 px on screen or the
-                          models' facing surface is under 0.6 of the frame, else fixed; a frame
-                          with a toon object, or an object on the vertex, indirect or cpu path, is
-                          fixed (default auto)
+                          models' facing surface is under 0.6 of the frame, else fixed, and fixed
+                          for an object on the vertex, indirect or cpu path; a frame with a toon
+                          object is always fixed, compute asked or not (--stats says so) (default
+                          auto)
   --device N              Vulkan device to use (default: the best; --list-devices shows them)
   --list-devices          print the Vulkan devices and exit
   --verbose               print the device chosen

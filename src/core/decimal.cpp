@@ -60,4 +60,16 @@ std::optional<int64_t> parse_decimal_integer(std::string_view text) {
     return static_cast<int64_t>(value);
 }
 
+std::optional<uint64_t> parse_byte_size(std::string_view text) {
+    const char last = text.empty() ? '\0' : text.back();
+    double unit = 1.0;
+    if (last == 'k' || last == 'K') unit = 1024.0;
+    else if (last == 'm' || last == 'M') unit = 1024.0 * 1024.0;
+    else if (last == 'g' || last == 'G') unit = 1024.0 * 1024.0 * 1024.0;
+    const std::optional<double> value = parse_decimal(unit > 1.0 ? text.substr(0, text.size() - 1) : text);
+    const double bytes = value ? *value * unit : -1.0;
+    if (!std::isfinite(bytes) || bytes < 0.0 || bytes > 1e18) return std::nullopt;
+    return uint64_t(bytes);
+}
+
 }  // namespace stipple

@@ -16,4 +16,9 @@ std::optional<double> parse_decimal(std::string_view text);
 // An optional sign and digits only, within int64.
 std::optional<int64_t> parse_decimal_integer(std::string_view text);
 
+// A size in bytes: a decimal number, bare or with k, M or G (either case; 1024, 1024^2, 1024^3): "64k",
+// "64K", "1.5G", "123456". Nothing for other text, a negative size or one beyond 1e18 bytes. Options and
+// environment variables read sizes through this one rule.
+std::optional<uint64_t> parse_byte_size(std::string_view text);
+
 }  // namespace stipple

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "gpu/vk_check.hpp"
 
@@ -335,19 +336,15 @@ void Context::submit_and_wait(VkCommandBuffer cb) const {
     VK_CHECK(result);
 }
 
-// A size in bytes from an environment variable ("64M", "2G", "512k" or bytes); 0 when unset or not a size.
+// A size in bytes from an environment variable ("64M", "2G", "512k" or bytes: parse_byte_size); 0 when unset.
 static uint64_t size_from_environment(const char* name) {
     const char* text = std::getenv(name);
     if (!text || !*text) return 0;  // unset, or set to nothing
-    char* end = nullptr;
-    double value = std::strtod(text, &end);
-    const std::string unit = end ? end : "";
-    const bool known_unit = unit.empty() || unit == "k" || unit == "M" || unit == "G";
-    value *= unit == "G" ? 1073741824.0 : unit == "M" ? 1048576.0 : unit == "k" ? 1024.0 : 1.0;
+    const std::optional<uint64_t> bytes = parse_byte_size(text);
     // A test setting: a typo must not silently test nothing.
-    if (end == text || !known_unit || !(value >= 1.0) || value > 9.0e18)
+    if (!bytes || *bytes < 1)
         fail(std::string(name) + "=" + text + " is not a size such as 64M (bytes, or a number with k, M or G)");
-    return uint64_t(value);
+    return *bytes;
 }
 
 uint64_t Context::device_memory_available() const {

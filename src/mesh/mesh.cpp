@@ -73,9 +73,11 @@ void validate_mesh(const Mesh& mesh) {
         const glm::vec3& p = mesh.positions[i];
         const float largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
         if (largest > kMaxCoordinate) {
-            char text[160];
-            std::snprintf(text, sizeof(text), "vertex %zu has a coordinate of %g, beyond the %g units it can be drawn within",
-                          i, double(largest), double(kMaxCoordinate));
+            // Named by where it lies: a loader may number the vertices otherwise than the file does (OBJ counts from
+            // 1 and splits a vertex by its normals; this counted from 0 in the loaded order).
+            char text[200];
+            std::snprintf(text, sizeof(text), "a vertex at (%g, %g, %g) has a coordinate of %g, beyond the %g units it can be drawn within",
+                          double(p.x), double(p.y), double(p.z), double(largest), double(kMaxCoordinate));
             fail_file(source, text);
         }
         lo = glm::min(lo, p), hi = glm::max(hi, p);

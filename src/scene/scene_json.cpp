@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -63,7 +64,12 @@ public:
     float number(const json& j, const std::string& where) const {
         if (!j.is_number()) error(where, std::string("expected a number, got ") + j.type_name());
         double v = j.get<double>();
-        if (!std::isfinite(v) || std::abs(v) > 3.0e38) error(where, "the number is not finite");
+        // JSON has no infinity or NaN: what fails here is finite but beyond a float (as the command line says it).
+        if (!std::isfinite(v) || std::abs(v) > 3.0e38) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%g", v);
+            error(where, std::string(text) + " is beyond single precision (3.4e+38)");
+        }
         return float(v);
     }
 

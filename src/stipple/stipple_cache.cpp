@@ -104,16 +104,9 @@ StippleCacheSettings& stipple_cache_settings() {
 }
 
 uint64_t parse_byte_size(const std::string& option, const std::string& text) {
-    const char last = text.empty() ? '\0' : text.back();
-    double unit = 1.0;
-    if (last == 'k' || last == 'K') unit = 1024.0;
-    else if (last == 'm' || last == 'M') unit = 1024.0 * 1024.0;
-    else if (last == 'g' || last == 'G') unit = 1024.0 * 1024.0 * 1024.0;
-    const std::optional<double> value = parse_decimal(unit > 1.0 ? text.substr(0, text.size() - 1) : text);
-    const double bytes = value ? *value * unit : -1.0;
-    if (!std::isfinite(bytes) || bytes < 0.0 || bytes > 1e18)
-        fail(option + ": '" + text + "' is not a size (bytes, or a number with k, M or G)");
-    return uint64_t(bytes);
+    const std::optional<uint64_t> bytes = stipple::parse_byte_size(std::string_view(text));
+    if (!bytes) fail(option + ": '" + text + "' is not a size (bytes, or a number with k, M or G)");
+    return *bytes;
 }
 
 uint64_t stipple_cache_key(const Mesh& mesh, const GenerationParams& params, std::span<const float> headroom) {
