@@ -432,6 +432,12 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--device", "4294967296"}, "--device = 4294967296"},
         {{"tone", "--device", "-2"}, "--device = -2"},
         {{"render", "-o", "x.jpg"}, "-o x.jpg: the output is named by its extension"},
+        // An output that cannot be written is named before the model is read and drawn (it was named after).
+        {{"render", "-o", "/proc/x.png"}, "-o /proc/x.png: cannot write there: "},
+        {{"render", "-o", "/proc/x.svg"}, "-o /proc/x.svg: cannot write there: "},
+        {{"render", "--mask", "/proc/m.png"}, "--mask /proc/m.png: cannot write there: "},
+        {{"render", "-o", "/dev/null/x.png"}, "-o /dev/null/x.png: cannot make its folder /dev/null: "},
+        {{"render", "-o", "/"}, "-o /: the output is named by its extension"},
         {{"render", "-o", ""}, "the output is named by its extension"},
         {{"render", "-o", "same.png", "--mask", "same.png"}, "is the image's own path"},
         {{"render", "-o", "./same.png", "--mask", "same.png"}, "is the image's own path"},
@@ -490,6 +496,17 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         EXPECT_EQ(count_lines(result.err), 1u) << result.err;
         EXPECT_NE(result.err.find(c.expect), std::string::npos) << result.err;
     }
+    // A folder named as the output, and a file that exists (left as it was: the check opens it, never truncates).
+    const std::filesystem::path dir = test::temp_dir("cli-output-writable");
+    std::filesystem::create_directories(dir / "folder.png");
+    auto folder = run_stipple({"render", "-o", (dir / "folder.png").string()});
+    EXPECT_EQ(folder.exit_code, 1);
+    EXPECT_NE(folder.err.find("folder.png: is a folder, not a file"), std::string::npos) << folder.err;
+    write_file((dir / "kept.png").string(), "not a png");
+    auto kept = run_stipple({"render", "-o", (dir / "kept.png").string(), "--dmax", "0"});
+    EXPECT_EQ(kept.exit_code, 1);
+    std::ifstream in(dir / "kept.png");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "not a png");
 }
 
 // --stats says how many triangles the depth pass drew: all of them with --depth-cull off, fewer with on

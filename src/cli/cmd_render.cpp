@@ -23,6 +23,7 @@
 #include "core/progress.hpp"
 #include "core/timing.hpp"
 #include "gpu/context.hpp"
+#include "io/output_file.hpp"
 #include "io/png_io.hpp"
 #include "render/object_gpu.hpp"
 #include "render/offscreen.hpp"
@@ -157,6 +158,9 @@ int run_render(const std::vector<std::string>& argv) {
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
     if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
+    // Where the files go, before the model is read and its stipples made (a frame sequence: its first frame's).
+    check_output_writable(args.has("--output") ? "--output" : "-o", output_path(output, 0, false));
+    if (args.has("--mask")) check_output_writable("--mask", output_path(args.get("--mask", ""), 0, false));
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
     // --page" sent the user to add a page that was then refused for the format.
     if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
@@ -372,7 +376,8 @@ int run_render(const std::vector<std::string>& argv) {
         if (scene.source.empty())
             std::printf("model:              %s\n", what.c_str());
         else
-            std::printf("scene:              %s (%zu objects)\n", what.c_str(), scene.objects.size());
+            std::printf("scene:              %s (%zu object%s)\n", what.c_str(), scene.objects.size(),
+                        scene.objects.size() == 1 ? "" : "s");
         std::printf("device:             %s\n", context.device_name.c_str());
         std::printf("triangles:          %llu\n", (unsigned long long)stats.triangles);
         uint64_t depth_triangles = 0;

@@ -55,7 +55,7 @@ std::filesystem::path entry_path(const std::filesystem::path& dir, uint64_t key)
 void warn_unusable_folder(const std::filesystem::path& dir, const std::string& reason) {
     static std::atomic<bool> warned{false};
     if (warned.exchange(true)) return;
-    std::fprintf(stderr, "warning: %s: cannot keep the stipple cache there (%s); stipples are generated every time\n",
+    std::fprintf(stderr, "stipple: warning: %s: cannot keep the stipple cache there (%s); stipples are generated every time\n",
                  dir.c_str(), reason.c_str());
 }
 
