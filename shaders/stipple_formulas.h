@@ -402,9 +402,17 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     // more is drawn as in regime (a). min_area thus decides where a fractional stipple gives way to a
     // whole one drawn with that probability. The selection values are uniform for polygons of every
     // size (src/stipple/selection_order.cpp), so the expected ink is the owed ink on any mesh.
+    //
+    // Beyond the paper's area test, a polygon that could not carry one whole stipple even where fully dark (its
+    // due candidates with the view's terms, before shading and the enhancements that lighten: under one) is
+    // selected too, however large on screen: at a low D_max (0.01: a stipple's share of the screen is 100 px^2,
+    // against the default min_area of 4 at the default 0.25) every polygon drew a faint grey dot, a haze where
+    // an illustrator expects sparse black dots (a walkthrough, 2026-12-05). At the default D_max the two tests
+    // part only where a polygon's rounded candidate count falls short of its area.
     float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation;
     result.screen_area = screen_area;
-    if (screen_area >= q.min_area || density <= 0.0f || density >= 1.0f) return result;
+    bool holds_a_stipple = p.due * extrinsic * orientation >= 1.0f;
+    if ((screen_area >= q.min_area && holds_a_stipple) || density <= 0.0f || density >= 1.0f) return result;
     result.probability = density;
     result.density = 1.0f;
     return result;

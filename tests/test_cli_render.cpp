@@ -621,6 +621,45 @@ TEST(CliRender, StatsInkIsTheMeanInkOverTheCoveredPixels) {
     }
 }
 
+// At a low D_max a polygon that cannot hold a whole stipple even fully dark is selected (regime (b)), however
+// large on screen: every polygon drew a faint grey dot until 2026-12-05 (the default scene at --dmax 0.01:
+// most inked pixels the lightest greys). The tone follows D_max either way.
+TEST(CliRender, ALowDensityDrawsSparseWholeDotsNotAGreyHaze) {
+    const std::filesystem::path dir = test::temp_dir("cli-low-density");
+    auto render = [&](const std::string& dmax) {
+        const std::string png = (dir / ("d" + dmax + ".png")).string(), mask = (dir / ("m" + dmax + ".png")).string();
+        const test::CommandResult r =
+            run_stipple({"render", "-o", png, "--mask", mask, "--width", "320", "--height", "256", "--dmax", dmax});
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return std::pair{read_png(png), read_png(mask)};
+    };
+    struct Ink {
+        double mean = 0.0;
+        size_t inked = 0, whole = 0;  // pixels with any ink; of them, those at least half black
+    };
+    auto measure = [](const std::pair<Image, Image>& frame) {
+        Ink ink;
+        size_t covered = 0;
+        const auto& [image, mask] = frame;
+        for (size_t i = 0; i < size_t(image.width) * size_t(image.height); ++i) {
+            if (mask.pixels[size_t(mask.channels) * i] < 128) continue;
+            ++covered;
+            const double dark = 1.0 - image.pixels[size_t(image.channels) * i] / 255.0;
+            ink.mean += dark;
+            ink.inked += dark > 0.02;
+            ink.whole += dark >= 0.5;
+        }
+        ink.mean /= double(std::max<size_t>(covered, 1));
+        return ink;
+    };
+    const Ink low = measure(render("0.01")), normal = measure(render("0.25"));
+    std::printf("--dmax 0.01: mean ink %.4f, %zu inked pixels, %zu of them at least half black; --dmax 0.25: mean ink %.4f\n",
+                low.mean, low.inked, low.whole, normal.mean);
+    ASSERT_GT(low.inked, 20u);
+    EXPECT_GT(double(low.whole), 0.8 * double(low.inked)) << "faint dots: a grey haze";
+    EXPECT_NEAR(low.mean / normal.mean, 0.04, 0.012) << "the tone follows D_max";
+}
+
 // --repeat N --queued K times N batches of K frames recorded back to back (on a GPU the default is 8, on a
 // CPU device 1): it says so, and the image it wrote is the one frame's.
 TEST(CliRender, RepeatTimesQueuedFrames) {
