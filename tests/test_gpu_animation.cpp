@@ -15,6 +15,7 @@
 #include "render/density_formulas.hpp"
 #include "render/polygon_constants.hpp"
 #include "render/tone_survey.hpp"
+#include "scene/scene_json.hpp"
 #include "stipple/barycentric.hpp"
 #include "stipple/object_data.hpp"
 #include "support/anim_files.hpp"
@@ -274,6 +275,30 @@ TEST_F(GpuAnimation, CpuDensityPathsAreRefused) {
     cpu.density_path = DensityPath::Cpu;
     r->add_object(*loaded.model.mesh, *loaded.stipples, glm::mat4(1.0f), cpu);
     EXPECT_NO_THROW(target.render(*r, test::framed_view(loaded.model.bounds, target.extent())));
+}
+
+// The viewer's Ctrl+S saves the pose the window shows: each animated object's start becomes its animation time
+// at the timeline's time (wrapped, or held), so that render draws the file as the window showed it. Until
+// 2026-12-05 the file kept the start it was opened with, and render drew the pose at 0 s (a walkthrough).
+TEST_F(GpuAnimation, TheViewersSavedSceneHoldsThePoseShown) {
+    Scene scene;
+    const std::string rig = test::write_rig(anim::rigs::bending_cylinder(), "gpu_anim_save", "cylinder");  // "Bend": 2 s
+    scene.objects.push_back({rig, {}, {}});
+    scene.objects.push_back({rig, {}, {}});
+    scene.objects[1].animation.start = 0.25;
+    scene.objects[1].animation.speed = 2.0;
+    scene.objects[1].animation.loop = false;
+    for (SceneObject& o : scene.objects) o.params.generation.dmax = 0.02f;
+    auto r = renderer();
+    app::LiveScene live(scene, load_scene_content(scene), *r);
+    const std::string path = test::output_path("gpu_anim_saved_pose.json").string();
+    for (const auto& [seconds, first, second] : {std::tuple{0.5, 0.5, 1.25}, std::tuple{2.5, 0.5, 2.0}}) {
+        live.save(path, OrbitCamera{}, seconds);
+        const Scene saved = load_scene(path);
+        EXPECT_NEAR(saved.objects[0].animation.start, first, 1e-9) << "at " << seconds << " s: looping, wrapped";
+        EXPECT_NEAR(saved.objects[1].animation.start, second, 1e-9) << "at " << seconds << " s: held at its end";
+        EXPECT_EQ(saved.objects[1].animation.speed, 2.0);
+    }
 }
 
 TEST_F(GpuAnimation, TheViewerUndoesACpuPathForAnAnimatedObject) {

@@ -181,6 +181,41 @@ TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     EXPECT_EQ(p.density_path, DensityPath::Indirect);
 }
 
+// Models side by side on the command line share its --animation: the animated ones play it and a static one
+// ignores it (`view fox.glb spot.obj --animation Walk` was refused for spot until 2026-12-05). A static model
+// alone, or in a scene file that names an animation for it, is still refused.
+TEST(SceneContent, ModelsSideBySideShareTheCommandLinesAnimation) {
+    const auto dir = test::temp_dir("scene-shared-animation");
+    const std::string sphere = write_sphere_obj(dir, 2).string();
+    const std::string rig = test::write_rig(anim::rigs::bending_cylinder(), "scene-shared-animation-rig", "cylinder");
+    Scene pair;
+    pair.objects.push_back({rig, {}, {}});
+    pair.objects.push_back({sphere, {}, {}});
+    for (SceneObject& o : pair.objects) o.animation.name = "Bend";
+    const SceneContent content = load_scene_models(pair);
+    drop_animations_of_static_models(pair, content);
+    EXPECT_EQ(pair.objects[0].animation.name, "Bend");
+    EXPECT_TRUE(pair.objects[1].animation.is_default());
+    Scene alone;
+    alone.objects.push_back({sphere, {}, {}});
+    alone.objects[0].animation.name = "Bend";
+    try {
+        load_scene_models(alone);
+        ADD_FAILURE() << "a static model alone took --animation";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("has no animation to play"), std::string::npos) << e.what();
+    }
+    Scene file = pair;
+    file.source = (dir / "scene.json").string();
+    file.objects[1].animation.name = "Bend";
+    try {
+        load_scene_models(file);
+        ADD_FAILURE() << "a scene file's animation for a static model was taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("objects[1].animation.name"), std::string::npos) << e.what();
+    }
+}
+
 TEST_F(SceneObjects, ObjectsInOneFrameKeepTheirOwnDensity) {
     auto dir = test::temp_dir("scene-two-objects");
     write_sphere_obj(dir);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "anim/pose.hpp"
 #include "core/error.hpp"
 #include "params/param_table.hpp"
 #include "scene/scene_json.hpp"
@@ -142,11 +143,19 @@ void LiveScene::remove(size_t object) {
     ids_.erase(ids_.begin() + std::ptrdiff_t(object));
 }
 
-void LiveScene::save(const std::string& path, const OrbitCamera& camera) const {
+void LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds) const {
     Scene saved = scene_;
     saved.camera = scene_camera_from(camera);
     // Parameters as generated: a slider not yet released has not changed the picture.
     for (size_t i = 0; i < saved.objects.size(); ++i) saved.objects[i].params.generation = generated_with_[i].generation;
+    // The pose shown: until 2026-12-05 the file kept each animation's start, and render drew the pose at 0 s.
+    for (size_t i = 0; i < saved.objects.size(); ++i) {
+        if (!data_[i].motion) continue;
+        AnimationChoice& choice = saved.objects[i].animation;
+        const anim::Animation& animation =
+            data_[i].motion.model->animations.at(size_t(resolve_animation(data_[i], choice)));
+        choice.start = anim::animation_time(animation, choice.time_at(scene_seconds), choice.loop);
+    }
     save_scene(path, saved);
 }
 

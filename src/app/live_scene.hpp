@@ -54,7 +54,9 @@ public:
     ObjectParams params_for_new_object() const;
 
     // The current state with `camera` as the scene's camera; model paths relative to the file.
-    void save(const std::string& path, const OrbitCamera& camera) const;
+    // The scene as drawn at `scene_seconds` of the timeline: each animated object's start is the pose it shows
+    // (its animation time then, wrapped or held), so that render draws the saved file as the window shows it.
+    void save(const std::string& path, const OrbitCamera& camera, double scene_seconds = 0.0) const;
 
 private:
     Scene scene_;

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/frame_export.hpp"
+#include "export/plot_file.hpp"
 #include "app/viewer_session.hpp"
 #include "core/error.hpp"
 #include "gpu/vk_check.hpp"
@@ -100,6 +101,8 @@ Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
     float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
     camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
     timeline_.set_time(options.start_time);
+    if (!live_.scene().camera_path.empty())
+        message("the scene's camera_path is for render's frame sequences: the viewer shows its camera, and Ctrl+S keeps the path");
 }
 
 
@@ -139,8 +142,12 @@ void Viewer::message(const std::string& text, bool error) {
 
 void Viewer::save_scene() {
     try {
-        live_.save(options_.scene_path, camera_);
+        live_.save(options_.scene_path, camera_, timeline_.time());
         message("scene saved: " + options_.scene_path);
+        // render follows a camera_path over every other camera: say where the view just saved goes.
+        if (!live_.scene().camera_path.empty())
+            message("its camera_path is kept, and render draws the path's frames; the view is saved as its camera, "
+                    "which render draws once the path is taken out");
     } catch (const std::exception& e) {  // a failed save is a message: the session goes on
         message(e.what(), true);
     }
@@ -350,8 +357,11 @@ bool Viewer::export_view(const std::string& path, const plot::ExportOptions& opt
         const FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), extent);
         const plot::PlotStats stats = export_frame(context_, live_.scene(), live_.objects(), view, options, path,
                                                          timeline_.time());
-        message("exported: " + path + " (" + std::to_string(stats.dots) + " dots, " + std::to_string(stats.polylines) +
-                " polylines)");
+        // A CSV holds the dots alone (render says the same).
+        const std::string lines = plot::is_csv_path(path)
+                                      ? (stats.polylines ? "; its " + std::to_string(stats.polylines) + " polylines are not written to CSV" : "")
+                                      : ", " + std::to_string(stats.polylines) + " polylines";
+        message("exported: " + path + " (" + std::to_string(stats.dots) + " dots" + lines + ")");
         return true;
     } catch (const Error& e) {
         message(e.what(), true);

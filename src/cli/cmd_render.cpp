@@ -453,6 +453,14 @@ int run_render(const std::vector<std::string>& argv) {
                     frame_path(output, cameras.size() - 1).c_str(), holds.c_str());
     else
         std::printf("wrote %s (%s)\n", output_path(output, 0, false).c_str(), holds.c_str());
+    if (args.has("--mask")) {  // its own line: the frame's coverage, beside any output
+        const std::string mask = args.get("--mask", "");
+        if (sequence)
+            std::printf("wrote %zu masks %s .. %s\n", cameras.size(), frame_path(mask, 0).c_str(),
+                        frame_path(mask, cameras.size() - 1).c_str());
+        else
+            std::printf("wrote %s (the coverage mask, %lldx%lld)\n", output_path(mask, 0, false).c_str(), width, height);
+    }
 
     if (uint32_t messages = context.validation_message_count()) {
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s): the render is not trustworthy\n", messages);

@@ -54,6 +54,7 @@ int run_view(const std::vector<std::string>& argv) {
     viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
     // The stipples are made by the viewer once its device is open, which says first whether it can hold them.
     SceneContent content = load_scene_models(scene);
+    if (scene.source.empty()) drop_animations_of_static_models(scene, content);
     viewer.start_time = read_animation_clock(args, any_animated(content.objects)).time;
     if (scene.source.empty() && scene.objects.size() > 1) {
         // Models given side by side on the command line come in any units; line them up.

@@ -128,7 +128,8 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
-  --animation NAME|N, --time SECONDS   as for render: the animation MODELs play, the clock's start
+  --animation NAME|N, --time SECONDS   as for render: the animation MODELs play (the animated ones,
+                          beside static ones), the clock's start
   --verbose               print the device and every swapchain (re)creation
   --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its

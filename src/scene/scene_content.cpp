@@ -1,6 +1,7 @@
 #include "core/unit_direction.hpp"
 #include "scene/scene_content.hpp"
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -41,14 +42,28 @@ SceneContent load_scene_models(const Scene& scene) {
         } catch (const Error& e) {
             in_scene("model", e);
         }
-        try {
-            resolve_animation(object, scene.objects[i].animation);
-        } catch (const Error& e) {
-            in_scene("animation.name", e);
-        }
         content.objects.push_back(std::move(object));
     }
+    // Models given side by side on the command line share its --animation: it is for those that move (a fox
+    // beside a static model walks; it refused the pair until 2026-12-05). A scene file names each object's own.
+    const bool shared_choice = scene.source.empty() && scene.objects.size() > 1 &&
+                               std::any_of(content.objects.begin(), content.objects.end(), [](const ObjectData& o) { return bool(o.motion); });
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        if (shared_choice && !content.objects[i].motion) continue;
+        try {
+            resolve_animation(content.objects[i], scene.objects[i].animation);
+        } catch (const Error& e) {
+            if (scene.source.empty()) throw;
+            fail_file(scene.source, "objects[" + std::to_string(i) + "].animation.name: " + e.what());
+        }
+    }
     return content;
+}
+
+void drop_animations_of_static_models(Scene& scene, const SceneContent& content) {
+    STIPPLE_CHECK(scene.objects.size() == content.objects.size(), "one ObjectData per scene object");
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (!content.objects[i].motion) scene.objects[i].animation = AnimationChoice{};
 }
 
 void make_scene_stipples(const Scene& scene, SceneContent& content) {

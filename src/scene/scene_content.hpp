@@ -30,6 +30,9 @@ SceneContent load_scene_content(const Scene& scene);
 // depend on them, whether a device can hold the stipples: planned_scene_stipples) is checked before the
 // second, which may take minutes.
 SceneContent load_scene_models(const Scene& scene);
+// Models given side by side on the command line share its --animation, which a static one among them ignores:
+// its choice cleared (as a saved scene then writes it).
+void drop_animations_of_static_models(Scene& scene, const SceneContent& content);
 // The second: every object's stipples generated or read from the cache (objects of one model and equal
 // generation parameters share them).
 void make_scene_stipples(const Scene& scene, SceneContent& content);
