@@ -196,7 +196,7 @@ void main() {
     float density = selected_density(terms, p.selection);
     // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here):
     // the gradient pass writes the bounds of that density over it, and lists its work items after them.
-    bool large = may_carry_gradient(p, q, density);
+    bool large = may_carry_gradient(terms, p, q, density);
     list_gradient(large, t);
     draws[t].density = large ? large_polygon_stored_density(terms, density) : density;
     draws[t].least = density;

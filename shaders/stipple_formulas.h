@@ -343,6 +343,10 @@ struct PolygonDensity {
                         // where a point lies (large_polygon_density takes them elsewhere); else 0
 };
 
+// The D_max for which min_area is given (the default): a polygon of min_area px^2 then holds min_area x this
+// many stipples where fully dark, and one whole stipple at the default min_area of 4 px^2.
+STIPPLE_CONST float kMinAreaDensity = 0.25f;
+
 // §2.1-2.3: shading, intrinsic and extrinsic enhancement, in both regimes; density in stipples (above the
 // candidates when they cannot carry it: stipple_scale).
 STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) {
@@ -403,15 +407,16 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     // whole one drawn with that probability. The selection values are uniform for polygons of every
     // size (src/stipple/selection_order.cpp), so the expected ink is the owed ink on any mesh.
     //
-    // Beyond the paper's area test, a polygon that could not carry one whole stipple even where fully dark (its
-    // due candidates with the view's terms, before shading and the enhancements that lighten: under one) is
-    // selected too, however large on screen: at a low D_max (0.01: a stipple's share of the screen is 100 px^2,
-    // against the default min_area of 4 at the default 0.25) every polygon drew a faint grey dot, a haze where
-    // an illustrator expects sparse black dots (a walkthrough, 2026-12-05). At the default D_max the two tests
-    // part only where a polygon's rounded candidate count falls short of its area.
+    // Beyond the paper's area test, the same test in stipples: min_area is given for the default D_max
+    // (kMinAreaDensity: 4 px^2 then hold one stipple), so a polygon that could not hold min_area x
+    // kMinAreaDensity stipples even where fully dark (its due candidates with the view's terms, before shading
+    // and the enhancements that lighten) is selected too, however large on screen. At a low D_max (0.01: a
+    // stipple's share of the screen is 100 px^2) every polygon drew a faint grey dot, a haze where an
+    // illustrator expects sparse black dots (a walkthrough, 2026-12-05). At the default D_max and pr the two
+    // tests agree for any min_area, but where a polygon's rounded candidate count falls short of its area.
     float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation;
     result.screen_area = screen_area;
-    bool holds_a_stipple = p.due * extrinsic * orientation >= 1.0f;
+    bool holds_a_stipple = p.due * extrinsic * orientation >= q.min_area * kMinAreaDensity;
     if ((screen_area >= q.min_area && holds_a_stipple) || density <= 0.0f || density >= 1.0f) return result;
     result.probability = density;
     result.density = 1.0f;
@@ -545,6 +550,12 @@ STIPPLE_FN bool may_carry_gradient(PolygonView p, DensityParams q, float density
     float facing = abs(dot(p.normal, -p.center)) / length(p.center);
     float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
     return 2.0f * screen_area > kGradientAreaStart;
+}
+// The same for a polygon whose terms are known: one drawn by probabilistic selection draws one whole stipple
+// where it is selected, never spread by the place-dependent terms (a polygon large on screen is selected where
+// it cannot hold a whole stipple: polygon_density_terms).
+STIPPLE_FN bool may_carry_gradient(PolygonDensity terms, PolygonView p, DensityParams q, float density) {
+    return terms.probability >= 1.0f && may_carry_gradient(p, q, density);
 }
 
 // The density where a stipple at view-space x lies, on a polygon with view-space corners a, b, c drawing

@@ -1,6 +1,7 @@
 // The stipple command as a user runs it: the default scene, figures from info, and one clear line
 // with a non-zero exit for every kind of bad input (never a crash, a hang or a validation message).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -496,17 +497,27 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         EXPECT_EQ(count_lines(result.err), 1u) << result.err;
         EXPECT_NE(result.err.find(c.expect), std::string::npos) << result.err;
     }
-    // A folder named as the output, and a file that exists (left as it was: the check opens it, never truncates).
+    // A folder named as the output is refused; an existing file, a pipe and a link are never opened by the
+    // check (a pipe would block it, a dangling link would have a file made where it points): the run goes on to
+    // the model, missing here, and leaves them as they were.
     const std::filesystem::path dir = test::temp_dir("cli-output-writable");
     std::filesystem::create_directories(dir / "folder.png");
     auto folder = run_stipple({"render", "-o", (dir / "folder.png").string()});
     EXPECT_EQ(folder.exit_code, 1);
     EXPECT_NE(folder.err.find("folder.png: is a folder, not a file"), std::string::npos) << folder.err;
     write_file((dir / "kept.png").string(), "not a png");
-    auto kept = run_stipple({"render", "-o", (dir / "kept.png").string(), "--dmax", "0"});
-    EXPECT_EQ(kept.exit_code, 1);
+    ASSERT_EQ(mkfifo((dir / "pipe.png").c_str(), 0600), 0);
+    std::filesystem::create_symlink(dir / "nowhere" / "target.png", dir / "link.png");
+    const std::string missing = (dir / "missing.obj").string();
+    for (const char* name : {"kept.png", "pipe.png", "link.png"}) {
+        auto r = run_stipple({"render", missing, "-o", (dir / name).string()});
+        EXPECT_EQ(r.exit_code, 1) << name;
+        EXPECT_NE(r.err.find("missing.obj"), std::string::npos) << name << ": " << r.err;
+    }
     std::ifstream in(dir / "kept.png");
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "not a png");
+    EXPECT_FALSE(std::filesystem::exists(dir / "nowhere")) << "the check made the link's target";
+    EXPECT_TRUE(std::filesystem::is_fifo(dir / "pipe.png"));
 }
 
 // --stats says how many triangles the depth pass drew: all of them with --depth-cull off, fewer with on
@@ -656,7 +667,7 @@ TEST(CliRender, ALowDensityDrawsSparseWholeDotsNotAGreyHaze) {
     std::printf("--dmax 0.01: mean ink %.4f, %zu inked pixels, %zu of them at least half black; --dmax 0.25: mean ink %.4f\n",
                 low.mean, low.inked, low.whole, normal.mean);
     ASSERT_GT(low.inked, 20u);
-    EXPECT_GT(double(low.whole), 0.8 * double(low.inked)) << "faint dots: a grey haze";
+    EXPECT_GT(double(low.whole), 0.97 * double(low.inked)) << "faint dots: a grey haze";
     EXPECT_NEAR(low.mean / normal.mean, 0.04, 0.012) << "the tone follows D_max";
 }
 

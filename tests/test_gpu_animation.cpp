@@ -292,11 +292,13 @@ TEST_F(GpuAnimation, TheViewersSavedSceneHoldsThePoseShown) {
     auto r = renderer();
     app::LiveScene live(scene, load_scene_content(scene), *r);
     const std::string path = test::output_path("gpu_anim_saved_pose.json").string();
-    for (const auto& [seconds, first, second] : {std::tuple{0.5, 0.5, 1.25}, std::tuple{2.5, 0.5, 2.0}}) {
+    // A looping animation's time wrapped into it; one that holds its ends as it runs (render holds it: past its
+    // end the last pose, before its start the first, which a start below 0 keeps a while).
+    for (const auto& [seconds, first, second] : {std::tuple{0.5, 0.5, 1.25}, std::tuple{2.5, 0.5, 5.25}, std::tuple{-0.5, 1.5, -0.75}}) {
         live.save(path, OrbitCamera{}, seconds);
         const Scene saved = load_scene(path);
         EXPECT_NEAR(saved.objects[0].animation.start, first, 1e-9) << "at " << seconds << " s: looping, wrapped";
-        EXPECT_NEAR(saved.objects[1].animation.start, second, 1e-9) << "at " << seconds << " s: held at its end";
+        EXPECT_NEAR(saved.objects[1].animation.start, second, 1e-9) << "at " << seconds << " s: as it runs";
         EXPECT_EQ(saved.objects[1].animation.speed, 2.0);
     }
 }

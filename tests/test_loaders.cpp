@@ -430,7 +430,7 @@ TEST(BadInput, UnknownExtension) {
     expect_load_error(write_file(temp_dir("loaders_unknown_ext") / "model.stl", "solid x\n"), "unknown model format '.stl'");
     // A scene given where a model is asked for (`stipple info scene.json`) is named as what it is.
     expect_load_error(write_file(temp_dir("loaders_scene_ext") / "scene.json", "{}\n"),
-                      "is a scene file, not a model (.obj, .ply, .gltf or .glb): render or view it");
+                      "is a scene file, not a model (.obj, .ply, .gltf or .glb)");
 }
 
 TEST(BadInput, TruncatedBinaryPly) {

@@ -58,8 +58,6 @@ void flip_byte(const fs::path& path, std::streamoff at) {
     f.write(&c, 1);
 }
 
-// Where the cache lives: an empty STIPPLE_CACHE_DIR or XDG_CACHE_HOME, or a relative XDG_CACHE_HOME (invalid
-// by the XDG specification), counts as unset; each made a cache folder in the current directory.
 // Sizes read alike wherever they are given (--cache-size, STIPPLE_MAX_STORAGE_BUFFER, STIPPLE_GPU_MEMORY_LIMIT):
 // the environment's own reader refused "64K" where --cache-size took it (until 2026-12-05).
 TEST(StippleCache, SizesReadAlikeWithEitherCaseOfUnit) {
@@ -81,6 +79,8 @@ TEST(StippleCache, SizesReadAlikeWithEitherCaseOfUnit) {
     EXPECT_NE(r.err.find("this device's largest is 1.0 MiB"), std::string::npos) << r.err;
 }
 
+// Where the cache lives: an empty STIPPLE_CACHE_DIR or XDG_CACHE_HOME, or a relative XDG_CACHE_HOME (invalid
+// by the XDG specification), counts as unset; each made a cache folder in the current directory.
 TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
     struct Saved {
         const char* name;

@@ -13,9 +13,9 @@ namespace stipple::app {
 LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer)
     : scene_(std::move(scene)), renderer_(renderer) {
     STIPPLE_CHECK(renderer.object_count() == 0, "LiveScene needs an empty renderer");
-    // Models given without their stipples (`stipple view` reads them before its window and device exist) are
-    // checked against this device before they are made: a model too big for it is refused at once, not after
-    // minutes of generation.
+    // Models given without their stipples (load_scene_models) are checked against this device before they are
+    // made: a model too big for it is refused at once, not after minutes of generation. (`stipple view` makes
+    // them before its window opens, against a device of its own: cmd_view.cpp.)
     const bool generated = std::all_of(content.objects.begin(), content.objects.end(),
                                        [](const ObjectData& o) { return o.stipples != nullptr; });
     if (!generated) {
@@ -148,13 +148,17 @@ void LiveScene::save(const std::string& path, const OrbitCamera& camera, double 
     saved.camera = scene_camera_from(camera);
     // Parameters as generated: a slider not yet released has not changed the picture.
     for (size_t i = 0; i < saved.objects.size(); ++i) saved.objects[i].params.generation = generated_with_[i].generation;
-    // The pose shown: until 2026-12-05 the file kept each animation's start, and render drew the pose at 0 s.
+    // The pose shown: until 2026-12-05 the file kept each animation's start, and render drew the pose at 0 s. A
+    // looping animation's time is wrapped into it; one that holds its ends keeps the time as it runs (a start
+    // before 0 holds the first pose a while: clamped, the saved scene would start moving at once), within the
+    // range a scene file takes.
     for (size_t i = 0; i < saved.objects.size(); ++i) {
         if (!data_[i].motion) continue;
         AnimationChoice& choice = saved.objects[i].animation;
         const anim::Animation& animation =
             data_[i].motion.model->animations.at(size_t(resolve_animation(data_[i], choice)));
-        choice.start = anim::animation_time(animation, choice.time_at(scene_seconds), choice.loop);
+        choice.start = choice.loop ? anim::animation_time(animation, choice.time_at(scene_seconds), true)
+                                   : std::clamp(choice.time_at(scene_seconds), -kMaxAnimationSeconds, kMaxAnimationSeconds);
     }
     save_scene(path, saved);
 }

@@ -158,9 +158,6 @@ int run_render(const std::vector<std::string>& argv) {
     }
     const plot::ExportOptions vector_options = read_vector_options(args);
     if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
-    // Where the files go, before the model is read and its stipples made (a frame sequence: its first frame's).
-    check_output_writable(args.has("--output") ? "--output" : "-o", output_path(output, 0, false));
-    if (args.has("--mask")) check_output_writable("--mask", output_path(args.get("--mask", ""), 0, false));
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
     // --page" sent the user to add a page that was then refused for the format.
     if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
@@ -230,6 +227,11 @@ int run_render(const std::vector<std::string>& argv) {
                 fail_file(scene.source, std::string(name) + " sets the camera, but the scene's camera_path places every frame's "
                                         "camera: edit the path, or render without it");
     }
+
+    // Where the files go, once the options are known good and before the model is read and its stipples made
+    // (a frame sequence: its first frame's).
+    check_output_writable(args.has("--output") ? "--output" : "-o", output_path(output, 0, false));
+    if (args.has("--mask")) check_output_writable("--mask", output_path(args.get("--mask", ""), 0, false));
 
     // The models first: what depends on them is checked before their stipples are generated (minutes for a
     // large model at a high density), and before Vulkan starts.

@@ -7,6 +7,8 @@
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "gpu/context.hpp"
+#include "scene/scene_content.hpp"
 
 namespace stipple::cli {
 
@@ -52,9 +54,19 @@ int run_view(const std::vector<std::string>& argv) {
 
     Scene scene = scene_from_command_line(args, "view");
     viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
-    // The stipples are made by the viewer once its device is open, which says first whether it can hold them.
+    // The models, then whether the device can hold their stipples, then the stipples (minutes for a large model
+    // at a high density, with a progress bar on the terminal), all before the window opens: made in the viewer
+    // once its device was open, they kept the window blank meanwhile; made before any device, one too big for it
+    // was refused only after its generation. The viewer's own device comes with its window (the same --device).
     SceneContent content = load_scene_models(scene);
     if (scene.source.empty()) drop_animations_of_static_models(scene, content);
+    {
+        gpu::ContextOptions probe;
+        probe.device_index = viewer.device_index;
+        const gpu::Context device(probe);
+        check_scene_fits(device, scene, content);
+    }
+    make_scene_stipples(scene, content);
     viewer.start_time = read_animation_clock(args, any_animated(content.objects)).time;
     if (scene.source.empty() && scene.objects.size() > 1) {
         // Models given side by side on the command line come in any units; line them up.

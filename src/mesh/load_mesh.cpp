@@ -45,7 +45,7 @@ Format format_of(const std::string& name) {
     if (ext == ".ply") return Format::ply;
     if (ext == ".gltf" || ext == ".glb") return Format::gltf;
     if (ext == ".json")  // a scene names models; `info` and a model's place take one model
-        fail_file(name, "is a scene file, not a model (.obj, .ply, .gltf or .glb): render or view it");
+        fail_file(name, "is a scene file, not a model (.obj, .ply, .gltf or .glb)");
     fail_file(name, (ext.empty() ? std::string("has no file extension") : "unknown model format '" + ext + "'") +
                         " (expected .obj, .ply, .gltf or .glb)");
 }

@@ -26,14 +26,14 @@ bool indices_in_range(const Mesh& mesh, size_t t) {
     return mesh.indices[3 * t] < n && mesh.indices[3 * t + 1] < n && mesh.indices[3 * t + 2] < n;
 }
 
-// Each triangle's neighbours across its manifold edges, as (neighbour << 1 | same): `same` when both
-// walk the shared edge in the same direction, i.e. when exactly one of them must be turned.
 // An edge of one triangle only (a hole's rim, a sheet's edge), walked from `from` to `to` (welded corners) in
 // the triangle's own winding.
 struct BorderEdge {
     uint32_t triangle, from, to;
 };
 
+// Each triangle's neighbours across its manifold edges, as (neighbour << 1 | same): `same` when both
+// walk the shared edge in the same direction, i.e. when exactly one of them must be turned.
 struct Adjacency {
     std::vector<uint32_t> first;  // triangle t's entries are [first[t], first[t + 1])
     std::vector<uint32_t> entries;
@@ -149,45 +149,59 @@ struct PartCaps {
 };
 
 PartCaps cap_holes(const Mesh& mesh, const std::vector<BorderEdge>& borders, const std::vector<uint32_t>& part,
-                   const std::function<bool(uint32_t)>& flipped, const std::vector<glm::dvec3>& centre, size_t parts) {
+                   const std::vector<uint8_t>& wanted, const std::function<bool(uint32_t)>& flipped,
+                   const std::vector<glm::dvec3>& centre, size_t parts) {
     PartCaps caps{std::vector<double>(parts, 0.0), std::vector<double>(parts, 0.0), std::vector<double>(parts, 0.0)};
-    // Rims: border edges joined where they share a corner within one part (union-find over the edges).
+    auto counted = [&](uint32_t i) {
+        const uint32_t p = part[borders[i].triangle];
+        return p != kUnassigned && wanted[p] != 0;
+    };
+    // Rims: border edges joined where they share a corner within one part (union-find over the edges). The
+    // edges' ends bucketed by corner with a counting sort, as manifold_adjacency buckets its half-edges: a
+    // triangle soup has three border edges a triangle, and a comparison sort of them was most of the repair.
     std::vector<uint32_t> root(borders.size());
     for (uint32_t i = 0; i < root.size(); ++i) root[i] = i;
     auto find = [&](uint32_t i) {
         while (root[i] != i) i = root[i] = root[root[i]];
         return i;
     };
-    struct End {
-        uint32_t part, corner, edge;
-    };
-    std::vector<End> ends;
-    ends.reserve(2 * borders.size());
-    for (uint32_t i = 0; i < borders.size(); ++i) {
-        const uint32_t p = part[borders[i].triangle];
-        if (p == kUnassigned) continue;
-        ends.push_back({p, borders[i].from, i}), ends.push_back({p, borders[i].to, i});
+    std::vector<uint32_t> first(mesh.positions.size() + 1, 0);
+    for (uint32_t i = 0; i < borders.size(); ++i)
+        if (counted(i)) ++first[borders[i].from + 1], ++first[borders[i].to + 1];
+    for (size_t v = 0; v < mesh.positions.size(); ++v) first[v + 1] += first[v];
+    std::vector<uint32_t> at(first.back());
+    {
+        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+        for (uint32_t i = 0; i < borders.size(); ++i)
+            if (counted(i)) at[fill[borders[i].from]++] = i, at[fill[borders[i].to]++] = i;
     }
-    std::sort(ends.begin(), ends.end(), [](const End& a, const End& b) {
-        return a.part != b.part ? a.part < b.part : a.corner != b.corner ? a.corner < b.corner : a.edge < b.edge;
-    });
-    for (size_t k = 1; k < ends.size(); ++k)
-        if (ends[k].part == ends[k - 1].part && ends[k].corner == ends[k - 1].corner) {
-            const uint32_t a = find(ends[k].edge), b = find(ends[k - 1].edge);
-            if (a != b) root[std::max(a, b)] = std::min(a, b);
-        }
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const auto begin = at.begin() + first[v], end = at.begin() + first[v + 1];
+        if (end - begin < 2) continue;
+        std::sort(begin, end, [&](uint32_t a, uint32_t b) {
+            const uint32_t pa = part[borders[a].triangle], pb = part[borders[b].triangle];
+            return pa != pb ? pa < pb : a < b;
+        });
+        for (auto e = begin + 1; e != end; ++e)
+            if (part[borders[*e].triangle] == part[borders[*(e - 1)].triangle]) {
+                const uint32_t a = find(*e), b = find(*(e - 1));
+                if (a != b) root[std::max(a, b)] = std::min(a, b);
+            }
+    }
+    std::vector<uint32_t>().swap(at);
+    std::vector<uint32_t>().swap(first);
     // A welded corner is a vertex index (weld_by_position: the first vertex at that position).
     std::vector<glm::dvec3> apex(borders.size(), glm::dvec3(0.0));
     std::vector<double> weight(borders.size(), 0.0);
     for (uint32_t i = 0; i < borders.size(); ++i) {
-        if (part[borders[i].triangle] == kUnassigned) continue;
+        if (!counted(i)) continue;
         const glm::dvec3 a(mesh.positions[borders[i].from]), b(mesh.positions[borders[i].to]);
         const uint32_t r = find(i);
         apex[r] += 0.5 * (a + b), weight[r] += 1.0;
     }
     for (uint32_t i = 0; i < borders.size(); ++i) {
+        if (!counted(i)) continue;
         const uint32_t p = part[borders[i].triangle];
-        if (p == kUnassigned) continue;
         const uint32_t r = find(i);
         const glm::dvec3 o = centre[p];
         glm::dvec3 a = glm::dvec3(mesh.positions[borders[i].from]) - o, b = glm::dvec3(mesh.positions[borders[i].to]) - o;
@@ -352,8 +366,10 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
         f.volume += volume;
         f.unsigned_volume += std::abs(volume);
     }
-    const PartCaps caps = cap_holes(mesh, adjacency.borders, part, [&](uint32_t t) { return turn[t] != invert[part[t]]; },
-                                    centre, repair.parts);
+    std::vector<uint8_t> open_undecided(repair.parts, 0);
+    for (size_t p = 0; p < repair.parts; ++p) open_undecided[p] = !figures[p].closed && !decided_by_normals[p];
+    const PartCaps caps = cap_holes(mesh, adjacency.borders, part, open_undecided,
+                                    [&](uint32_t t) { return turn[t] != invert[part[t]]; }, centre, repair.parts);
     for (size_t p = 0; p < repair.parts; ++p) {
         PartFigures& f = figures[p];
         if (f.closed || decided_by_normals[p] || !(caps.area[p] < kNearlyClosed * f.area)) continue;

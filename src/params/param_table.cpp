@@ -71,7 +71,7 @@ const ParamSpec kTable[] = {
      ParamType::Float, 0.0, 8.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
      [](const P& p) { return double(p.pr); }, [](P& p, double v) { p.pr = float(v); }},
     {"min_area", "min-area", "min area px^2", kShading,
-     "minimum stipple screen area in px^2: polygons projecting smaller, or too small to hold a whole stipple at D_max, are drawn by probabilistic selection",
+     "minimum stipple screen area in px^2 at the default D_max (a lower D_max widens it in proportion): polygons projecting smaller are drawn by probabilistic selection",
      ParamType::Float, 2.0, 9.0, false, {}, ParamEffect::Frame, ParamWidget::Slider, false,
      [](const P& p) { return double(p.min_area); }, [](P& p, double v) { p.min_area = float(v); }},
     {"intrinsic", "intrinsic", "intrinsic", kShading, "§2.3 intrinsic depth enhancement", ParamType::Bool, 0, 0,

@@ -10,6 +10,11 @@
 #include "render/object_gpu.hpp"
 #include "render/path_buffers.hpp"
 
+namespace {
+// min_area is given for the default D_max (polygon_density_terms): the two must move together.
+static_assert(stipple::formulas::kMinAreaDensity == stipple::GenerationParams{}.dmax, "kMinAreaDensity is the default D_max");
+}  // namespace
+
 namespace stipple {
 
 void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::span<const uint32_t> first_stipple,
@@ -24,7 +29,7 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
         const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
         densities[t] = formulas::selected_density(terms, view.selection);
         bounds[t] = glm::vec2(densities[t]);
-        if (formulas::may_carry_gradient(view, params, densities[t])) {  // as the density pass and its gradient pass
+        if (formulas::may_carry_gradient(terms, view, params, densities[t])) {  // as the density pass and its gradient pass
             const uint32_t* corner = &indices[3 * (first_triangle + t)];
             auto in_view = [&](uint32_t i) { return glm::vec3(object.model_view * glm::vec4(positions[i], 1.0f)); };
             const glm::vec3 a = in_view(corner[0]), b = in_view(corner[1]), c = in_view(corner[2]);

@@ -148,7 +148,10 @@ InkFigures measure_ink(const RenderedFrame& frame) {
     for (size_t i = 0; i < frame.depth.size(); ++i) {
         if (frame.depth[i] >= 1.0f) continue;
         ++f.covered;
-        f.ink += 1.0 - frame.color.pixels[4 * i] / 255.0;
+        // 1 - luminance (Rec. 709 weights; the red channel alone read a red ink as light): black and grey ink, as
+        // every figure here is taken, read the same either way.
+        const uint8_t* rgb = &frame.color.pixels[4 * i];
+        f.ink += 1.0 - (0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]) / 255.0;
     }
     return f;
 }
@@ -173,7 +176,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
         auto in_view = [&](const glm::vec3& p) { return glm::vec3(model_view * glm::vec4(p, 1.0f)); };
         glm::vec3 a(0.0f), b(0.0f), c(0.0f);
         glm::vec2 bounds(density);
-        if (formulas::may_carry_gradient(view, params, density)) {
+        if (formulas::may_carry_gradient(terms, view, params, density)) {
             a = in_view(corners[corner[0]]), b = in_view(corners[corner[1]]), c = in_view(corners[corner[2]]);
             density = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, density), a, b, c, params);
             bounds = formulas::polygon_density_bounds(density, a, b, c, params);

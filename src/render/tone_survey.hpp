@@ -16,8 +16,9 @@
 namespace stipple {
 
 enum class ToneRegime {
-    Large,          // projected area >= min_area: the s^pr rule, all of its owed stipples
-    Probabilistic,  // projected area < min_area: drawn with a probability, carrying the skipped ones' ink
+    Large,          // projected area >= min_area and room for a stipple: the s^pr rule, all of its owed stipples
+    Probabilistic,  // projected area < min_area, or too little room for a whole stipple (polygon_density_terms):
+                    // drawn with a probability, carrying the skipped ones' ink
     Enlarged,       // owed more than its candidates: draws all of them, larger (stipple_scale)
     Culled,         // faces away: owes nothing
 };

@@ -28,6 +28,9 @@ struct Transform {
 // What an animated model plays (glTF animations, issue 16): scene files' "animation" field, and
 // `--animation` / `--time` for models given on the command line. Ignored for a static model, which
 // rejects a name.
+// The most seconds an animation's start (a scene file's, or --time) may lie from 0, either way.
+inline constexpr double kMaxAnimationSeconds = 1e6;
+
 struct AnimationChoice {
     std::string name;     // the animation's name, or its index ("0", "1", ...); "" for the model's first
     double start = 0.0;   // seconds into the animation at scene time 0

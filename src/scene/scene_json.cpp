@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -65,7 +66,7 @@ public:
         if (!j.is_number()) error(where, std::string("expected a number, got ") + j.type_name());
         double v = j.get<double>();
         // JSON has no infinity or NaN: what fails here is finite but beyond a float (as the command line says it).
-        if (!std::isfinite(v) || std::abs(v) > 3.0e38) {
+        if (!std::isfinite(v) || std::abs(v) > double(std::numeric_limits<float>::max())) {
             char text[64];
             std::snprintf(text, sizeof text, "%g", v);
             error(where, std::string(text) + " is beyond single precision (3.4e+38)");
@@ -232,7 +233,7 @@ AnimationChoice read_animation(const json& j, const Reader& r, const std::string
     }
     if (j.contains("start")) {
         a.start = r.number(j["start"], Reader::field(where, "start"));
-        if (std::abs(a.start) > 1e6) r.error(Reader::field(where, "start"), "must be in -1e6..1e6 seconds");
+        if (std::abs(a.start) > kMaxAnimationSeconds) r.error(Reader::field(where, "start"), "must be in -1e6..1e6 seconds");
     }
     if (j.contains("speed")) {
         a.speed = r.number(j["speed"], Reader::field(where, "speed"));
