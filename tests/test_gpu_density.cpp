@@ -70,6 +70,11 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
         params.intrinsic = camera % 4 != 2;
         params.extrinsic = camera % 4 != 3;
         float distance = std::exp(std::log(0.6f) + uniform(rng) * std::log(60.0f / 0.6f));
+        // One camera near for certain, where polygons large on screen hold enough stipples to carry a gradient:
+        // these polygons hold 0-12 candidates whatever their size, and since 2026-12-05 one that cannot hold
+        // min_area x 0.25 stipples even fully dark goes to probabilistic selection, however large on screen;
+        // the random draws put no camera nearer than 5 framing distances, where all of them did.
+        if (camera == 0) distance = 0.4f, params.pr = 2.0f, params.min_area = 2.0f;
         FrameView view = test::framed_view({glm::vec3(0.0f), 1.8f}, target.extent(), distance, 360.0f * uniform(rng),
                                            170.0f * uniform(rng) - 85.0f);
         view.light_view = glm::normalize(glm::vec3(uniform(rng), uniform(rng), uniform(rng)) - 0.5f);
