@@ -229,24 +229,21 @@ TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
         EXPECT_EQ(kept.winding.triangles_turned, 0u);
         EXPECT_GT(signed_volume(kept), 0.0);
     }
+    // `mesh` wound the other way, with normals that agree, written as an OBJ and loaded.
+    auto inward_with_normals = [&](Mesh mesh, const std::string& name) {
+        reverse_all(mesh);
+        compute_vertex_normals(mesh);
+        write_file((dir / name).string(), bowl_text(mesh, 1.0f));
+        return load_mesh((dir / name).string());
+    };
     // A bowl wound toward its hollow with normals that agree (a valley, a dish): kept, normals and all. Until
     // 2026-12-05 the volume turned it, and from above it drew no stipples.
-    {
-        Mesh bowl = test::make_open_hemisphere(48, 12);
-        reverse_all(bowl);
-        compute_vertex_normals(bowl);
-        write_file((dir / "bowl.obj").string(), bowl_text(bowl, 1.0f));
-        const Mesh kept = load_mesh((dir / "bowl.obj").string());
-        EXPECT_EQ(kept.winding.triangles_turned, 0u);
-        EXPECT_EQ(kept.winding.normals_turned, 0u);
-        EXPECT_LT(signed_volume(kept), 0.0);
-    }
+    const Mesh kept = inward_with_normals(test::make_open_hemisphere(48, 12), "bowl.obj");
+    EXPECT_EQ(kept.winding.triangles_turned, 0u);
+    EXPECT_EQ(kept.winding.normals_turned, 0u);
+    EXPECT_LT(signed_volume(kept), 0.0);
     // A scan with a hole wound inward, normals included: nearly closed, its volume turns it, normals and all.
-    Mesh scan = holed_sphere(1);
-    reverse_all(scan);
-    compute_vertex_normals(scan);
-    write_file((dir / "scan.obj").string(), bowl_text(scan, 1.0f));
-    const Mesh turned = load_mesh((dir / "scan.obj").string());
+    const Mesh turned = inward_with_normals(holed_sphere(1), "scan.obj");
     EXPECT_EQ(turned.winding.parts_turned_outward, 1u);
     EXPECT_EQ(turned.winding.parts_turned_to_normals, 0u);
     EXPECT_EQ(facing_inward(turned, glm::dvec3(0.0)), 0u);

@@ -13,15 +13,10 @@ namespace stipple::app {
 LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer)
     : scene_(std::move(scene)), renderer_(renderer) {
     STIPPLE_CHECK(renderer.object_count() == 0, "LiveScene needs an empty renderer");
-    // Models given without their stipples (load_scene_models) are checked against this device before they are
-    // made: a model too big for it is refused at once, not after minutes of generation. (`stipple view` makes
-    // them before its window opens, against a device of its own: cmd_view.cpp.)
-    const bool generated = std::all_of(content.objects.begin(), content.objects.end(),
-                                       [](const ObjectData& o) { return o.stipples != nullptr; });
-    if (!generated) {
-        check_scene_fits(renderer_.context(), scene_, content);
-        make_scene_stipples(scene_, content);
-    }
+    // `stipple view` checks the device and makes the stipples before its window opens (cmd_view.cpp).
+    STIPPLE_CHECK(std::all_of(content.objects.begin(), content.objects.end(),
+                              [](const ObjectData& o) { return o.stipples != nullptr; }),
+                  "LiveScene needs every object's stipples (make_scene_stipples)");
     data_ = std::move(content.objects);
     for (const SceneObject& o : scene_.objects) {
         generated_with_.push_back(o.params);

@@ -16,8 +16,7 @@ namespace stipple::app {
 
 class LiveScene {
 public:
-    // Adds every object to `renderer`, which must be empty and outlive this. Objects given without stipples
-    // (load_scene_models) are checked against the renderer's device (check_scene_fits) and then generated.
+    // Adds every object, its stipples made, to `renderer`, which must be empty and outlive this.
     LiveScene(Scene scene, SceneContent content, StippleRenderer& renderer);
 
     Scene& scene() { return scene_; }

@@ -34,7 +34,7 @@ struct ViewerOptions {
 
 // Opens the window and runs until it is closed (Escape, Q or the window manager). Returns the exit
 // code: 0, or 2 when Vulkan validation reported anything. Throws stipple::Error on failures. `content`
-// may come without stipples (load_scene_models): they are made once the device says it can hold them.
+// comes with its stipples made (cmd_view checks the device first: check_scene_fits).
 int run_viewer(Scene scene, SceneContent content, const ViewerOptions& options);
 
 }  // namespace stipple::app

@@ -18,6 +18,13 @@ namespace {
 // one mesh share their stipples.
 using GenerationKey = std::pair<std::string, std::vector<double>>;
 
+// An error about object i: a scene file names itself and the object's field; a bare model keeps the loader's
+// own line.
+[[noreturn]] void fail_in_scene(const Scene& scene, size_t i, const std::string& field, const Error& e) {
+    if (scene.source.empty()) throw e;
+    fail_file(scene.source, "objects[" + std::to_string(i) + "]." + field + ": " + e.what());
+}
+
 }  // namespace
 
 SceneContent load_scene_models(const Scene& scene) {
@@ -27,11 +34,6 @@ SceneContent load_scene_models(const Scene& scene) {
         const std::string path = scene.model_path(i);
         validate_params(scene.objects[i].params);
         ObjectData object;
-        // A scene file names itself and the object; a bare model keeps the loader's own line.
-        const auto in_scene = [&](const std::string& field, const Error& e) {
-            if (scene.source.empty()) throw e;
-            fail_file(scene.source, "objects[" + std::to_string(i) + "]." + field + ": " + e.what());
-        };
         try {
             auto found = models.find(path);
             if (found == models.end()) {
@@ -40,7 +42,7 @@ SceneContent load_scene_models(const Scene& scene) {
             }
             object = found->second;
         } catch (const Error& e) {
-            in_scene("model", e);
+            fail_in_scene(scene, i, "model", e);
         }
         content.objects.push_back(std::move(object));
     }
@@ -53,8 +55,7 @@ SceneContent load_scene_models(const Scene& scene) {
         try {
             resolve_animation(content.objects[i], scene.objects[i].animation);
         } catch (const Error& e) {
-            if (scene.source.empty()) throw;
-            fail_file(scene.source, "objects[" + std::to_string(i) + "].animation.name: " + e.what());
+            fail_in_scene(scene, i, "animation.name", e);
         }
     }
     return content;
