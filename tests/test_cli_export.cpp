@@ -93,7 +93,7 @@ void expect_vector_is_the_png(const std::string& name, std::vector<std::string> 
     const std::string svg = (dir / "frame.svg").string(), pdf = (dir / "frame.pdf").string();
     std::vector<std::string> size = {"--width", std::to_string(kWidth), "--height", std::to_string(kHeight)};
     std::vector<std::string> page = {"--page", std::to_string(kWidth) + "x" + std::to_string(kHeight) + "mm",
-                                     "--margin", "0"};
+                                     "--margin", "0", "--fit", "frame"};
     auto args = [&](std::vector<std::string> extra) {
         std::vector<std::string> all = {"render"};
         all.insert(all.end(), model_args.begin(), model_args.end());
@@ -274,6 +274,54 @@ TEST(CliExport, ShowTravelAddsThePenUpMovesToTheSvg) {
     EXPECT_NE(pdf.exit_code, 0);
     EXPECT_NE(pdf.err.find("--show-travel"), std::string::npos) << pdf.err;
     EXPECT_EQ(std::count(pdf.err.begin(), pdf.err.end(), '\n'), 1) << pdf.err;
+}
+
+// By default the drawing fills the page: the default scene's dots reach the margins on a page turned as the
+// drawing is, where the whole frame (--fit frame) leaves paper around them; a frame sequence lines its
+// pages up unless told; --fit is for vector output.
+TEST(CliExport, TheDrawingFillsThePageUnlessTheFrameIsAsked) {
+    const auto dir = test::temp_dir("cli-export-fit");
+    const std::vector<std::string> view = {"render", "--width", "320", "--height", "256"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> all = view;
+        all.insert(all.end(), extra.begin(), extra.end());
+        return all;
+    };
+    // The dots' extent over the page's room inside its 10-mm margins, in the direction that fills most.
+    auto filled = [](const Svg& doc) {
+        double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+        for (const auto& [x, y] : doc.dots) {
+            x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        }
+        const double w = std::stod(doc.width), h = std::stod(doc.height);
+        return std::max((x1 - x0) / (w - 20.0), (y1 - y0) / (h - 20.0));
+    };
+    const std::string fitted = (dir / "fitted.svg").string(), framed = (dir / "framed.svg").string();
+    const std::string said = run_ok(with({"-o", fitted}));
+    run_ok(with({"-o", framed, "--fit", "frame"}));
+    const Svg drawing = read_svg(fitted), frame = read_svg(framed);
+    ASSERT_GT(drawing.dots.size(), 500u);
+    EXPECT_EQ(drawing.dots.size(), frame.dots.size());
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (const auto& [x, y] : drawing.dots) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    const bool wide = x1 - x0 > y1 - y0;
+    EXPECT_EQ(drawing.width, wide ? "297mm" : "210mm") << "A4 turned as the drawing is";
+    EXPECT_EQ(frame.width, "297mm") << "A 320 x 256 frame is landscape";
+    std::printf("the dots span %.3f of the page's room fitted, %.3f with the frame\n", filled(drawing), filled(frame));
+    EXPECT_GT(filled(drawing), 0.97);
+    EXPECT_LT(filled(frame), 0.9 * filled(drawing));
+    EXPECT_NE(said.find("the drawing fitted to it"), std::string::npos) << said;
+
+    const std::string sequence = run_ok(with({"-o", (dir / "f%d.svg").string(), "--frames", "2", "--orbit", "10"}));
+    EXPECT_NE(sequence.find("the frame's view at 320x256"), std::string::npos) << sequence;
+    EXPECT_EQ(read_svg((dir / "f0.svg").string()).view_box, frame.view_box);
+
+    const test::CommandResult png = test::run_stipple(with({"-o", (dir / "x.png").string(), "--fit", "frame"}));
+    EXPECT_NE(png.exit_code, 0);
+    EXPECT_NE(png.err.find("--fit is for vector output"), std::string::npos) << png.err;
+    const test::CommandResult bad = test::run_stipple(with({"-o", (dir / "y.svg").string(), "--fit", "page"}));
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.err.find("--fit 'page': expected drawing or frame"), std::string::npos) << bad.err;
 }
 
 // What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger

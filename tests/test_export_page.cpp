@@ -54,6 +54,30 @@ TEST(ExportPage, FitsUniformlyAndCentred) {
     EXPECT_NEAR(tall.to_mm({0.0, 0.0}).y, 5.0, 1e-9);
 }
 
+// A bare named size takes the drawing's orientation (a landscape frame on portrait A4 used a third of the
+// paper); one whose orientation is named, and WxHmm, keep theirs.
+TEST(ExportPage, ABareNamedSizeIsTurnedAsTheDrawingIs) {
+    const PageSize wide = oriented_for(parse_page("A4"), 1280.0, 1024.0);
+    EXPECT_DOUBLE_EQ(wide.width_mm, 297.0);
+    EXPECT_DOUBLE_EQ(wide.height_mm, 210.0);
+    const PageSize tall = oriented_for(parse_page("letter"), 300.0, 1024.0);
+    EXPECT_DOUBLE_EQ(tall.width_mm, 215.9);
+    EXPECT_DOUBLE_EQ(tall.height_mm, 279.4);
+    EXPECT_DOUBLE_EQ(oriented_for(parse_page("A3-portrait"), 1280.0, 1024.0).width_mm, 297.0) << "named: kept";
+    EXPECT_DOUBLE_EQ(oriented_for(parse_page("A3-landscape"), 100.0, 1024.0).width_mm, 420.0) << "named: kept";
+    EXPECT_DOUBLE_EQ(oriented_for(parse_page("200x300mm"), 1280.0, 1024.0).width_mm, 200.0) << "as written: kept";
+    EXPECT_DOUBLE_EQ(oriented_for(parse_page("A5"), 500.0, 500.0).width_mm, 148.0) << "square: portrait";
+}
+
+// Any area of the image may be fitted: its centre lands on the page's centre.
+TEST(ExportPage, AnAreaOfTheImageIsFittedAndCentred) {
+    const PageLayout layout = fit_to_page(parse_page("A4-landscape"), 10.0, glm::dvec2(300.0, 200.0), glm::dvec2(500.0, 300.0));
+    EXPECT_NEAR(layout.mm_per_px, 277.0 / 200.0, 1e-12);  // 2:1 on 277 x 190 mm: the width limits
+    EXPECT_NEAR(layout.to_mm({300.0, 0.0}).x, 10.0, 1e-9);
+    EXPECT_NEAR(layout.to_mm({500.0, 0.0}).x, 287.0, 1e-9);
+    EXPECT_NEAR(layout.to_mm({0.0, 250.0}).y, 105.0, 1e-9);
+}
+
 TEST(ExportPage, BadMarginsAndEmptyImagesAreErrors) {
     stipple::test::expect_plot_error([] { fit_to_page(parse_page("A4"), -1.0, 100.0, 100.0); }, "--margin -1");
     stipple::test::expect_plot_error([] { fit_to_page(parse_page("A5"), 74.0, 100.0, 100.0); }, "leaves no room");

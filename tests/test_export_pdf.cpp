@@ -36,7 +36,7 @@ std::pair<double, double> media_box(const std::string& pdf) {
 TEST(ExportPdf, PageSizeInPoints) {
     const auto dir = stipple::test::temp_dir("export_pdf_size");
     struct Case { const char* page; double width_pt, height_pt; };
-    for (const Case& c : {Case{"A4", 595.276, 841.89}, Case{"A3-landscape", 1190.55, 841.89}, Case{"100x50mm", 283.465, 141.732}, Case{"letter", 612.0, 792.0}}) {
+    for (const Case& c : {Case{"A4-portrait", 595.276, 841.89}, Case{"A3-landscape", 1190.55, 841.89}, Case{"100x50mm", 283.465, 141.732}, Case{"letter", 792.0, 612.0} /* bare: turned as the 400 x 300 drawing */}) {
         ExportOptions options;
         options.page = parse_page(c.page);
         const auto path = dir / (std::string(c.page) + ".pdf");
@@ -48,7 +48,7 @@ TEST(ExportPdf, PageSizeInPoints) {
         EXPECT_NEAR(height, c.height_pt, 0.01) << c.page;
     }
     if (!stipple::test::have_tool("pdfinfo")) GTEST_SKIP() << "pdfinfo (poppler-utils) not installed: MediaBox checked, pdfinfo not";
-    ASSERT_EQ(stipple::test::run_shell("pdfinfo " + stipple::test::quoted(dir / "A4.pdf") + " > " + stipple::test::quoted(dir / "info.txt")), 0);
+    ASSERT_EQ(stipple::test::run_shell("pdfinfo " + stipple::test::quoted(dir / "A4-portrait.pdf") + " > " + stipple::test::quoted(dir / "info.txt")), 0);
     const std::string info = read_all(dir / "info.txt");
     EXPECT_TRUE(std::regex_search(info, std::regex(R"(Pages:\s+1\n)"))) << info;
     EXPECT_NE(info.find("595.276 x 841.89 pts (A4)"), std::string::npos) << info;
@@ -73,6 +73,7 @@ TEST(ExportPdf, RasterisedInkIsWhereTheDrawingIs) {
     ExportOptions options;
     options.page = parse_page("400x300mm");
     options.margin_mm = 0.0;  // 1 mm per pixel
+    options.fit = Fit::Frame;
     options.pen_width_mm = 2.0;
     options.fill_paper = true;
     const auto dir = stipple::test::temp_dir("export_pdf_raster");

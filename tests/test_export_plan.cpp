@@ -2,6 +2,7 @@
 // `--stats` prints, and writing by extension.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -53,6 +54,48 @@ TEST(ExportPlan, LayersNumberedPerObjectAndKind) {
     ASSERT_EQ(pen.layers.size(), 3u);
     EXPECT_EQ(pen.layers[0].stroke_mm, 0.3);
     EXPECT_EQ(pen.layers[1].stroke_mm, 0.3);
+}
+
+// The default fit: the box of what is drawn (each dot to its ink radius, each line to half its width) fills
+// the page inside the margins, on a page turned as that box is; --fit frame lays out the whole frame.
+TEST(ExportPlan, TheDrawingFillsThePageInsideItsMargins) {
+    Drawing drawing;
+    drawing.width_px = 1000;
+    drawing.height_px = 1000;
+    drawing.objects.push_back({"wide", 2.0f});
+    // Dots from x 400 to 600 at y 450 and 550, ink radius 2 * sqrt(0.25) = 1; a line at y 560, 2 px wide.
+    for (int x = 400; x <= 600; x += 20)
+        for (int y : {450, 550}) drawing.dots.push_back({glm::vec2(float(x), float(y)), 2.0f, 0.25f, 0, 0});
+    drawing.segments.push_back({{450.0f, 560.0f}, {550.0f, 560.0f}, 0, LineKind::Contour});
+    ExportOptions options;  // A4, 10 mm margins, fit the drawing
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    EXPECT_EQ(plan.fit, Fit::Drawing);
+    EXPECT_DOUBLE_EQ(plan.layout.page.width_mm, 297.0) << "a box wider than tall: landscape";
+    // The box: x 399..601 (202 px), y 449..561 (112 px); 277 / 202 < 190 / 112, so the width limits.
+    EXPECT_NEAR(plan.layout.mm_per_px, 277.0 / 202.0, 1e-9);
+    double left = 1e9, right = -1e9;
+    for (const PlotDot& dot : plan.layers[0].dots) {
+        left = std::min(left, dot.mm.x - dot.radius_mm);
+        right = std::max(right, dot.mm.x + dot.radius_mm);
+    }
+    EXPECT_NEAR(left, 10.0, 1e-6);
+    EXPECT_NEAR(right, 287.0, 1e-6);
+    EXPECT_NEAR(plan.layout.to_mm({500.0, 505.0}).y, 105.0, 1e-9) << "centred on the page";
+
+    options.fit = Fit::Frame;
+    const PlotPlan frame = make_plot_plan(drawing, options);
+    EXPECT_EQ(frame.fit, Fit::Frame);
+    EXPECT_DOUBLE_EQ(frame.layout.page.width_mm, 210.0) << "a square frame: portrait";
+    EXPECT_NEAR(frame.layout.mm_per_px, 190.0 / 1000.0, 1e-12);
+
+    Drawing empty = drawing;
+    empty.dots.clear();
+    empty.segments.clear();
+    options.fit = Fit::Drawing;
+    const PlotPlan blank = make_plot_plan(empty, options);
+    EXPECT_EQ(blank.fit, Fit::Frame) << "nothing drawn: the frame's page";
+    EXPECT_NEAR(blank.layout.mm_per_px, 190.0 / 1000.0, 1e-12);
+    EXPECT_TRUE(blank.layers.empty());
 }
 
 // The page holds the frame: a dot centred beyond the image's edge is left out, and a line piece that

@@ -151,6 +151,7 @@ TEST(ExportSvg, RasterisedInkIsWhereTheDotsAre) {
     ExportOptions options;
     options.page = parse_page("400x300mm");
     options.margin_mm = 0.0;  // 1 mm per pixel
+    options.fit = Fit::Frame;
     options.fill_paper = true;
     const PlotPlan plan = make_plot_plan(drawing, options);
     const auto dir = stipple::test::temp_dir("export_svg_raster");

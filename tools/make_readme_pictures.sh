@@ -17,13 +17,13 @@ trap 'rm -rf "$tmp"' EXIT
 
 # 640x512 px on a 160x128 mm page without margin: 4 px a mm, so the three pictures line up.
 view=(--width 640 --height 512)
-page=(--page 160x128mm --margin 0)
+page=(--page 160x128mm --margin 0 --fit frame)
 "$stipple" render "${view[@]}" -o "$out/default.png"
 "$stipple" render "${view[@]}" "${page[@]}" --fill-paper -o "$tmp/default.svg" --stats | grep '^plot:'
 rsvg-convert -w 640 -h 512 "$tmp/default.svg" -o "$out/default-svg.png"
 # The plot order on fewer dots (a smaller budget), on a small page so that the 0.05 mm pen-up
 # moves come out thick enough to see at 640 px.
-"$stipple" render "${view[@]}" --page 40x32mm --margin 0 --fill-paper --max-stipples 60000 --show-travel \
+"$stipple" render "${view[@]}" --page 40x32mm --margin 0 --fit frame --fill-paper --max-stipples 60000 --show-travel \
   -o "$tmp/travel.svg" --stats | grep '^plot:'
 rsvg-convert -w 640 -h 512 "$tmp/travel.svg" -o "$out/default-travel.png"
 ls -l "$out"/default.png "$out"/default-svg.png "$out"/default-travel.png

@@ -15,8 +15,12 @@ std::optional<ExportRequest> draw_export_section(ExportPanelState& state, const 
     ImGui::SameLine();
     ImGui::InputText("page", state.page, sizeof state.page);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A3, A4, A5, letter, legal or WxHmm, with -portrait or -landscape (as --page)");
+        ImGui::SetTooltip("A3, A4, A5, letter, legal or WxHmm, with -portrait or -landscape (as --page; a bare A4 is "
+                          "turned as the drawing is)");
     ImGui::SliderFloat("margin mm", &state.margin_mm, 0.0f, 50.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::Checkbox("fit the drawing", &state.fit_drawing);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("on: what is drawn fills the page inside the margins; off: the whole window's view (as --fit)");
     const char* label = state.format == 0 ? "export SVG" : "export PDF";
     if (ImGui::Button(label)) {
         try {
@@ -24,6 +28,7 @@ std::optional<ExportRequest> draw_export_section(ExportPanelState& state, const 
             r.extension = state.format == 0 ? ".svg" : ".pdf";
             r.options.page = plot::parse_page(state.page);
             r.options.margin_mm = state.margin_mm;
+            r.options.fit = state.fit_drawing ? plot::Fit::Drawing : plot::Fit::Frame;
             state.error.clear();
             request = std::move(r);
         } catch (const Error& e) {

@@ -13,6 +13,7 @@ struct ExportPanelState {
     int format = 0;              // 0: SVG, 1: PDF
     char page[32] = "A4";        // as --page takes it: A3|A4|A5|letter|legal|WxHmm [-portrait|-landscape]
     float margin_mm = 10.0f;     // the CLI's default (plot::ExportOptions)
+    bool fit_drawing = true;     // --fit drawing (the default) or frame
     std::string error;           // the last page name that did not parse, shown under the field
 };
 

@@ -8,6 +8,7 @@
 
 #include "app/frame_export.hpp"
 #include "export/plot_file.hpp"
+#include "export/text_format.hpp"
 #include "app/viewer_session.hpp"
 #include "core/error.hpp"
 #include "gpu/vk_check.hpp"
@@ -361,7 +362,8 @@ bool Viewer::export_view(const std::string& path, const plot::ExportOptions& opt
         const std::string lines = plot::is_csv_path(path)
                                       ? (stats.polylines ? "; its " + std::to_string(stats.polylines) + " polylines are not written to CSV" : "")
                                       : ", " + std::to_string(stats.polylines) + " polylines";
-        message("exported: " + path + " (" + std::to_string(stats.dots) + " dots" + lines + ")");
+        message("exported: " + path + " (" + plot::format_number(stats.page.width_mm, 0) + "x" +
+                plot::format_number(stats.page.height_mm, 0) + " mm page: " + std::to_string(stats.dots) + " dots" + lines + ")");
         return true;
     } catch (const Error& e) {
         message(e.what(), true);

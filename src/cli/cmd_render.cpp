@@ -156,7 +156,7 @@ int run_render(const std::vector<std::string>& argv) {
         if (same_file(output_path(mask, 0, false), output_path(output, 0, false)))
             fail("--mask " + mask + " is the image's own path (-o): give it another");
     }
-    const plot::ExportOptions vector_options = read_vector_options(args);
+    plot::ExportOptions vector_options = read_vector_options(args);
     if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
     // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
     // --page" sent the user to add a page that was then refused for the format.
@@ -172,6 +172,9 @@ int run_render(const std::vector<std::string>& argv) {
                  ") lists each dot's centre and ink radius");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
+    if (!vector && args.has("--fit"))
+        fail("--fit is for vector output (-o x.svg, x.pdf or x.csv)" +
+             std::string(print ? "; a print image frames the scene inside its page's margins" : ""));
     if (!vector && !print) {
         for (const char* name : {"--page", "--margin"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
@@ -249,6 +252,9 @@ int run_render(const std::vector<std::string>& argv) {
     Sphere bounds = scene_bounds(scene, content.objects);
     std::vector<OrbitCamera> cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit, animated);
     const bool sequence = cameras.size() > 1;
+    // The frames of a sequence line up on their pages unless told otherwise: each fitted to its own
+    // drawing would be scaled and moved from frame to frame.
+    if (sequence && !args.has("--fit")) vector_options.fit = plot::Fit::Frame;
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
              " frames: use a pattern such as frames/%04d.png");
@@ -446,9 +452,10 @@ int run_render(const std::vector<std::string>& argv) {
         // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
         const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())
                                                             : printf_string(", %zu polylines", last_plot.polylines);
-        holds = plot::format_number(vector_options.page.width_mm, 0) + "x" + plot::format_number(vector_options.page.height_mm, 0) +
-                printf_string(" mm page: %zu dots%s%s; the frame's view at %lldx%lld", last_plot.dots, lines.c_str(),
-                              sequence ? " in the last frame" : "", width, height);
+        holds = plot::format_number(last_plot.page.width_mm, 0) + "x" + plot::format_number(last_plot.page.height_mm, 0) +
+                printf_string(" mm page: %zu dots%s%s; %s at %lldx%lld", last_plot.dots, lines.c_str(), sequence ? " in the last frame" : "",
+                              last_plot.fit == plot::Fit::Drawing ? "the drawing fitted to it, from the frame's view" : "the frame's view",
+                              width, height);
     }
     if (sequence)
         std::printf("wrote %zu frames %s .. %s (%s)\n", cameras.size(), frame_path(output, 0).c_str(),

@@ -4,7 +4,7 @@
 
 namespace stipple::cli {
 
-std::set<std::string> vector_options() { return {"--page", "--margin", "--pen-width", "--dot-style", "--dpi", "--tile"}; }
+std::set<std::string> vector_options() { return {"--page", "--margin", "--fit", "--pen-width", "--dot-style", "--dpi", "--tile"}; }
 std::set<std::string> vector_flags() { return {"--fill-paper", "--show-travel"}; }
 
 plot::ExportOptions read_vector_options(const Args& args) {
@@ -15,6 +15,7 @@ plot::ExportOptions read_vector_options(const Args& args) {
         if (!(options.margin_mm >= 0.0 && options.margin_mm <= 500.0))
             fail("--margin = " + args.get("--margin", "") + " must be in 0..500 mm");
     }
+    if (args.has("--fit")) options.fit = plot::parse_fit(args.get("--fit", ""));
     if (args.has("--pen-width")) {
         const double pen = args.number("--pen-width", plot::kDefaultPenWidthMm);
         if (!(pen > 0.0 && pen <= 10.0)) fail("--pen-width = " + args.get("--pen-width", "") + " must be in (0, 10] mm");

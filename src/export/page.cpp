@@ -73,18 +73,28 @@ PageSize parse_page(const std::string& name) {
         if (page.width_mm < 10.0 || page.height_mm < 10.0) bad_page(name, "smaller than 10 mm a side");
         // Beyond any plotter or printer; mostly a typo (metres instead of millimetres).
         if (page.width_mm > 10000.0 || page.height_mm > 10000.0) bad_page(name, "larger than 10 m");
+        page.orientation_given = true;  // the width and height as written
     } else {
         bad_page(name, "unknown page size");
     }
 
+    page.orientation_given = page.orientation_given || orientation != Orientation::AsGiven;
     const bool landscape = page.width_mm > page.height_mm;
     if ((orientation == Orientation::Landscape && !landscape) || (orientation == Orientation::Portrait && landscape))
         std::swap(page.width_mm, page.height_mm);
     return page;
 }
 
-PageLayout fit_to_page(const PageSize& page, double margin_mm, double width_px, double height_px) {
-    if (!(width_px > 0.0) || !(height_px > 0.0)) fail("page layout: the drawing has no size (" + number(width_px) + "x" + number(height_px) + " px)");
+PageSize oriented_for(PageSize page, double width, double height) {
+    if (page.orientation_given) return page;
+    const bool landscape_page = page.width_mm > page.height_mm;
+    if (landscape_page != (width > height)) std::swap(page.width_mm, page.height_mm);
+    return page;
+}
+
+PageLayout fit_to_page(const PageSize& page, double margin_mm, glm::dvec2 min_px, glm::dvec2 max_px) {
+    const double width_px = max_px.x - min_px.x, height_px = max_px.y - min_px.y;
+    if (!(width_px > 0.0 && std::isfinite(width_px)) || !(height_px > 0.0 && std::isfinite(height_px))) fail("page layout: the drawing has no size (" + number(width_px) + "x" + number(height_px) + " px)");
     if (!std::isfinite(margin_mm) || margin_mm < 0.0) fail("--margin " + number(margin_mm) + ": must be 0 or more millimetres");
     const double inner_w = page.width_mm - 2.0 * margin_mm, inner_h = page.height_mm - 2.0 * margin_mm;
     if (inner_w <= 0.0 || inner_h <= 0.0)
@@ -95,7 +105,8 @@ PageLayout fit_to_page(const PageSize& page, double margin_mm, double width_px, 
     layout.page = page;
     layout.margin_mm = margin_mm;
     layout.mm_per_px = std::min(inner_w / width_px, inner_h / height_px);
-    layout.offset_mm = {(page.width_mm - width_px * layout.mm_per_px) / 2.0, (page.height_mm - height_px * layout.mm_per_px) / 2.0};
+    const glm::dvec2 centre_px = 0.5 * (min_px + max_px);
+    layout.offset_mm = glm::dvec2(page.width_mm, page.height_mm) / 2.0 - centre_px * layout.mm_per_px;
     return layout;
 }
 

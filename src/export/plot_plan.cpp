@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
+
+#include <glm/common.hpp>
 
 #include "core/error.hpp"
 #include "export/dot_order.hpp"
@@ -29,6 +32,14 @@ const char* dot_style_name(DotStyle style) {
     }
     return "filled";
 }
+
+Fit parse_fit(const std::string& name) {
+    if (name == "drawing") return Fit::Drawing;
+    if (name == "frame") return Fit::Frame;
+    fail("--fit '" + name + "': expected drawing or frame");
+}
+
+const char* fit_name(Fit fit) { return fit == Fit::Frame ? "frame" : "drawing"; }
 
 double circle_stroke_radius(double radius_mm, double pen_mm) { return std::max(radius_mm - pen_mm / 2.0, pen_mm / 4.0); }
 
@@ -101,23 +112,46 @@ PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot
     return layer;
 }
 
+using Piece = std::array<glm::dvec2, 2>;
+
+// The parts of the segments inside the frame.
+std::vector<Piece> pieces_in_frame(const Drawing& drawing, const std::vector<uint32_t>& segment_indices) {
+    std::vector<Piece> pieces;
+    pieces.reserve(segment_indices.size());
+    for (const uint32_t i : segment_indices)
+        if (const auto piece = clip_to_frame(glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b), drawing.width_px,
+                                             drawing.height_px))
+            pieces.push_back(*piece);
+    return pieces;
+}
+
+// The frame's pixels a line of kind `kind` of `object` is drawn wide.
+float line_width_px(const Drawing& drawing, uint32_t object, LayerKind kind) {
+    return std::max(0.0f, kind == LayerKind::Lines ? drawing.objects[object].line_width_px : drawing.objects[object].crease_width_px);
+}
+
+// The box of what is drawn, in frame pixels: every dot to its ink radius, every piece of line to half its
+// width (the frame's; a --pen-width differs by a fraction of the margin). Empty (min > max) when
+// nothing is drawn.
+struct PixelBox {
+    glm::dvec2 min{std::numeric_limits<double>::max()}, max{std::numeric_limits<double>::lowest()};
+    void add(glm::dvec2 p, double reach) {
+        min = glm::min(min, p - reach);
+        max = glm::max(max, p + reach);
+    }
+    bool empty() const { return min.x > max.x; }
+};
+
 // `kind`: Lines or Creases.
-PlotLayer line_layer(const Drawing& drawing, const std::vector<uint32_t>& segment_indices, uint32_t object, LayerKind kind,
+PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, uint32_t object, LayerKind kind,
                      const PlotPlan& plan, const ExportOptions& options, glm::dvec2& pen) {
     PlotLayer layer;
     layer.number = 3 * object + (kind == LayerKind::Lines ? 2 : 3);
     layer.label = layer_label(layer.number, drawing.objects[object].name, object, kind);
     layer.object = object;
     layer.kind = kind;
-    const float width_px = kind == LayerKind::Lines ? drawing.objects[object].line_width_px : drawing.objects[object].crease_width_px;
-    layer.stroke_mm = options.pen_width_mm.value_or(std::max(0.0f, width_px) * plan.layout.mm_per_px);
+    layer.stroke_mm = options.pen_width_mm.value_or(line_width_px(drawing, object, kind) * plan.layout.mm_per_px);
     // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).
-    std::vector<std::array<glm::dvec2, 2>> pieces;
-    pieces.reserve(segment_indices.size());
-    for (const uint32_t i : segment_indices)
-        if (const auto piece = clip_to_frame(glm::dvec2(drawing.segments[i].a), glm::dvec2(drawing.segments[i].b), drawing.width_px,
-                                             drawing.height_px))
-            pieces.push_back(*piece);
     // A fold within the stroke's own width is drawn once (unfold): half the width, and the merge's
     // tolerance for where the frame put each piece.
     const double fold_px = 0.5 * layer.stroke_mm / plan.layout.mm_per_px + options.merge.collinear_px;
@@ -137,7 +171,6 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
     if (options.pen_width_mm && !(*options.pen_width_mm > 0.0 && *options.pen_width_mm < 100.0))
         fail("--pen-width " + std::to_string(*options.pen_width_mm) + ": must be a positive width in millimetres");
     PlotPlan plan;
-    plan.layout = fit_to_page(options.page, options.margin_mm, drawing.width_px, drawing.height_px);
     plan.dot_style = options.dot_style;
     plan.ink = drawing.ink;
     plan.paper = drawing.paper;
@@ -161,6 +194,36 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
                  std::to_string(objects));
         (segment.kind == LineKind::Crease ? creases_of : segments_of)[segment.object].push_back(i);
     }
+    std::vector<std::vector<Piece>> line_pieces(objects), crease_pieces(objects);
+    for (uint32_t object = 0; object < objects; ++object) {
+        line_pieces[object] = pieces_in_frame(drawing, segments_of[object]);
+        crease_pieces[object] = pieces_in_frame(drawing, creases_of[object]);
+    }
+
+    PixelBox drawn;
+    if (options.fit == Fit::Drawing) {
+        for (uint32_t object = 0; object < objects; ++object) {
+            for (const uint32_t i : dots_of[object]) {
+                const Dot& dot = drawing.dots[i];
+                drawn.add(glm::dvec2(dot.px), double(dot.radius_px) * std::sqrt(std::min(double(dot.intensity), 1.0)));
+            }
+            for (const LayerKind kind : {LayerKind::Lines, LayerKind::Creases})
+                for (const Piece& piece : kind == LayerKind::Lines ? line_pieces[object] : crease_pieces[object])
+                    for (const glm::dvec2& end : piece) drawn.add(end, 0.5 * line_width_px(drawing, object, kind));
+        }
+        // A single hairline or point still needs an area to scale: at least a pixel each way.
+        if (!drawn.empty()) {
+            const glm::dvec2 short_by = glm::max(glm::dvec2(1.0) - (drawn.max - drawn.min), glm::dvec2(0.0));
+            drawn.min -= 0.5 * short_by;
+            drawn.max += 0.5 * short_by;
+        }
+    }
+    // Nothing drawn (or the frame asked for): the frame, as the screen shows it.
+    plan.fit = options.fit == Fit::Drawing && !drawn.empty() ? Fit::Drawing : Fit::Frame;
+    const glm::dvec2 area_min = plan.fit == Fit::Drawing ? drawn.min : glm::dvec2(0.0);
+    const glm::dvec2 area_max = plan.fit == Fit::Drawing ? drawn.max : glm::dvec2(drawing.width_px, drawing.height_px);
+    const glm::dvec2 area = area_max - area_min;
+    plan.layout = fit_to_page(oriented_for(options.page, area.x, area.y), options.margin_mm, area_min, area_max);
 
     const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);
     glm::dvec2 pen = plan.home;
@@ -168,9 +231,9 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
         if (!dots_of[object].empty())
             plan.layers.push_back(stipple_layer(drawing, dots_of[object], object, plan, dot_pen, options.plotter_order, pen));
         for (const LayerKind kind : {LayerKind::Lines, LayerKind::Creases}) {
-            const std::vector<uint32_t>& segments = kind == LayerKind::Lines ? segments_of[object] : creases_of[object];
-            if (segments.empty()) continue;
-            PlotLayer lines = line_layer(drawing, segments, object, kind, plan, options, pen);
+            const std::vector<Piece>& pieces = kind == LayerKind::Lines ? line_pieces[object] : crease_pieces[object];
+            if (pieces.empty()) continue;
+            PlotLayer lines = line_layer(drawing, pieces, object, kind, plan, options, pen);
             if (!lines.lines.empty()) plan.layers.push_back(std::move(lines));
         }
     }

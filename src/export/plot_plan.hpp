@@ -36,9 +36,17 @@ const char* dot_style_name(DotStyle style);
 
 constexpr double kDefaultPenWidthMm = 0.3;
 
+// What is fitted inside the page's margins. Drawing: the box of what is drawn (the dots' and the lines'
+// ink), so the object fills the page as a print should. Frame: the whole frame, empty paper included
+// (the page as the screen shows it; frames of a sequence then line up).
+enum class Fit { Drawing, Frame };
+Fit parse_fit(const std::string& name);  // "drawing" | "frame"
+const char* fit_name(Fit fit);
+
 struct ExportOptions {
-    PageSize page;  // parse_page("A4") by default
+    PageSize page;  // parse_page("A4") by default: its orientation follows what is fitted (oriented_for)
     double margin_mm = 10.0;
+    Fit fit = Fit::Drawing;
     // The pen: the stroke of the lines and of circle and tick dots. Absent: the lines keep the
     // width the frame drew them with, scaled to the page (so a print matches the screen image),
     // and circle and tick dots use kDefaultPenWidthMm.
@@ -72,6 +80,7 @@ struct PlotLayer {
 
 struct PlotPlan {
     PageLayout layout;
+    Fit fit = Fit::Drawing;  // as asked; Frame where nothing was drawn
     DotStyle dot_style = DotStyle::Filled;
     glm::vec3 ink{0.0f}, paper{1.0f};
     bool fill_paper = false;

@@ -38,6 +38,8 @@ double dot_travel_bound(const std::vector<PlotDot>& dots) {
 
 PlotStats plot_stats(const PlotPlan& plan) {
     PlotStats stats;
+    stats.page = plan.layout.page;
+    stats.fit = plan.fit;
     glm::dvec2 pen = plan.home;
     for (const PlotLayer& layer : plan.layers) {
         for (size_t i = 0; i < layer.dots.size(); ++i) {

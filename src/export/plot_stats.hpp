@@ -16,6 +16,8 @@
 namespace stipple::plot {
 
 struct PlotStats {
+    PageSize page;          // the page as laid out (a bare named size turned to the drawing)
+    Fit fit = Fit::Drawing;  // what was fitted to it
     size_t dots = 0, polylines = 0, pen_lifts = 0;
     double pen_down_mm = 0.0, pen_up_mm = 0.0;
     double dot_travel_mm = 0.0;        // pen-up travel between dots of one layer
