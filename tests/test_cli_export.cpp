@@ -261,8 +261,11 @@ TEST(CliExport, ShowTravelAddsThePenUpMovesToTheSvg) {
     };
     const std::string a = text_of(plain), b = text_of(travel);
     EXPECT_EQ(a.find("pen-up-travel"), std::string::npos);
-    const size_t group = b.find("<g id=\"pen-up-travel\"");
+    const size_t group = b.find("id=\"pen-up-travel\"");
     ASSERT_NE(group, std::string::npos) << "no travel group";
+    const Svg with_travel = read_svg(travel);
+    ASSERT_FALSE(with_travel.layers.empty());
+    EXPECT_EQ(with_travel.layers.back(), "% pen-up travel (not plotted)") << "a layer the AxiDraw software does not plot";
     const size_t moves = size_t(std::count(b.begin() + group, b.end(), 'M'));
     const size_t dots = read_svg(travel).dots.size();
     std::printf("%zu dots, %zu pen-up moves\n", dots, moves);

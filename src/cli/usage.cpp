@@ -106,7 +106,8 @@ Vector and print output (render):
   --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)
   --fill-paper            SVG and PDF: paint the page in the scene's paper colour (a print image's
                           page is always the paper colour)
-  --show-travel           SVG: draw the pen-up moves in light red, to look at the plot order
+  --show-travel           SVG: draw the pen-up moves in light red, to look at the plot order (in a
+                          layer named "%% ...", which the AxiDraw software does not plot)
   --dpi N                 with -o x.png and --page: a print-resolution page (50..2400 dpi) that looks
                           like the screen image enlarged: the same stipples, each a disc of the same
                           share of ink, as at --height pixels (default 1024) for the drawing's height;

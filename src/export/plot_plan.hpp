@@ -53,7 +53,7 @@ struct ExportOptions {
     std::optional<double> pen_width_mm;
     DotStyle dot_style = DotStyle::Filled;
     bool fill_paper = false;  // paint the page in the paper colour (print); a plotter's paper is the paper
-    bool show_travel = false;  // SVG: add the pen-up moves in light red (to look at the order; not for a plotter)
+    bool show_travel = false;  // SVG: add the pen-up moves in light red, in a layer the AxiDraw software does not plot
     bool plotter_order = true;  // false: dots in the order given and strokes as chained (to compare)
     double simplify_mm = 0.05;  // Douglas-Peucker tolerance of the strokes
     MergeOptions merge;         // welding and overlap tolerances, in pixels

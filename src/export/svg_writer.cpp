@@ -79,9 +79,12 @@ void append_lines(std::string& out, const PlotLayer& layer, const std::string& i
     out += "</g>\n";
 }
 
-// The pen's path with the pen up: from home to each dot and to each stroke's start.
+// The pen's path with the pen up: from home to each dot and to each stroke's start. A layer whose name
+// starts with "%" is a documentation layer, which the AxiDraw software does not plot: the file can go
+// to the plotter as it is (as a plain group the moves were plotted as lines).
 void append_travel(std::string& out, const PlotPlan& plan) {
-    out += "<g id=\"pen-up-travel\" fill=\"none\" stroke=\"#ff6060\" stroke-width=\"0.05\" stroke-opacity=\"0.8\">\n<path d=\"";
+    out += "<g inkscape:groupmode=\"layer\" id=\"pen-up-travel\" inkscape:label=\"% pen-up travel (not plotted)\" fill=\"none\" "
+           "stroke=\"#ff6060\" stroke-width=\"0.05\" stroke-opacity=\"0.8\">\n<path d=\"";
     glm::dvec2 pen = plan.home;
     const auto move = [&](glm::dvec2 to) {
         out += 'M';
