@@ -147,8 +147,9 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything,
-  H hides/shows the panel, S saves a screenshot (window resolution, without the panel), V toggles
-  vsync, Space plays or pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
+  H hides/shows the panel (folded to its title in a window under 1000 px wide: click to open it),
+  S saves a screenshot (window resolution, without the panel), V toggles vsync, Space plays or
+  pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
   sets every per-object parameter (generation parameters take effect on release or Enter: new
   stipples are made in the background with a progress bar while the old ones are drawn, and a newer
   value cancels an older one; dropped models load in the background too), the light, paper and ink
