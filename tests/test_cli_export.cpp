@@ -327,6 +327,18 @@ TEST(CliExport, TheDrawingFillsThePageUnlessTheFrameIsAsked) {
     EXPECT_NE(bad.err.find("--fit 'page': expected drawing or frame"), std::string::npos) << bad.err;
 }
 
+// A page with nothing on it is written, and said: the object is out of view, or too far or too light.
+TEST(CliExport, ABlankPageIsSaid) {
+    const auto dir = test::temp_dir("cli-export-blank");
+    const std::string out = (dir / "blank.svg").string();
+    const test::CommandResult r = test::run_stipple({"render", "--width", "200", "--height", "160", "--distance", "1000", "-o", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("stipple: warning: " + out + ": nothing is drawn (no dot, no line)"), std::string::npos) << r.err;
+    EXPECT_TRUE(read_svg(out).dots.empty());
+    const test::CommandResult drawn = test::run_stipple({"render", "--width", "200", "--height", "160", "-o", out});
+    EXPECT_EQ(drawn.err.find("nothing is drawn"), std::string::npos) << drawn.err;
+}
+
 // What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger
 // ones), refused before anything is drawn, where an SVG takes any page; a CSV, the dots alone, which
 // the command's last line says where lines were drawn.

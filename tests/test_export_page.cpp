@@ -33,6 +33,7 @@ TEST(ExportPage, CustomSizesKeepTheirShapeUnlessAnOrientationIsNamed) {
 }
 
 TEST(ExportPage, BadNamesAreOneLineErrors) {
+    stipple::test::expect_plot_error([] { parse_page("210 x 297 mm"); }, "no spaces");
     for (const char* bad : {"A9", "", "x200mm", "300xmm", "0x200mm", "-3x200mm", "300x200", "300x200cm", "300x200mm-sideways", "1e9x10mm", "nanx10mm"})
         stipple::test::expect_plot_error([&] { parse_page(bad); }, "--page");
 }

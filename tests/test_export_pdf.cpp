@@ -2,10 +2,13 @@
 // pdftoppm, ink exactly where the dots and the outline are.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "export/pdf_writer.hpp"
 #include "export/plot_plan.hpp"
@@ -52,6 +55,20 @@ TEST(ExportPdf, PageSizeInPoints) {
     const std::string info = read_all(dir / "info.txt");
     EXPECT_TRUE(std::regex_search(info, std::regex(R"(Pages:\s+1\n)"))) << info;
     EXPECT_NE(info.find("595.276 x 841.89 pts (A4)"), std::string::npos) << info;
+}
+
+// With SOURCE_DATE_EPOCH (the reproducible-builds convention) the same plan writes the same bytes: cairo
+// otherwise dates the file to the second it was written.
+TEST(ExportPdf, SourceDateEpochMakesTheSameBytes) {
+    const auto dir = stipple::test::temp_dir("export_pdf_date");
+    ASSERT_EQ(setenv("SOURCE_DATE_EPOCH", "1764900000", 1), 0);
+    write_pdf(make_plot_plan(grid_drawing(), {}), (dir / "a.pdf").string());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    write_pdf(make_plot_plan(grid_drawing(), {}), (dir / "b.pdf").string());
+    unsetenv("SOURCE_DATE_EPOCH");
+    const std::string a = read_all(dir / "a.pdf");
+    EXPECT_EQ(a, read_all(dir / "b.pdf"));
+    EXPECT_NE(a.find("/CreationDate (20251205020000Z)"), std::string::npos) << "2025-12-05 02:00 UTC";
 }
 
 TEST(ExportPdf, LayersAreGroups) {

@@ -156,7 +156,100 @@ TEST(ExportPlan, DotStrokeGeometry) {
     EXPECT_DOUBLE_EQ(circle_stroke_radius(0.4, 0.3), 0.25);
     EXPECT_DOUBLE_EQ(circle_stroke_radius(0.1, 0.3), 0.075);
     EXPECT_EQ(parse_dot_style("tick"), DotStyle::Tick);
+    EXPECT_EQ(parse_dot_style("Filled"), DotStyle::Filled) << "names in any case, as --page's";
+    EXPECT_EQ(parse_fit("Drawing"), Fit::Drawing);
+    EXPECT_EQ(parse_fit("frame"), Fit::Frame);
+    stipple::test::expect_plot_error([] { parse_fit("page"); }, "--fit 'page': expected drawing or frame");
     stipple::test::expect_plot_error([] { parse_dot_style("square"); }, "--dot-style 'square'");
+}
+
+// A plotter's pen cannot make a circle or a tick smaller than its width allows: a dot of less ink is drawn
+// as that least mark with the chance of its share of the mark's ink (the same ink in expectation), where
+// drawing every one at that size darkened the highlights. Filled dots are drawn at any size.
+TEST(ExportPlan, DotsUnderThePensLeastMarkAreDrawnAsItByChance) {
+    Drawing drawing;
+    drawing.width_px = 400;
+    drawing.height_px = 300;
+    drawing.objects.push_back({"tiny", 1.0f});
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 80; ++x)
+            drawing.dots.push_back({glm::vec2(5.0f * x + 2.5f, 5.0f * y + 2.5f), 0.1f, 1.0f, 0, uint32_t(y * 80 + x)});
+    ExportOptions options;
+    options.page = parse_page("400x300mm");
+    options.margin_mm = 0.0;
+    options.fit = Fit::Frame;  // 1 mm a pixel: dots of 0.1 mm
+    options.pen_width_mm = 0.3;
+    const double all_ink = 4800.0 * std::numbers::pi * 0.01;
+    for (const DotStyle style : {DotStyle::Circle, DotStyle::Tick}) {
+        options.dot_style = style;
+        const double least = least_mark_radius(style, 0.3);
+        const PlotPlan plan = make_plot_plan(drawing, options);
+        ASSERT_EQ(plan.layers.size(), 1u);
+        const PlotLayer& layer = plan.layers[0];
+        EXPECT_EQ(layer.small_dots, 4800u);
+        for (const PlotDot& dot : layer.dots) EXPECT_DOUBLE_EQ(dot.radius_mm, least);
+        const double drawn_ink = double(layer.dots.size()) * std::numbers::pi * least * least;
+        std::printf("%s: least mark %.3f mm, %zu of 4800 dots drawn, ink %.3f of the dots'\n", dot_style_name(style), least,
+                    layer.dots.size(), drawn_ink / all_ink);
+        EXPECT_NEAR(drawn_ink / all_ink, 1.0, 0.1);
+        EXPECT_LT(layer.dots.size(), 4800u / 2);
+        EXPECT_EQ(make_plot_plan(drawing, options).layers[0].dots.size(), layer.dots.size()) << "the same every time";
+        EXPECT_NE(format_stats(plot_stats(plan)).find("4800 dots under the pen's least mark"), std::string::npos);
+    }
+    // The least marks themselves: a circle's ring at its smallest inks a disc 3/4 of the pen wide; a tick at
+    // its shortest inks kMinTickMm of the pen and its round caps.
+    EXPECT_DOUBLE_EQ(least_mark_radius(DotStyle::Circle, 0.4), 0.3);
+    EXPECT_NEAR(tick_length(least_mark_radius(DotStyle::Tick, 0.3), 0.3), kMinTickMm, 1e-12);
+    options.dot_style = DotStyle::Filled;
+    EXPECT_EQ(make_plot_plan(drawing, options).layers[0].dots.size(), 4800u);
+}
+
+// The marks as the pen draws them stay inside the margins: a tick is as long as its dot's ink asks and a
+// given pen is as wide on any page, where fitting the dots' ink alone ran ticks off a page without margin.
+TEST(ExportPlan, ThePensMarksStayInsideTheMargins) {
+    Drawing drawing = grid_drawing(5, 4);
+    for (Dot& dot : drawing.dots) dot.radius_px = 3.0f;
+    for (const double margin : {0.0, 10.0}) {
+        ExportOptions options;
+        options.margin_mm = margin;
+        options.dot_style = DotStyle::Tick;
+        options.pen_width_mm = 2.0;
+        const PlotPlan plan = make_plot_plan(drawing, options);
+        double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9;
+        for (const PlotLayer& layer : plan.layers) {
+            for (const PlotDot& dot : layer.dots) {
+                const double half = tick_length(dot.radius_mm, layer.stroke_mm) / 2.0 + layer.stroke_mm / 2.0;
+                left = std::min(left, dot.mm.x - half), right = std::max(right, dot.mm.x + half);
+                top = std::min(top, dot.mm.y - layer.stroke_mm / 2.0), bottom = std::max(bottom, dot.mm.y + layer.stroke_mm / 2.0);
+            }
+            for (const Polyline& line : layer.lines)
+                for (const glm::dvec2& p : line.points) {
+                    left = std::min(left, p.x - 1.0), right = std::max(right, p.x + 1.0);
+                    top = std::min(top, p.y - 1.0), bottom = std::max(bottom, p.y + 1.0);
+                }
+        }
+        const double w = plan.layout.page.width_mm, h = plan.layout.page.height_mm;
+        std::printf("margin %.0f: ink from %.3f to %.3f mm across %.0f, %.3f to %.3f down %.0f\n", margin, left, right, w, top,
+                    bottom, h);
+        EXPECT_GE(left, margin - 1e-6);
+        EXPECT_LE(right, w - margin + 1e-6);
+        EXPECT_GE(top, margin - 1e-6);
+        EXPECT_LE(bottom, h - margin + 1e-6);
+        EXPECT_TRUE(std::abs(right - left - (w - 2 * margin)) < 1e-3 || std::abs(bottom - top - (h - 2 * margin)) < 1e-3)
+            << "it fills the page's room one way";
+    }
+}
+
+// The same model twice in a scene: its layers can be told apart.
+TEST(ExportPlan, ObjectsOfOneNameHaveLayersOfTheirOwn) {
+    Drawing drawing = grid_drawing(2, 2);
+    drawing.segments.clear();
+    drawing.objects.push_back({"cube", 1.0f});
+    drawing.dots.push_back({glm::vec2(20.0f, 20.0f), 1.0f, 1.0f, 1, 0});
+    const PlotPlan plan = make_plot_plan(drawing, {});
+    ASSERT_EQ(plan.layers.size(), 2u);
+    EXPECT_EQ(plan.layers[0].label, "1 cube stipples");
+    EXPECT_EQ(plan.layers[1].label, "4 cube (2) stipples");
 }
 
 TEST(ExportPlan, BadDrawingsAndOptionsAreErrors) {

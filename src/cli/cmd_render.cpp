@@ -168,8 +168,9 @@ int run_render(const std::vector<std::string>& argv) {
         fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
     for (const char* name : {"--dot-style", "--pen-width"})
         if (args.has(name) && plot::is_csv_path(output))
-            fail(std::string(name) + " sets how SVG or PDF output draws its dots; a CSV (" + output +
-                 ") lists each dot's centre and ink radius");
+            fail(std::string(name) + (std::string(name) == "--pen-width" ? " sets the pen of SVG or PDF output's lines and dots"
+                                                                          : " sets how SVG or PDF output draws its dots") +
+                 "; a CSV (" + output + ") lists each dot's centre and ink radius");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && args.has("--fit"))
@@ -328,6 +329,7 @@ int run_render(const std::vector<std::string>& argv) {
     ProgressBar bar("Rendering frames", sequence);
     RenderedFrame frame;
     plot::PlotStats last_plot;  // vector output: the last frame's
+    size_t empty_pages = 0;     // vector output: frames with nothing drawn
     FrameStats print_stats;     // a print's, from the renderer that draws it (app::render_print)
     FrameView view;
     double render_seconds = 0.0;
@@ -357,6 +359,7 @@ int run_render(const std::vector<std::string>& argv) {
             last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
                                           output_path(output, i, sequence), animated ? clock.frame_time(i) : 0.0);
             if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(last_plot).c_str());
+            empty_pages += last_plot.dots == 0 && last_plot.polylines == 0;
         } else {
             write_png(output_path(output, i, sequence), frame.color);
         }
@@ -364,6 +367,12 @@ int run_render(const std::vector<std::string>& argv) {
         bar.update(double(i + 1) / double(cameras.size()));
     }
     if (sequence) bar.finish();
+    // A blank page is written (a user's script may expect the file), but said: the object was out of view,
+    // or too far or too light for a dot.
+    if (empty_pages > 0)
+        std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
+                     sequence ? printf_string("%zu of %zu pages", empty_pages, cameras.size()).c_str() : output_path(output, 0, false).c_str(),
+                     " - the object is out of view, or too far or too light for a dot");
 
     // Timed frames after the first (which warms caches and the driver's shader compilation).
     std::vector<double> frame_ms;

@@ -88,9 +88,9 @@ Vector and print output (render):
   -o x.svg | x.pdf | x.csv
                           the stipples the frame draws (after density, hidden-stipple removal, toon
                           fade) as dots, and its visible lines, on a page in mm, ordered for pen
-                          plotters; layers per object and kind (see docs/plot-export.md); the
-                          image-space --silhouette-lines become the outline they trace (the contours).
-                          x.csv holds the dots alone, one row each
+                          plotters; layers per object and kind (an SVG's Inkscape layers, a PDF's
+                          groups: docs/plot-export.md); the image-space --silhouette-lines become the
+                          outline they trace (the contours). x.csv holds the dots alone, one row each
   --page SIZE             A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape
                           (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4 for
                           vector output; a print image names its page). A named size without
@@ -116,7 +116,8 @@ Vector and print output (render):
 
   With several frames, -o (and --mask) must hold a frame number, %%d or %%0Nd: -o frames/%%04d.png
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
-  progress bar shows on a terminal; the same command always writes the same files. With a SCENE.json, --yaw, --pitch,
+  progress bar shows on a terminal; the same command always writes the same files (but a PDF's creation
+  date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch,
   --distance and --light override the scene's camera and light.
 
 View options (view also takes --yaw, --pitch, --distance, --light, --device and the stipple options):

@@ -48,6 +48,7 @@ std::string number(double value) {
 
 PageSize parse_page(const std::string& name) {
     std::string size = lower(name);
+    if (size.find_first_of(" \t") != std::string::npos) bad_page(name, "no spaces: write it as one word, e.g. 210x297mm");
     enum class Orientation { AsGiven, Portrait, Landscape } orientation = Orientation::AsGiven;
     if (ends_with(size, "-landscape")) {
         orientation = Orientation::Landscape;

@@ -1,8 +1,13 @@
 #include "export/pdf_writer.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -66,6 +71,23 @@ void draw_lines(cairo_t* cr, const PlotLayer& layer) {
     cairo_stroke(cr);
 }
 
+// SOURCE_DATE_EPOCH as cairo's ISO 8601 date ("2026-12-05T10:00:00Z"), or nothing where it is unset or
+// not a whole number of seconds.
+std::optional<std::string> source_date() {
+    const char* text = std::getenv("SOURCE_DATE_EPOCH");
+    if (!text || !*text) return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const long long seconds = std::strtoll(text, &end, 10);
+    if (errno != 0 || *end != '\0' || seconds < 0) return std::nullopt;
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    std::tm utc{};
+    if (!gmtime_r(&t, &utc)) return std::nullopt;
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return std::string(date);
+}
+
 }  // namespace
 
 void write_pdf(const PlotPlan& plan, const std::string& path) {
@@ -74,6 +96,12 @@ void write_pdf(const PlotPlan& plan, const std::string& path) {
     check(cairo_surface_status(surface.get()), path);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, "stipple drawing");
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "stipple");
+    // Reproducible builds' convention: SOURCE_DATE_EPOCH (seconds since 1970) is the creation date, so that
+    // the same command writes the same bytes; cairo writes the time of day otherwise.
+    if (const std::optional<std::string> date = source_date()) {
+        cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, date->c_str());
+        cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_MOD_DATE, date->c_str());
+    }
     Context context(cairo_create(surface.get()), &cairo_destroy);
     cairo_t* cr = context.get();
     cairo_scale(cr, kPointsPerMm, kPointsPerMm);  // user units are millimetres from here on

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -10,6 +12,8 @@
 #include <glm/common.hpp>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
+#include "export/drawing_fit.hpp"
 #include "export/dot_order.hpp"
 #include "export/polyline_order.hpp"
 #include "export/polylines.hpp"
@@ -17,11 +21,19 @@
 
 namespace stipple::plot {
 
-DotStyle parse_dot_style(const std::string& name) {
+namespace {
+std::string lower(std::string text) {  // names are taken in any case, as --page's are
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+}  // namespace
+
+DotStyle parse_dot_style(const std::string& given) {
+    const std::string name = lower(given);
     if (name == "filled") return DotStyle::Filled;
     if (name == "circle") return DotStyle::Circle;
     if (name == "tick") return DotStyle::Tick;
-    fail("--dot-style '" + name + "': expected filled, circle or tick");
+    fail("--dot-style '" + given + "': expected filled, circle or tick");
 }
 
 const char* dot_style_name(DotStyle style) {
@@ -33,13 +45,23 @@ const char* dot_style_name(DotStyle style) {
     return "filled";
 }
 
-Fit parse_fit(const std::string& name) {
+Fit parse_fit(const std::string& given) {
+    const std::string name = lower(given);
     if (name == "drawing") return Fit::Drawing;
     if (name == "frame") return Fit::Frame;
-    fail("--fit '" + name + "': expected drawing or frame");
+    fail("--fit '" + given + "': expected drawing or frame");
 }
 
 const char* fit_name(Fit fit) { return fit == Fit::Frame ? "frame" : "drawing"; }
+
+double least_mark_radius(DotStyle style, double pen_mm) {
+    switch (style) {
+        case DotStyle::Filled: return 0.0;
+        case DotStyle::Circle: return circle_stroke_radius(0.0, pen_mm) + pen_mm / 2.0;
+        case DotStyle::Tick: return std::sqrt(pen_mm * kMinTickMm / std::numbers::pi + pen_mm * pen_mm / 4.0);
+    }
+    return 0.0;
+}
 
 double circle_stroke_radius(double radius_mm, double pen_mm) { return std::max(radius_mm - pen_mm / 2.0, pen_mm / 4.0); }
 
@@ -51,9 +73,19 @@ double tick_length(double radius_mm, double pen_mm) {
 
 namespace {
 
-std::string layer_label(uint32_t number, const std::string& name, uint32_t object, LayerKind kind) {
+// An object's name in its layers' labels: its file's, or "objectN" for none; a name that an earlier object
+// has too (the same model twice in a scene) gets " (2)", " (3)", so that each layer can be told apart.
+std::string layer_name(const Drawing& drawing, uint32_t object) {
+    const std::string& name = drawing.objects[object].name;
+    if (name.empty()) return "object" + std::to_string(object + 1);
+    uint32_t earlier = 0;
+    for (uint32_t k = 0; k < object; ++k) earlier += drawing.objects[k].name == name;
+    return earlier ? name + " (" + std::to_string(earlier + 1) + ")" : name;
+}
+
+std::string layer_label(uint32_t number, const Drawing& drawing, uint32_t object, LayerKind kind) {
     const char* what = kind == LayerKind::Stipples ? " stipples" : kind == LayerKind::Lines ? " lines" : " creases";
-    return std::to_string(number) + " " + (name.empty() ? "object" + std::to_string(object + 1) : name) + what;
+    return std::to_string(number) + " " + layer_name(drawing, object) + what;
 }
 
 bool finite(glm::vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -83,14 +115,46 @@ std::optional<std::array<glm::dvec2, 2>> clip_to_frame(glm::dvec2 a, glm::dvec2 
 // the pixels of it that are in), and the page holds the frame.
 bool in_frame(glm::vec2 p, uint32_t w, uint32_t h) { return p.x >= 0.0f && p.y >= 0.0f && p.x <= float(w) && p.y <= float(h); }
 
-PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot_indices, uint32_t object, const PlotPlan& plan,
+// The ink radius of a dot on the page: its frame radius scaled, and sqrt(intensity) of it.
+double ink_radius_px(const Dot& dot) {
+    return std::max(0.0, static_cast<double>(dot.radius_px)) * std::sqrt(std::clamp(static_cast<double>(dot.intensity), 0.0, 1.0));
+}
+
+// A uniform number in [0, 1) fixed by the dot (its index in the drawing, its place and polygon): the same
+// command draws the same dots.
+double dot_chance(const Dot& dot, uint32_t index) {
+    uint32_t x = 0, y = 0;
+    std::memcpy(&x, &dot.px.x, 4);
+    std::memcpy(&y, &dot.px.y, 4);
+    const uint64_t key = mix64(mix64((uint64_t(x) << 32 | y) ^ 0x5DEECE66Dull) ^ (uint64_t(dot.polygon) << 32 | index));
+    return double(key >> 11) * 0x1.0p-53;
+}
+
+PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indices, uint32_t object, const PlotPlan& plan,
                         double pen_mm, bool plotter_order, glm::dvec2& pen) {
     PlotLayer layer;
     layer.number = 3 * object + 1;
-    layer.label = layer_label(layer.number, drawing.objects[object].name, object, LayerKind::Stipples);
+    layer.label = layer_label(layer.number, drawing, object, LayerKind::Stipples);
     layer.object = object;
     layer.kind = LayerKind::Stipples;
     layer.stroke_mm = pen_mm;
+    // Dots under the pen's least mark: drawn as it with the chance of their share of its ink (plot_plan.hpp).
+    const double least = least_mark_radius(plan.dot_style, pen_mm);
+    std::vector<double> radius_mm;
+    radius_mm.reserve(dot_indices.size());
+    size_t kept = 0;
+    for (const uint32_t i : dot_indices) {
+        const Dot& dot = drawing.dots[i];
+        double radius = ink_radius_px(dot) * plan.layout.mm_per_px;
+        if (radius < least) {
+            ++layer.small_dots;
+            if (dot_chance(dot, i) >= (radius / least) * (radius / least)) continue;
+            radius = least;
+        }
+        dot_indices[kept++] = i;
+        radius_mm.push_back(radius);
+    }
+    dot_indices.resize(kept);
     std::vector<glm::dvec2> points;
     points.reserve(dot_indices.size());
     for (const uint32_t i : dot_indices) points.push_back(plan.layout.to_mm(glm::dvec2(drawing.dots[i].px)));
@@ -102,12 +166,7 @@ PlotLayer stipple_layer(const Drawing& drawing, const std::vector<uint32_t>& dot
         for (uint32_t k = 0; k < order.size(); ++k) order[k] = k;
     }
     layer.dots.reserve(order.size());
-    for (const uint32_t k : order) {
-        const Dot& dot = drawing.dots[dot_indices[k]];
-        const double radius = std::max(0.0, static_cast<double>(dot.radius_px)) * plan.layout.mm_per_px *
-                              std::sqrt(std::clamp(static_cast<double>(dot.intensity), 0.0, 1.0));
-        layer.dots.push_back({points[k], radius, object, dot.polygon});
-    }
+    for (const uint32_t k : order) layer.dots.push_back({points[k], radius_mm[k], object, drawing.dots[dot_indices[k]].polygon});
     if (!layer.dots.empty()) pen = layer.dots.back().mm;
     return layer;
 }
@@ -130,24 +189,12 @@ float line_width_px(const Drawing& drawing, uint32_t object, LayerKind kind) {
     return std::max(0.0f, kind == LayerKind::Lines ? drawing.objects[object].line_width_px : drawing.objects[object].crease_width_px);
 }
 
-// The box of what is drawn, in frame pixels: every dot to its ink radius, every piece of line to half its
-// width (the frame's; a --pen-width differs by a fraction of the margin). Empty (min > max) when
-// nothing is drawn.
-struct PixelBox {
-    glm::dvec2 min{std::numeric_limits<double>::max()}, max{std::numeric_limits<double>::lowest()};
-    void add(glm::dvec2 p, double reach) {
-        min = glm::min(min, p - reach);
-        max = glm::max(max, p + reach);
-    }
-    bool empty() const { return min.x > max.x; }
-};
-
 // `kind`: Lines or Creases.
 PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, uint32_t object, LayerKind kind,
                      const PlotPlan& plan, const ExportOptions& options, glm::dvec2& pen) {
     PlotLayer layer;
     layer.number = 3 * object + (kind == LayerKind::Lines ? 2 : 3);
-    layer.label = layer_label(layer.number, drawing.objects[object].name, object, kind);
+    layer.label = layer_label(layer.number, drawing, object, kind);
     layer.object = object;
     layer.kind = kind;
     layer.stroke_mm = options.pen_width_mm.value_or(line_width_px(drawing, object, kind) * plan.layout.mm_per_px);
@@ -200,32 +247,33 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
         crease_pieces[object] = pieces_in_frame(drawing, creases_of[object]);
     }
 
-    PixelBox drawn;
+    const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);
+    std::optional<PageLayout> fitted;
     if (options.fit == Fit::Drawing) {
+        FitMarks marks;
+        marks.dot_style = options.dot_style;
+        marks.dot_pen_mm = dot_pen;
         for (uint32_t object = 0; object < objects; ++object) {
             for (const uint32_t i : dots_of[object]) {
-                const Dot& dot = drawing.dots[i];
-                drawn.add(glm::dvec2(dot.px), double(dot.radius_px) * std::sqrt(std::min(double(dot.intensity), 1.0)));
+                marks.dot_px.push_back(glm::dvec2(drawing.dots[i].px));
+                marks.dot_ink_px.push_back(ink_radius_px(drawing.dots[i]));
             }
             for (const LayerKind kind : {LayerKind::Lines, LayerKind::Creases})
                 for (const Piece& piece : kind == LayerKind::Lines ? line_pieces[object] : crease_pieces[object])
-                    for (const glm::dvec2& end : piece) drawn.add(end, 0.5 * line_width_px(drawing, object, kind));
+                    for (const glm::dvec2& end : piece) {
+                        marks.line_px.push_back(end);
+                        marks.line_half_px.push_back(options.pen_width_mm ? 0.0 : 0.5 * line_width_px(drawing, object, kind));
+                        marks.line_half_mm.push_back(options.pen_width_mm.value_or(0.0) / 2.0);
+                    }
         }
-        // A single hairline or point still needs an area to scale: at least a pixel each way.
-        if (!drawn.empty()) {
-            const glm::dvec2 short_by = glm::max(glm::dvec2(1.0) - (drawn.max - drawn.min), glm::dvec2(0.0));
-            drawn.min -= 0.5 * short_by;
-            drawn.max += 0.5 * short_by;
-        }
+        fitted = fit_marks(marks, options.page, options.margin_mm);
     }
     // Nothing drawn (or the frame asked for): the frame, as the screen shows it.
-    plan.fit = options.fit == Fit::Drawing && !drawn.empty() ? Fit::Drawing : Fit::Frame;
-    const glm::dvec2 area_min = plan.fit == Fit::Drawing ? drawn.min : glm::dvec2(0.0);
-    const glm::dvec2 area_max = plan.fit == Fit::Drawing ? drawn.max : glm::dvec2(drawing.width_px, drawing.height_px);
-    const glm::dvec2 area = area_max - area_min;
-    plan.layout = fit_to_page(oriented_for(options.page, area.x, area.y), options.margin_mm, area_min, area_max);
+    plan.fit = fitted ? Fit::Drawing : Fit::Frame;
+    plan.layout = fitted ? *fitted
+                         : fit_to_page(oriented_for(options.page, drawing.width_px, drawing.height_px), options.margin_mm,
+                                       drawing.width_px, drawing.height_px);
 
-    const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);
     glm::dvec2 pen = plan.home;
     for (uint32_t object = 0; object < objects; ++object) {
         if (!dots_of[object].empty())

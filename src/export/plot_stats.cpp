@@ -50,6 +50,7 @@ PlotStats plot_stats(const PlotPlan& plan) {
             pen = layer.dots[i].mm;
         }
         stats.dots += layer.dots.size();
+        stats.small_dots += layer.small_dots;
         stats.dot_travel_bound_mm += dot_travel_bound(layer.dots);
         for (const Polyline& line : layer.lines) {
             if (line.points.empty()) continue;
@@ -67,7 +68,8 @@ std::string format_stats(const PlotStats& stats) {
     return "plot: " + std::to_string(stats.dots) + " dots, " + std::to_string(stats.polylines) + " polylines, pen down " +
            format_number(stats.pen_down_mm, 1) + " mm, pen up " + format_number(stats.pen_up_mm, 1) + " mm, " +
            std::to_string(stats.pen_lifts) + " pen lifts, travel between dots " + format_number(stats.travel_ratio(), 2) +
-           "x its lower bound (" + format_number(stats.dot_travel_bound_mm, 1) + " mm)";
+           "x its lower bound (" + format_number(stats.dot_travel_bound_mm, 1) + " mm)" +
+           (stats.small_dots ? ", " + std::to_string(stats.small_dots) + " dots under the pen's least mark drawn as it by chance" : "");
 }
 
 }  // namespace stipple::plot

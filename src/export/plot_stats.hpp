@@ -19,6 +19,7 @@ struct PlotStats {
     PageSize page;          // the page as laid out (a bare named size turned to the drawing)
     Fit fit = Fit::Drawing;  // what was fitted to it
     size_t dots = 0, polylines = 0, pen_lifts = 0;
+    size_t small_dots = 0;  // dots under the pen's least mark, drawn as it by chance (plot_plan.hpp); those drawn are in dots
     double pen_down_mm = 0.0, pen_up_mm = 0.0;
     double dot_travel_mm = 0.0;        // pen-up travel between dots of one layer
     double dot_travel_bound_mm = 0.0;  // its nearest-neighbour lower bound
