@@ -87,7 +87,8 @@ Render options:
 Vector and print output (render):
   -o x.svg | x.pdf | x.csv
                           the stipples the frame draws (after density, hidden-stipple removal, toon
-                          fade) as dots, and its visible lines, on a page in mm, ordered for pen
+                          fade; not a toon object's edge-on grey, a fill on screen) as dots, and its
+                          visible lines, on a page in mm, ordered for pen
                           plotters; layers per object and kind (an SVG's Inkscape layers, a PDF's
                           groups: docs/plot-export.md); the image-space --silhouette-lines become the
                           outline they trace (the contours). x.csv holds the dots alone, one row each
