@@ -68,6 +68,17 @@ void write_facing_bits(bool in_range, PolygonView p) {
         if (bits[k] != 0u) atomicOr(facing_away[(first >> 5u) + k], bits[k] << (first & 31u));
 }
 
+// Whether the polygon lies wholly outside the view (clip_outside_bits in stipple_formulas.h): only read
+// where its centroid does (`center_bits` nonzero), so a view that holds the whole object reads no corner.
+bool polygon_outside_view(uint triangle, mat4 model_view_proj, vec2 slack, uint center_bits) {
+    if (center_bits == 0u) return false;
+    uvec3 corners = mesh_triangle(triangle);
+    uint bits = center_bits & clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.x), 1.0f), slack);
+    bits &= clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.y), 1.0f), slack);
+    bits &= clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.z), 1.0f), slack);
+    return bits != 0u;
+}
+
 // How many workgroups of kDensityWorkgroupSize start in slots [base, base + n) of a list.
 uint groups_starting_in(uint base, uint n) {
     const uint group = kDensityWorkgroupSize;
@@ -194,9 +205,18 @@ void main() {
     q.flags = flags;
     PolygonDensity terms = polygon_density_terms(p, q);
     float density = selected_density(terms, p.selection);
+    // Wholly outside the view: nothing drawn (clip_outside_bits), its corners read only where its centroid
+    // lies outside. Not a uniform branch: lavapipe reads them for a subgroup any of whose polygons needs it.
+    bool outside = false;
+    if ((flags & kFlagCullOutsideView) != 0u) {
+        vec2 slack = view_cull_slack(frame.viewport.xy, object.shading.y);
+        uint center_bits = clip_outside_bits(object.model_view_proj * vec4(polygon_center_object(info, object), 1.0f), slack);
+        outside = polygon_outside_view(t, object.model_view_proj, slack, center_bits);
+    }
+    if (outside) density = 0.0f;
     // A polygon large on screen draws each stipple at the density where it lies (stipple_density_here):
     // the gradient pass writes the bounds of that density over it, and lists its work items after them.
-    bool large = may_carry_gradient(terms, p, q, density);
+    bool large = !outside && may_carry_gradient(terms, p, q, density);
     list_gradient(large, t);
     draws[t].density = large ? large_polygon_stored_density(terms, density) : density;
     draws[t].least = density;

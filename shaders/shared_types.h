@@ -184,6 +184,7 @@ STIPPLE_CONST uint kFlagContours = 512u;       // object-space lines: edges betw
 STIPPLE_CONST uint kFlagBorders = 1024u;       // object-space lines: edges of one polygon
 STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral angle above the crease angle
 STIPPLE_CONST uint kFlagStretch = 4096u;       // animated: a polygon's due count follows its current area
+STIPPLE_CONST uint kFlagCullOutsideView = 16384u;  // polygons wholly outside the view draw nothing (clip_outside_bits)
 STIPPLE_CONST uint kFlagDepthOneSided = 8192u;  // the depth pass culls the faces facing away (depth_triangles.comp)
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept

@@ -197,6 +197,42 @@ TEST_F(DensityPaths, AllPathsDrawExactlyTheSameStipples) {
     expect_same_stipples_and_images(out);
 }
 
+// Close up, the polygons beyond the frame's edges and behind the eye draw nothing (kFlagCullOutsideView):
+// every path draws the same image as with them, from a fraction of the stipples, and the paths still agree.
+TEST_F(DensityPaths, PolygonsOutsideTheViewDrawNothingAndTheImageStays) {
+    ObjectParams params;
+    Prepared blob = test::prepare(load_mesh(blobby_path()), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
+    renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {640, 512});
+    for (const float distance : {0.35f, 0.12f}) {
+        FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), distance);
+        for (DensityPath path : kAllDensityPaths) {
+            renderer.params(0).density_path = path;
+            view.cull_outside_view = false;
+            const RenderedFrame all = target.render(renderer, view);
+            const std::vector<uint32_t> all_mask = renderer.drawn_mask(0);
+            view.cull_outside_view = true;
+            const RenderedFrame culled = target.render(renderer, view);
+            const std::vector<uint32_t> culled_mask = renderer.drawn_mask(0);
+            const size_t n_all = test::popcount(all_mask), n_culled = test::popcount(culled_mask);
+            std::printf("distance %.2f, %-9s path: %zu stipples drawn, %zu with the polygons outside the view culled\n", distance,
+                        density_path_name(path), n_all, n_culled);
+            EXPECT_EQ(fraction_differing(all.color, culled.color, 0), 0.0) << density_path_name(path) << ": the image changed";
+            for (size_t w = 0; w < all_mask.size(); ++w)
+                EXPECT_EQ(culled_mask[w] & ~all_mask[w], 0u) << "a stipple drawn only with culling, word " << w;
+            EXPECT_GT(n_all, 2000u);
+            EXPECT_LT(double(n_culled), 0.6 * double(n_all)) << density_path_name(path);
+        }
+    }
+    // The paths cull alike (the CPU's densities follow the same test).
+    const PathFrames close = draw_with_every_path(*context, blob, params, 0.35f);
+    for (size_t i = 1; i < close.masks.size(); ++i)
+        EXPECT_EQ(close.masks[i], close.masks[0]) << density_path_name(kAllDensityPaths[i]) << " drew a different set of stipples";
+}
+
 // Dots above 2.5 px are discs (round points; the splat's kSpecRoundPoints variant). On a flat disc
 // facing the eye (no pixel of a dot hidden by its own surface's curvature), the splat inks as many
 // pixels per drawn dot as the rasteriser's round points do; squares would ink about a fifth more.

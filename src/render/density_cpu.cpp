@@ -29,8 +29,20 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
         const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
         densities[t] = formulas::selected_density(terms, view.selection);
         bounds[t] = glm::vec2(densities[t]);
+        const uint32_t* corner = &indices[3 * (first_triangle + t)];
+        if ((object.flags.x & gpu::kFlagCullOutsideView) != 0u) {  // as the density pass: wholly outside the view
+            const glm::vec2 slack = formulas::view_cull_slack(glm::vec2(frame.viewport), object.shading.y);
+            uint32_t bits = formulas::clip_outside_bits(
+                object.model_view_proj * glm::vec4(formulas::polygon_center_object(triangles[t], object), 1.0f), slack);
+            for (int k = 0; k < 3 && bits != 0u; ++k)
+                bits &= formulas::clip_outside_bits(object.model_view_proj * glm::vec4(positions[corner[k]], 1.0f), slack);
+            if (bits != 0u) {
+                densities[t] = 0.0f;
+                bounds[t] = glm::vec2(0.0f);
+                continue;
+            }
+        }
         if (formulas::may_carry_gradient(terms, view, params, densities[t])) {  // as the density pass and its gradient pass
-            const uint32_t* corner = &indices[3 * (first_triangle + t)];
             auto in_view = [&](uint32_t i) { return glm::vec3(object.model_view * glm::vec4(positions[i], 1.0f)); };
             const glm::vec3 a = in_view(corner[0]), b = in_view(corner[1]), c = in_view(corner[2]);
             densities[t] = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, densities[t]), a, b,

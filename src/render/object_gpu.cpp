@@ -373,6 +373,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (p.two_sided) flags |= gpu::kFlagTwoSided;
     if (object.animation) flags |= gpu::kFlagStretch;
     if (!depth_holds_back_faces(object)) flags |= gpu::kFlagDepthOneSided;
+    if (view.cull_outside_view) flags |= gpu::kFlagCullOutsideView;
     const ObjectGeometry& g = object.geometry;
     if (draws_edge_lines(object)) {
         flags |= gpu::kFlagFacingBits;

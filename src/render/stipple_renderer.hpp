@@ -44,6 +44,10 @@ struct FrameView {
     // much larger (stipples as discs of their ink area), so a poster is the screen image enlarged: the
     // same stipples, the same tone. 1 for everything else.
     float detail_scale = 1.0f;
+    // Polygons wholly outside the view draw nothing (kFlagCullOutsideView; the image is the same). Off where
+    // every drawn stipple of the densities must be counted wherever it lies: a print's tiles with --stats,
+    // each tile counting the whole drawing's, and the tone survey's tally against its owed stipples.
+    bool cull_outside_view = true;
 };
 
 // Images the frame is drawn into. Layouts on entry are ignored (contents are cleared); on exit the

@@ -274,6 +274,7 @@ FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, fl
     view.extent = crop;
     view.camera = camera_matrices(camera, float(crop.width) / float(crop.height), bounds);
     view.light_view = light;
+    view.cull_outside_view = false;  // the drawn stipples are tallied against every polygon's owed ones
     return view;
 }
 
