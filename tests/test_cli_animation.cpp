@@ -223,6 +223,7 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
     write_text(scenes / "unknown.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": "Jump"}}]})");
     write_text(scenes / "speed.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"speed": "fast"}}]})");
     write_text(scenes / "field.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"clip": "Bend"}}]})");
+    write_text(scenes / "cpu.json", R"({"objects": [{"model": ")" + model + R"(", "params": {"density_path": "cpu"}}]})");
 
     // Bad animation data, at the command line: decreasing key times in the file.
     anim::GltfBuilder broken = anim::rigs::bending_cylinder();
@@ -248,6 +249,9 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", (scenes / "unknown.json").string(), "-o", out}, "objects[0].animation.name: "},
         {{"render", (scenes / "speed.json").string(), "-o", out}, "objects[0].animation.speed: expected a number"},
         {{"render", (scenes / "field.json").string(), "-o", out}, "objects[0].animation.clip: unknown field"},
+        // Said where the scene names the path.
+        {{"render", (scenes / "cpu.json").string(), "-o", out},
+         "cpu.json: objects[0].params.density_path: the cpu density path cannot draw an animated model"},
         {{"render", (scenes / "unknown.json").string(), "-o", out, "--animation", "Bend"}, "scene file"},
         {{"render", broken_path, "-o", out}, "animations[0].samplers[0].input: key 2 (time 1) comes before key 1"},
         {{"info", broken_path}, "animations[0].samplers[0].input"},

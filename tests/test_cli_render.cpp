@@ -477,7 +477,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "x.svg", "--tile", "512"}, "--tile is for print-resolution PNG output"},  // not "give --dpi too"
         {{"render", "-o", "x.csv", "--fill-paper"}, "a CSV (x.csv) has no page"},
         {{"render", "-o", "x.csv", "--dot-style", "tick"}, "--dot-style sets how SVG or PDF output draws its dots; a CSV (x.csv) lists"},
-        {{"render", "-o", "x.csv", "--pen-width", "0.3"}, "--pen-width sets how SVG or PDF output draws its dots"},
+        {{"render", "-o", "x.csv", "--pen-width", "0.3"}, "--pen-width sets the pen of SVG or PDF output's lines and dots; a CSV"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},
@@ -630,6 +630,50 @@ TEST(CliRender, StatsInkIsTheMeanInkOverTheCoveredPixels) {
         EXPECT_GT(printed, 0.0) << look[0];
         EXPECT_LT(printed, 0.9) << look[0];
     }
+}
+
+// --stats reads the ink from the paper's luminance toward the ink's: white ink on black paper is the same
+// drawing as black on white (it read 1 - luminance, the black paper as three quarters ink), and where the
+// two are of one luminance there is nothing to read.
+TEST(CliRender, StatsInkIsReadBetweenThePaperAndTheInk) {
+    const std::filesystem::path dir = test::temp_dir("cli-stats-colours");
+    auto ink_of = [&](const std::string& colours) {
+        std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << test::source_path("assets/blobby.glb") << R"("}])" << colours << "}";
+        const test::CommandResult r = run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "ink.png").string(), "--width",
+                                                   "320", "--height", "256", "--stats"});
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const size_t at = r.out.find("mean ink inside:");
+        EXPECT_NE(at, std::string::npos) << r.out;
+        return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
+    };
+    const std::string black_on_white = ink_of(""), white_on_black = ink_of(R"(, "paper": [0, 0, 0], "ink": [1, 1, 1])");
+    const std::string grey = ink_of(R"(, "paper": [0.5, 0.5, 0.5], "ink": [0.5, 0.5, 0.5])");
+    std::printf("%s\n%s\n%s\n", black_on_white.c_str(), white_on_black.c_str(), grey.c_str());
+    const double a = std::stod(black_on_white.substr(std::strlen("mean ink inside:"))), b = std::stod(white_on_black.substr(std::strlen("mean ink inside:")));
+    EXPECT_GT(a, 5.0);
+    EXPECT_NEAR(b, a, 0.02 * a);
+    EXPECT_NE(grey.find("not measured"), std::string::npos) << grey;
+}
+
+// A round dot (point size above 2.5) is the disc of the square's area: the tone does not fall where the dots
+// turn round (spot at 640 x 512: 54.3% of ink at 2.5, 48.2% at 2.51 until 2026-12-05), and grows with the size.
+TEST(CliRender, TheToneDoesNotFallWhereDotsTurnRound) {
+    const std::filesystem::path dir = test::temp_dir("cli-round-dots");
+    auto ink_at = [&](const std::string& size) {
+        const test::CommandResult r = run_stipple({"render", "-o", (dir / "dots.png").string(), "--width", "320", "--height",
+                                                   "256", "--point-size", size, "--stats"});
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const size_t at = r.out.find("mean ink inside:");
+        return at == std::string::npos ? 0.0 : std::stod(r.out.substr(at + std::strlen("mean ink inside:"))) / 100.0;
+    };
+    const double square = ink_at("2.5"), round = ink_at("2.51"), larger = ink_at("2.8");
+    std::printf("mean ink: 2.5-px squares %.4f, 2.51-px round dots %.4f, 2.8-px %.4f\n", square, round, larger);
+    EXPECT_GT(square, 0.05);
+    // Equal areas; the shapes overlap a little differently, and a round polygon's last dot is smaller where a
+    // square one is fainter.
+    EXPECT_GT(round / square, 0.97);
+    EXPECT_LT(round / square, 1.07);
+    EXPECT_GT(larger, round);
 }
 
 // At a low D_max a polygon that cannot hold a whole stipple even fully dark is selected (regime (b)), however

@@ -224,7 +224,8 @@ TEST(CliView, ThePanelLaidOverTheFrameLooksAsIfDrawnIntoIt) {
     std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << model << R"(", "params": {"dmax": 0.05},
                                              "animation": {"speed": 0, "start": 0.4}}],
                                              "paper": [1, 0.85, 0.6], "ink": [0.1, 0.2, 0.7]})";
-    constexpr int kWidth = 962, kHeight = 600;  // rows a linear image may pad: the layer keeps its own pitch
+    // Rows a linear image may pad (the layer keeps its own pitch), and wide enough for the panel to open (1000).
+    constexpr int kWidth = 1010, kHeight = 600;
     Image shown[2];
     for (int layer = 1; layer >= 0; --layer) {
         SCOPED_TRACE(layer ? "the panel's layer" : "the panel drawn into each frame");

@@ -66,8 +66,9 @@ void expect_splat_work_list(const gpu::Context& context, StippleRenderer& render
         if (!(densities[t] > 0.0f)) continue;
         const uint32_t candidates = stipples.first[t + 1] - stipples.first[t];
         uint32_t drawn = formulas::drawn_stipple_count(bounds[t].y, candidates);
-        const float side = formulas::splat_dot_side(renderer.params(0).point_size, densities[t], float(candidates));
-        const uint32_t run = formulas::splat_run_length(drawn, side, renderer.params(0).point_size);
+        const float point_size = object.frame.uniforms.shading.y;  // as drawn (drawn_point_size)
+        const float side = formulas::splat_dot_side(point_size, densities[t], float(candidates));
+        const uint32_t run = formulas::splat_run_length(drawn, side, point_size);
         std::vector<uint32_t>& into = apart && bounds[t].x != bounds[t].y ? expected_varied : expected;
         for (uint32_t k = 0; k < drawn; k += run) into.push_back(stipples.first[t] + k);
     }
@@ -395,7 +396,7 @@ TEST_F(DensityPaths, LargeDotsOnSlantedFacesAreWholeDiscs) {
     renderer.add_object(box.mesh, box.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});
     const FrameView view = test::framed_view(compute_bounding_sphere(box.mesh), target.extent(), 1.0f, 35.0f, 25.0f);
-    const double disc = 3.14159265 * 16.0 * 16.0;
+    const double disc = 32.0 * 32.0;  // a round dot inks its point size squared (drawn_point_size)
     for (DensityPath path : {DensityPath::Vertex, DensityPath::Splat}) {
         renderer.params(0).density_path = path;
         const RenderedFrame frame = target.render(renderer, view);

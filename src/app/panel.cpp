@@ -76,7 +76,9 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
                 section = spec.section;
                 ImGui::TextDisabled("%s", section);
             }
-            const double limit = std::string(spec.key) == "point_size" ? double(f.max_point_size) : spec.max;
+            // A round dot is drawn 1.13 times its point size across (drawn_point_size): kept within the device's points.
+            const double limit =
+                std::string(spec.key) == "point_size" ? std::min(spec.max, double(f.max_point_size) / 1.1283792) : spec.max;
             // Generation parameters act when the edit is committed (slider released, Enter): new stipples
             // for a big model take a while, and regenerating on every slider tick would stall the viewer.
             if (draw_param_widget(spec, p, limit).committed && spec.effect == ParamEffect::Regenerate)

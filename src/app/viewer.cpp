@@ -270,7 +270,8 @@ void Viewer::run_script() {
             case ScriptAction::Kind::Set: {
                 if (action.object >= live_.size()) {
                     message(options_.script + ":" + std::to_string(action.line) + ": there is no object " +
-                                std::to_string(action.object), true);
+                                std::to_string(action.object) + " (the scene's objects are 0.." + std::to_string(live_.size() - 1) + ")",
+                            true);
                     script_failed_ = true;
                     window_.request_close();
                     return;

@@ -389,7 +389,7 @@ int run_render(const std::vector<std::string>& argv) {
         const bool in_tiles = tiled || print.has_value();
         // The tone as `tone` measures it (measure_ink: 1 - luminance over the covered pixels), grey ink included:
         // counting the pixels darker than half (until 2026-12-05) read a faint drawing's 1.08% as 0.1%.
-        const InkFigures ink = measure_ink(frame);
+        const InkFigures ink = measure_ink(frame, scene.paper, scene.ink);
         if (scene.source.empty())
             std::printf("model:              %s\n", what.c_str());
         else
@@ -434,8 +434,12 @@ int run_render(const std::vector<std::string>& argv) {
             std::printf("covered pixels:     not measured (drawn in tiles)\n");
         } else {
             std::printf("covered pixels:     %zu\n", ink.covered);
-            std::printf("mean ink inside:    %.2f%% (1 - luminance over the covered pixels, as tone measures)\n",
-                        100.0 * ink.mean());
+            if (!ink_readable(scene.paper, scene.ink))
+                std::printf("mean ink inside:    not measured (the paper and the ink are of about the same luminance)\n");
+            else
+                std::printf("mean ink inside:    %.2f%% (of the way from the paper's luminance to the ink's over the covered "
+                            "pixels, as tone measures: 1 - luminance for black on white)\n",
+                            100.0 * ink.mean());
         }
         std::printf("load + generation:  %.3f s (generation %.3f s)\n", prepare_seconds, content.generation_seconds);
         std::printf("render + readback:  %.3f s%s\n", render_seconds, sequence ? " (last frame)" : "");

@@ -82,9 +82,9 @@ const ParamSpec kTable[] = {
      [](const P& p) { return double(p.de); }, [](P& p, double v) { p.de = float(v); }},
 
     {"point_size", "point-size", "point size px", kDrawing,
-     "stipple size in pixels: the side of a square dot up to 2.5, above it the diameter of a round one, whose "
-     "polygon's fractional last dot is smaller rather than fainter (square dots enlarged close up beyond 2.5 are "
-     "discs of their area)", ParamType::Float, 1.0, 64.0, false, {},
+     "stipple size in pixels: the side of a square dot up to 2.5, above it a round one of the same area (a "
+     "diameter 1.13 times as large), whose polygon's fractional last dot is smaller rather than fainter (square "
+     "dots enlarged close up beyond 2.5 are discs of their area too)", ParamType::Float, 1.0, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.point_size); },
      [](P& p, double v) { p.point_size = float(v); }},
     {"density_path", "density-path", "density path", kDrawing,

@@ -226,9 +226,9 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn,
                                              bool vec3_texels) {
     validate_params(params);
-    if (params.point_size > context.features.max_point_size)
-        fail("--point-size " + std::to_string(params.point_size) + " exceeds this device's maximum of " +
-             std::to_string(context.features.max_point_size));
+    if (drawn_point_size(params.point_size) > context.features.max_point_size)
+        fail("--point-size " + std::to_string(params.point_size) + " (drawn " + std::to_string(drawn_point_size(params.point_size)) +
+             " px across) exceeds this device's maximum of " + std::to_string(context.features.max_point_size));
 
     auto object = std::make_unique<ObjectGpu>();
     object->context = &context;
@@ -358,7 +358,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     const float radius_world = std::max(bounds.radius * scale.most, 1e-20f);
     // At print detail a stipple is drawn as the disc of its screen ink, enlarged (FrameView::detail_scale).
     const bool print = view.detail_scale != 1.0f;
-    const float point_size = print ? 2.0f * stipple_ink_radius(p.point_size) * view.detail_scale : p.point_size;
+    const float point_size = print ? 2.0f * stipple_ink_radius(p.point_size) * view.detail_scale : drawn_point_size(p.point_size);
     u.shading = glm::vec4(p.shading_exponent, point_size, p.toon_sharpness, 0.0f);
     // Reference view of generation: the bounding-sphere radius spans kReferenceHeight / 2 pixels.
     u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_mean, scale.mean * scale.mean);

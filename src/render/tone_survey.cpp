@@ -143,15 +143,22 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
     return tally;
 }
 
-InkFigures measure_ink(const RenderedFrame& frame) {
+namespace {
+double luminance(glm::vec3 rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+}  // namespace
+
+bool ink_readable(glm::vec3 paper, glm::vec3 ink) { return std::abs(luminance(paper) - luminance(ink)) >= 0.05; }
+
+InkFigures measure_ink(const RenderedFrame& frame, glm::vec3 paper, glm::vec3 ink) {
     InkFigures f;
+    // Luminance, Rec. 709 weights (the red channel alone read a red ink as light), from the paper's toward the
+    // ink's: 1 - luminance for black on white. With a black paper and white ink it read the paper as 75% ink.
+    const double paper_l = luminance(paper), span = ink_readable(paper, ink) ? paper_l - luminance(ink) : 1.0;
     for (size_t i = 0; i < frame.depth.size(); ++i) {
         if (frame.depth[i] >= 1.0f) continue;
         ++f.covered;
-        // 1 - luminance (Rec. 709 weights; the red channel alone read a red ink as light): black and grey ink, as
-        // every figure here is taken, read the same either way.
         const uint8_t* rgb = &frame.color.pixels[4 * i];
-        f.ink += 1.0 - (0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]) / 255.0;
+        f.ink += (paper_l - luminance(glm::vec3(rgb[0], rgb[1], rgb[2]) / 255.0f)) / span;
     }
     return f;
 }
@@ -191,7 +198,7 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
                 here = formulas::stipple_density_here(density, in_view(position), a,
                                                       b, c, params);
             // A square dot enlarged beyond kRoundPointsAbovePx is a disc of its area (enlarged_square_extent).
-            const float square_side = formulas::splat_dot_side(object.params.point_size, here, float(candidates));
+            const float square_side = formulas::splat_dot_side(object.frame.uniforms.shading.y, here, float(candidates));
             const bool disc = formulas::drawn_dot_is_round(round, square_side);
             const float side = formulas::drawn_dot_extent(round, square_side);
             const float intensity = formulas::stipple_intensity(here, float(k));

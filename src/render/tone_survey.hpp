@@ -57,7 +57,12 @@ struct InkFigures {
     double hidden_whole_ink = 0.0;  // of hidden_ink: dots with no pixel left (a nearer part covers them)
     double mean() const { return covered ? ink / double(covered) : 0.0; }
 };
-InkFigures measure_ink(const RenderedFrame& frame);
+// Over the covered pixels: how far each pixel's luminance (Rec. 709) has gone from the paper's toward the
+// ink's, 1 - luminance for black ink on white paper (every figure of tone, tests and docs). Coloured paper
+// and ink (a scene's) are read by their own luminances; where those are nearly the same there is no tone
+// to read (ink_readable).
+InkFigures measure_ink(const RenderedFrame& frame, glm::vec3 paper = glm::vec3(1.0f), glm::vec3 ink = glm::vec3(0.0f));
+bool ink_readable(glm::vec3 paper, glm::vec3 ink);
 
 // Ink the frame's drawn stipples of `object` would leave if none overlapped another: each dot's pixels
 // (the splat's square or disc) that a surface covers and that do not hide it, times its intensity.

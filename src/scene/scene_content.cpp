@@ -57,6 +57,13 @@ SceneContent load_scene_models(const Scene& scene) {
         } catch (const Error& e) {
             fail_in_scene(scene, i, "animation.name", e);
         }
+        // Said where the scene file names the path (the renderer's own refusal names the model).
+        const DensityPath path = scene.objects[i].params.density_path;
+        if (content.objects[i].motion && density_on_cpu(path))
+            fail_in_scene(scene, i, "params.density_path",
+                          Error(std::string("the ") + density_path_name(path) + " density path cannot draw an animated model (" +
+                                scene.objects[i].model + ": it computes densities on the CPU from the rest pose): use "
+                                "vertex, indirect or splat"));
     }
     return content;
 }
