@@ -73,10 +73,9 @@ void write_facing_bits(bool in_range, PolygonView p) {
 bool polygon_outside_view(uint triangle, mat4 model_view_proj, vec2 slack, uint center_bits) {
     if (center_bits == 0u) return false;
     uvec3 corners = mesh_triangle(triangle);
-    uint bits = center_bits & clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.x), 1.0f), slack);
-    bits &= clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.y), 1.0f), slack);
-    bits &= clip_outside_bits(model_view_proj * vec4(mesh_vertex(corners.z), 1.0f), slack);
-    return bits != 0u;
+    return triangle_outside_view(center_bits, model_view_proj * vec4(mesh_vertex(corners.x), 1.0f),
+                                 model_view_proj * vec4(mesh_vertex(corners.y), 1.0f),
+                                 model_view_proj * vec4(mesh_vertex(corners.z), 1.0f), slack);
 }
 
 // How many workgroups of kDensityWorkgroupSize start in slots [base, base + n) of a list.

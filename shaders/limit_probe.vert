@@ -9,7 +9,7 @@ layout(push_constant) uniform Probe {
     uint drawn;   // of which drawn
     float side;   // the footprint square's side, pixels
     float width, height;
-    float point_size;  // the stipples' (ObjectParams::point_size): a rasteriser may set up wider points otherwise
+    float point_size;  // the stipples' as drawn (drawn_point_size): a rasteriser may set up wider points otherwise
 } probe;
 
 uint hash(uint x) {  // a 32-bit integer mix (lowbias32)

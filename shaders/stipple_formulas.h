@@ -286,7 +286,6 @@ STIPPLE_FN float polygon_selection(TriangleInfo info) {
     return (float(((info.center_z_selection >> 16u) << 8u) | within) + 0.5f) * (1.0f / 16777216.0f);
 }
 
-// The density inputs of one polygon, from its constant data, its candidate count and the object's uniforms.
 // The polygon's centroid in object space, as TriangleInfo quantises it in the object's box.
 STIPPLE_FN vec3 polygon_center_object(TriangleInfo info, ObjectUniforms o) {
     vec2 xy = unpackUnorm2x16(info.center_xy);
@@ -314,6 +313,11 @@ STIPPLE_FN uint clip_outside_bits(vec4 p, vec2 slack) {
     if (p.z > p.w) bits |= 32u;
     return bits;
 }
+// Whether a triangle lies wholly outside the view: its clip-space corners all beyond one plane (and its
+// centroid, whose bits `center_bits` say whether the corners need reading at all: 0, inside).
+STIPPLE_FN bool triangle_outside_view(uint center_bits, vec4 a, vec4 b, vec4 c, vec2 slack) {
+    return (center_bits & clip_outside_bits(a, slack) & clip_outside_bits(b, slack) & clip_outside_bits(c, slack)) != 0u;
+}
 // The clip-space widening of the frame's sides: 1 + the reach of the object's largest dot (its point size
 // enlarged by kMaxStippleScale, and a square then drawn as a disc of its area) over half the viewport.
 STIPPLE_FN vec2 view_cull_slack(vec2 viewport, float point_size) {
@@ -321,6 +325,7 @@ STIPPLE_FN vec2 view_cull_slack(vec2 viewport, float point_size) {
     return vec2(1.0f) + 2.0f * reach / viewport;
 }
 
+// The density inputs of one polygon, from its constant data, its candidate count and the object's uniforms.
 STIPPLE_FN PolygonView polygon_view(TriangleInfo info, float candidates, ObjectUniforms o) {
     PolygonView p;
     p.candidates = candidates;

@@ -13,8 +13,8 @@ namespace {
 using namespace stipple;
 
 // The panel's height after a few frames of a `width` x 512 window (ImGui fits its height to the content
-// over the first frames), `messages` given from frame `message_frame` on.
-float panel_height(uint32_t width, const std::vector<std::string>& messages = {}, int message_frame = 0) {
+// over the first frames), `messages` given from frame `message_frame` on, `errors` of them errors.
+float panel_height(uint32_t width, const std::vector<std::string>& messages = {}, int message_frame = 0, uint64_t errors = 0) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
@@ -29,7 +29,10 @@ float panel_height(uint32_t width, const std::vector<std::string>& messages = {}
     app::ExportPanelState export_state;
     float height = 0.0f;
     for (int frame = 0; frame < 6; ++frame) {
-        if (frame == message_frame) figures.messages = messages;
+        if (frame == message_frame) {
+            figures.messages = messages;
+            figures.errors_said += errors;
+        }
         ImGui::NewFrame();
         height = app::draw_panel(scene, {}, figures, export_state).rect.w;
         ImGui::Render();
@@ -50,7 +53,7 @@ TEST(AppPanel, ANarrowWindowStartsWithThePanelFolded) {
 // The panel shows the viewer's messages: a new error unfolds it, a confirmation does not.
 TEST(AppPanel, ANewErrorUnfoldsThePanel) {
     EXPECT_LT(panel_height(640, {"scene saved: x.json"}, 3), 40.0f);
-    EXPECT_GT(panel_height(640, {"error: x.svg: cannot write"}, 3), 150.0f);
+    EXPECT_GT(panel_height(640, {"error: x.svg: cannot write"}, 3, 1), 150.0f);
 }
 
 }  // namespace

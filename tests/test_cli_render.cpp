@@ -356,7 +356,7 @@ std::array<double, 4> ink_by_quarter(const Image& image) {
 TEST(CliRender, ImagesLargerThanOneFrameAreDrawnInTiles) {
     const auto dir = test::temp_dir("cli-tiled");
     const std::string tiled = (dir / "tiled.png").string(), whole = (dir / "whole.png").string();
-    const test::CommandResult one = run_stipple({"render", "-o", whole, "--width", "2000", "--height", "1500"});
+    const test::CommandResult one = run_stipple({"render", "-o", whole, "--width", "2000", "--height", "1500", "--stats"});
     ASSERT_EQ(one.exit_code, 0) << one.err;
     // 1,572,864 pixels (the default scene's own buffers need 5.6 MiB): tiles of 1254 x 1254, 2 x 2 of them.
     std::optional<test::ScopedEnv> small_buffers(std::in_place, "STIPPLE_MAX_STORAGE_BUFFER", "6M");
@@ -376,6 +376,14 @@ TEST(CliRender, ImagesLargerThanOneFrameAreDrawnInTiles) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("not measured (drawn in tiles)"), std::string::npos) << r.out;
+    // The drawn stipples are the image's, not the last tile's: counted, every tile draws every polygon's (culled
+    // to its own viewport the corner tile counted 0 of a 6000 x 6000 image's).
+    auto drawn_in = [](const std::string& out) {
+        const size_t at = out.find("drawn stipples:");
+        return at == std::string::npos ? -1LL : std::stoll(out.substr(at + std::strlen("drawn stipples:")));
+    };
+    EXPECT_GT(drawn_in(one.out), 10000);
+    EXPECT_EQ(drawn_in(r.out), drawn_in(one.out)) << r.out;
     const Image a = read_png(tiled), b = read_png(whole);
     ASSERT_EQ(a.width, 2000);
     ASSERT_EQ(a.height, 1500);

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "export/csv_writer.hpp"
+#include "export/drawing_fit.hpp"
 #include "export/plot_file.hpp"
 #include "export/plot_plan.hpp"
 #include "export/plot_stats.hpp"
@@ -60,18 +61,18 @@ TEST(ExportPlan, LayersNumberedPerObjectAndKind) {
 // the page inside the margins, on a page turned as that box is; --fit frame lays out the whole frame.
 TEST(ExportPlan, TheDrawingFillsThePageInsideItsMargins) {
     Drawing drawing;
-    drawing.width_px = 1000;
-    drawing.height_px = 1000;
+    drawing.width_px = 500;
+    drawing.height_px = 500;
     drawing.objects.push_back({"wide", 2.0f});
-    // Dots from x 400 to 600 at y 450 and 550, ink radius 2 * sqrt(0.25) = 1; a line at y 560, 2 px wide.
-    for (int x = 400; x <= 600; x += 20)
-        for (int y : {450, 550}) drawing.dots.push_back({glm::vec2(float(x), float(y)), 2.0f, 0.25f, 0, 0});
-    drawing.segments.push_back({{450.0f, 560.0f}, {550.0f, 560.0f}, 0, LineKind::Contour});
+    // Dots from x 150 to 350 at y 200 and 300, ink radius 2 * sqrt(0.25) = 1; a line at y 310, 2 px wide.
+    for (int x = 150; x <= 350; x += 20)
+        for (int y : {200, 300}) drawing.dots.push_back({glm::vec2(float(x), float(y)), 2.0f, 0.25f, 0, 0});
+    drawing.segments.push_back({{200.0f, 310.0f}, {300.0f, 310.0f}, 0, LineKind::Contour});
     ExportOptions options;  // A4, 10 mm margins, fit the drawing
     const PlotPlan plan = make_plot_plan(drawing, options);
     EXPECT_EQ(plan.fit, Fit::Drawing);
     EXPECT_DOUBLE_EQ(plan.layout.page.width_mm, 297.0) << "a box wider than tall: landscape";
-    // The box: x 399..601 (202 px), y 449..561 (112 px); 277 / 202 < 190 / 112, so the width limits.
+    // The box: x 149..351 (202 px), y 199..311 (112 px); 277 / 202 < 190 / 112, so the width limits.
     EXPECT_NEAR(plan.layout.mm_per_px, 277.0 / 202.0, 1e-9);
     double left = 1e9, right = -1e9;
     for (const PlotDot& dot : plan.layers[0].dots) {
@@ -80,13 +81,24 @@ TEST(ExportPlan, TheDrawingFillsThePageInsideItsMargins) {
     }
     EXPECT_NEAR(left, 10.0, 1e-6);
     EXPECT_NEAR(right, 287.0, 1e-6);
-    EXPECT_NEAR(plan.layout.to_mm({500.0, 505.0}).y, 105.0, 1e-9) << "centred on the page";
+    EXPECT_NEAR(plan.layout.to_mm({250.0, 255.0}).y, 105.0, 1e-9) << "centred on the page";
 
     options.fit = Fit::Frame;
     const PlotPlan frame = make_plot_plan(drawing, options);
     EXPECT_EQ(frame.fit, Fit::Frame);
     EXPECT_DOUBLE_EQ(frame.layout.page.width_mm, 210.0) << "a square frame: portrait";
-    EXPECT_NEAR(frame.layout.mm_per_px, 190.0 / 1000.0, 1e-12);
+    EXPECT_NEAR(frame.layout.mm_per_px, 190.0 / 500.0, 1e-12);
+
+    // A few dots in an empty frame are enlarged at most kMostEnlargement times the frame's own scale (they
+    // were blown up into discs of 68 mm).
+    Drawing far = drawing;
+    far.dots.resize(2);
+    far.segments.clear();
+    options.fit = Fit::Drawing;
+    const PlotPlan few = make_plot_plan(far, options);
+    EXPECT_EQ(few.fit, Fit::Drawing);
+    EXPECT_NEAR(few.layout.mm_per_px, kMostEnlargement * std::min(few.layout.page.width_mm - 20.0, few.layout.page.height_mm - 20.0) / 500.0,
+                1e-9);
 
     Drawing empty = drawing;
     empty.dots.clear();
@@ -94,7 +106,7 @@ TEST(ExportPlan, TheDrawingFillsThePageInsideItsMargins) {
     options.fit = Fit::Drawing;
     const PlotPlan blank = make_plot_plan(empty, options);
     EXPECT_EQ(blank.fit, Fit::Frame) << "nothing drawn: the frame's page";
-    EXPECT_NEAR(blank.layout.mm_per_px, 190.0 / 1000.0, 1e-12);
+    EXPECT_NEAR(blank.layout.mm_per_px, 190.0 / 500.0, 1e-12);
     EXPECT_TRUE(blank.layers.empty());
 }
 
@@ -186,7 +198,7 @@ TEST(ExportPlan, DotsUnderThePensLeastMarkAreDrawnAsItByChance) {
         const PlotPlan plan = make_plot_plan(drawing, options);
         ASSERT_EQ(plan.layers.size(), 1u);
         const PlotLayer& layer = plan.layers[0];
-        EXPECT_EQ(layer.small_dots, 4800u);
+        EXPECT_EQ(plan.small_dots, 4800u);
         for (const PlotDot& dot : layer.dots) EXPECT_DOUBLE_EQ(dot.radius_mm, least);
         const double drawn_ink = double(layer.dots.size()) * std::numbers::pi * least * least;
         std::printf("%s: least mark %.3f mm, %zu of 4800 dots drawn, ink %.3f of the dots'\n", dot_style_name(style), least,
@@ -196,7 +208,7 @@ TEST(ExportPlan, DotsUnderThePensLeastMarkAreDrawnAsItByChance) {
         EXPECT_EQ(make_plot_plan(drawing, options).layers[0].dots.size(), layer.dots.size()) << "the same every time";
         EXPECT_NE(format_stats(plot_stats(plan)).find("4800 dots under the pen's least mark"), std::string::npos);
     }
-    // The least marks themselves: a circle's ring at its smallest inks a disc 3/4 of the pen wide; a tick at
+    // The least marks themselves: a circle's ring at its smallest inks a disc of radius 3/4 of the pen; a tick at
     // its shortest inks kMinTickMm of the pen and its round caps.
     EXPECT_DOUBLE_EQ(least_mark_radius(DotStyle::Circle, 0.4), 0.3);
     EXPECT_NEAR(tick_length(least_mark_radius(DotStyle::Tick, 0.3), 0.3), kMinTickMm, 1e-12);

@@ -78,8 +78,6 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     FrameView print = view;
     print.extent = layout.drawing_px;
     print.detail_scale = layout.detail_scale;
-    // With --stats each tile draws, and counts, the whole drawing's stipples: the counts are the print's.
-    print.cull_outside_view = stats == nullptr;
     const Image drawing = render_tiled(context, renderer, print, options.max_tile);
     if (stats) *stats = renderer.stats();
     Image page;

@@ -77,8 +77,9 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
                 ImGui::TextDisabled("%s", section);
             }
             // A round dot is drawn 1.13 times its point size across (drawn_point_size): kept within the device's points.
-            const double limit =
-                std::string(spec.key) == "point_size" ? std::min(spec.max, double(f.max_point_size) / 1.1283792) : spec.max;
+            const double limit = std::string(spec.key) == "point_size"
+                                     ? std::clamp(double(largest_point_size_drawn_within(f.max_point_size)), spec.min, spec.max)
+                                     : spec.max;
             // Generation parameters act when the edit is committed (slider released, Enter): new stipples
             // for a big model take a while, and regenerating on every slider tick would stall the viewer.
             if (draw_param_widget(spec, p, limit).committed && spec.effect == ParamEffect::Regenerate)
@@ -123,11 +124,10 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     // A window too narrow for the panel beside the drawing starts with the panel folded to its title bar
     // (at 640 x 512 the open panel covered three quarters of the drawing); the title keeps the frame rate.
     ImGui::SetNextWindowCollapsed(float(figures.extent.width) < kNarrowWindow, ImGuiCond_FirstUseEver);
-    // A new error unfolds it: the messages are shown inside.
-    static std::string newest_seen;
-    const std::string newest = figures.messages.empty() ? std::string() : figures.messages.back();
-    if (newest != newest_seen && newest.rfind("error: ", 0) == 0) ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
-    newest_seen = newest;
+    // A new error unfolds it: the messages are shown inside (the same error again too, once folded).
+    static uint64_t errors_seen = 0;
+    if (figures.errors_said > errors_seen) ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
+    errors_seen = figures.errors_said;
     char title[64];
     std::snprintf(title, sizeof title, "stipple  %.1f fps###stipple", figures.fps);  // ### keeps one window
     bool open = ImGui::Begin(title);

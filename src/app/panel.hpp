@@ -29,6 +29,7 @@ struct PanelFigures {
     std::string scene_path;       // where "save scene" writes
     std::string screenshot_dir;
     std::vector<std::string> messages;  // newest last: errors and confirmations
+    uint64_t errors_said = 0;           // errors among every message said so far (a new one unfolds the panel)
     std::string work_label;   // background work running now ("" when idle), e.g. "new stipples for stanford-bunny.obj"
     double work_fraction = 0.0;
     size_t work_queued = 0;

@@ -137,6 +137,7 @@ void Viewer::message(const std::string& text, bool error) {
     std::fprintf(error ? stderr : stdout, "stipple: %s\n", text.c_str());
     std::fflush(error ? stderr : stdout);
     messages_.push_back(error ? "error: " + text : text);
+    errors_said_ += error;
     draw_until_ = std::max(draw_until_, Clock::now() + kSettle);  // shown in the panel
     while (messages_.size() > 20) messages_.pop_front();
 }

@@ -121,6 +121,7 @@ void Viewer::frame() {
         figures_.scene_path = options_.scene_path;
         figures_.screenshot_dir = options_.screenshot_dir;
         figures_.messages.assign(messages_.begin(), messages_.end());
+        figures_.errors_said = errors_said_;
         const auto status = work_.status();
         figures_.work_label = status ? status->label : "";
         figures_.work_fraction = status ? status->fraction : 0.0;

@@ -99,6 +99,7 @@ private:
     glm::vec4 timeline_rect_{0.0f};
     std::optional<Clock::time_point> last_frame_;  // when the timeline last moved on
     std::deque<std::string> messages_;
+    uint64_t errors_said_ = 0;  // every error message so far (PanelFigures::errors_said)
     std::vector<size_t> pending_regeneration_;
     BackgroundWork work_{context_};  // after live_ and context_; destroyed first (joins its worker)
     std::vector<ScriptAction> script_;

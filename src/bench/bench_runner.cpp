@@ -277,7 +277,7 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
                 limit->drawn = uint64_t(cell.drawn);
                 limit->culled = model.candidates - std::min<uint64_t>(model.candidates, limit->drawn);
                 probe_frame = [&](bool timed) {
-                    const float point_size = renderer.params(0).point_size;
+                    const float point_size = drawn_point_size(renderer.params(0).point_size);  // as the stipples are drawn
                     const double ms = probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels, point_size);
                     const double state_ms =
                         probe_holder->frame(limit->culled, limit->drawn, model.covered_pixels, point_size, true);

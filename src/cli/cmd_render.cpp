@@ -330,6 +330,7 @@ int run_render(const std::vector<std::string>& argv) {
     RenderedFrame frame;
     plot::PlotStats last_plot;  // vector output: the last frame's
     size_t empty_pages = 0;     // vector output: frames with nothing drawn
+    size_t empty_small_dots = 0;  // on them, dots under the pen's least mark (none drawn by chance)
     FrameStats print_stats;     // a print's, from the renderer that draws it (app::render_print)
     FrameView view;
     double render_seconds = 0.0;
@@ -359,7 +360,10 @@ int run_render(const std::vector<std::string>& argv) {
             last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
                                           output_path(output, i, sequence), animated ? clock.frame_time(i) : 0.0);
             if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(last_plot).c_str());
-            empty_pages += last_plot.dots == 0 && last_plot.polylines == 0;
+            if (last_plot.dots == 0 && last_plot.polylines == 0) {
+                ++empty_pages;
+                empty_small_dots += last_plot.small_dots;
+            }
         } else {
             write_png(output_path(output, i, sequence), frame.color);
         }
@@ -372,7 +376,10 @@ int run_render(const std::vector<std::string>& argv) {
     if (empty_pages > 0)
         std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
                      sequence ? printf_string("%zu of %zu pages", empty_pages, cameras.size()).c_str() : output_path(output, 0, false).c_str(),
-                     " - the object is out of view, or too far or too light for a dot");
+                     empty_small_dots ? printf_string(" - its %zu dots are under the pen's least mark and none was drawn as it by "
+                                                      "chance: a finer --pen-width, or --dot-style filled",
+                                                      empty_small_dots).c_str()
+                                      : " - the object is out of view, or too far or too light for a dot");
 
     // Timed frames after the first (which warms caches and the driver's shader compilation).
     std::vector<double> frame_ms;
@@ -387,7 +394,8 @@ int run_render(const std::vector<std::string>& argv) {
         // A print is drawn by a renderer of its own (the splat, in tiles); `renderer` drew nothing then.
         const FrameStats& stats = print ? print_stats : renderer.stats();
         const bool in_tiles = tiled || print.has_value();
-        // The tone as `tone` measures it (measure_ink: 1 - luminance over the covered pixels), grey ink included:
+        // The tone as `tone` measures it (measure_ink: from the paper's luminance toward the ink's over the covered
+        // pixels, 1 - luminance for black on white), grey ink included:
         // counting the pixels darker than half (until 2026-12-05) read a faint drawing's 1.08% as 0.1%.
         const InkFigures ink = measure_ink(frame, scene.paper, scene.ink);
         if (scene.source.empty())

@@ -54,7 +54,7 @@ glm::dvec2 dot_reach_mm(double ink_radius_mm, DotStyle style, double pen_mm) {
     return glm::dvec2(ink_radius_mm);
 }
 
-std::optional<PageLayout> fit_marks(const FitMarks& marks, const PageSize& page, double margin_mm) {
+std::optional<PageLayout> fit_marks(const FitMarks& marks, glm::dvec2 frame_px, const PageSize& page, double margin_mm) {
     if (marks.empty()) return std::nullopt;
     const Box ink = box_at(marks, 1.0, false);
     // The page's room, and the margin's checks, as for any image of the ink's proportions.
@@ -64,13 +64,15 @@ std::optional<PageLayout> fit_marks(const FitMarks& marks, const PageSize& page,
         const glm::dvec2 size = box_at(marks, mm_per_px, true).size();
         return size.x <= room.x && size.y <= room.y;
     };
-    // The box grows with the scale: bracket the largest scale that fits, then halve the bracket.
-    double lo = 0.0, hi = ink_fit.mm_per_px;
+    // The box grows with the scale: the largest scale that fits, by halving [lo, hi], up to the most enlargement.
+    const double most = frame_px.x > 0.0 && frame_px.y > 0.0 ? kMostEnlargement * std::min(room.x / frame_px.x, room.y / frame_px.y)
+                                                             : 65536.0 * ink_fit.mm_per_px;
+    double lo = 0.0, hi = most;
     if (!fits(hi * 1e-9))
-        fail("--pen-width: the pen's marks alone are wider than the page's room inside the margins (" +
-             std::to_string(int(room.x)) + " x " + std::to_string(int(room.y)) + " mm)");
-    for (int doubling = 0; doubling < 16 && fits(hi); ++doubling) lo = hi, hi *= 2.0;
-    if (fits(hi)) lo = hi;  // even beyond 65000 times the ink's own scale (a hairline): keep that
+        fail("the dots and lines as the pen draws them do not fit the page's room inside the margins (" +
+             std::to_string(int(room.x)) + " x " + std::to_string(int(room.y)) + " mm): a finer --pen-width or a smaller --margin");
+    if (fits(hi)) lo = hi;
+    else if (ink_fit.mm_per_px < hi && fits(ink_fit.mm_per_px)) lo = ink_fit.mm_per_px;  // a start near the answer
     for (int step = 0; step < 48 && hi - lo > 1e-12 * hi; ++step) {
         const double mid = 0.5 * (lo + hi);
         (fits(mid) ? lo : hi) = mid;

@@ -2,10 +2,12 @@
 // --fit drawing: the scale and place at which the marks the pen makes fill the page inside its margins.
 //
 // Marks are given where the frame drew them, in pixels. A filled dot and a line drawn as wide as the frame
-// drew it scale with the drawing; a plotter's dot does not only scale (a circle's ring is at least 3/4 of
-// the pen wide, a tick is as long as its dot's area asks, which grows with the square of the scale), nor
+// drew it scale with the drawing; a plotter's dot does not only scale (a circle's ring inks at least a disc
+// of radius 3/4 of the pen, a tick is as long as its dot's area asks, which grows with the square of the scale), nor
 // does a line drawn with a given pen (0.3 mm on any page). So the scale is the largest at which the box of
-// the marks as drawn fits, found by bisection; the box is then centred on the page.
+// the marks as drawn fits, found by bisection, but at most kMostEnlargement times the scale that fits the
+// whole frame (a far object, a few dots in an empty frame, was blown up into discs of 68 mm); the box is
+// then centred on the page.
 #include <optional>
 #include <vector>
 
@@ -30,9 +32,11 @@ struct FitMarks {
 // Half the width and height, in mm, of the ink of a dot of ink radius `ink_radius_mm` drawn in `style`.
 glm::dvec2 dot_reach_mm(double ink_radius_mm, DotStyle style, double pen_mm);
 
-// The layout that fills the page (turned as the marks are where its name leaves that open) with the marks;
-// nothing when there are none. Throws stipple::Error for a margin that leaves no room or marks of the pen
-// alone wider than that room.
-std::optional<PageLayout> fit_marks(const FitMarks& marks, const PageSize& page, double margin_mm);
+constexpr double kMostEnlargement = 4.0;
+
+// The layout that fills the page (turned as the marks are where its name leaves that open) with the marks of
+// a frame of frame_px pixels; nothing when there are none. Throws stipple::Error for a margin that leaves no
+// room or marks of the pen alone wider than that room.
+std::optional<PageLayout> fit_marks(const FitMarks& marks, glm::dvec2 frame_px, const PageSize& page, double margin_mm);
 
 }  // namespace stipple::plot

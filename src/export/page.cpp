@@ -8,17 +8,13 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "export/text_format.hpp"
 
 namespace stipple::plot {
 
 namespace {
 
 constexpr const char* kAcceptedPages = "expected A3, A4, A5, letter, legal or WxHmm, optionally -portrait or -landscape";
-
-std::string lower(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
 
 bool ends_with(const std::string& text, const std::string& suffix) {
     return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -47,7 +43,7 @@ std::string number(double value) {
 }  // namespace
 
 PageSize parse_page(const std::string& name) {
-    std::string size = lower(name);
+    std::string size = lower_ascii(name);
     if (size.find_first_of(" \t") != std::string::npos) bad_page(name, "no spaces: write it as one word, e.g. 210x297mm");
     enum class Orientation { AsGiven, Portrait, Landscape } orientation = Orientation::AsGiven;
     if (ends_with(size, "-landscape")) {

@@ -18,18 +18,12 @@
 #include "export/polyline_order.hpp"
 #include "export/polylines.hpp"
 #include "export/simplify.hpp"
+#include "export/text_format.hpp"
 
 namespace stipple::plot {
 
-namespace {
-std::string lower(std::string text) {  // names are taken in any case, as --page's are
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-}  // namespace
-
 DotStyle parse_dot_style(const std::string& given) {
-    const std::string name = lower(given);
+    const std::string name = lower_ascii(given);
     if (name == "filled") return DotStyle::Filled;
     if (name == "circle") return DotStyle::Circle;
     if (name == "tick") return DotStyle::Tick;
@@ -46,7 +40,7 @@ const char* dot_style_name(DotStyle style) {
 }
 
 Fit parse_fit(const std::string& given) {
-    const std::string name = lower(given);
+    const std::string name = lower_ascii(given);
     if (name == "drawing") return Fit::Drawing;
     if (name == "frame") return Fit::Frame;
     fail("--fit '" + given + "': expected drawing or frame");
@@ -130,7 +124,7 @@ double dot_chance(const Dot& dot, uint32_t index) {
     return double(key >> 11) * 0x1.0p-53;
 }
 
-PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indices, uint32_t object, const PlotPlan& plan,
+PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indices, uint32_t object, PlotPlan& plan,
                         double pen_mm, bool plotter_order, glm::dvec2& pen) {
     PlotLayer layer;
     layer.number = 3 * object + 1;
@@ -147,7 +141,7 @@ PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indice
         const Dot& dot = drawing.dots[i];
         double radius = ink_radius_px(dot) * plan.layout.mm_per_px;
         if (radius < least) {
-            ++layer.small_dots;
+            ++plan.small_dots;
             if (dot_chance(dot, i) >= (radius / least) * (radius / least)) continue;
             radius = least;
         }
@@ -266,7 +260,7 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
                         marks.line_half_mm.push_back(options.pen_width_mm.value_or(0.0) / 2.0);
                     }
         }
-        fitted = fit_marks(marks, options.page, options.margin_mm);
+        fitted = fit_marks(marks, glm::dvec2(drawing.width_px, drawing.height_px), options.page, options.margin_mm);
     }
     // Nothing drawn (or the frame asked for): the frame, as the screen shows it.
     plan.fit = fitted ? Fit::Drawing : Fit::Frame;
@@ -276,8 +270,10 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
 
     glm::dvec2 pen = plan.home;
     for (uint32_t object = 0; object < objects; ++object) {
-        if (!dots_of[object].empty())
-            plan.layers.push_back(stipple_layer(drawing, dots_of[object], object, plan, dot_pen, options.plotter_order, pen));
+        if (!dots_of[object].empty()) {
+            PlotLayer dots = stipple_layer(drawing, dots_of[object], object, plan, dot_pen, options.plotter_order, pen);
+            if (!dots.dots.empty()) plan.layers.push_back(std::move(dots));  // all under the pen's mark, none drawn: no layer
+        }
         for (const LayerKind kind : {LayerKind::Lines, LayerKind::Creases}) {
             const std::vector<Piece>& pieces = kind == LayerKind::Lines ? line_pieces[object] : crease_pieces[object];
             if (pieces.empty()) continue;

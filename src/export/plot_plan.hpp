@@ -77,7 +77,6 @@ struct PlotDot {
 
 struct PlotLayer {
     uint32_t number = 0;
-    size_t small_dots = 0;  // the dots under the pen's least mark, of which those drawn are in `dots`
     std::string label;  // "<number> <name> stipples|lines"
     uint32_t object = 0;
     LayerKind kind = LayerKind::Stipples;
@@ -88,6 +87,7 @@ struct PlotLayer {
 
 struct PlotPlan {
     PageLayout layout;
+    size_t small_dots = 0;  // dots under the pen's least mark, of which those drawn (as it) are in the layers
     Fit fit = Fit::Drawing;  // as asked; Frame where nothing was drawn
     DotStyle dot_style = DotStyle::Filled;
     glm::vec3 ink{0.0f}, paper{1.0f};
@@ -109,7 +109,7 @@ double circle_stroke_radius(double radius_mm, double pen_mm);
 double tick_length(double radius_mm, double pen_mm);
 constexpr double kMinTickMm = 0.02;
 // The ink radius of the least mark a pen of width pen_mm makes for a dot (the radius of a disc of its ink):
-// a circle's ring can be no smaller than a disc 3/4 of the pen wide (its centre line at pen/4), a tick no
+// a circle's ring inks no less than a disc of radius 3/4 of the pen (its centre line at pen/4), a tick no
 // shorter than kMinTickMm; 0 for filled dots, which are drawn at any size.
 double least_mark_radius(DotStyle style, double pen_mm);
 

@@ -40,6 +40,7 @@ PlotStats plot_stats(const PlotPlan& plan) {
     PlotStats stats;
     stats.page = plan.layout.page;
     stats.fit = plan.fit;
+    stats.small_dots = plan.small_dots;
     glm::dvec2 pen = plan.home;
     for (const PlotLayer& layer : plan.layers) {
         for (size_t i = 0; i < layer.dots.size(); ++i) {
@@ -50,7 +51,6 @@ PlotStats plot_stats(const PlotPlan& plan) {
             pen = layer.dots[i].mm;
         }
         stats.dots += layer.dots.size();
-        stats.small_dots += layer.small_dots;
         stats.dot_travel_bound_mm += dot_travel_bound(layer.dots);
         for (const Polyline& line : layer.lines) {
             if (line.points.empty()) continue;

@@ -43,7 +43,8 @@ void append_dots(std::string& out, const PlotLayer& layer, DotStyle style, const
             append_number(out, length, kPlace);
             out += '\n';
         }
-        out += "\"/>\n</g>\n";
+        if (!layer.dots.empty()) out += "\"/>\n";
+        out += "</g>\n";
         return;
     }
     append_layer_open(out, layer, style == DotStyle::Filled ? "fill=\"" + ink + "\" stroke=\"none\"" : stroke_style(ink, layer.stroke_mm));

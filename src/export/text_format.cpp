@@ -1,6 +1,7 @@
 #include "export/text_format.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -33,6 +34,11 @@ std::string format_number(double value, int decimals) {
     std::string out;
     append_number(out, value, decimals);
     return out;
+}
+
+std::string lower_ascii(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
 }
 
 std::string hex_colour(glm::vec3 colour) {

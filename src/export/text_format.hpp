@@ -13,6 +13,9 @@ namespace stipple::plot {
 void append_number(std::string& out, double value, int decimals);
 std::string format_number(double value, int decimals);
 
+// The text with ASCII letters in lower case: option values (--page, --fit, --dot-style) in any case.
+std::string lower_ascii(std::string text);
+
 // "#rrggbb" of a colour in [0,1].
 std::string hex_colour(glm::vec3 colour);
 

@@ -23,6 +23,8 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
                            const gpu::ObjectUniforms& object, std::span<float> densities,
                            std::span<glm::vec2> bounds) {
     const formulas::DensityParams params = formulas::density_params(frame, object);
+    const bool cull = (object.flags.x & gpu::kFlagCullOutsideView) != 0u;
+    const glm::vec2 slack = formulas::view_cull_slack(glm::vec2(frame.viewport), object.shading.y);
     for (size_t t = 0; t < triangles.size(); ++t) {
         float candidates = float(first_stipple[t + 1] - first_stipple[t]);
         const formulas::PolygonView view = formulas::polygon_view(triangles[t], candidates, object);
@@ -30,13 +32,14 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
         densities[t] = formulas::selected_density(terms, view.selection);
         bounds[t] = glm::vec2(densities[t]);
         const uint32_t* corner = &indices[3 * (first_triangle + t)];
-        if ((object.flags.x & gpu::kFlagCullOutsideView) != 0u) {  // as the density pass: wholly outside the view
-            const glm::vec2 slack = formulas::view_cull_slack(glm::vec2(frame.viewport), object.shading.y);
-            uint32_t bits = formulas::clip_outside_bits(
-                object.model_view_proj * glm::vec4(formulas::polygon_center_object(triangles[t], object), 1.0f), slack);
-            for (int k = 0; k < 3 && bits != 0u; ++k)
-                bits &= formulas::clip_outside_bits(object.model_view_proj * glm::vec4(positions[corner[k]], 1.0f), slack);
-            if (bits != 0u) {
+        if (cull) {  // as the density pass: wholly outside the view
+            const glm::mat4& mvp = object.model_view_proj;
+            const uint32_t center_bits =
+                formulas::clip_outside_bits(mvp * glm::vec4(formulas::polygon_center_object(triangles[t], object), 1.0f), slack);
+            if (center_bits != 0u &&
+                formulas::triangle_outside_view(center_bits, mvp * glm::vec4(positions[corner[0]], 1.0f),
+                                                mvp * glm::vec4(positions[corner[1]], 1.0f), mvp * glm::vec4(positions[corner[2]], 1.0f),
+                                                slack)) {
                 densities[t] = 0.0f;
                 bounds[t] = glm::vec2(0.0f);
                 continue;

@@ -177,6 +177,12 @@ inline float stipple_ink_radius(float point_size) { return point_size / 1.772453
 inline float drawn_point_size(float point_size) {
     return draws_round_points(point_size) ? 2.0f * stipple_ink_radius(point_size) : point_size;
 }
+// The largest point size whose dots a device drawing points of at most `device_most` pixels draws at their
+// size: squares up to 2.5 at their own, round dots 1.13 times larger.
+inline float largest_point_size_drawn_within(float device_most) {
+    if (device_most <= gpu::kRoundPointsAbovePx) return device_most;
+    return std::max(gpu::kRoundPointsAbovePx, 0.5f * device_most * 1.7724539f);
+}
 
 // Whether the object draws lines from its edge table this frame (any kind; the table is built).
 bool draws_edge_lines(const ObjectGpu& object);

@@ -133,6 +133,7 @@ public:
     // After the frame's submission has completed: GPU pass times and drawn counts into stats().
     void collect();
     const FrameStats& stats() const { return stats_; }
+    bool counts_drawn() const { return options_.count_drawn; }
     // Which candidates were drawn in the last frame, one bit per stipple (count_drawn only).
     std::vector<uint32_t> drawn_mask(size_t object) const;
     // The last frame's per-polygon densities as the GPU holds them (read back; for tests and tools).

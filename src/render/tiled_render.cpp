@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "render/density_formulas.hpp"
 #include "render/object_gpu.hpp"
 #include "render/offscreen.hpp"
 #include "render/stipple_renderer.hpp"
@@ -46,7 +47,8 @@ uint32_t largest_tile_side(const gpu::Context& context) {
 uint32_t dot_reach(StippleRenderer& renderer, const FrameView& view) {
     float side = 0.0f;
     for (size_t i = 0; i < renderer.object_count(); ++i)
-        side = std::max(side, 2.0f * stipple_ink_radius(renderer.params(i).point_size) * view.detail_scale);
+        side = std::max(side, 2.0f * stipple_ink_radius(renderer.params(i).point_size) * view.detail_scale *
+                                  formulas::kMaxStippleScale);  // enlarged where the candidates cannot carry the density
     return uint32_t(std::ceil(0.5f * side)) + 2;
 }
 
@@ -78,6 +80,9 @@ Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const
             part.camera.proj = tile_projection(view.camera.proj, full, VkOffset2D{int32_t(gx0), int32_t(gy0)}, tile);
             // The densities are the full image's: the tile's projection scales pixels per unit back up to them.
             part.detail_scale = view.detail_scale;
+            // Counted (--stats), each tile draws the whole drawing's stipples, so that the last tile's counts are
+            // the image's: culled to its own viewport it counted only its own.
+            if (renderer.counts_drawn() && !one) part.cull_outside_view = false;
             const RenderedFrame frame = target->render(renderer, part);
             for (uint32_t y = y0; y < y1; ++y)
                 std::memcpy(&image.pixels[(size_t(y) * full.width + x0) * 4],

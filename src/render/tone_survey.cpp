@@ -153,7 +153,9 @@ InkFigures measure_ink(const RenderedFrame& frame, glm::vec3 paper, glm::vec3 in
     InkFigures f;
     // Luminance, Rec. 709 weights (the red channel alone read a red ink as light), from the paper's toward the
     // ink's: 1 - luminance for black on white. With a black paper and white ink it read the paper as 75% ink.
-    const double paper_l = luminance(paper), span = ink_readable(paper, ink) ? paper_l - luminance(ink) : 1.0;
+    // The colours as the 8-bit image holds them, so that bare paper reads 0 and solid ink 1.
+    const auto stored = [](glm::vec3 c) { return glm::round(glm::clamp(c, 0.0f, 1.0f) * 255.0f) / 255.0f; };
+    const double paper_l = luminance(stored(paper)), span = ink_readable(paper, ink) ? paper_l - luminance(stored(ink)) : 1.0;
     for (size_t i = 0; i < frame.depth.size(); ++i) {
         if (frame.depth[i] >= 1.0f) continue;
         ++f.covered;
