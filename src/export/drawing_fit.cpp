@@ -30,7 +30,7 @@ Box box_at(const FitMarks& marks, double mm_per_px, bool pens) {
         box.add(marks.dot_px[i] * mm_per_px, pens ? dot_reach_mm(ink, marks.dot_style, marks.dot_pen_mm) : glm::dvec2(ink));
     }
     for (size_t i = 0; i < marks.line_px.size(); ++i)
-        box.add(marks.line_px[i] * mm_per_px, glm::dvec2(marks.line_half_px[i] * mm_per_px + (pens ? marks.line_half_mm[i] : 0.0)));
+        box.add(marks.line_px[i] * mm_per_px, glm::dvec2(marks.line_half_px[i] * mm_per_px + (pens ? 0.5 * marks.line_pen_mm : 0.0)));
     // A single point or hairline still needs an area to scale: at least a pixel each way.
     const glm::dvec2 short_by = glm::max(glm::dvec2(mm_per_px) - box.size(), glm::dvec2(0.0));
     box.min -= 0.5 * short_by;

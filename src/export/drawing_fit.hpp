@@ -25,7 +25,7 @@ struct FitMarks {
     std::vector<double> dot_ink_px;          // ink radius: radius * sqrt(intensity)
     std::vector<glm::dvec2> line_px;         // both ends of every visible piece of line
     std::vector<double> line_half_px;        // half the frame's width of its line (0 where a pen is given)
-    std::vector<double> line_half_mm;        // half the given pen's width (0 where none is)
+    double line_pen_mm = 0.0;                // the given pen, as wide on any page (0: none given)
     bool empty() const { return dot_px.empty() && line_px.empty(); }
 };
 

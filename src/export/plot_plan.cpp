@@ -2,14 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstring>
-#include <limits>
 #include <numbers>
 #include <optional>
-
-#include <glm/common.hpp>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -45,8 +41,6 @@ Fit parse_fit(const std::string& given) {
     if (name == "frame") return Fit::Frame;
     fail("--fit '" + given + "': expected drawing or frame");
 }
-
-const char* fit_name(Fit fit) { return fit == Fit::Frame ? "frame" : "drawing"; }
 
 double least_mark_radius(DotStyle style, double pen_mm) {
     switch (style) {
@@ -247,6 +241,7 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
         FitMarks marks;
         marks.dot_style = options.dot_style;
         marks.dot_pen_mm = dot_pen;
+        marks.line_pen_mm = options.pen_width_mm.value_or(0.0);
         for (uint32_t object = 0; object < objects; ++object) {
             for (const uint32_t i : dots_of[object]) {
                 marks.dot_px.push_back(glm::dvec2(drawing.dots[i].px));
@@ -257,7 +252,6 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
                     for (const glm::dvec2& end : piece) {
                         marks.line_px.push_back(end);
                         marks.line_half_px.push_back(options.pen_width_mm ? 0.0 : 0.5 * line_width_px(drawing, object, kind));
-                        marks.line_half_mm.push_back(options.pen_width_mm.value_or(0.0) / 2.0);
                     }
         }
         fitted = fit_marks(marks, glm::dvec2(drawing.width_px, drawing.height_px), options.page, options.margin_mm);

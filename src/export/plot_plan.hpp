@@ -48,7 +48,6 @@ constexpr double kDefaultPenWidthMm = 0.3;
 // (the page as the screen shows it; frames of a sequence then line up).
 enum class Fit { Drawing, Frame };
 Fit parse_fit(const std::string& name);  // "drawing" | "frame"
-const char* fit_name(Fit fit);
 
 struct ExportOptions {
     PageSize page;  // parse_page("A4") by default: its orientation follows what is fitted (oriented_for)

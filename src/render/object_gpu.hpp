@@ -16,6 +16,7 @@
 #include "gpu/resources.hpp"
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
+#include "render/density_formulas.hpp"
 #include "shared_types.h"
 #include "stipple/object_data.hpp"
 #include "stipple/stipple_set.hpp"
@@ -174,14 +175,12 @@ inline float stipple_ink_radius(float point_size) { return point_size / 1.772453
 // the disc of the square's area (as square dots enlarged into discs are, enlarged_square_extent). Until
 // 2026-12-05 a round dot's diameter was the point size itself, and the tone fell by a fifth where the point
 // size crossed 2.5 (spot: 54.3% of ink at 2.5, 48.2% at 2.51).
-inline float drawn_point_size(float point_size) {
-    return draws_round_points(point_size) ? 2.0f * stipple_ink_radius(point_size) : point_size;
-}
+inline float drawn_point_size(float point_size) { return formulas::enlarged_square_extent(point_size); }
 // The largest point size whose dots a device drawing points of at most `device_most` pixels draws at their
 // size: squares up to 2.5 at their own, round dots 1.13 times larger.
 inline float largest_point_size_drawn_within(float device_most) {
     if (device_most <= gpu::kRoundPointsAbovePx) return device_most;
-    return std::max(gpu::kRoundPointsAbovePx, 0.5f * device_most * 1.7724539f);
+    return std::max(gpu::kRoundPointsAbovePx, device_most / formulas::kSquareToDiscDiameter);
 }
 
 // Whether the object draws lines from its edge table this frame (any kind; the table is built).
