@@ -4,6 +4,8 @@
 // tiles join without seams (a tiled page is the page drawn in one piece).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -67,7 +69,8 @@ TEST(CliPrint, A3At600DpiIsTheScreenImageEnlarged) {
     const std::string screen = (dir / "screen.png").string(), mask = (dir / "mask.png").string(),
                       poster = (dir / "poster.png").string();
     run_ok({"render", "--width", "554", "--height", "800", "-o", screen, "--mask", mask});
-    const test::CommandResult r = test::run_stipple({"render", "--page", "A3", "--dpi", "600", "--height", "800", "-o", poster});
+    const test::CommandResult r =
+        test::run_stipple({"render", "--page", "A3", "--dpi", "600", "--height", "800", "--fit", "frame", "-o", poster});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("7016x9921"), std::string::npos) << r.out;
     const Image page = read_png(poster);
@@ -83,6 +86,69 @@ TEST(CliPrint, A3At600DpiIsTheScreenImageEnlarged) {
     double margin_ink = 0.0;
     for (int x = 0; x < page.width; ++x) margin_ink += darkness(page, size_t(x), 3) + darkness(page, size_t(x), size_t(page.height - 3));
     EXPECT_EQ(margin_ink, 0.0);
+}
+
+// The box of the pixels darker than the paper in the drawing's room (the page less its margin), and their ink.
+struct InkBox {
+    int x0 = INT32_MAX, y0 = INT32_MAX, x1 = -1, y1 = -1;
+    double ink = 0.0;
+    int width() const { return x1 - x0 + 1; }
+    int height() const { return y1 - y0 + 1; }
+};
+InkBox ink_box(const Image& page, int margin_px) {
+    InkBox box;
+    for (int y = margin_px; y < page.height - margin_px; ++y)
+        for (int x = margin_px; x < page.width - margin_px; ++x) {
+            const double d = darkness(page, size_t(x), size_t(y));
+            if (d <= 0.0) continue;
+            box.ink += d;
+            box.x0 = std::min(box.x0, x), box.y0 = std::min(box.y0, y), box.x1 = std::max(box.x1, x), box.y1 = std::max(box.y1, y);
+        }
+    return box;
+}
+
+// By default a print's drawing fills the room inside its margins, as vector output's does (--fit drawing): the
+// screen frame's box of what it draws is enlarged, so the print holds the frame's stipples with every dot
+// enlarged alike, the ink growing as the square of the enlargement; a bare named page is turned as the
+// drawing is. Until 2026-12-05 the whole frame was printed: the default scene covered 0.80 of an A5's width.
+TEST(CliPrint, TheDrawingFillsThePageUnlessTheFrameIsAsked) {
+    const auto dir = test::temp_dir("cli-print-fit");
+    const std::string fitted = (dir / "fitted.png").string(), frame = (dir / "frame.png").string(),
+                      upright = (dir / "upright.png").string();
+    // The default scene (the blobby surface, wider than tall) on A5 at 100 dpi, 10 mm margins: 504 x 748 px of room
+    // upright, 748 x 504 turned; the screen frame 256 rows high.
+    const test::CommandResult a = test::run_stipple({"render", "--page", "A5", "--dpi", "100", "--height", "256", "-o", fitted});
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    EXPECT_NE(a.out.find("(827x583, A5 landscape at 100 dpi, the drawing fitted to it)"), std::string::npos) << a.out;
+    run_ok({"render", "--page", "A5", "--dpi", "100", "--height", "256", "--fit", "frame", "-o", frame});
+    run_ok({"render", "--page", "A5-portrait", "--dpi", "100", "--height", "256", "-o", upright});
+    const int margin = int(std::lround(10.0 * 100.0 / 25.4));
+    const Image page = read_png(fitted), whole = read_png(frame), portrait = read_png(upright);
+    ASSERT_EQ(page.width, 827);
+    ASSERT_EQ(whole.width, 583);  // the frame keeps the page upright unless told
+    ASSERT_EQ(portrait.width, 583);
+    const InkBox f = ink_box(page, margin), w = ink_box(whole, margin), p = ink_box(portrait, margin);
+    const double room_w = page.width - 2 * margin, room_h = page.height - 2 * margin;
+    std::printf("fitted: %dx%d of %.0fx%.0f, ink %.0f; frame: %dx%d, ink %.0f; portrait fitted: %dx%d of %dx%d\n", f.width(),
+                f.height(), room_w, room_h, f.ink, w.width(), w.height(), w.ink, p.width(), p.height(),
+                portrait.width - 2 * margin, portrait.height - 2 * margin);
+    // One side fills the room (to the pixel of the box's widening), the other fits in it, centred.
+    EXPECT_GT(std::max(f.width() / room_w, f.height() / room_h), 0.98);
+    EXPECT_LE(f.width(), room_w);
+    EXPECT_LE(f.height(), room_h);
+    EXPECT_NEAR(0.5 * (f.x0 + f.x1), 0.5 * (page.width - 1), 3.0);
+    EXPECT_NEAR(0.5 * (f.y0 + f.y1), 0.5 * (page.height - 1), 3.0);
+    // The frame leaves paper around the drawing.
+    EXPECT_LT(std::max(w.width() / double(whole.width - 2 * margin), w.height() / double(whole.height - 2 * margin)), 0.9);
+    EXPECT_GT(std::max(p.width() / double(portrait.width - 2 * margin), p.height() / double(portrait.height - 2 * margin)), 0.98);
+    // Upright, the fitted print enlarges the same screen frame as the frame's: the same stipples, every dot enlarged
+    // as the drawing is, so the ink grows as the square of the enlargement.
+    const double enlargement = 0.5 * (double(p.width()) / w.width() + double(p.height()) / w.height());
+    std::printf("upright, enlarged %.3f (width %.3f, height %.3f): ink ratio over its square %.3f\n", enlargement,
+                double(p.width()) / w.width(), double(p.height()) / w.height(), p.ink / w.ink / (enlargement * enlargement));
+    EXPECT_GT(enlargement, 1.1);
+    EXPECT_NEAR(double(p.width()) / w.width(), double(p.height()) / w.height(), 0.02);
+    EXPECT_NEAR(p.ink / w.ink / (enlargement * enlargement), 1.0, 0.03);
 }
 
 // A print records its resolution (a pHYs chunk in pixels per metre), so that it prints at its page size;
@@ -176,7 +242,7 @@ TEST(CliPrint, ASequenceNamesItsPages) {
     const test::CommandResult r = test::run_stipple({"render", "--page", "A5", "--dpi", "50", "--frames", "2", "--orbit", "90",
                                                      "-o", (dir / "page%02d.png").string()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("(291x413, A5 at 50 dpi)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("(291x413, A5 at 50 dpi, the frame's view)"), std::string::npos) << r.out;
     EXPECT_EQ(read_png((dir / "page01.png").string()).width, 291);
 }
 

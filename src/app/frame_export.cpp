@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/printf_string.hpp"
+#include "export/drawing_fit.hpp"
 #include "export/plot_file.hpp"
 #include "gpu/context.hpp"
 #include "io/png_io.hpp"
@@ -68,6 +69,71 @@ PrintLayout print_layout(const PrintOptions& options) {
     return layout;
 }
 
+namespace {
+
+// The frame a print enlarges: the drawing's aspect at `screen_height` rows.
+VkExtent2D screen_frame(const PrintLayout& layout, uint32_t screen_height) {
+    const double aspect = double(layout.drawing_px.width) / double(layout.drawing_px.height);
+    return {uint32_t(std::max(1.0, std::round(double(screen_height) * aspect))), screen_height};
+}
+
+std::optional<DrawnBox> drawn_box(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view,
+                                  const PrintOptions& options) {
+    DrawnBox box;
+    box.frame = screen_frame(print_layout(options), options.screen_height);
+    FrameView screen = view;
+    screen.extent = box.frame;
+    screen.detail_scale = 1.0f;
+    OffscreenTarget target(context, box.frame);
+    const Image image = target.render(renderer, screen).color;
+    const glm::ivec3 paper(glm::round(glm::clamp(view.paper_color, 0.0f, 1.0f) * 255.0f));
+    glm::uvec2 lo(UINT32_MAX), hi(0);
+    for (uint32_t y = 0; y < box.frame.height; ++y)
+        for (uint32_t x = 0; x < box.frame.width; ++x) {
+            const uint8_t* p = &image.pixels[(size_t(y) * box.frame.width + x) * size_t(image.channels)];
+            // A hair of tolerance: the faintest fractional dot is not worth a larger box.
+            if (std::abs(p[0] - paper.r) <= 1 && std::abs(p[1] - paper.g) <= 1 && std::abs(p[2] - paper.b) <= 1) continue;
+            lo = glm::min(lo, glm::uvec2(x, y));
+            hi = glm::max(hi, glm::uvec2(x + 1, y + 1));
+        }
+    if (hi.x <= lo.x || hi.y <= lo.y) return std::nullopt;
+    box.min = lo, box.max = hi;
+    return box;
+}
+
+// The print's image and the part of it inside the margins, for a drawing fitted to its room: `box`, widened by
+// a pixel (a print's disc reaches past the screen's square by an eighth of its side), enlarged by the most that
+// fits, at most plot::kMostEnlargement times the frame's scale, and centred, or moved in no further than the
+// image's edge (the frame shows nothing beyond it).
+struct FittedPrint {
+    VkExtent2D image{};
+    VkRect2D region{};
+};
+FittedPrint fit_to_room(const DrawnBox& box, VkExtent2D room) {
+    const glm::dvec2 frame(box.frame.width, box.frame.height);
+    const glm::dvec2 lo = glm::max(glm::dvec2(box.min) - 1.0, glm::dvec2(0.0));
+    const glm::dvec2 hi = glm::min(glm::dvec2(box.max) + 1.0, frame);
+    const glm::dvec2 size = hi - lo;
+    const double enlargement = std::clamp(std::min(frame.x / size.x, frame.y / size.y), 1.0, plot::kMostEnlargement);
+    FittedPrint fitted;
+    fitted.image = {uint32_t(std::lround(room.width * enlargement)), uint32_t(std::lround(room.height * enlargement))};
+    const glm::dvec2 image(fitted.image.width, fitted.image.height);
+    const glm::dvec2 centre = 0.5 * (lo + hi) * image / frame;
+    const glm::dvec2 origin = glm::clamp(glm::round(centre - 0.5 * glm::dvec2(room.width, room.height)), glm::dvec2(0.0),
+                                         image - glm::dvec2(room.width, room.height));
+    fitted.region = {{int32_t(origin.x), int32_t(origin.y)}, room};
+    return fitted;
+}
+
+}  // namespace
+
+std::optional<DrawnBox> print_drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                                        const FrameView& view, const PrintOptions& options, double scene_seconds) {
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, RendererOptions{});
+    add_splat_objects(renderer, scene, objects, scene_seconds);
+    return drawn_box(context, renderer, view, options);
+}
+
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                    const FrameView& view, const PrintOptions& options, double scene_seconds, FrameStats* stats) {
     const PrintLayout layout = print_layout(options);
@@ -78,7 +144,18 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     FrameView print = view;
     print.extent = layout.drawing_px;
     print.detail_scale = layout.detail_scale;
-    const Image drawing = render_tiled(context, renderer, print, options.max_tile);
+    std::optional<VkRect2D> region;
+    if (options.fit == plot::Fit::Drawing) {
+        if (const std::optional<DrawnBox> box = drawn_box(context, renderer, view, options)) {
+            // The frame's image enlarged, of which the drawing's box is drawn: the stipples and their discs are
+            // those of the screen frame, as in a print of the whole frame.
+            const FittedPrint fitted = fit_to_room(*box, layout.drawing_px);
+            print.extent = fitted.image;
+            print.detail_scale = float(fitted.image.height) / float(options.screen_height);
+            region = fitted.region;
+        }
+    }
+    const Image drawing = render_tiled(context, renderer, print, options.max_tile, region);
     if (stats) *stats = renderer.stats();
     Image page;
     page.width = int(layout.page_px.width);

@@ -3,8 +3,11 @@
 // the stipples it actually inks (after density, fractional intensity, hidden-stipple removal and the
 // toon fade), and those, with the visible lines, become an SVG, PDF or CSV through src/export. Used by
 // `stipple render -o x.svg|x.pdf|x.csv` and the viewer's export button.
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "export/drawing.hpp"
 #include "export/plot_plan.hpp"
@@ -36,6 +39,9 @@ struct PrintOptions {
     double dpi = 300.0;
     uint32_t screen_height = 1024;
     uint32_t max_tile = 4096;
+    // Drawing: what the screen frame draws (its pixels unlike the paper) is enlarged to fill the drawing's
+    // room, at most plot::kMostEnlargement times (as vector output's --fit drawing); Frame: the whole frame.
+    plot::Fit fit = plot::Fit::Drawing;
 };
 struct PrintLayout {
     VkExtent2D page_px{};     // the whole PNG
@@ -46,6 +52,17 @@ struct PrintLayout {
 // Throws stipple::Error for a resolution out of 50..2400 dpi, a margin that leaves no room, or a page
 // beyond 65536 pixels a side.
 PrintLayout print_layout(const PrintOptions& options);
+// The box of what the print of `view` draws, as its screen frame (the drawing's aspect at
+// options.screen_height rows) shows it: its pixels unlike the paper, in that frame's pixels, [min, max)
+// by pixel edges; nothing when it draws nothing. A print fitted to its drawing enlarges this box, and a
+// bare named page is turned as it is (render).
+struct DrawnBox {
+    VkExtent2D frame{};
+    glm::uvec2 min{0}, max{0};
+};
+std::optional<DrawnBox> print_drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                                        const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0);
+
 // `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
 // `stats`, when given, receives the figures of the renderer that drew the print (render --stats), with
 // the drawn stipples counted: every tile draws the whole drawing's densities, so the counts are the

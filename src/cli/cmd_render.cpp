@@ -162,7 +162,7 @@ int run_render(const std::vector<std::string>& argv) {
     // --page" sent the user to add a page that was then refused for the format.
     if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
     if (vector && args.has("--tile")) fail("--tile is for print-resolution PNG output; vector output (" + output + ") has no tiles");
-    const std::optional<app::PrintOptions> print = read_print_options(args);
+    std::optional<app::PrintOptions> print = read_print_options(args);
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
     if (args.flag("--fill-paper") && plot::is_csv_path(output))
         fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
@@ -173,9 +173,8 @@ int run_render(const std::vector<std::string>& argv) {
                  "; a CSV (" + output + ") lists each dot's centre and ink radius");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
-    if (!vector && args.has("--fit"))
-        fail("--fit is for vector output (-o x.svg, x.pdf or x.csv)" +
-             std::string(print ? "; a print image frames the scene inside its page's margins" : ""));
+    if (!vector && !print && args.has("--fit"))
+        fail("--fit is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
     if (!vector && !print) {
         for (const char* name : {"--page", "--margin"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
@@ -255,7 +254,10 @@ int run_render(const std::vector<std::string>& argv) {
     const bool sequence = cameras.size() > 1;
     // The frames of a sequence line up on their pages unless told otherwise: each fitted to its own
     // drawing would be scaled and moved from frame to frame.
-    if (sequence && !args.has("--fit")) vector_options.fit = plot::Fit::Frame;
+    if (sequence && !args.has("--fit")) {
+        vector_options.fit = plot::Fit::Frame;
+        if (print) print->fit = plot::Fit::Frame;
+    }
     if (sequence && !has_frame_number(output))
         fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
              " frames: use a pattern such as frames/%04d.png");
@@ -285,7 +287,6 @@ int run_render(const std::vector<std::string>& argv) {
     context_options.verbose = args.flag("--verbose");
     gpu::Context context(context_options);
     VkExtent2D extent{uint32_t(width), uint32_t(height)};
-
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
     renderer_options.depth_cull = *depth_cull;
@@ -320,6 +321,23 @@ int run_render(const std::vector<std::string>& argv) {
     start = std::chrono::steady_clock::now();
     make_scene_stipples(scene, content);
     prepare_seconds += seconds_since(start);
+    // A print fitted to its drawing is on a page turned as that drawing is (its first frame's), where the page's
+    // name leaves the orientation open, as vector output's is; the cameras then frame the turned page.
+    bool print_turned = false;
+    if (print && print->fit == plot::Fit::Drawing && !print->page.orientation_given) {
+        const FrameView first = scene_frame_view(scene, cameras[0], bounds, app::print_layout(*print).drawing_px);
+        if (const std::optional<app::DrawnBox> box =
+                app::print_drawn_box(context, scene, content.objects, first, *print, animated ? clock.frame_time(0) : 0.0)) {
+            const plot::PageSize turned = plot::oriented_for(print->page, box->max.x - box->min.x, box->max.y - box->min.y);
+            if (turned.width_mm != print->page.width_mm) {
+                print->page = turned;
+                print_turned = true;
+                const VkExtent2D drawing = app::print_layout(*print).drawing_px;
+                aspect = float(drawing.width) / float(drawing.height);
+                cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit, animated);
+            }
+        }
+    }
     StippleRenderer renderer(context, kColorFormat, context.depth_format, renderer_options);
     if (!print && screen_frame) add_scene_objects(renderer, scene, content.objects);
     std::optional<OffscreenTarget> target;
@@ -468,7 +486,9 @@ int run_render(const std::vector<std::string>& argv) {
     std::string holds = printf_string("%lldx%lld", width, height);
     if (print) {
         const VkExtent2D page = app::print_layout(*print).page_px;
-        holds = printf_string("%ux%u, %s at %g dpi", page.width, page.height, args.get("--page", "").c_str(), print->dpi);
+        holds = printf_string("%ux%u, %s%s at %g dpi, %s", page.width, page.height, args.get("--page", "").c_str(),
+                              print_turned ? " landscape" : "", print->dpi,
+                              print->fit == plot::Fit::Drawing ? "the drawing fitted to it" : "the frame's view");
     } else if (vector) {
         // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
         const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())

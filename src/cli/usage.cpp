@@ -96,12 +96,12 @@ Vector and print output (render):
                           (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4 for
                           vector output; a print image names its page). A named size without
                           -portrait or -landscape is turned as the drawing is (landscape when wider
-                          than tall) for vector output, portrait for a print image
+                          than tall); with --fit frame a print image's is portrait
   --margin MM             border of bare paper around the drawing (default 10)
-  --fit WHAT              vector output: drawing (what is drawn, its dots and lines, fills the page
-                          inside the margins) or frame (the whole frame, empty paper included, as
-                          the screen shows it) (default: drawing; frame for a frame sequence, so
-                          that its pages line up)
+  --fit WHAT              vector output and print images: drawing (what is drawn, its dots and
+                          lines, fills the page inside the margins, enlarged at most 4 times) or
+                          frame (the whole frame, empty paper included, as the screen shows it)
+                          (default: drawing; frame for a frame sequence, so that its pages line up)
   --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
                           dots 0.3)
   --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)

@@ -43,6 +43,7 @@ std::optional<app::PrintOptions> read_print_options(const Args& args) {
     const long long tile = args.integer("--tile", print.max_tile);
     if (tile < 64 || tile > 16384) fail("--tile = " + std::to_string(tile) + " must be in 64..16384 pixels");
     print.max_tile = uint32_t(tile);
+    if (args.has("--fit")) print.fit = plot::parse_fit(args.get("--fit", ""));
     return print;
 }
 

@@ -52,24 +52,33 @@ uint32_t dot_reach(StippleRenderer& renderer, const FrameView& view) {
     return uint32_t(std::ceil(0.5f * side)) + 2;
 }
 
-Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile) {
+Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile,
+                   const std::optional<VkRect2D>& region) {
     const VkExtent2D full = view.extent;
+    const VkRect2D part_drawn = region.value_or(VkRect2D{{0, 0}, full});
+    const uint32_t rx0 = uint32_t(part_drawn.offset.x), ry0 = uint32_t(part_drawn.offset.y);
+    const uint32_t rx1 = rx0 + part_drawn.extent.width, ry1 = ry0 + part_drawn.extent.height;
+    STIPPLE_CHECK(part_drawn.offset.x >= 0 && part_drawn.offset.y >= 0 && rx1 <= full.width && ry1 <= full.height &&
+                      rx1 > rx0 && ry1 > ry0,
+                  "render_tiled: the region lies inside the image");
     const uint32_t limit = std::min<uint32_t>(max_tile, largest_tile_side(context));
     STIPPLE_CHECK(limit >= 16, "render_tiled: tiles of at least 16 pixels");
     Image image;
-    image.width = int(full.width);
-    image.height = int(full.height);
+    image.width = int(rx1 - rx0);
+    image.height = int(ry1 - ry0);
     image.channels = 4;
-    image.pixels.resize(size_t(full.width) * full.height * 4);
+    image.pixels.resize(size_t(image.width) * image.height * 4);
     // Each tile is drawn with a guard band of `margin` pixels of its neighbours around it (where the image
-    // has them) and only its own pixels kept. One tile when the image fits.
-    const bool one = full.width <= limit && full.height <= limit;
+    // has them) and only its own pixels kept. One tile when the whole image fits; a part of the image has
+    // the band too (dots centred beyond its edges reach into it).
+    const bool whole = rx0 == 0 && ry0 == 0 && rx1 == full.width && ry1 == full.height;
+    const bool one = whole && full.width <= limit && full.height <= limit;
     const uint32_t margin = one ? 0u : std::min(dot_reach(renderer, view), (limit - 16) / 2);
     const uint32_t step = one ? std::max(full.width, full.height) : limit - 2 * margin;
     std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<OffscreenTarget>> targets;  // one per tile size
-    for (uint32_t y0 = 0; y0 < full.height; y0 += step)
-        for (uint32_t x0 = 0; x0 < full.width; x0 += step) {
-            const uint32_t x1 = std::min(full.width, x0 + step), y1 = std::min(full.height, y0 + step);
+    for (uint32_t y0 = ry0; y0 < ry1; y0 += step)
+        for (uint32_t x0 = rx0; x0 < rx1; x0 += step) {
+            const uint32_t x1 = std::min(rx1, x0 + step), y1 = std::min(ry1, y0 + step);
             const uint32_t gx0 = x0 - std::min(x0, margin), gy0 = y0 - std::min(y0, margin);
             const uint32_t gx1 = std::min(full.width, x1 + margin), gy1 = std::min(full.height, y1 + margin);
             const VkExtent2D tile{gx1 - gx0, gy1 - gy0};
@@ -85,7 +94,7 @@ Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const
             if (renderer.counts_drawn() && !one) part.cull_outside_view = false;
             const RenderedFrame frame = target->render(renderer, part);
             for (uint32_t y = y0; y < y1; ++y)
-                std::memcpy(&image.pixels[(size_t(y) * full.width + x0) * 4],
+                std::memcpy(&image.pixels[(size_t(y - ry0) * image.width + (x0 - rx0)) * 4],
                             &frame.color.pixels[(size_t(y - gy0) * tile.width + (x0 - gx0)) * 4], size_t(x1 - x0) * 4);
         }
     return image;

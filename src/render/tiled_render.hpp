@@ -3,6 +3,8 @@
 // tiles. Each tile is a render target showing its rectangle of the full view's frustum; a tile's
 // projection keeps the full view's pixels per unit, so every density (§2.1-2.3), every selected polygon
 // and every stipple is the same as in one big image, and the tiles join without seams.
+#include <optional>
+
 #include "io/png_io.hpp"
 #include "render/stipple_renderer.hpp"
 
@@ -23,6 +25,9 @@ uint32_t largest_tile_side(const gpu::Context& context);
 // than one target holds: largest_tile_side) and returns the
 // opaque colour image. `renderer` holds the objects; the splat paths need targets that allow it (ours do).
 // Tiles overlap by the reach of the largest dot and keep only their own pixels, so they join without seams.
-Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile);
+// `region`, when given, is the part of the image drawn and returned (a print fitted to its drawing: the
+// drawing's box of a larger image); its tiles reach past it by the same overlap.
+Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view, uint32_t max_tile,
+                   const std::optional<VkRect2D>& region = std::nullopt);
 
 }  // namespace stipple
