@@ -13,6 +13,7 @@
 #include "cli/args.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
+#include "io/png_io.hpp"
 #include "params/param_docs.hpp"
 #include "params/param_table.hpp"
 #include "scene/scene_json.hpp"
@@ -166,7 +167,35 @@ TEST(ParamTable, HelpAnywhereAfterTheCommandPrintsTheUsage) {
 TEST(ParamTable, TheExecutableRejectsAnOutOfRangeValueInOneLine) {
     const test::CommandResult r = test::run_stipple({"render", "--dmax", "20", "-o", "/nonexistent/x.png"});
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_EQ(r.err, "stipple: --dmax = 20 is out of range: it must be > 0 and <= 16\n");
+    EXPECT_EQ(r.err, "stipple: --dmax = 20 is out of range: it must be >= 0 and <= 16\n");
+}
+
+// D_max 0 makes no stipples: the lines and the toon ramp are drawn alone (the paper's Figure 9 "without
+// stipples", an outline for the plotter), on every path, and a page with neither says why it is blank.
+TEST(ParamTable, DmaxZeroDrawsTheLinesAlone) {
+    const auto dir = test::temp_dir("params-dmax-zero");
+    auto dark_pixels = [](const std::string& path) {
+        const Image image = read_png(path);
+        size_t dark = 0;
+        for (size_t i = 0; i < image.pixels.size(); i += size_t(image.channels)) dark += image.pixels[i] < 128;
+        return dark;
+    };
+    for (const std::string path : {"splat", "vertex"}) {
+        const std::string lines = (dir / ("lines_" + path + ".png")).string();
+        const test::CommandResult r = test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "--contours",
+                                                         "--density-path", path, "--stats", "-o", lines});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.out.find("candidate stipples: 0\n"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("drawn stipples:     0\n"), std::string::npos) << r.out;
+        EXPECT_GT(dark_pixels(lines), 300u) << path << ": the outline is drawn";
+    }
+    const std::string bare = (dir / "bare.png").string();
+    ASSERT_EQ(test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "-o", bare}).exit_code, 0);
+    EXPECT_EQ(dark_pixels(bare), 0u);
+    const test::CommandResult svg =
+        test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "-o", (dir / "bare.svg").string()});
+    ASSERT_EQ(svg.exit_code, 0) << svg.err;
+    EXPECT_NE(svg.err.find("D_max is 0 (no stipples) and no line is drawn"), std::string::npos) << svg.err;
 }
 
 }  // namespace

@@ -390,14 +390,17 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (sequence) bar.finish();
     // A blank page is written (a user's script may expect the file), but said: the object was out of view,
-    // or too far or too light for a dot.
+    // or too far or too light for a dot, or asked for no stipples.
+    const bool no_stipples = std::all_of(scene.objects.begin(), scene.objects.end(),
+                                         [](const SceneObject& o) { return o.params.generation.dmax == 0.0f; });
     if (empty_pages > 0)
         std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
                      sequence ? printf_string("%zu of %zu pages", empty_pages, cameras.size()).c_str() : output_path(output, 0, false).c_str(),
                      empty_small_dots ? printf_string(" - its %zu dots are under the pen's least mark and none was drawn as it by "
                                                       "chance: a finer --pen-width, or --dot-style filled",
                                                       empty_small_dots).c_str()
-                                      : " - the object is out of view, or too far or too light for a dot");
+                     : no_stipples ? " - D_max is 0 (no stipples) and no line is drawn"
+                                   : " - the object is out of view, or too far or too light for a dot");
 
     // Timed frames after the first (which warms caches and the driver's shader compilation).
     std::vector<double> frame_ms;

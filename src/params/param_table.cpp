@@ -37,8 +37,9 @@ constexpr const char* kLines = "lines (§3.1)";
 const ParamSpec kTable[] = {
     {"dmax", "dmax", "D_max", kGeneration,
      "D_max, the maximum stipple density in stipples per reference pixel^2 (the object framed in a "
-     "1280-pixel-high reference view); with pr 2 also the stipples per screen pixel^2",
-     ParamType::Float, 0.0, 16.0, true, {}, ParamEffect::Regenerate, ParamWidget::LogSlider, false,
+     "1280-pixel-high reference view); with pr 2 also the stipples per screen pixel^2; 0 draws no stipples "
+     "(lines and the toon ramp alone)",
+     ParamType::Float, 0.0, 16.0, false, {}, ParamEffect::Regenerate, ParamWidget::LogSlider, false,
      [](const P& p) { return double(p.generation.dmax); }, [](P& p, double v) { p.generation.dmax = float(v); }},
     {"max_stipples", "max-stipples", "budget", kGeneration,
      "Object_max, the object's stipple budget; the density is lowered evenly when D_max would exceed it (an animated model's candidates add its stretch headroom on top)",
