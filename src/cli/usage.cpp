@@ -46,7 +46,7 @@ first one's size. The stipple options below apply to MODELs; a SCENE.json sets t
 (combining the two is an error).
 
 Render options:
-  -o, --output PATH       PNG to write (default: stipple.png)
+  -o, --output PATH       PNG to write (default: stipple.png; missing folders are made)
   --mask PATH.png         also write the coverage mask (white where a surface covers the pixel)
   --width N, --height N   image size in pixels (default 1280 x 1024)
   --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)

@@ -56,7 +56,8 @@ const ParamSpec kTable[] = {
      [](P& p, double v) { p.generation.relax_iterations = int(v); }},
 
     {"shading", "shading", "shading", kShading,
-     "§2.2 shading by (N.L)^n: fewer stipples toward the light (off: every candidate of the front faces)",
+     "§2.2 shading by (N.L)^n: fewer stipples toward the light (off: the light takes none away; the distance, "
+     "orientation and depth terms still apply: --no-extrinsic --no-intrinsic too for the paper's uniform stippling)",
      ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
      [](const P& p) { return double(p.shading); }, [](P& p, double v) { p.shading = v != 0.0; }},
     {"shading_exponent", "shading-exponent", "exponent n", kShading,
@@ -116,8 +117,9 @@ const ParamSpec kTable[] = {
      ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
      [](const P& p) { return double(p.toon); }, [](P& p, double v) { p.toon = v != 0.0; }},
     {"silhouette_width", "silhouette-width", "outline width px", kLines,
-     "line width in pixels at the object's reference size: silhouette, contour and border lines (creases are "
-     "crease_weight times as wide)", ParamType::Float, 1.0, 64.0, false, {},
+     "line width in pixels of silhouette, contour and border lines (creases are crease_weight times as wide); "
+     "with thinning, the width where the object is framed in the default 1280x1024 image (its bounding sphere "
+     "1024 px across), thinner as it shrinks on screen", ParamType::Float, 1.0, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.silhouette_width); },
      [](P& p, double v) { p.silhouette_width = float(v); }},
     {"silhouette_thinning", "thinning", "thinning", kLines,

@@ -19,13 +19,16 @@ const char* tone_regime_name(ToneRegime regime) {
     case ToneRegime::Probabilistic: return "probabilistic";
     case ToneRegime::Enlarged: return "enlarged";
     case ToneRegime::Culled: return "culled";
+    case ToneRegime::Outside: return "outside the view";
     }
     return "?";
 }
 
 RegimeTally ToneTally::total() const {
     RegimeTally sum;
-    for (const RegimeTally& r : regimes) {
+    for (size_t regime = 0; regime < kToneRegimeCount; ++regime) {
+        if (ToneRegime(regime) == ToneRegime::Outside) continue;
+        const RegimeTally& r = regimes[regime];
         sum.polygons += r.polygons;
         sum.owed += r.owed;
         sum.allowed += r.allowed;
@@ -116,6 +119,22 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
     const double area = shape.full_area();
     const double per_area = area > 0.0 ? double(object.geometry.stipple_count) / area : 0.0;
 
+    // Close up most polygons may lie beyond the frame: the survey draws them (it keeps every polygon), but they
+    // owe the image nothing, and counted with the rest they made "owed x point_size^2 / covered" read 4.98 for a
+    // surface drawn at a quarter of its ink (the test of the density pass, as density.comp culls).
+    const gpu::ObjectUniforms& uniforms = object.frame.uniforms;
+    const glm::vec2 slack = formulas::view_cull_slack(glm::vec2(frame.viewport), uniforms.shading.y);
+    const std::vector<glm::vec3>& corners = shape.corners();
+    const std::vector<uint32_t>& indices = object.polygons.corner_indices;
+    auto outside_view = [&](size_t t) {
+        const glm::mat4& mvp = uniforms.model_view_proj;
+        const uint32_t center_bits =
+            formulas::clip_outside_bits(mvp * glm::vec4(formulas::polygon_center_object(polygons[t], uniforms), 1.0f), slack);
+        return center_bits != 0u && formulas::triangle_outside_view(center_bits, mvp * glm::vec4(corners[indices[3 * t]], 1.0f),
+                                                                      mvp * glm::vec4(corners[indices[3 * t + 1]], 1.0f),
+                                                                      mvp * glm::vec4(corners[indices[3 * t + 2]], 1.0f), slack);
+    };
+
     ToneTally tally;
     for (size_t t = 0; t < polygons.size(); ++t) {
         const float candidates = object.geometry.candidates(t);
@@ -127,7 +146,9 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
 
         const bool faces_away = formulas::polygon_faces_away(view.center, view.normal);
         ToneRegime regime = ToneRegime::Large;
-        if (faces_away)
+        if (outside_view(t))
+            regime = ToneRegime::Outside;
+        else if (faces_away)
             regime = ToneRegime::Culled;
         else if (ideal.owed > view.candidates)  // the model's regime, from the area (not the rounded count)
             regime = ToneRegime::Enlarged;

@@ -21,8 +21,9 @@ enum class ToneRegime {
                     // drawn with a probability, carrying the skipped ones' ink
     Enlarged,       // owed more than its candidates: draws all of them, larger (stipple_scale)
     Culled,         // faces away: owes nothing
+    Outside,        // wholly outside the view (close up): owes the image nothing, and total() leaves it out
 };
-inline constexpr size_t kToneRegimeCount = 4;
+inline constexpr size_t kToneRegimeCount = 5;
 const char* tone_regime_name(ToneRegime regime);
 
 // Stipples, summed over a regime's polygons (fractional stipples count by their intensity).
@@ -36,7 +37,7 @@ struct RegimeTally {
 
 struct ToneTally {
     std::array<RegimeTally, kToneRegimeCount> regimes{};
-    RegimeTally total() const;
+    RegimeTally total() const;  // of the polygons in view (every regime but Outside)
 };
 
 // The regimes of one object this frame, from the CPU copy of its polygon constants and the uniforms
