@@ -39,7 +39,7 @@ void header_lines(std::ostringstream& md, const BenchResults& r) {
                          : "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " +
                                r.models_dir + ")")
        << "\n";
-    md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set)" : "") << "; total " << printf_string("%.0f", r.total_seconds)
+    md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set, a few frames a cell: a cell alone may be off by tens of percent)" : "") << "; total " << printf_string("%.0f", r.total_seconds)
        << " s\n";
     if (!r.command.empty()) md << "- command: `" << r.command << "`\n";
     md << "\n";
