@@ -2,6 +2,7 @@
 // round-trips command line -> scene file -> loaded scene -> saved scene; each out-of-range value is
 // rejected on the command line and in a scene file with the same range in the message; --help, the
 // README and `stipple params` list the table's text, not a retyped copy.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -180,7 +181,7 @@ TEST(ParamTable, DmaxZeroDrawsTheLinesAlone) {
         for (size_t i = 0; i < image.pixels.size(); i += size_t(image.channels)) dark += image.pixels[i] < 128;
         return dark;
     };
-    for (const std::string path : {"splat", "vertex"}) {
+    for (const std::string path : {"splat", "vertex", "indirect", "cpu", "cpu-splat"}) {
         const std::string lines = (dir / ("lines_" + path + ".png")).string();
         const test::CommandResult r = test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "--contours",
                                                          "--density-path", path, "--stats", "-o", lines});
@@ -190,12 +191,16 @@ TEST(ParamTable, DmaxZeroDrawsTheLinesAlone) {
         EXPECT_GT(dark_pixels(lines), 300u) << path << ": the outline is drawn";
     }
     const std::string bare = (dir / "bare.png").string();
-    ASSERT_EQ(test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "-o", bare}).exit_code, 0);
+    const test::CommandResult png = test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "-o", bare});
+    ASSERT_EQ(png.exit_code, 0) << png.err;
     EXPECT_EQ(dark_pixels(bare), 0u);
     const test::CommandResult svg =
         test::run_stipple({"render", "--width", "320", "--height", "256", "--dmax", "0", "-o", (dir / "bare.svg").string()});
     ASSERT_EQ(svg.exit_code, 0) << svg.err;
-    EXPECT_NE(svg.err.find("D_max is 0 (no stipples) and no line is drawn"), std::string::npos) << svg.err;
+    for (const test::CommandResult* r : {&png, &svg}) {
+        EXPECT_NE(r->err.find("D_max is 0 (no stipples) and no line or toon is asked: nothing is drawn"), std::string::npos) << r->err;
+        EXPECT_EQ(std::count(r->err.begin(), r->err.end(), '\n'), 1) << "said once: " << r->err;
+    }
 }
 
 }  // namespace

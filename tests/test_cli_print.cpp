@@ -151,6 +151,45 @@ TEST(CliPrint, TheDrawingFillsThePageUnlessTheFrameIsAsked) {
     EXPECT_NEAR(p.ink / w.ink / (enlargement * enlargement), 1.0, 0.03);
 }
 
+// A drawing the frame cuts (the camera turned toward one side of it) is centred on the page all the same: the
+// room past the frame's edge is paper (the region drawn was kept inside the enlarged frame, which put the
+// drawing against the margin, 0 px from it on one side and 175 on the other). And tiles far smaller than the
+// enlarged dots' reach grow to hold their guard band: 64-px tiles drew cuts through 6-px dots enlarged 4 times.
+TEST(CliPrint, AFittedDrawingIsCentredAndItsTilesHoldItsDots) {
+    const auto dir = test::temp_dir("cli-print-centred");
+    const std::string scene = (dir / "cut.json").string(), page = (dir / "cut.png").string();
+    {
+        std::ofstream out(scene);
+        out << "{\"objects\": [{\"model\": \"" << test::source_path("assets/blobby.glb")
+            << "\"}], \"camera\": {\"distance\": 0.6, \"target\": [0.9, 0, 0]}}\n";
+    }
+    run_ok({"render", scene, "--page", "A5-portrait", "--dpi", "80", "--height", "200", "-o", page});
+    const Image cut = read_png(page);
+    const int margin = int(std::lround(10.0 * 80.0 / 25.4));
+    const InkBox box = ink_box(cut, margin);
+    std::printf("cut drawing: ink over columns %d-%d of %d, rows %d-%d of %d\n", box.x0, box.x1, cut.width, box.y0, box.y1,
+                cut.height);
+    EXPECT_NEAR(0.5 * (box.x0 + box.x1), 0.5 * (cut.width - 1), 3.0);
+    EXPECT_NEAR(0.5 * (box.y0 + box.y1), 0.5 * (cut.height - 1), 3.0);
+    EXPECT_GT(box.x0, margin + 10) << "paper left of the cut drawing";
+
+    // Dots of 6 px enlarged about 4 times at this scale: 64-px tiles against one piece.
+    const std::vector<std::string> far = {"render", "--distance", "2.5", "--point-size", "6", "--page", "A5", "--dpi", "80",
+                                          "--height", "200"};
+    std::vector<std::string> one = far, small = far;
+    one.insert(one.end(), {"-o", (dir / "one.png").string()});
+    small.insert(small.end(), {"-o", (dir / "small.png").string(), "--tile", "64"});
+    run_ok(one);
+    run_ok(small);
+    const Image a = read_png((dir / "one.png").string()), b = read_png((dir / "small.png").string());
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    size_t differing = 0, inked = 0;
+    for (size_t i = 0; i < a.pixels.size(); i += 4) differing += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 2, inked += a.pixels[i] < 128;
+    std::printf("64-px tiles: %zu of %zu inked pixels differ from one piece\n", differing, inked);
+    EXPECT_GT(inked, 10000u);
+    EXPECT_LE(double(differing), 0.001 * double(inked));
+}
+
 // A print records its resolution (a pHYs chunk in pixels per metre), so that it prints at its page size;
 // without it programs assume 72 or 96 dpi. Screen images record none.
 TEST(CliPrint, APrintRecordsItsResolution) {
@@ -184,12 +223,13 @@ TEST(CliPrint, APrintRecordsItsResolution) {
 TEST(CliPrint, TilesJoinWithoutSeams) {
     const auto dir = test::temp_dir("cli-print-tiles");
     const std::string whole = (dir / "whole.png").string(), tiled = (dir / "tiled.png").string();
-    // Dots about 7 pixels across at this detail (a 200-pixel screen drawing enlarged to ~1500): with tiles
-    // that did not overlap, a dot astride a tile edge whose centre lay in the next tile was cut off.
+    // Dots about 7 pixels across at this detail (a 200-pixel screen drawing enlarged to ~1500, and the drawing's
+    // box to the page, turned): with tiles that did not overlap, a dot astride a tile edge whose centre lay in the
+    // next tile was cut off.
     const std::vector<std::string> common = {"render", "--page", "A5", "--dpi", "200", "--height", "200", "--yaw", "30"};
     std::vector<std::string> a = common, b = common;
     a.insert(a.end(), {"-o", whole});
-    b.insert(b.end(), {"-o", tiled, "--tile", "300"});  // 1165 x 1654 pixels: 5 x 6 tiles of 300 with their guard bands
+    b.insert(b.end(), {"-o", tiled, "--tile", "300"});  // a 1496 x 1008-pixel room: 7 x 5 tiles of 300 with their guard bands
     run_ok(a);
     run_ok(b);
     const Image one = read_png(whole), many = read_png(tiled);

@@ -77,16 +77,14 @@ VkExtent2D screen_frame(const PrintLayout& layout, uint32_t screen_height) {
     return {uint32_t(std::max(1.0, std::round(double(screen_height) * aspect))), screen_height};
 }
 
-std::optional<DrawnBox> drawn_box(const gpu::Context& context, StippleRenderer& renderer, const FrameView& view,
-                                  const PrintOptions& options) {
+// The box of the pixels of `screen` (its extent the frame, at screen detail) unlike the paper. Drawn in tiles
+// where the frame is larger than one target holds (a --height of thousands).
+std::optional<DrawnBox> box_of_drawing(const gpu::Context& context, StippleRenderer& renderer, const FrameView& screen,
+                                       uint32_t max_tile) {
     DrawnBox box;
-    box.frame = screen_frame(print_layout(options), options.screen_height);
-    FrameView screen = view;
-    screen.extent = box.frame;
-    screen.detail_scale = 1.0f;
-    OffscreenTarget target(context, box.frame);
-    const Image image = target.render(renderer, screen).color;
-    const glm::ivec3 paper(glm::round(glm::clamp(view.paper_color, 0.0f, 1.0f) * 255.0f));
+    box.frame = screen.extent;
+    const Image image = render_tiled(context, renderer, screen, max_tile);
+    const glm::ivec3 paper(glm::round(glm::clamp(screen.paper_color, 0.0f, 1.0f) * 255.0f));
     glm::uvec2 lo(UINT32_MAX), hi(0);
     for (uint32_t y = 0; y < box.frame.height; ++y)
         for (uint32_t x = 0; x < box.frame.width; ++x) {
@@ -103,11 +101,13 @@ std::optional<DrawnBox> drawn_box(const gpu::Context& context, StippleRenderer& 
 
 // The print's image and the part of it inside the margins, for a drawing fitted to its room: `box`, widened by
 // a pixel (a print's disc reaches past the screen's square by an eighth of its side), enlarged by the most that
-// fits, at most plot::kMostEnlargement times the frame's scale, and centred, or moved in no further than the
-// image's edge (the frame shows nothing beyond it).
+// fits, at most plot::kMostEnlargement times the frame's scale, and centred in the room. Where the box lies
+// against the frame's edge, the room would reach past the frame, which shows nothing there: the region drawn
+// is the part inside the image, placed `at` that far into the room, and the rest is paper.
 struct FittedPrint {
     VkExtent2D image{};
     VkRect2D region{};
+    VkOffset2D at{};
 };
 FittedPrint fit_to_room(const DrawnBox& box, VkExtent2D room) {
     const glm::dvec2 frame(box.frame.width, box.frame.height);
@@ -117,25 +117,27 @@ FittedPrint fit_to_room(const DrawnBox& box, VkExtent2D room) {
     const double enlargement = std::clamp(std::min(frame.x / size.x, frame.y / size.y), 1.0, plot::kMostEnlargement);
     FittedPrint fitted;
     fitted.image = {uint32_t(std::lround(room.width * enlargement)), uint32_t(std::lround(room.height * enlargement))};
-    const glm::dvec2 image(fitted.image.width, fitted.image.height);
+    const glm::dvec2 image(fitted.image.width, fitted.image.height), room_px(room.width, room.height);
     const glm::dvec2 centre = 0.5 * (lo + hi) * image / frame;
-    const glm::dvec2 origin = glm::clamp(glm::round(centre - 0.5 * glm::dvec2(room.width, room.height)), glm::dvec2(0.0),
-                                         image - glm::dvec2(room.width, room.height));
-    fitted.region = {{int32_t(origin.x), int32_t(origin.y)}, room};
+    const glm::dvec2 origin = glm::round(centre - 0.5 * room_px);  // the room's corner in the image, maybe outside it
+    const glm::dvec2 begin = glm::max(origin, glm::dvec2(0.0)), end = glm::min(origin + room_px, image);
+    fitted.region = {{int32_t(begin.x), int32_t(begin.y)}, {uint32_t(end.x - begin.x), uint32_t(end.y - begin.y)}};
+    fitted.at = {int32_t(begin.x - origin.x), int32_t(begin.y - origin.y)};
     return fitted;
 }
 
 }  // namespace
 
-std::optional<DrawnBox> print_drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                                        const FrameView& view, const PrintOptions& options, double scene_seconds) {
+std::optional<DrawnBox> drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                                  const FrameView& screen, uint32_t max_tile, double scene_seconds) {
     StippleRenderer renderer(context, kColorFormat, context.depth_format, RendererOptions{});
     add_splat_objects(renderer, scene, objects, scene_seconds);
-    return drawn_box(context, renderer, view, options);
+    return box_of_drawing(context, renderer, screen, max_tile);
 }
 
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                   const FrameView& view, const PrintOptions& options, double scene_seconds, FrameStats* stats) {
+                   const FrameView& view, const PrintOptions& options, double scene_seconds, FrameStats* stats,
+                   bool* fitted_drawing) {
     const PrintLayout layout = print_layout(options);
     RendererOptions renderer_options;
     renderer_options.count_drawn = stats != nullptr;
@@ -145,14 +147,21 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     print.extent = layout.drawing_px;
     print.detail_scale = layout.detail_scale;
     std::optional<VkRect2D> region;
+    VkOffset2D at{0, 0};  // where the drawn region goes in the room
+    if (fitted_drawing) *fitted_drawing = false;
     if (options.fit == plot::Fit::Drawing) {
-        if (const std::optional<DrawnBox> box = drawn_box(context, renderer, view, options)) {
+        FrameView screen = view;
+        screen.extent = screen_frame(layout, options.screen_height);
+        screen.detail_scale = 1.0f;
+        if (const std::optional<DrawnBox> box = box_of_drawing(context, renderer, screen, options.max_tile)) {
             // The frame's image enlarged, of which the drawing's box is drawn: the stipples and their discs are
             // those of the screen frame, as in a print of the whole frame.
             const FittedPrint fitted = fit_to_room(*box, layout.drawing_px);
             print.extent = fitted.image;
             print.detail_scale = float(fitted.image.height) / float(options.screen_height);
             region = fitted.region;
+            at = fitted.at;
+            if (fitted_drawing) *fitted_drawing = true;
         }
     }
     const Image drawing = render_tiled(context, renderer, print, options.max_tile, region);
@@ -164,9 +173,10 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     page.pixels.resize(size_t(page.width) * page.height * 4);
     const glm::u8vec4 paper(glm::round(glm::clamp(view.paper_color, 0.0f, 1.0f) * 255.0f), 255);
     for (size_t i = 0; i < page.pixels.size(); i += 4) std::memcpy(&page.pixels[i], &paper, 4);
+    const size_t x0 = size_t(layout.drawing_at.x + at.x), y0 = size_t(layout.drawing_at.y + at.y);
     for (int y = 0; y < drawing.height; ++y)
-        std::memcpy(&page.pixels[((size_t(layout.drawing_at.y) + y) * page.width + layout.drawing_at.x) * 4],
-                    &drawing.pixels[size_t(y) * drawing.width * 4], size_t(drawing.width) * 4);
+        std::memcpy(&page.pixels[((y0 + y) * page.width + x0) * 4], &drawing.pixels[size_t(y) * drawing.width * 4],
+                    size_t(drawing.width) * 4);
     return page;
 }
 

@@ -52,24 +52,25 @@ struct PrintLayout {
 // Throws stipple::Error for a resolution out of 50..2400 dpi, a margin that leaves no room, or a page
 // beyond 65536 pixels a side.
 PrintLayout print_layout(const PrintOptions& options);
-// The box of what the print of `view` draws, as its screen frame (the drawing's aspect at
-// options.screen_height rows) shows it: its pixels unlike the paper, in that frame's pixels, [min, max)
-// by pixel edges; nothing when it draws nothing. A print fitted to its drawing enlarges this box, and a
-// bare named page is turned as it is (render).
+// The box of what `screen` draws (its extent the frame, at screen detail): its pixels unlike the paper, in the
+// frame's pixels, [min, max) by pixel edges; nothing when it draws nothing. A print fitted to its drawing
+// enlarges the box of its screen frame (render_print), and a bare named page is turned as the drawing's box is
+// in a square frame (render).
 struct DrawnBox {
     VkExtent2D frame{};
     glm::uvec2 min{0}, max{0};
 };
-std::optional<DrawnBox> print_drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                                        const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0);
+std::optional<DrawnBox> drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                                  const FrameView& screen, uint32_t max_tile, double scene_seconds = 0.0);
 
 // `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
 // `stats`, when given, receives the figures of the renderer that drew the print (render --stats), with
 // the drawn stipples counted: every tile draws the whole drawing's densities, so the counts are the
 // print's, and the GPU times are the last tile's.
+// `fitted_drawing`, when given, says whether the drawing was fitted (--fit drawing, and something drawn).
 Image render_print(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                    const FrameView& view, const PrintOptions& options, double scene_seconds = 0.0,
-                   FrameStats* stats = nullptr);
+                   FrameStats* stats = nullptr, bool* fitted_drawing = nullptr);
 
 // Captures, lays out on the page, orders for the plotter and writes `path` (.svg, .pdf or .csv).
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,

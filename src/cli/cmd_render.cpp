@@ -222,6 +222,14 @@ int run_render(const std::vector<std::string>& argv) {
     }
     Scene scene = scene_from_command_line(args, "render");
     const std::string what = scene.source.empty() ? scene.model_path(0) : scene.source;
+    // D_max 0 everywhere with no line and no toon asked draws bare paper, whatever the output: said once here.
+    const bool draws_nothing = std::all_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
+        const ObjectParams& p = o.params;
+        return p.generation.dmax == 0.0f && !p.silhouette_lines && !p.contours && !p.borders && !p.creases && !p.toon;
+    });
+    if (draws_nothing)
+        std::fprintf(stderr, "stipple: warning: %s: D_max is 0 (no stipples) and no line or toon is asked: nothing is drawn\n",
+                     what.c_str());
     // A scene's camera_path places every frame's camera: options that set the scene's camera, or turn it,
     // would be silently ignored.
     if (!scene.camera_path.empty()) {
@@ -322,12 +330,16 @@ int run_render(const std::vector<std::string>& argv) {
     make_scene_stipples(scene, content);
     prepare_seconds += seconds_since(start);
     // A print fitted to its drawing is on a page turned as that drawing is (its first frame's), where the page's
-    // name leaves the orientation open, as vector output's is; the cameras then frame the turned page.
+    // name leaves the orientation open, as vector output's is; the cameras then frame the turned page. The
+    // drawing is judged in a square frame: in the page's own frame, a scene the camera crops (a camera closer
+    // than framing) showed a tall part of itself in a portrait frame and stayed portrait.
     bool print_turned = false;
     if (print && print->fit == plot::Fit::Drawing && !print->page.orientation_given) {
-        const FrameView first = scene_frame_view(scene, cameras[0], bounds, app::print_layout(*print).drawing_px);
-        if (const std::optional<app::DrawnBox> box =
-                app::print_drawn_box(context, scene, content.objects, first, *print, animated ? clock.frame_time(0) : 0.0)) {
+        const uint32_t side = print->screen_height;
+        const OrbitCamera square = frame_cameras(scene, bounds, 1.0f, size_t(frames), orbit, animated)[0];
+        const FrameView first = scene_frame_view(scene, square, bounds, VkExtent2D{side, side});
+        if (const std::optional<app::DrawnBox> box = app::drawn_box(context, scene, content.objects, first, print->max_tile,
+                                                                    animated ? clock.frame_time(0) : 0.0)) {
             const plot::PageSize turned = plot::oriented_for(print->page, box->max.x - box->min.x, box->max.y - box->min.y);
             if (turned.width_mm != print->page.width_mm) {
                 print->page = turned;
@@ -350,6 +362,7 @@ int run_render(const std::vector<std::string>& argv) {
     size_t empty_pages = 0;     // vector output: frames with nothing drawn
     size_t empty_small_dots = 0;  // on them, dots under the pen's least mark (none drawn by chance)
     FrameStats print_stats;     // a print's, from the renderer that draws it (app::render_print)
+    bool print_fitted = false;  // the last print's drawing fitted to its page (not when it drew nothing)
     FrameView view;
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
@@ -359,7 +372,7 @@ int run_render(const std::vector<std::string>& argv) {
         auto render_start = std::chrono::steady_clock::now();
         if (print) {
             const Image page = app::render_print(context, scene, content.objects, view, *print, animated ? clock.frame_time(i) : 0.0,
-                                                 args.flag("--stats") ? &print_stats : nullptr);
+                                                 args.flag("--stats") ? &print_stats : nullptr, &print_fitted);
             render_seconds = seconds_since(render_start);
             write_png(output_path(output, i, sequence), page, print->dpi);
             bar.update(double(i + 1) / double(cameras.size()));
@@ -393,7 +406,7 @@ int run_render(const std::vector<std::string>& argv) {
     // or too far or too light for a dot, or asked for no stipples.
     const bool no_stipples = std::all_of(scene.objects.begin(), scene.objects.end(),
                                          [](const SceneObject& o) { return o.params.generation.dmax == 0.0f; });
-    if (empty_pages > 0)
+    if (empty_pages > 0 && !draws_nothing)
         std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
                      sequence ? printf_string("%zu of %zu pages", empty_pages, cameras.size()).c_str() : output_path(output, 0, false).c_str(),
                      empty_small_dots ? printf_string(" - its %zu dots are under the pen's least mark and none was drawn as it by "
@@ -491,7 +504,9 @@ int run_render(const std::vector<std::string>& argv) {
         const VkExtent2D page = app::print_layout(*print).page_px;
         holds = printf_string("%ux%u, %s%s at %g dpi, %s", page.width, page.height, args.get("--page", "").c_str(),
                               print_turned ? " landscape" : "", print->dpi,
-                              print->fit == plot::Fit::Drawing ? "the drawing fitted to it" : "the frame's view");
+                              print_fitted ? "the drawing fitted to it"
+                              : print->fit == plot::Fit::Drawing ? "the frame's view: nothing is drawn to fit"
+                                                                 : "the frame's view");
     } else if (vector) {
         // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
         const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())

@@ -232,7 +232,9 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
     // Judged as stored: a Float parameter is a float, so 1e-300 (stored as 0) is below "> 0".
     const double stored = spec.type == ParamType::Float ? double(float(value)) : value;
     const bool above = spec.min_open ? stored > spec.min : stored >= spec.min;
-    if (std::isfinite(stored) && above && stored <= spec.max) return std::nullopt;
+    // Nor is a nonzero value that single precision holds as 0 taken for 0 (--dmax 1e-300 would draw nothing).
+    const bool underflows = spec.type == ParamType::Float && value != 0.0 && stored == 0.0;
+    if (std::isfinite(stored) && above && stored <= spec.max && !underflows) return std::nullopt;
     if (!std::isfinite(value)) return "the number is not finite";
     const bool whole = spec.type == ParamType::Int && std::abs(value) < 1e15;
     // A value that single precision cannot hold is shown as given ("1e-300", not "0").
@@ -245,8 +247,8 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
         char text[32];
         shown.assign(text, std::to_chars(text, text + sizeof(text), value).ptr);
     }
-    return shown + " is out of range: it must be " +
-           param_range_text(spec);
+    return shown + " is out of range: it must be " + param_range_text(spec) +
+           (underflows ? " (single precision holds it as 0: give 0, or at least 1e-38)" : "");
 }
 
 double parse_param_text(const ParamSpec& spec, const std::string& text) {

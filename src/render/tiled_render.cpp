@@ -61,7 +61,8 @@ Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const
     STIPPLE_CHECK(part_drawn.offset.x >= 0 && part_drawn.offset.y >= 0 && rx1 <= full.width && ry1 <= full.height &&
                       rx1 > rx0 && ry1 > ry0,
                   "render_tiled: the region lies inside the image");
-    const uint32_t limit = std::min<uint32_t>(max_tile, largest_tile_side(context));
+    const uint32_t largest = largest_tile_side(context);
+    uint32_t limit = std::min<uint32_t>(max_tile, largest);
     STIPPLE_CHECK(limit >= 16, "render_tiled: tiles of at least 16 pixels");
     Image image;
     image.width = int(rx1 - rx0);
@@ -73,7 +74,11 @@ Image render_tiled(const gpu::Context& context, StippleRenderer& renderer, const
     // the band too (dots centred beyond its edges reach into it).
     const bool whole = rx0 == 0 && ry0 == 0 && rx1 == full.width && ry1 == full.height;
     const bool one = whole && full.width <= limit && full.height <= limit;
-    const uint32_t margin = one ? 0u : std::min(dot_reach(renderer, view), (limit - 16) / 2);
+    const uint32_t reach = one ? 0u : dot_reach(renderer, view);
+    // A tile holds its guard band and some pixels of its own: where the dots reach farther than a small tile allows
+    // (a print fitted to its drawing enlarges them up to 4 times), the tiles grow, as far as one target holds.
+    if (!one) limit = std::max(limit, std::min(largest, 2 * reach + 64));
+    const uint32_t margin = std::min(reach, (limit - 16) / 2);
     const uint32_t step = one ? std::max(full.width, full.height) : limit - 2 * margin;
     std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<OffscreenTarget>> targets;  // one per tile size
     for (uint32_t y0 = ry0; y0 < ry1; y0 += step)
