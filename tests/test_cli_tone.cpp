@@ -62,6 +62,27 @@ TEST(CliTone, PrintsTheInkPerDistanceAndItsMaxOverMin) {
     for (const auto& row : off) EXPECT_GT(std::stod(row[3]), std::stod(row[2])) << "without it, far reads darker";
 }
 
+// Close up, `--regimes` tallies the polygons wholly outside the view apart, and its "all" row holds those in
+// view: counted with them (until 2026-12-05), the owed ink per covered pixel read 6 times too high on the
+// bunny at a quarter of its distance.
+TEST(CliTone, RegimesTallyThePolygonsOutsideTheViewApart) {
+    const test::CommandResult r =
+        test::run_stipple({"tone", "--distances", "0.3,1", "--regimes", "--width", "320", "--height", "256"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // "| 0.3 | outside the view | POLYGONS |" and "| 0.3 | all | POLYGONS |", and the same at d = 1.
+    auto polygons = [&](const std::string& distance, const std::string& regime) -> long {
+        const std::string key = "| " + distance + " | " + regime + " | ";
+        const size_t at = r.out.find(key);
+        return at == std::string::npos ? -1 : std::stol(r.out.substr(at + key.size()));
+    };
+    const long outside = polygons("0.3", "outside the view"), in_view = polygons("0.3", "all");
+    std::printf("at d=0.3: %ld polygons outside the view, %ld in it; framed: %ld\n", outside, in_view, polygons("1", "all"));
+    EXPECT_GT(outside, 1000);
+    EXPECT_EQ(outside + in_view, 40240) << "the default scene's polygons, each tallied once";
+    EXPECT_EQ(polygons("1", "outside the view"), -1) << "framed, none lies outside";
+    EXPECT_EQ(polygons("1", "all"), 40240);
+}
+
 // A distance where the object covers nothing has no tone: it shows as "-", is left out of max/min (which
 // was 0.000 or not, by the order of --distances, until 2026-12-04) and is warned about.
 TEST(CliTone, ADistanceThatCoversNothingIsLeftOutOfMaxOverMin) {
