@@ -329,6 +329,78 @@ TEST_F(SceneObjects, AnUnequalScaleOfTheAxesKeepsThePolygonsTone) {
     EXPECT_NEAR(stretched, stored, 0.08 * stored);  // 6% lighter measured: its dots overlap more across the stretch
 }
 
+// A flat object under a matrix that scales its thin axis (a terrain's heights exaggerated) is framed by the
+// sphere around its box, as if stored scaled: its bounding sphere stretched by the whole stretch framed a
+// plate scaled 3 times along its width 0.745 times as wide as the same plate stored wide, and a terrain whose
+// heights were multiplied by 10 at a tenth of the frame (a sci-vis walkthrough, 2026-12-05).
+TEST_F(SceneObjects, AnUnequalScaleFramesTheObjectAsStoredScaled) {
+    auto dir = test::temp_dir("scene-unequal-framing");
+    auto write_obj = [&](const std::string& name, glm::vec3 scale) {
+        const Mesh grid = make_grid(20);
+        std::ostringstream obj;
+        obj.precision(9);
+        for (const glm::vec3& p : grid.positions) obj << "v " << p.x * scale.x << ' ' << p.y * scale.y << ' ' << p.z * scale.z << '\n';
+        for (size_t t = 0; t < grid.triangle_count(); ++t)
+            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
+        write_text(dir / name, obj.str());
+    };
+    write_obj("plate.obj", glm::vec3(1.0f));
+    write_obj("wide.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    auto covered = [&](const std::string& model, glm::vec3 scale) {
+        Scene scene;
+        scene.base_dir = dir;
+        SceneObject object;
+        object.model = model;
+        object.transform.matrix = glm::scale(glm::mat4(1.0f), scale);
+        object.params.borders = true;
+        scene.objects = {object};
+        scene.camera.pitch_deg = 30.0f;
+        const RenderedFrame frame = render_scene(*context, scene, {640, 512});
+        size_t n = 0;
+        for (float d : frame.depth) n += d < 1.0f;
+        return n;
+    };
+    const size_t stored = covered("wide.obj", glm::vec3(1.0f)), stretched = covered("plate.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    std::printf("covered pixels: stored 3x wider %zu, scaled 3x wider by the matrix %zu\n", stored, stretched);
+    EXPECT_GT(stored, 20000u);
+    EXPECT_NEAR(double(stretched), double(stored), 0.01 * double(stored));
+}
+
+// Lines are as wide on a model of any size: the thinning's distance to the object was floored at 1e-6 units, more
+// than the whole camera distance of a model 1e-8 units across, whose outline then came out half as heavy.
+TEST_F(SceneObjects, LinesAreAsWideOnAModelOfAnySize) {
+    auto dir = test::temp_dir("scene-line-units");
+    const Mesh sphere = make_icosphere(3);
+    auto write_obj = [&](const std::string& name, float scale) {
+        std::ostringstream obj;
+        obj.precision(9);
+        for (const glm::vec3& p : sphere.positions) obj << "v " << p.x * scale << ' ' << p.y * scale << ' ' << p.z * scale << '\n';
+        for (size_t t = 0; t < sphere.triangle_count(); ++t)
+            obj << "f " << sphere.indices[3 * t] + 1 << ' ' << sphere.indices[3 * t + 1] + 1 << ' ' << sphere.indices[3 * t + 2] + 1 << '\n';
+        write_text(dir / name, obj.str());
+    };
+    auto dark = [&](float scale) {
+        const std::string name = "sphere_" + std::to_string(scale) + ".obj";
+        write_obj(name, scale);
+        Scene scene;
+        scene.base_dir = dir;
+        SceneObject object;
+        object.model = name;
+        object.params.generation.dmax = 0.0f;  // the outline alone
+        object.params.contours = true;
+        scene.objects = {object};
+        const RenderedFrame frame = render_scene(*context, scene, {320, 256});
+        size_t n = 0;
+        for (size_t i = 0; i < frame.color.pixels.size(); i += 4) n += frame.color.pixels[i] < 128;
+        return n;
+    };
+    const size_t unit = dark(1.0f), tiny = dark(1e-8f), huge = dark(1e8f);
+    std::printf("outline dark pixels: unit %zu, 1e-8 %zu, 1e8 %zu\n", unit, tiny, huge);
+    EXPECT_GT(unit, 500u);
+    EXPECT_NEAR(double(tiny), double(unit), 0.02 * double(unit));
+    EXPECT_NEAR(double(huge), double(unit), 0.02 * double(unit));
+}
+
 // What the viewer met in review (2026-12-03): a dropped animated model on a scene drawn on the cpu path,
 // which cannot draw it, took the splat path instead of leaving the scene with an object the renderer did
 // not have (the next frame ended the viewer); stipples made for parameters the panel no longer asks for

@@ -116,6 +116,34 @@ Bounds compute_bounds(const Mesh& mesh) {
     return b;
 }
 
+Sphere transformed_bounds(const Sphere& sphere, const Bounds& box, const glm::mat4& model) {
+    const glm::mat3 linear(model);
+    const float lengths[3] = {glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])};
+    const float longest = std::max({lengths[0], lengths[1], lengths[2]});
+    const glm::vec3 centre(model * glm::vec4(sphere.center, 1.0f));
+    bool similarity = true;
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(lengths[i] - longest) > 1e-5f * longest ||
+            std::abs(glm::dot(linear[i], linear[(i + 1) % 3])) > 1e-5f * longest * longest)
+            similarity = false;
+    // A similarity stretches every direction by its columns' length: the sphere's image.
+    if (similarity) return {centre, sphere.radius * longest};
+    // Otherwise the largest stretch is the linear part's largest singular value, the root of the largest
+    // eigenvalue of its Gram matrix, which the Gram matrix's largest row sum bounds (the longest column alone does
+    // not: a shear stretches a diagonal farther).
+    const glm::mat3 gram = glm::transpose(linear) * linear;
+    float most_row = 0.0f;
+    for (int i = 0; i < 3; ++i) most_row = std::max(most_row, std::abs(gram[0][i]) + std::abs(gram[1][i]) + std::abs(gram[2][i]));
+    const Sphere stretched{centre, sphere.radius * std::sqrt(most_row)};
+    Sphere around_box{glm::vec3(model * glm::vec4(box.center(), 1.0f)), 0.0f};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                          (corner & 4) ? box.max.z : box.min.z);
+        around_box.radius = std::max(around_box.radius, glm::length(glm::vec3(model * glm::vec4(p, 1.0f)) - around_box.center));
+    }
+    return around_box.radius < stretched.radius ? around_box : stretched;
+}
+
 Sphere compute_bounding_sphere(const Mesh& mesh) {
     const std::vector<glm::vec3>& points = mesh.positions;
     if (points.empty()) return Sphere{};

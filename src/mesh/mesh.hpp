@@ -71,6 +71,12 @@ void validate_mesh(const Mesh& mesh);
 
 Bounds compute_bounds(const Mesh& mesh);
 Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains every vertex
+// A sphere holding what `sphere` and `box` (two bounds of the same points) hold, after `model` (a similarity
+// or not): the sphere's image, its radius stretched by the model's largest stretch, and where the model
+// stretches some directions more than others (a scene matrix exaggerating a terrain's heights) the sphere
+// around the box's corners instead when that is smaller (a flat object's sphere stretched along its thin
+// axis was as wide as the whole stretch).
+Sphere transformed_bounds(const Sphere& sphere, const Bounds& box, const glm::mat4& model);
 double triangle_area(const Mesh& mesh, size_t triangle);
 double total_area(const Mesh& mesh);
 

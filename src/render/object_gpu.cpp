@@ -343,6 +343,20 @@ glm::mat4 object_to_world(const ObjectGpu& object) {
     return object.model * up_axis_rotation(object.params.up, object.polygons.bounds.center);
 }
 
+namespace {
+
+// The radius in world of the object's bounding sphere: stretched by the model's largest stretch, or for a model
+// that scales its axes unequally the sphere around its box where that is smaller (transformed_bounds): a
+// terrain's heights exaggerated 10 times stretched its sphere 10 times, and the thinned lines with it.
+float world_radius(const ObjectGpu& object, const ModelScale& scale) {
+    const Sphere& bounds = object.polygons.bounds;
+    if (scale.uniform || object.animation) return bounds.radius * scale.most;  // a pose may leave the rest box
+    const Bounds box{object.polygons.box_min, object.polygons.box_min + object.polygons.box_size};
+    return std::min(bounds.radius * scale.most, transformed_bounds(bounds, box, object_to_world(object)).radius);
+}
+
+}  // namespace
+
 gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameView& view, LineWidths widths) {
     const ObjectParams& p = object.params;
     const Sphere& bounds = object.polygons.bounds;
@@ -355,7 +369,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     // The reference view (and the stipples' areas, extrinsic.w) at the mean scale; an unequal scale of
     // the axes is corrected per polygon (polygon_view). The depth range A is the sphere's extent in world.
     const float radius_mean = std::max(bounds.radius * scale.mean, 1e-20f);
-    const float radius_world = std::max(bounds.radius * scale.most, 1e-20f);
+    const float radius_world = std::max(world_radius(object, scale), 1e-20f);
     // At print detail a stipple is drawn as the disc of its screen ink, enlarged (FrameView::detail_scale).
     const bool print = view.detail_scale != 1.0f;
     const float point_size = print ? 2.0f * stipple_ink_radius(p.point_size) * view.detail_scale : drawn_point_size(p.point_size);
@@ -394,9 +408,11 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
 
 LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, float max_width) {
     const Sphere& bounds = object.polygons.bounds;
-    float radius_world = bounds.radius * model_scale(object.model).most;
+    float radius_world = world_radius(object, model_scale(object.model));
     glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
-    float distance = std::max(-center_view.z, 1e-6f);
+    // Not nearer than a ten-thousandth of the radius (the eye at the centre): a fixed 1e-6 was farther than the
+    // whole camera distance of a model 1e-8 units across, and thinned its lines to half.
+    float distance = std::max(-center_view.z, std::max(radius_world * 1e-4f, 1e-30f));
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
     float projected_radius =
         radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);

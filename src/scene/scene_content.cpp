@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/timing.hpp"
 #include "params/param_table.hpp"
+#include "render/object_gpu.hpp"
 
 namespace stipple {
 
@@ -124,7 +125,16 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
     Sphere bounds{};
     for (size_t i = 0; i < objects.size(); ++i) {
-        Sphere s = transform_sphere(objects[i].bounds, scene.objects[i].transform.to_matrix());
+        // The box turned up as the drawing turns it (a quarter turn about the sphere's centre keeps it a box).
+        const glm::mat4 up = up_axis_rotation(scene.objects[i].params.up, objects[i].bounds.center);
+        Bounds box{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+        for (int corner = 0; corner < 8; ++corner) {
+            const Bounds& b = objects[i].box;
+            const glm::vec3 p(glm::vec3(up * glm::vec4((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                                                       (corner & 4) ? b.max.z : b.min.z, 1.0f)));
+            box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
+        }
+        Sphere s = transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.to_matrix());
         bounds = i == 0 ? s : merge_spheres(bounds, s);
     }
     return bounds;

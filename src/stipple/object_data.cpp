@@ -49,13 +49,14 @@ ObjectData load_model_data(const std::string& path) {
             object.motion.model = model;
             object.mesh = std::shared_ptr<const Mesh>(object.motion.model, &object.motion.model->rest);
             object.bounds = box_sphere(object.motion.headroom->bounds);
+            object.box = object.motion.headroom->bounds;
         } else {
             object.mesh = std::make_shared<const Mesh>(std::move(model->rest));
         }
     } else {
         object.mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
     }
-    if (!object.motion) object.bounds = compute_bounding_sphere(*object.mesh);
+    if (!object.motion) object.bounds = compute_bounding_sphere(*object.mesh), object.box = compute_bounds(*object.mesh);
     object.load_seconds = seconds_since(start);
     return object;
 }

@@ -24,6 +24,7 @@ enum class StippleSource { Cache, Generate };
 struct ObjectData {
     std::shared_ptr<const Mesh> mesh;  // a glTF file's rest mesh (anim::AnimatedModel::rest)
     Sphere bounds;  // object space; an animated model's holds every pose of every animation
+    Bounds box;     // the same points' box (scene framing under a matrix that scales axes unequally)
     std::shared_ptr<const StippleSet> stipples;
     anim::Motion motion;  // a glTF file with an animation: what moves it and its stretch headroom
     double load_seconds = 0.0;  // reading and preparing the mesh (and measuring an animation's stretch)
