@@ -181,6 +181,30 @@ TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     EXPECT_EQ(p.density_path, DensityPath::Indirect);
 }
 
+// "scale" takes one number or one an axis (a terrain's heights exaggerated: [1, 3, 1]), which becomes the matrix
+// translate * rotate * scale and is saved as that matrix ("expected a number, got array" until 2026-12-05).
+TEST(Scene, AScaleAnAxisIsTheMatrixOfTheTransform) {
+    auto dir = test::temp_dir("scene-axis-scale");
+    const Scene scene = parse_scene(R"({"objects": [{"model": "a.obj", "transform": {"translate": [1, 2, 3],
+        "rotate_deg": [0, 90, 0], "scale": [2, 3, 4]}}]})", "inline.json", dir);
+    const glm::mat4 m = scene.objects.at(0).transform.to_matrix();
+    EXPECT_NEAR(glm::length(glm::vec3(m[0])), 2.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(glm::vec3(m[1])), 3.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(glm::vec3(m[2])), 4.0f, 1e-6f);
+    EXPECT_NEAR(m[0][2], -2.0f, 1e-6f) << "x turned a quarter about y, then scaled by 2";
+    EXPECT_EQ(glm::vec3(m[3]), glm::vec3(1.0f, 2.0f, 3.0f));
+    const Scene back = parse_scene(scene_to_json(scene, dir), "again.json", dir);
+    EXPECT_EQ(back.objects.at(0).transform.to_matrix(), m);
+    for (const char* bad : {R"([1, 0, 1])", R"([1, 2])", R"([1, -2, 1])"}) {
+        try {
+            parse_scene(std::string(R"({"objects": [{"model": "a.obj", "transform": {"scale": )") + bad + "}}]}", "bad.json", dir);
+            ADD_FAILURE() << bad << " was taken";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("objects[0].transform.scale"), std::string::npos) << e.what();
+        }
+    }
+}
+
 // Models side by side on the command line share its --animation: the animated ones play it and a static one
 // ignores it (`view fox.glb spot.obj --animation Walk` was refused for spot until 2026-12-05). A static model
 // alone, or in a scene file that names an animation for it, is still refused.

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -207,6 +208,16 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
     }
     if (j.contains("translate")) t.translate = r.place(j["translate"], Reader::field(where, "translate"));
     if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], Reader::field(where, "rotate_deg"));
+    if (j.contains("scale") && j["scale"].is_array()) {
+        // One scale an axis (a terrain's heights exaggerated: [1, 3, 1]): the matrix translate * rotate * scale,
+        // whose unequal scales the drawing takes as a scene matrix's (README, "Unequal scales in a scene matrix").
+        const std::string w = Reader::field(where, "scale");
+        const glm::vec3 axes = r.vec3(j["scale"], w);
+        for (int c = 0; c < 3; ++c)
+            if (!(axes[c] >= 1e-6f) || axes[c] > 1e6f) r.error(w, "each axis's scale must be in [1e-6, 1e6]");
+        t.matrix = t.to_matrix() * glm::scale(glm::mat4(1.0f), axes);
+        return t;
+    }
     if (j.contains("scale")) {
         t.scale = r.number(j["scale"], Reader::field(where, "scale"));
         // Below 1e-6 a model of unit size approaches the denormals its drawing multiplies into (1e-16 drew a

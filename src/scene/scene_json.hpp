@@ -4,7 +4,7 @@
 //
 // {
 //   "objects": [{"model": "blobby.glb",
-//                "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s}
+//                "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s or [x,y,z]}
 //                             or {"matrix": [16 numbers, column-major]},
 //                "params": {"dmax": 0.15, "shading_exponent": 1, ...}}],
 //   "camera": {"yaw": 20, "pitch": 10, "distance": 1.0, "target": [x,y,z], "world_distance": d, "fov_y": 30},
