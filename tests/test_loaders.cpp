@@ -427,10 +427,11 @@ TEST(BadInput, Directory) {
 }
 
 TEST(BadInput, UnknownExtension) {
-    expect_load_error(write_file(temp_dir("loaders_unknown_ext") / "model.stl", "solid x\n"), "unknown model format '.stl'");
+    expect_load_error(write_file(temp_dir("loaders_unknown_ext") / "model.3ds", "solid x\n"),
+                      "unknown model format '.3ds' (expected .obj, .ply, .gltf, .glb or .stl)");
     // A scene given where a model is asked for (`stipple info scene.json`) is named as what it is.
     expect_load_error(write_file(temp_dir("loaders_scene_ext") / "scene.json", "{}\n"),
-                      "is a scene file, not a model (.obj, .ply, .gltf or .glb)");
+                      "is a scene file, not a model (.obj, .ply, .gltf, .glb or .stl)");
 }
 
 TEST(BadInput, TruncatedBinaryPly) {

@@ -4,7 +4,7 @@
 # one process on one core). Fails on any crash, sanitizer report, leak, hang (-timeout) or allocation
 # over the limits (-rss_limit_mb, -malloc_limit_mb); the input that did it is left in
 # <build>/fuzz/<harness>/ (turn it into a regression file: tests/fuzz/README.md).
-# Usage: tools/run_fuzzers.sh [SECONDS per harness, default 60] [HARNESS...: obj ply gltf anim scene]
+# Usage: tools/run_fuzzers.sh [SECONDS per harness, default 60] [HARNESS...: obj ply stl gltf anim scene]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 source "$(dirname "${BASH_SOURCE[0]}")/sanitizer_env.sh"
@@ -12,7 +12,7 @@ cd "$STIPPLE_ROOT"
 seconds="${1:-60}"
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(obj ply gltf anim scene)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(obj ply stl gltf anim scene)
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "run_fuzzers: SECONDS must be a whole number, got '$seconds'" >&2; exit 2; }
 
 third_party_config/install_deps.sh

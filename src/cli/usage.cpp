@@ -39,7 +39,7 @@ Usage:
 
 MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file (glTF quantized,
 compressed or instanced too: KHR_mesh_quantization, EXT_meshopt_compression, KHR_draco_mesh_compression,
-EXT_mesh_gpu_instancing). Without
+EXT_mesh_gpu_instancing), or a .stl file (binary or ASCII, as CAD and 3D-printing tools write). Without
 MODEL or scene, render and view draw the built-in default scene (assets/blobby.glb, a blobby metaball
 surface made by tools/make_blobby). Several MODELs given to view are set side by side, each scaled to the
 first one's size. The stipple options below apply to MODELs; a SCENE.json sets them per object

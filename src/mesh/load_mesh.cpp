@@ -37,17 +37,18 @@ bool normals_usable(const Mesh& mesh) {
     return true;
 }
 
-enum class Format { obj, ply, gltf };
+enum class Format { obj, ply, gltf, stl };
 
 Format format_of(const std::string& name) {
     const std::string ext = lower_extension(name);
     if (ext == ".obj") return Format::obj;
     if (ext == ".ply") return Format::ply;
     if (ext == ".gltf" || ext == ".glb") return Format::gltf;
+    if (ext == ".stl") return Format::stl;
     if (ext == ".json")  // a scene names models; `info` and a model's place take one model
-        fail_file(name, "is a scene file, not a model (.obj, .ply, .gltf or .glb)");
+        fail_file(name, "is a scene file, not a model (.obj, .ply, .gltf, .glb or .stl)");
     fail_file(name, (ext.empty() ? std::string("has no file extension") : "unknown model format '" + ext + "'") +
-                        " (expected .obj, .ply, .gltf or .glb)");
+                        " (expected .obj, .ply, .gltf, .glb or .stl)");
 }
 
 Mesh parse(Format format, const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
@@ -56,6 +57,7 @@ Mesh parse(Format format, const std::string& name, std::string_view bytes, const
         case Format::obj: return parse_obj(name, bytes, options);
         case Format::ply: return parse_ply(name, bytes, options);
         case Format::gltf: return parse_gltf(name, bytes, base_dir, options);
+        case Format::stl: return parse_stl(name, bytes, options);
     }
     fail_file(name, "unknown model format");
 }
@@ -140,6 +142,8 @@ Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const
 Mesh load_obj(const std::string& path, const LoadOptions& options) { return parse_obj(path, read_file(path), options); }
 
 Mesh load_ply(const std::string& path, const LoadOptions& options) { return parse_ply(path, read_file(path), options); }
+
+Mesh load_stl(const std::string& path, const LoadOptions& options) { return parse_stl(path, read_file(path), options); }
 
 Mesh load_gltf(const std::string& path, const LoadOptions& options) {
     const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();

@@ -21,7 +21,7 @@ struct LoadOptions {
     bool split_two_sided_vertices = true;
 };
 
-// Loads .obj, .ply, .gltf or .glb (chosen by extension, case-insensitive), validates the result
+// Loads .obj, .ply, .gltf, .glb or .stl (chosen by extension, case-insensitive), validates the result
 // (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part
 // alike and inside-out parts outward (orient_consistently; Mesh::winding says what changed), computes
 // normals where the file has none and turns the file's normals to agree with their faces. The file's
@@ -47,11 +47,13 @@ Mesh load_mesh_from_bytes(const std::string& name, std::string_view bytes, const
 Mesh load_obj(const std::string& path, const LoadOptions& options);
 Mesh load_ply(const std::string& path, const LoadOptions& options);
 Mesh load_gltf(const std::string& path, const LoadOptions& options);  // .gltf and .glb
+Mesh load_stl(const std::string& path, const LoadOptions& options);   // binary or ASCII
 
 // The parsers proper, on the file's bytes; `name` is for messages. `base_dir` is the folder that
 // external glTF buffers are resolved against, or nullptr when there is none (bytes from memory).
 Mesh parse_obj(const std::string& name, std::string_view text, const LoadOptions& options);
 Mesh parse_ply(const std::string& name, std::string_view bytes, const LoadOptions& options);
+Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOptions& options);
 // `document`, when given, receives the glTF document the mesh was read from.
 Mesh parse_gltf(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,
                 const LoadOptions& options, tinygltf::Model* document = nullptr);

@@ -1,0 +1,184 @@
+// STL, binary and ASCII: what CAD programs and 3D-printing tools export. A list of facets, each with its
+// own three corners and a normal. The corners are kept as the file lists them (three vertices a facet, no
+// index of shared ones): the format has no smooth normals, and welding the corners of a part's faces would
+// average the normals across its sharp edges (a box's faces shaded as if rounded). Loading then computes
+// each vertex's normal from its facet (the file's normals, often zero or stale, are not read), and winds and
+// repairs the facets as it does every format (load_mesh's finish). Each problem is one line naming the
+// facet, or the line of an ASCII file.
+//
+// Binary: an 80-byte header, a 32-bit little-endian facet count, then 50 bytes a facet (normal and three
+// corners as 32-bit floats, and a 16-bit attribute). ASCII: "solid NAME", then for each facet "facet normal
+// x y z", "outer loop", three "vertex x y z", "endloop", "endfacet", and "endsolid NAME". A file is binary
+// when its size is the size its count announces (a binary header may begin with "solid" too), ASCII when it
+// begins with "solid", and neither otherwise.
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "core/error.hpp"
+#include "mesh/load_mesh.hpp"
+
+namespace stipple {
+
+namespace {
+
+constexpr size_t kHeaderBytes = 84, kFacetBytes = 50;
+
+float read_float(const char* at) {
+    uint32_t bits = uint32_t(uint8_t(at[0])) | uint32_t(uint8_t(at[1])) << 8 | uint32_t(uint8_t(at[2])) << 16 |
+                    uint32_t(uint8_t(at[3])) << 24;
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+void add_corner(Mesh& mesh, const glm::vec3& p) {
+    mesh.indices.push_back(uint32_t(mesh.positions.size()));
+    mesh.positions.push_back(p);
+}
+
+Mesh parse_binary(const std::string& name, std::string_view bytes, uint64_t facets, const LoadOptions& options) {
+    if (facets == 0) fail_file(name, "the model has no triangles (a binary STL of 0 facets)");
+    if (facets > options.max_elements)
+        fail_file(name, "binary STL announces " + std::to_string(facets) + " facets, more than the limit of " +
+                            std::to_string(options.max_elements));
+    Mesh mesh;
+    mesh.positions.reserve(3 * facets);
+    mesh.indices.reserve(3 * facets);
+    for (uint64_t f = 0; f < facets; ++f) {
+        const char* facet = bytes.data() + kHeaderBytes + f * kFacetBytes;
+        for (int corner = 0; corner < 3; ++corner) {
+            const char* at = facet + 12 + 12 * corner;  // after the facet's normal
+            const glm::vec3 p(read_float(at), read_float(at + 4), read_float(at + 8));
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                fail_file(name, "facet " + std::to_string(f) + " has a corner that is not a finite number");
+            add_corner(mesh, p);
+        }
+    }
+    return mesh;
+}
+
+class AsciiReader {
+public:
+    AsciiReader(const std::string& name, std::string_view text, const LoadOptions& options)
+        : name_(name), text_(text), limit_(options.max_elements) {}
+
+    Mesh read() {
+        expect("solid");
+        skip_line();  // the solid's name, if any
+        for (;;) {
+            const std::string_view word = next();
+            if (word.empty()) fail_here("the file ends before \"endsolid\"");
+            if (word == "endsolid") {
+                skip_line();
+                // Several solids may follow one another; anything else after the last one is refused.
+                const std::string_view after = next();
+                if (after.empty()) break;
+                if (after != "solid") fail_here("expected \"solid\" or the end of the file after \"endsolid\", got " + shown(after));
+                skip_line();
+                continue;
+            }
+            if (word != "facet") fail_here("expected \"facet\" or \"endsolid\", got " + shown(word));
+            expect("normal");
+            for (int i = 0; i < 3; ++i) number();  // the file's normal: not used (see the top of this file)
+            expect("outer");
+            expect("loop");
+            for (int corner = 0; corner < 3; ++corner) {
+                expect("vertex");
+                glm::vec3 p;
+                for (int i = 0; i < 3; ++i) p[i] = number();
+                add_corner(mesh_, p);
+            }
+            expect("endloop");
+            expect("endfacet");
+            if (mesh_.triangle_count() > limit_)
+                fail_file(name_, "more than " + std::to_string(limit_) + " facets, the limit");
+        }
+        if (mesh_.indices.empty()) fail_file(name_, "the model has no triangles (an ASCII STL without facets)");
+        return std::move(mesh_);
+    }
+
+private:
+    static std::string shown(std::string_view word) {
+        std::string out = "'";
+        for (char c : word.substr(0, 24)) out += c >= 0x20 && c < 0x7f ? c : '?';
+        return out + (word.size() > 24 ? "...'" : "'");
+    }
+
+    [[noreturn]] void fail_here(const std::string& problem) const {
+        fail_file(name_, "line " + std::to_string(line_) + ": " + problem);
+    }
+
+    // The next word, or an empty view at the end of the file; counts lines on the way.
+    std::string_view next() {
+        while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+            if (text_[pos_] == '\n') ++line_;
+            ++pos_;
+        }
+        const size_t begin = pos_;
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+        return text_.substr(begin, pos_ - begin);
+    }
+
+    void skip_line() {
+        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    }
+
+    void expect(std::string_view keyword) {
+        const std::string_view word = next();
+        if (word.empty()) fail_here("the file ends where \"" + std::string(keyword) + "\" was expected");
+        if (word != keyword) fail_here("expected \"" + std::string(keyword) + "\", got " + shown(word));
+    }
+
+    float number() {
+        std::string_view word = next();
+        if (word.empty()) fail_here("the file ends where a number was expected");
+        if (word.size() > 1 && word.front() == '+') word.remove_prefix(1);
+        float value = 0.0f;
+        const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (ptr != word.data() + word.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+            fail_here("expected a number, got " + shown(word));
+        // Out of float's range: below it, a rounding to keep (1e-50 is 0); above it, refused.
+        if (ec == std::errc::result_out_of_range) {
+            const double wide = std::strtod(std::string(word).c_str(), nullptr);
+            if (std::abs(wide) >= 1.0) fail_here("the number " + shown(word) + " is beyond single precision's range");
+            value = float(wide);
+        }
+        if (!std::isfinite(value)) fail_here("the number " + shown(word) + " is not finite");
+        return value;
+    }
+
+    const std::string& name_;
+    std::string_view text_;
+    uint64_t limit_;
+    size_t pos_ = 0, line_ = 1;
+    Mesh mesh_;
+};
+
+}  // namespace
+
+Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOptions& options) {
+    if (bytes.size() >= kHeaderBytes) {
+        const uint64_t facets = uint32_t(uint8_t(bytes[80])) | uint32_t(uint8_t(bytes[81])) << 8 |
+                                uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
+        if (bytes.size() == kHeaderBytes + facets * kFacetBytes) return parse_binary(name, bytes, facets, options);
+    }
+    size_t start = 0;
+    while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
+    if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos)
+        return AsciiReader(name, bytes, options).read();
+    if (bytes.size() < kHeaderBytes)
+        fail_file(name, "not an STL file: " + std::to_string(bytes.size()) +
+                            " bytes, shorter than a binary STL's 84-byte header, and no ASCII \"solid\"");
+    const uint64_t facets = uint32_t(uint8_t(bytes[80])) | uint32_t(uint8_t(bytes[81])) << 8 |
+                            uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
+    fail_file(name, "binary STL of " + std::to_string(bytes.size()) + " bytes, where its count of " + std::to_string(facets) +
+                        " facets asks " + std::to_string(kHeaderBytes + facets * kFacetBytes) +
+                        " (truncated, or not an STL file)");
+}
+
+}  // namespace stipple
