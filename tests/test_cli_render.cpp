@@ -645,17 +645,23 @@ TEST(CliRender, StatsInkIsTheMeanInkOverTheCoveredPixels) {
 // two are of one luminance there is nothing to read.
 TEST(CliRender, StatsInkIsReadBetweenThePaperAndTheInk) {
     const std::filesystem::path dir = test::temp_dir("cli-stats-colours");
+    std::string err;  // the last command's
     auto ink_of = [&](const std::string& colours) {
         std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << test::source_path("assets/blobby.glb") << R"("}])" << colours << "}";
         const test::CommandResult r = run_stipple({"render", (dir / "scene.json").string(), "-o", (dir / "ink.png").string(), "--width",
                                                    "320", "--height", "256", "--stats"});
         EXPECT_EQ(r.exit_code, 0) << r.err;
+        err = r.err;
         const size_t at = r.out.find("mean ink inside:");
         EXPECT_NE(at, std::string::npos) << r.out;
         return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
     };
     const std::string black_on_white = ink_of(""), white_on_black = ink_of(R"(, "paper": [0, 0, 0], "ink": [1, 1, 1])");
+    EXPECT_EQ(err, "");
     const std::string grey = ink_of(R"(, "paper": [0.5, 0.5, 0.5], "ink": [0.5, 0.5, 0.5])");
+    // And the render says so, once (a sci-vis walkthrough's black ink on black paper drew a plain image without a word).
+    EXPECT_NE(err.find("the paper and the ink are the same colour: the drawing will not show"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     std::printf("%s\n%s\n%s\n", black_on_white.c_str(), white_on_black.c_str(), grey.c_str());
     const double a = std::stod(black_on_white.substr(std::strlen("mean ink inside:"))), b = std::stod(white_on_black.substr(std::strlen("mean ink inside:")));
     EXPECT_GT(a, 5.0);
