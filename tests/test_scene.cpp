@@ -181,8 +181,8 @@ TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     EXPECT_EQ(p.density_path, DensityPath::Indirect);
 }
 
-// "scale" takes one number or one an axis (a terrain's heights exaggerated: [1, 3, 1]), which becomes the matrix
-// translate * rotate * scale and is saved as that matrix ("expected a number, got array" until 2026-12-05).
+// "scale" takes one number or one an axis (a terrain's heights exaggerated: [1, 3, 1]): translate * rotate * scale,
+// saved as it was written ("expected a number, got array" until 2026-12-05).
 TEST(Scene, AScaleAnAxisIsTheMatrixOfTheTransform) {
     auto dir = test::temp_dir("scene-axis-scale");
     const Scene scene = parse_scene(R"({"objects": [{"model": "a.obj", "transform": {"translate": [1, 2, 3],
@@ -193,7 +193,10 @@ TEST(Scene, AScaleAnAxisIsTheMatrixOfTheTransform) {
     EXPECT_NEAR(glm::length(glm::vec3(m[2])), 4.0f, 1e-6f);
     EXPECT_NEAR(m[0][2], -2.0f, 1e-6f) << "x turned a quarter about y, then scaled by 2";
     EXPECT_EQ(glm::vec3(m[3]), glm::vec3(1.0f, 2.0f, 3.0f));
-    const Scene back = parse_scene(scene_to_json(scene, dir), "again.json", dir);
+    EXPECT_FALSE(scene.objects.at(0).transform.matrix) << "translate, rotate and scale stay editable";
+    const std::string saved = scene_to_json(scene, dir);
+    EXPECT_NE(saved.find("\"scale\": ["), std::string::npos) << saved;
+    const Scene back = parse_scene(saved, "again.json", dir);
     EXPECT_EQ(back.objects.at(0).transform.to_matrix(), m);
     for (const char* bad : {R"([1, 0, 1])", R"([1, 2])", R"([1, -2, 1])"}) {
         try {
@@ -201,6 +204,7 @@ TEST(Scene, AScaleAnAxisIsTheMatrixOfTheTransform) {
             ADD_FAILURE() << bad << " was taken";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find("objects[0].transform.scale"), std::string::npos) << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
         }
     }
 }
@@ -388,6 +392,49 @@ TEST_F(SceneObjects, AnUnequalScaleFramesTheObjectAsStoredScaled) {
     std::printf("covered pixels: stored 3x wider %zu, scaled 3x wider by the matrix %zu\n", stored, stretched);
     EXPECT_GT(stored, 20000u);
     EXPECT_NEAR(double(stretched), double(stored), 0.01 * double(stored));
+
+    // The same for a terrain stored Z-up (up z: the drawing turns it a quarter about x, so the matrix's y scales the
+    // file's heights), and its lines: the outline's thinning takes the same world radius (it was the sphere times
+    // 3). Turned, the box is wide in x and z and thin in y; unturned it would be thin in the matrix's z.
+    const Mesh grid = make_grid(40);
+    auto write_terrain = [&](const std::string& name, float height) {
+        std::ostringstream obj;
+        obj.precision(9);
+        for (const glm::vec3& p : grid.positions)
+            obj << "v " << p.x << ' ' << p.y << ' ' << height * 0.1f * std::sin(6.0f * p.x) * std::cos(5.0f * p.y) << '\n';
+        for (size_t t = 0; t < grid.triangle_count(); ++t)
+            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
+        write_text(dir / name, obj.str());
+    };
+    write_terrain("terrain.obj", 1.0f);
+    write_terrain("tall.obj", 3.0f);
+    auto drawn = [&](const std::string& model, UpAxis up, glm::vec3 scale) {
+        Scene scene;
+        scene.base_dir = dir;
+        SceneObject object;
+        object.model = model;
+        object.transform.matrix = glm::scale(glm::mat4(1.0f), scale);
+        object.params.up = up;
+        object.params.generation.dmax = 0.0f;  // the outline alone
+        object.params.borders = true;
+        scene.objects = {object};
+        scene.camera.pitch_deg = 30.0f;
+        const RenderedFrame frame = render_scene(*context, scene, {640, 512});
+        std::pair<size_t, size_t> covered_and_dark{0, 0};
+        for (size_t i = 0; i < frame.depth.size(); ++i) {
+            covered_and_dark.first += frame.depth[i] < 1.0f;
+            covered_and_dark.second += frame.color.pixels[4 * i] < 128;
+        }
+        return covered_and_dark;
+    };
+    const auto tall = drawn("tall.obj", UpAxis::Z, glm::vec3(1.0f)), raised = drawn("terrain.obj", UpAxis::Z, glm::vec3(1.0f, 3.0f, 1.0f));
+    std::printf("Z-up terrain: heights stored 3x %zu covered, %zu dark; scaled by the matrix %zu, %zu\n", tall.first, tall.second,
+                raised.first, raised.second);
+    EXPECT_GT(tall.second, 500u);
+    // Within the box's slack: the sphere around the box's corners is a little wider than the stored terrain's own
+    // (4.5% fewer pixels measured); the stretched sphere framed it at about a seventh of them.
+    EXPECT_NEAR(double(raised.first), double(tall.first), 0.07 * double(tall.first));
+    EXPECT_NEAR(double(raised.second), double(tall.second), 0.05 * double(tall.second));
 }
 
 // Lines are as wide on a model of any size: the thinning's distance to the object was floored at 1e-6 units, more

@@ -94,6 +94,27 @@ TEST(StlLoader, ABinaryHeaderThatBeginsWithSolidIsBinary) {
     EXPECT_EQ(mesh.triangle_count(), 12u);
 }
 
+// What exporters write besides the format's letter: "nan" normals for degenerate facets (the normals are not read),
+// upper-case keywords, a byte-order mark, "\r\n" or lone "\r" line ends, a whole file on one line.
+TEST(StlLoader, AsciiAsExportersWriteIt) {
+    const std::string ascii = ascii_stl(cube_facets());
+    auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+        for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+        return text;
+    };
+    for (const std::string& variant : {replaced(ascii, "normal 0 0 0", "normal nan -nan inf"), replaced(ascii, "facet", "FACET"),
+                                       "\xEF\xBB\xBF" + ascii, replaced(ascii, "\n", "\r\n"), replaced(ascii, "\n", "\r"),
+                                       replaced(ascii, "\n", " ")}) {
+        const Mesh mesh = load_mesh_from_bytes("cube.stl", variant);
+        EXPECT_EQ(mesh.triangle_count(), 12u) << variant.substr(0, 60);
+        EXPECT_NEAR(total_area(mesh), 6.0, 1e-5);
+    }
+    // Line numbers count "\r\n" and lone "\r" as one line end each.
+    std::string crlf = replaced(ascii, "\n", "\r\n");
+    crlf.erase(crlf.find("endloop"), 7);
+    EXPECT_NE(load_error(crlf).find("line 8: expected \"endloop\""), std::string::npos);
+}
+
 TEST(StlLoader, SeveralSolidsInOneAsciiFile) {
     const std::vector<std::array<glm::vec3, 3>> facets = cube_facets();
     std::string text = ascii_stl({facets.begin(), facets.begin() + 6}) + ascii_stl({facets.begin() + 6, facets.end()});
@@ -125,6 +146,20 @@ TEST(StlLoader, BrokenFilesAreOneLineErrors) {
     EXPECT_NE(load_error("solid empty\nendsolid empty\n").find("no triangles"), std::string::npos);
     EXPECT_NE(load_error(ascii + "garbage\n").find("expected \"solid\" or the end of the file"), std::string::npos);
     EXPECT_NE(load_error(std::string(200, 'x')).find("truncated, or not an STL file"), std::string::npos);
+    std::string four = ascii;
+    four.insert(four.find("endloop"), "vertex 0 0 0\n");
+    EXPECT_NE(load_error(four).find("expected \"endloop\", got 'vertex'"), std::string::npos) << "facets are triangles";
+    std::string plus_minus = ascii;
+    plus_minus.replace(plus_minus.find("vertex ") + 7, 8, "+-1     ");
+    EXPECT_NE(load_error(plus_minus).find("expected a number, got '+-1'"), std::string::npos);
+    LoadOptions few;
+    few.max_elements = 5;
+    try {
+        load_mesh_from_bytes("part.stl", binary, few);
+        ADD_FAILURE() << "12 facets over a limit of 5 loaded";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("more than the limit of 5"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -230,8 +230,9 @@ int run_render(const std::vector<std::string>& argv) {
     if (draws_nothing)
         std::fprintf(stderr, "stipple: warning: %s: D_max is 0 (no stipples) and no line or toon is asked: nothing is drawn\n",
                      what.c_str());
-    // A scene's paper and ink of one colour draw a plain image without a word otherwise.
-    if (glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f))))
+    // A scene's paper and ink of one colour draw a plain image without a word otherwise (vector output paints no
+    // paper unless asked, and a CSV has no colour).
+    if ((!vector || vector_options.fill_paper) && glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f))))
         std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
                      what.c_str());
     // A scene's camera_path places every frame's camera: options that set the scene's camera, or turn it,

@@ -116,31 +116,59 @@ Bounds compute_bounds(const Mesh& mesh) {
     return b;
 }
 
-Sphere transformed_bounds(const Sphere& sphere, const Bounds& box, const glm::mat4& model) {
+namespace {
+
+// The linear part's stretch: its columns' length when it is a similarity (equal, orthogonal columns: then every
+// direction is stretched by it), else a bound on its largest singular value, the root of the largest eigenvalue
+// of its Gram matrix, which the Gram matrix's largest row sum bounds (the longest column alone does not: a
+// shear stretches a diagonal farther).
+struct Stretch {
+    float most = 1.0f;
+    bool similarity = true;
+};
+Stretch stretch_of(const glm::mat4& model) {
     const glm::mat3 linear(model);
     const float lengths[3] = {glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])};
     const float longest = std::max({lengths[0], lengths[1], lengths[2]});
-    const glm::vec3 centre(model * glm::vec4(sphere.center, 1.0f));
-    bool similarity = true;
+    Stretch s{longest, true};
     for (int i = 0; i < 3; ++i)
         if (std::abs(lengths[i] - longest) > 1e-5f * longest ||
             std::abs(glm::dot(linear[i], linear[(i + 1) % 3])) > 1e-5f * longest * longest)
-            similarity = false;
-    // A similarity stretches every direction by its columns' length: the sphere's image.
-    if (similarity) return {centre, sphere.radius * longest};
-    // Otherwise the largest stretch is the linear part's largest singular value, the root of the largest
-    // eigenvalue of its Gram matrix, which the Gram matrix's largest row sum bounds (the longest column alone does
-    // not: a shear stretches a diagonal farther).
+            s.similarity = false;
+    if (s.similarity) return s;
     const glm::mat3 gram = glm::transpose(linear) * linear;
     float most_row = 0.0f;
     for (int i = 0; i < 3; ++i) most_row = std::max(most_row, std::abs(gram[0][i]) + std::abs(gram[1][i]) + std::abs(gram[2][i]));
-    const Sphere stretched{centre, sphere.radius * std::sqrt(most_row)};
-    Sphere around_box{glm::vec3(model * glm::vec4(box.center(), 1.0f)), 0.0f};
+    s.most = std::sqrt(most_row);
+    return s;
+}
+
+// The farthest image of the box's corners from `centre`.
+float farthest_corner(const Bounds& box, const glm::mat4& model, const glm::vec3& centre) {
+    float farthest = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
                           (corner & 4) ? box.max.z : box.min.z);
-        around_box.radius = std::max(around_box.radius, glm::length(glm::vec3(model * glm::vec4(p, 1.0f)) - around_box.center));
+        farthest = std::max(farthest, glm::length(glm::vec3(model * glm::vec4(p, 1.0f)) - centre));
     }
+    return farthest;
+}
+
+}  // namespace
+
+float transformed_radius(const Sphere& sphere, const Bounds& box, const glm::mat4& model) {
+    const Stretch s = stretch_of(model);
+    if (s.similarity) return sphere.radius * s.most;
+    return std::min(sphere.radius * s.most, farthest_corner(box, model, glm::vec3(model * glm::vec4(sphere.center, 1.0f))));
+}
+
+Sphere transformed_bounds(const Sphere& sphere, const Bounds& box, const glm::mat4& model) {
+    const Stretch s = stretch_of(model);
+    const glm::vec3 centre(model * glm::vec4(sphere.center, 1.0f));
+    if (s.similarity) return {centre, sphere.radius * s.most};  // the sphere's image, as it always was
+    const Sphere stretched{centre, sphere.radius * s.most};
+    const glm::vec3 box_centre(model * glm::vec4(box.center(), 1.0f));
+    const Sphere around_box{box_centre, farthest_corner(box, model, box_centre)};
     return around_box.radius < stretched.radius ? around_box : stretched;
 }
 

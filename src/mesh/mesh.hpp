@@ -77,6 +77,10 @@ Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains eve
 // around the box's corners instead when that is smaller (a flat object's sphere stretched along its thin
 // axis was as wide as the whole stretch).
 Sphere transformed_bounds(const Sphere& sphere, const Bounds& box, const glm::mat4& model);
+// The same bound's radius about the image of sphere.center (the centre the drawing measures depth and size
+// from): the sphere's radius times the model's largest stretch, or the farthest image of the box's corners
+// from that centre where smaller.
+float transformed_radius(const Sphere& sphere, const Bounds& box, const glm::mat4& model);
 double triangle_area(const Mesh& mesh, size_t triangle);
 double total_area(const Mesh& mesh);
 

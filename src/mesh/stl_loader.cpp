@@ -73,18 +73,21 @@ public:
         for (;;) {
             const std::string_view word = next();
             if (word.empty()) fail_here("the file ends before \"endsolid\"");
-            if (word == "endsolid") {
+            if (is(word, "endsolid")) {
                 skip_line();
                 // Several solids may follow one another; anything else after the last one is refused.
                 const std::string_view after = next();
                 if (after.empty()) break;
-                if (after != "solid") fail_here("expected \"solid\" or the end of the file after \"endsolid\", got " + shown(after));
+                if (!is(after, "solid")) fail_here("expected \"solid\" or the end of the file after \"endsolid\", got " + shown(after));
                 skip_line();
                 continue;
             }
-            if (word != "facet") fail_here("expected \"facet\" or \"endsolid\", got " + shown(word));
+            if (!is(word, "facet")) fail_here("expected \"facet\" or \"endsolid\", got " + shown(word));
             expect("normal");
-            for (int i = 0; i < 3; ++i) number();  // the file's normal: not used (see the top of this file)
+            // The file's normal is not used (see the top of this file), so not checked either: exporters write
+            // "nan" or "inf" there for degenerate facets.
+            for (int i = 0; i < 3; ++i)
+                if (next().empty()) fail_here("the file ends where a facet's normal was expected");
             expect("outer");
             expect("loop");
             for (int corner = 0; corner < 3; ++corner) {
@@ -116,7 +119,8 @@ private:
     // The next word, or an empty view at the end of the file; counts lines on the way.
     std::string_view next() {
         while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
-            if (text_[pos_] == '\n') ++line_;
+            // Lines end in "\n", "\r\n" or a lone "\r".
+            if (text_[pos_] == '\n' || (text_[pos_] == '\r' && (pos_ + 1 == text_.size() || text_[pos_ + 1] != '\n'))) ++line_;
             ++pos_;
         }
         const size_t begin = pos_;
@@ -124,20 +128,41 @@ private:
         return text_.substr(begin, pos_ - begin);
     }
 
+    // The rest of a "solid" or "endsolid" line: its name. A writer that puts a whole file on one line leaves no
+    // line end: the name is then the words before the first "facet" (or "endsolid").
     void skip_line() {
-        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+        for (;;) {
+            while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
+            if (pos_ >= text_.size() || text_[pos_] == '\n' || text_[pos_] == '\r') return;
+            const size_t word = pos_;
+            while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+            const std::string_view w = text_.substr(word, pos_ - word);
+            if (is(w, "facet") || is(w, "endsolid")) {
+                pos_ = word;
+                return;
+            }
+        }
+    }
+
+    // Keywords in any case: the format's are lower case, but some writers use upper case.
+    static bool is(std::string_view word, std::string_view keyword) {
+        if (word.size() != keyword.size()) return false;
+        for (size_t i = 0; i < word.size(); ++i)
+            if (std::tolower(static_cast<unsigned char>(word[i])) != keyword[i]) return false;
+        return true;
     }
 
     void expect(std::string_view keyword) {
         const std::string_view word = next();
         if (word.empty()) fail_here("the file ends where \"" + std::string(keyword) + "\" was expected");
-        if (word != keyword) fail_here("expected \"" + std::string(keyword) + "\", got " + shown(word));
+        if (!is(word, keyword)) fail_here("expected \"" + std::string(keyword) + "\", got " + shown(word));
     }
 
     float number() {
         std::string_view word = next();
         if (word.empty()) fail_here("the file ends where a number was expected");
-        if (word.size() > 1 && word.front() == '+') word.remove_prefix(1);
+        if (word.size() > 1 && word.front() == '+' && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.'))
+            word.remove_prefix(1);
         float value = 0.0f;
         const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
         if (ptr != word.data() + word.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
@@ -167,13 +192,16 @@ Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOption
                                 uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
         if (bytes.size() == kHeaderBytes + facets * kFacetBytes) return parse_binary(name, bytes, facets, options);
     }
+    std::string_view text = bytes;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte-order mark
     size_t start = 0;
-    while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
-    if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos)
-        return AsciiReader(name, bytes, options).read();
+    while (start < text.size() && std::isspace(static_cast<unsigned char>(text[start]))) ++start;
+    std::string first(text.substr(start, 5));
+    for (char& c : first) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (first == "solid" && text.find('\0') == std::string_view::npos) return AsciiReader(name, text, options).read();
     if (bytes.size() < kHeaderBytes)
-        fail_file(name, "not an STL file: " + std::to_string(bytes.size()) +
-                            " bytes, shorter than a binary STL's 84-byte header, and no ASCII \"solid\"");
+        fail_file(name, "not an STL file: " + std::to_string(bytes.size()) + " bytes, shorter than a binary STL's 84-byte header" +
+                            (first == "solid" ? std::string(" and not ASCII text (it holds a zero byte)") : std::string(", and no ASCII \"solid\"")));
     const uint64_t facets = uint32_t(uint8_t(bytes[80])) | uint32_t(uint8_t(bytes[81])) << 8 |
                             uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
     fail_file(name, "binary STL of " + std::to_string(bytes.size()) + " bytes, where its count of " + std::to_string(facets) +

@@ -345,14 +345,15 @@ glm::mat4 object_to_world(const ObjectGpu& object) {
 
 namespace {
 
-// The radius in world of the object's bounding sphere: stretched by the model's largest stretch, or for a model
-// that scales its axes unequally the sphere around its box where that is smaller (transformed_bounds): a
-// terrain's heights exaggerated 10 times stretched its sphere 10 times, and the thinned lines with it.
+// The radius in world of the object's bounding sphere about its centre: stretched by the model's largest
+// stretch, or for a model that scales its axes unequally the farthest corner of its box where that is nearer
+// (transformed_radius): a terrain's heights exaggerated 10 times stretched its sphere 10 times, and the thinned
+// lines with it. An animated object's box holds every pose (its headroom's).
 float world_radius(const ObjectGpu& object, const ModelScale& scale) {
     const Sphere& bounds = object.polygons.bounds;
-    if (scale.uniform || object.animation) return bounds.radius * scale.most;  // a pose may leave the rest box
+    if (scale.uniform) return bounds.radius * scale.most;
     const Bounds box{object.polygons.box_min, object.polygons.box_min + object.polygons.box_size};
-    return std::min(bounds.radius * scale.most, transformed_bounds(bounds, box, object_to_world(object)).radius);
+    return transformed_radius(bounds, box, object_to_world(object));
 }
 
 }  // namespace

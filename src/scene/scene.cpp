@@ -15,7 +15,7 @@ glm::mat4 Transform::to_matrix() const {
     m = glm::rotate(m, glm::radians(rotate_deg.z), glm::vec3(0, 0, 1));
     m = glm::rotate(m, glm::radians(rotate_deg.y), glm::vec3(0, 1, 0));
     m = glm::rotate(m, glm::radians(rotate_deg.x), glm::vec3(1, 0, 0));
-    return glm::scale(m, glm::vec3(scale));
+    return glm::scale(m, scale * axis_scale);
 }
 
 std::string Scene::model_path(size_t object) const {

@@ -19,7 +19,8 @@ namespace stipple {
 struct Transform {
     glm::vec3 translate{0.0f};
     glm::vec3 rotate_deg{0.0f};  // about X, then Y, then Z (degrees)
-    float scale = 1.0f;          // uniform, so the object's distance enhancement sees one scale
+    float scale = 1.0f;          // uniform (what the viewer's panel edits)
+    glm::vec3 axis_scale{1.0f};  // one an axis on top of it ("scale": [x, y, z] in a scene file)
     std::optional<glm::mat4> matrix;  // when set it replaces the three above (column-major, like glTF)
 
     glm::mat4 to_matrix() const;

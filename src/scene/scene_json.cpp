@@ -209,13 +209,15 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
     if (j.contains("translate")) t.translate = r.place(j["translate"], Reader::field(where, "translate"));
     if (j.contains("rotate_deg")) t.rotate_deg = r.vec3(j["rotate_deg"], Reader::field(where, "rotate_deg"));
     if (j.contains("scale") && j["scale"].is_array()) {
-        // One scale an axis (a terrain's heights exaggerated: [1, 3, 1]): the matrix translate * rotate * scale,
-        // whose unequal scales the drawing takes as a scene matrix's (README, "Unequal scales in a scene matrix").
+        // One scale an axis (a terrain's heights exaggerated: [1, 3, 1]): translate * rotate * scale, whose
+        // unequal scales the drawing takes as a scene matrix's (README, "Unequal scales in a scene matrix").
         const std::string w = Reader::field(where, "scale");
         const glm::vec3 axes = r.vec3(j["scale"], w);
         for (int c = 0; c < 3; ++c)
-            if (!(axes[c] >= 1e-6f) || axes[c] > 1e6f) r.error(w, "each axis's scale must be in [1e-6, 1e6]");
-        t.matrix = t.to_matrix() * glm::scale(glm::mat4(1.0f), axes);
+            if (!(axes[c] >= 1e-6f) || axes[c] > 1e6f)
+                r.error(w, std::string("the ") + "xyz"[c] + " axis's scale " + printf_string("%g", double(axes[c])) +
+                               " must be in [1e-6, 1e6]");
+        t.axis_scale = axes;
         return t;
     }
     if (j.contains("scale")) {
@@ -502,6 +504,8 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
             object["transform"] = {{"translate", vec3_json(o.transform.translate)},
                                    {"rotate_deg", vec3_json(o.transform.rotate_deg)},
                                    {"scale", number(o.transform.scale)}};
+            if (o.transform.axis_scale != glm::vec3(1.0f))  // written as read, the panel's uniform scale times it
+                object["transform"]["scale"] = vec3_json(o.transform.scale * o.transform.axis_scale);
         }
         json params = json::object();
         for (const ParamSpec& spec : param_table())
