@@ -104,7 +104,7 @@ TEST(StlLoader, AsciiAsExportersWriteIt) {
     };
     for (const std::string& variant : {replaced(ascii, "normal 0 0 0", "normal nan -nan inf"), replaced(ascii, "facet", "FACET"),
                                        "\xEF\xBB\xBF" + ascii, replaced(ascii, "\n", "\r\n"), replaced(ascii, "\n", "\r"),
-                                       replaced(ascii, "\n", " ")}) {
+                                       replaced(ascii, "\n", " "), replaced(ascii, "solid cube\n", "solid \v\f cube\n")}) {
         const Mesh mesh = load_mesh_from_bytes("cube.stl", variant);
         EXPECT_EQ(mesh.triangle_count(), 12u) << variant.substr(0, 60);
         EXPECT_NEAR(total_area(mesh), 6.0, 1e-5);

@@ -132,7 +132,10 @@ private:
     // line end: the name is then the words before the first "facet" (or "endsolid").
     void skip_line() {
         for (;;) {
-            while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
+            // Every space but a line end (a vertical tab or form feed read as a word of no letters looped for ever).
+            while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r' &&
+                   std::isspace(static_cast<unsigned char>(text_[pos_])))
+                ++pos_;
             if (pos_ >= text_.size() || text_[pos_] == '\n' || text_[pos_] == '\r') return;
             const size_t word = pos_;
             while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
