@@ -42,18 +42,33 @@ std::string read_text(const std::filesystem::path& path) {
     return s.str();
 }
 
-// A unit sphere as an OBJ file: scenes refer to models by path.
-std::filesystem::path write_sphere_obj(const std::filesystem::path& dir, int subdivisions = 4,
-                                       const std::string& name = "sphere.obj") {
-    Mesh mesh = make_icosphere(subdivisions);
+// `mesh` as an OBJ file, each position through `place` (9 digits: test::obj_text's fixed 6 decimals lose a model
+// 1e-8 units across): scenes refer to models by path.
+template <class Place>
+std::filesystem::path write_mesh_obj(const std::filesystem::path& dir, const std::string& name, const Mesh& mesh, Place place) {
     std::ostringstream obj;
     obj.precision(9);
-    for (const glm::vec3& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    for (const glm::vec3& position : mesh.positions) {
+        const glm::vec3 p = place(position);
+        obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    }
     for (size_t t = 0; t < mesh.triangle_count(); ++t)
         obj << "f " << mesh.indices[3 * t] + 1 << ' ' << mesh.indices[3 * t + 1] + 1 << ' ' << mesh.indices[3 * t + 2] + 1
             << '\n';
     write_text(dir / name, obj.str());
     return dir / name;
+}
+
+// `mesh` scaled along its axes as an OBJ file.
+std::filesystem::path write_mesh_obj(const std::filesystem::path& dir, const std::string& name, const Mesh& mesh,
+                                     glm::vec3 scale = glm::vec3(1.0f)) {
+    return write_mesh_obj(dir, name, mesh, [&](const glm::vec3& p) { return p * scale; });
+}
+
+// A unit sphere as an OBJ file.
+std::filesystem::path write_sphere_obj(const std::filesystem::path& dir, int subdivisions = 4,
+                                       const std::string& name = "sphere.obj") {
+    return write_mesh_obj(dir, name, make_icosphere(subdivisions));
 }
 
 RenderedFrame render_scene(const gpu::Context& context, const Scene& scene, VkExtent2D extent) {
@@ -316,17 +331,8 @@ TEST_F(SceneObjects, ObjectsAtDifferentScalesKeepTheirTone) {
 // stretched (anisotropic) pattern. Taken at the mean scale they drew 1.5 and 0.69 times the stipples.
 TEST_F(SceneObjects, AnUnequalScaleOfTheAxesKeepsThePolygonsTone) {
     auto dir = test::temp_dir("scene-unequal-scale");
-    auto write_obj = [&](const std::string& name, glm::vec3 scale) {
-        const Mesh grid = make_grid(20);
-        std::ostringstream obj;
-        obj.precision(9);
-        for (const glm::vec3& p : grid.positions) obj << "v " << p.x * scale.x << ' ' << p.y * scale.y << ' ' << p.z * scale.z << '\n';
-        for (size_t t = 0; t < grid.triangle_count(); ++t)
-            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
-        write_text(dir / name, obj.str());
-    };
-    write_obj("plate.obj", glm::vec3(1.0f));
-    write_obj("wide.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    write_mesh_obj(dir, "plate.obj", make_grid(20));
+    write_mesh_obj(dir, "wide.obj", make_grid(20), glm::vec3(3.0f, 1.0f, 1.0f));
     auto ink = [&](const std::string& model, glm::vec3 scale) {
         Scene scene;
         scene.base_dir = dir;
@@ -363,17 +369,8 @@ TEST_F(SceneObjects, AnUnequalScaleOfTheAxesKeepsThePolygonsTone) {
 // heights were multiplied by 10 at a tenth of the frame (a sci-vis walkthrough, 2026-12-05).
 TEST_F(SceneObjects, AnUnequalScaleFramesTheObjectAsStoredScaled) {
     auto dir = test::temp_dir("scene-unequal-framing");
-    auto write_obj = [&](const std::string& name, glm::vec3 scale) {
-        const Mesh grid = make_grid(20);
-        std::ostringstream obj;
-        obj.precision(9);
-        for (const glm::vec3& p : grid.positions) obj << "v " << p.x * scale.x << ' ' << p.y * scale.y << ' ' << p.z * scale.z << '\n';
-        for (size_t t = 0; t < grid.triangle_count(); ++t)
-            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
-        write_text(dir / name, obj.str());
-    };
-    write_obj("plate.obj", glm::vec3(1.0f));
-    write_obj("wide.obj", glm::vec3(3.0f, 1.0f, 1.0f));
+    write_mesh_obj(dir, "plate.obj", make_grid(20));
+    write_mesh_obj(dir, "wide.obj", make_grid(20), glm::vec3(3.0f, 1.0f, 1.0f));
     auto covered = [&](const std::string& model, glm::vec3 scale) {
         Scene scene;
         scene.base_dir = dir;
@@ -398,13 +395,9 @@ TEST_F(SceneObjects, AnUnequalScaleFramesTheObjectAsStoredScaled) {
     // 3). Turned, the box is wide in x and z and thin in y; unturned it would be thin in the matrix's z.
     const Mesh grid = make_grid(40);
     auto write_terrain = [&](const std::string& name, float height) {
-        std::ostringstream obj;
-        obj.precision(9);
-        for (const glm::vec3& p : grid.positions)
-            obj << "v " << p.x << ' ' << p.y << ' ' << height * 0.1f * std::sin(6.0f * p.x) * std::cos(5.0f * p.y) << '\n';
-        for (size_t t = 0; t < grid.triangle_count(); ++t)
-            obj << "f " << grid.indices[3 * t] + 1 << ' ' << grid.indices[3 * t + 1] + 1 << ' ' << grid.indices[3 * t + 2] + 1 << '\n';
-        write_text(dir / name, obj.str());
+        write_mesh_obj(dir, name, grid, [&](const glm::vec3& p) {
+            return glm::vec3(p.x, p.y, height * 0.1f * std::sin(6.0f * p.x) * std::cos(5.0f * p.y));
+        });
     };
     write_terrain("terrain.obj", 1.0f);
     write_terrain("tall.obj", 3.0f);
@@ -442,17 +435,9 @@ TEST_F(SceneObjects, AnUnequalScaleFramesTheObjectAsStoredScaled) {
 TEST_F(SceneObjects, LinesAreAsWideOnAModelOfAnySize) {
     auto dir = test::temp_dir("scene-line-units");
     const Mesh sphere = make_icosphere(3);
-    auto write_obj = [&](const std::string& name, float scale) {
-        std::ostringstream obj;
-        obj.precision(9);
-        for (const glm::vec3& p : sphere.positions) obj << "v " << p.x * scale << ' ' << p.y * scale << ' ' << p.z * scale << '\n';
-        for (size_t t = 0; t < sphere.triangle_count(); ++t)
-            obj << "f " << sphere.indices[3 * t] + 1 << ' ' << sphere.indices[3 * t + 1] + 1 << ' ' << sphere.indices[3 * t + 2] + 1 << '\n';
-        write_text(dir / name, obj.str());
-    };
     auto dark = [&](float scale) {
         const std::string name = "sphere_" + std::to_string(scale) + ".obj";
-        write_obj(name, scale);
+        write_mesh_obj(dir, name, sphere, glm::vec3(scale));
         Scene scene;
         scene.base_dir = dir;
         SceneObject object;

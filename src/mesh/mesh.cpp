@@ -146,11 +146,8 @@ Stretch stretch_of(const glm::mat4& model) {
 // The farthest image of the box's corners from `centre`.
 float farthest_corner(const Bounds& box, const glm::mat4& model, const glm::vec3& centre) {
     float farthest = 0.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
-                          (corner & 4) ? box.max.z : box.min.z);
-        farthest = std::max(farthest, glm::length(glm::vec3(model * glm::vec4(p, 1.0f)) - centre));
-    }
+    for (int corner = 0; corner < 8; ++corner)
+        farthest = std::max(farthest, glm::length(glm::vec3(model * glm::vec4(box.corner(corner), 1.0f)) - centre));
     return farthest;
 }
 

@@ -13,6 +13,8 @@ struct Bounds {
     glm::vec3 min{0.0f};
     glm::vec3 max{0.0f};
     glm::vec3 center() const { return 0.5f * (min + max); }
+    // Corner i of 8: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::vec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
 };
 
 // Bounding sphere used for framing, silhouette thinning (paper §3.1) and the reference scale

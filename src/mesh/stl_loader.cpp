@@ -28,9 +28,14 @@ namespace {
 
 constexpr size_t kHeaderBytes = 84, kFacetBytes = 50;
 
+// A 32-bit little-endian word: the facet count, and the bits of each float.
+uint32_t read_u32(const char* at) {
+    return uint32_t(uint8_t(at[0])) | uint32_t(uint8_t(at[1])) << 8 | uint32_t(uint8_t(at[2])) << 16 |
+           uint32_t(uint8_t(at[3])) << 24;
+}
+
 float read_float(const char* at) {
-    uint32_t bits = uint32_t(uint8_t(at[0])) | uint32_t(uint8_t(at[1])) << 8 | uint32_t(uint8_t(at[2])) << 16 |
-                    uint32_t(uint8_t(at[3])) << 24;
+    const uint32_t bits = read_u32(at);
     float value;
     std::memcpy(&value, &bits, sizeof value);
     return value;
@@ -191,8 +196,7 @@ private:
 
 Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOptions& options) {
     if (bytes.size() >= kHeaderBytes) {
-        const uint64_t facets = uint32_t(uint8_t(bytes[80])) | uint32_t(uint8_t(bytes[81])) << 8 |
-                                uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
+        const uint64_t facets = read_u32(bytes.data() + 80);
         if (bytes.size() == kHeaderBytes + facets * kFacetBytes) return parse_binary(name, bytes, facets, options);
     }
     std::string_view text = bytes;
@@ -205,8 +209,7 @@ Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOption
     if (bytes.size() < kHeaderBytes)
         fail_file(name, "not an STL file: " + std::to_string(bytes.size()) + " bytes, shorter than a binary STL's 84-byte header" +
                             (first == "solid" ? std::string(" and not ASCII text (it holds a zero byte)") : std::string(", and no ASCII \"solid\"")));
-    const uint64_t facets = uint32_t(uint8_t(bytes[80])) | uint32_t(uint8_t(bytes[81])) << 8 |
-                            uint32_t(uint8_t(bytes[82])) << 16 | uint32_t(uint8_t(bytes[83])) << 24;
+    const uint64_t facets = read_u32(bytes.data() + 80);
     fail_file(name, "binary STL of " + std::to_string(bytes.size()) + " bytes, where its count of " + std::to_string(facets) +
                         " facets asks " + std::to_string(kHeaderBytes + facets * kFacetBytes) +
                         " (truncated, or not an STL file)");

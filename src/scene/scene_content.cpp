@@ -129,9 +129,7 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
         const glm::mat4 up = up_axis_rotation(scene.objects[i].params.up, objects[i].bounds.center);
         Bounds box{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
         for (int corner = 0; corner < 8; ++corner) {
-            const Bounds& b = objects[i].box;
-            const glm::vec3 p(glm::vec3(up * glm::vec4((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                                                       (corner & 4) ? b.max.z : b.min.z, 1.0f)));
+            const glm::vec3 p(up * glm::vec4(objects[i].box.corner(corner), 1.0f));
             box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
         }
         Sphere s = transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.to_matrix());
