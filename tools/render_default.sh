@@ -5,7 +5,11 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$STIPPLE_ROOT"
 third_party_config/install_deps.sh
-cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTIPPLE_BUILD_TESTS=OFF >/dev/null
+# A fresh tree builds the program alone; a developer's existing build-release keeps its own settings
+# (passing OFF there would drop the tests from the developer's next build).
+tests_option=()
+[ -f build-release/CMakeCache.txt ] || tests_option=(-DSTIPPLE_BUILD_TESTS=OFF)
+cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release "${tests_option[@]}" >/dev/null
 cmake --build build-release -j "$STIPPLE_JOBS" --target stipple
 out="${1:-stipple.png}"
 shift || true
