@@ -30,7 +30,7 @@ void add_splat_objects(StippleRenderer& renderer, const Scene& scene, const std:
         ObjectParams params = scene.objects[i].params;
         params.density_path = density_on_cpu(params.density_path) ? DensityPath::CpuSplat : DensityPath::Splat;
         if (outline_as_contours && params.silhouette_lines) params.contours = true;
-        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(), params,
+        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.drawing_matrix(), params,
                             objects[i].motion);
     }
     set_scene_time(renderer, scene, objects, scene_seconds);

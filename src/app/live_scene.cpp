@@ -54,7 +54,7 @@ std::vector<std::string> LiveScene::sync(double scene_seconds) {
             refused.push_back(e.what());
             wanted.density_path = renderer_.params(i).density_path = previous;
         }
-        renderer_.model(i) = scene_.objects[i].transform.to_matrix();
+        renderer_.model(i) = scene_.objects[i].transform.drawing_matrix();
     }
     set_scene_time(renderer_, scene_, data_, scene_seconds);
     return refused;
@@ -90,12 +90,12 @@ bool LiveScene::add_loaded(const std::string& path, ObjectData data, const Objec
     const bool moved_to_gpu = data.motion && density_on_cpu(object.params.density_path);
     if (moved_to_gpu) object.params.density_path = ObjectParams{}.density_path;
     if (!data_.empty()) {
-        float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.to_matrix()).radius;
+        float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.drawing_matrix()).radius;
         object.transform = placement_beside(bounds(), data.bounds, reference);
     }
     // The renderer first: if it refuses the object, the scene's lists must not hold it (the next frame
     // would ask the renderer for an object it does not have).
-    renderer_.add_object(upload, object.transform.to_matrix(), object.params);
+    renderer_.add_object(upload, object.transform.drawing_matrix(), object.params);
     scene_.objects.push_back(object);
     data_.push_back(std::move(data));
     generated_with_.push_back(object.params);

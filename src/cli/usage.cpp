@@ -165,7 +165,8 @@ View options (view also takes --yaw, --pitch, --distance, --light, --device and 
 Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
                 "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s or [x,y,z]}
-                             (or {"matrix": [16 numbers, column-major]}),
+                             (or {"matrix": [16 numbers, column-major]}; a negative axis scale,
+                             [-1, 1, 1], or a matrix of negative determinant draws the mirror image),
 )");
     // The parameters come from the one table (src/params/param_table.cpp): never retyped here.
     std::istringstream example(param_scene_example());

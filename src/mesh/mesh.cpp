@@ -116,6 +116,14 @@ Bounds compute_bounds(const Mesh& mesh) {
     return b;
 }
 
+Mesh reflected_through_origin(const Mesh& mesh) {
+    Mesh reflected = mesh;
+    for (glm::vec3& p : reflected.positions) p = -p;
+    for (glm::vec3& n : reflected.normals) n = -n;
+    for (size_t t = 0; t + 2 < reflected.indices.size(); t += 3) std::swap(reflected.indices[t + 1], reflected.indices[t + 2]);
+    return reflected;
+}
+
 namespace {
 
 // The linear part's stretch: its columns' length when it is a similarity (equal, orthogonal columns: then every

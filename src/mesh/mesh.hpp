@@ -72,6 +72,9 @@ inline constexpr float kMaxOffsetOverExtent = 1e5f;
 void validate_mesh(const Mesh& mesh);
 
 Bounds compute_bounds(const Mesh& mesh);
+// The mesh reflected through its origin (every position and normal negated) and re-wound, so that its faces
+// still face out: a mirroring scene transform draws this with a proper matrix (Transform::drawing_matrix).
+Mesh reflected_through_origin(const Mesh& mesh);
 Sphere compute_bounding_sphere(const Mesh& mesh);  // Ritter-style, contains every vertex
 // A sphere holding what `sphere` and `box` (two bounds of the same points) hold, after `model` (a similarity
 // or not): the sphere's image, its radius stretched by the model's largest stretch, and where the model

@@ -18,6 +18,14 @@ glm::mat4 Transform::to_matrix() const {
     return glm::scale(m, scale * axis_scale);
 }
 
+bool Transform::mirrors() const { return glm::determinant(glm::dmat3(to_matrix())) < 0.0; }
+
+glm::mat4 Transform::drawing_matrix() const {
+    const glm::mat4 m = to_matrix();
+    return mirrors() ? m * glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, -1, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 0, 0, 1))
+                     : m;
+}
+
 std::string Scene::model_path(size_t object) const {
     std::filesystem::path path = objects.at(object).model;
     if (path.is_absolute() || base_dir.empty()) return path.string();

@@ -23,7 +23,14 @@ struct Transform {
     glm::vec3 axis_scale{1.0f};  // one an axis on top of it ("scale": [x, y, z] in a scene file)
     std::optional<glm::mat4> matrix;  // when set it replaces the three above (column-major, like glTF)
 
-    glm::mat4 to_matrix() const;
+    glm::mat4 to_matrix() const;  // as written (what a saved scene keeps)
+    // A transform whose linear part has a negative determinant mirrors the object. The drawing needs every
+    // object's winding to face out (the depth pass keeps the faces facing the eye, the toon ramp and the
+    // contours read the normals), so a mirrored object's mesh is stored reflected through its origin and
+    // re-wound (reflected_object), and drawn with this matrix: to_matrix() times that reflection, a
+    // proper transform that puts every point where to_matrix() puts the stored model's.
+    bool mirrors() const;
+    glm::mat4 drawing_matrix() const;
 };
 
 // What an animated model plays (glTF animations, issue 16): scene files' "animation" field, and

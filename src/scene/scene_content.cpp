@@ -26,11 +26,17 @@ using GenerationKey = std::pair<std::string, std::vector<double>>;
     fail_file(scene.source, "objects[" + std::to_string(i) + "]." + field + ": " + e.what());
 }
 
+// What an object's mesh is: its model, reflected where its transform mirrors it (a mirrored copy and the
+// model itself are two meshes, with two sets of stipples).
+std::string mesh_key(const Scene& scene, size_t i) {
+    return scene.objects[i].transform.mirrors() ? scene.model_path(i) + "\n(mirrored)" : scene.model_path(i);
+}
+
 }  // namespace
 
 SceneContent load_scene_models(const Scene& scene) {
     SceneContent content;
-    std::map<std::string, ObjectData> models;
+    std::map<std::string, ObjectData> models;  // by mesh_key
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const std::string path = scene.model_path(i);
         validate_params(scene.objects[i].params);
@@ -44,6 +50,15 @@ SceneContent load_scene_models(const Scene& scene) {
             object = found->second;
         } catch (const Error& e) {
             fail_in_scene(scene, i, "model", e);
+        }
+        if (scene.objects[i].transform.mirrors()) {
+            try {
+                auto found = models.find(mesh_key(scene, i));
+                if (found == models.end()) found = models.emplace(mesh_key(scene, i), reflected_object(object)).first;
+                object = found->second;
+            } catch (const Error& e) {
+                fail_in_scene(scene, i, "transform", e);
+            }
         }
         content.objects.push_back(std::move(object));
     }
@@ -81,7 +96,7 @@ void make_scene_stipples(const Scene& scene, SceneContent& content) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         ObjectData& object = content.objects[i];
         const GenerationParams& generation = scene.objects[i].params.generation;
-        const GenerationKey key{scene.model_path(i), generation_values(generation)};
+        const GenerationKey key{mesh_key(scene, i), generation_values(generation)};
         auto set = stipples.find(key);
         if (set == stipples.end()) {
             const auto start = Clock::now();
@@ -98,7 +113,7 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
     std::vector<uint64_t> planned;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const GenerationParams& generation = scene.objects[i].params.generation;
-        const GenerationKey key{scene.model_path(i), generation_values(generation)};
+        const GenerationKey key{mesh_key(scene, i), generation_values(generation)};
         auto found = counted.find(key);
         if (found == counted.end()) found = counted.emplace(key, planned_stipple_count(content.objects[i], generation)).first;
         planned.push_back(found->second);
@@ -132,7 +147,7 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
             const glm::vec3 p(up * glm::vec4(objects[i].box.corner(corner), 1.0f));
             box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
         }
-        Sphere s = transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.to_matrix());
+        Sphere s = transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.drawing_matrix());
         bounds = i == 0 ? s : merge_spheres(bounds, s);
     }
     return bounds;
@@ -141,7 +156,7 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
 void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects) {
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
     for (size_t i = 0; i < objects.size(); ++i)
-        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.to_matrix(),
+        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.drawing_matrix(),
                             scene.objects[i].params, objects[i].motion);
 }
 

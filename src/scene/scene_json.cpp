@@ -185,12 +185,8 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
         const glm::dvec3 lengths(glm::length(axes[0]), glm::length(axes[1]), glm::length(axes[2]));
         if (!(std::abs(glm::determinant(axes)) > 1e-6 * lengths.x * lengths.y * lengths.z))
             r.error(w, "the matrix is singular (it flattens the object)");
-        // A mirror turns every polygon's winding: the depth pass kept the far faces and the toon shading
-        // flipped every normal (a mirrored object drew inside out). A glTF file's own mirroring transforms
-        // are undone at load; here the model should be mirrored in its file.
-        else if (glm::determinant(axes) < 0.0)
-            r.error(w, "the matrix mirrors the object (its determinant is negative), which stipple does not draw: "
-                       "mirror the model in its file");
+        // A mirroring matrix (negative determinant) is drawn with the model reflected and re-wound
+        // (Transform::drawing_matrix).
         for (int c = 0; c < 3; ++c) {
             if (!(lengths[c] >= 1e-6 && lengths[c] <= 1e6)) {
                 r.error(w, "column " + std::to_string(c) + " scales its axis by " + printf_string("%g", lengths[c]) +
@@ -211,12 +207,13 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
     if (j.contains("scale") && j["scale"].is_array()) {
         // One scale an axis (a terrain's heights exaggerated: [1, 3, 1]): translate * rotate * scale, whose
         // unequal scales the drawing takes as a scene matrix's (README, "Unequal scales in a scene matrix").
+        // A negative one mirrors the object ([-1, 1, 1]: its mirror image across its x = 0 plane).
         const std::string w = Reader::field(where, "scale");
         const glm::vec3 axes = r.vec3(j["scale"], w);
         for (int c = 0; c < 3; ++c)
-            if (!(axes[c] >= 1e-6f) || axes[c] > 1e6f)
+            if (!(std::abs(axes[c]) >= 1e-6f) || std::abs(axes[c]) > 1e6f)
                 r.error(w, std::string("the ") + "xyz"[c] + " axis's scale " + printf_string("%g", double(axes[c])) +
-                               " must be in [1e-6, 1e6]");
+                               " must be in [1e-6, 1e6], or in [-1e6, -1e-6] to mirror that axis");
         t.axis_scale = axes;
         return t;
     }
@@ -224,7 +221,10 @@ Transform read_transform(const json& j, const Reader& r, const std::string& wher
         t.scale = r.number(j["scale"], Reader::field(where, "scale"));
         // Below 1e-6 a model of unit size approaches the denormals its drawing multiplies into (1e-16 drew a
         // black silhouette, 1e-30 nothing).
-        if (!(t.scale >= 1e-6f) || t.scale > 1e6f) r.error(Reader::field(where, "scale"), "must be in [1e-6, 1e6]");
+        if (!(t.scale >= 1e-6f) || t.scale > 1e6f)
+            r.error(Reader::field(where, "scale"), t.scale < 0.0f ? "must be in [1e-6, 1e6] (to mirror the object, scale one "
+                                                                    "axis: [-1, 1, 1])"
+                                                                  : "must be in [1e-6, 1e6]");
     }
     return t;
 }

@@ -61,6 +61,19 @@ ObjectData load_model_data(const std::string& path) {
     return object;
 }
 
+ObjectData reflected_object(const ObjectData& model) {
+    STIPPLE_CHECK(model.mesh != nullptr, "a loaded model");
+    if (model.motion)
+        fail_file(model.mesh->source, "is animated, and an animated model cannot be mirrored (its joints move the "
+                                      "stored mesh): mirror it in its file");
+    ObjectData reflected;
+    reflected.mesh = std::make_shared<const Mesh>(reflected_through_origin(*model.mesh));
+    reflected.bounds = {-model.bounds.center, model.bounds.radius};
+    reflected.box = {-model.box.max, -model.box.min};
+    reflected.load_seconds = model.load_seconds;
+    return reflected;
+}
+
 std::shared_ptr<const StippleSet> make_stipples(const Mesh& mesh, const GenerationParams& generation,
                                                 StippleSource source, std::span<const float> headroom) {
     GenerationParams params = generation;

@@ -37,6 +37,10 @@ std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* s
 // (load_animated_model and measure_headroom). A glTF file with animations, skins or morph weights is
 // drawn from the animated loader's rest mesh (its rest pose), any other model from load_mesh_for_drawing.
 ObjectData load_model_data(const std::string& path);
+// A static model reflected through its origin for a mirroring scene transform (reflected_through_origin; its
+// bounds the reflection of the model's, exactly, so that the up-axis turn about their centre commutes with
+// it); no stipples yet. An animated model is refused: its joints move the stored rest mesh.
+ObjectData reflected_object(const ObjectData& model);
 
 // The stipples of `mesh` for `generation` (the progress flag is set here from the mesh's size);
 // `headroom`: an animated model's (generate_stipples).
