@@ -9,6 +9,7 @@
 //     are already the visible parts, so a line is never nibbled by the surface it lies on.
 #include <algorithm>
 #include <cstring>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "gpu/pipelines.hpp"
@@ -144,6 +145,11 @@ StippleRenderer::LinePieces StippleRenderer::read_line_pieces(size_t object) con
     result.pieces.resize(stored);
     if (stored > 0)  // memcpy to no storage is undefined even for 0 bytes
         std::memcpy(result.pieces.data(), bytes.data() + sizeof header, stored * sizeof(gpu::LinePiece));
+    // Appended in whatever order the lanes finish: by edge, then along it, the same frame lists the same pieces in
+    // the same order (what vector output chains them from).
+    std::sort(result.pieces.begin(), result.pieces.end(), [](const gpu::LinePiece& a, const gpu::LinePiece& b) {
+        return std::tie(a.edge, a.kind, a.ax, a.ay, a.bx, a.by) < std::tie(b.edge, b.kind, b.ax, b.ay, b.bx, b.by);
+    });
     return result;
 }
 

@@ -219,6 +219,11 @@ std::vector<gpu::VisibleStipple> StippleRenderer::read_visible_stipples(size_t i
     std::vector<gpu::VisibleStipple> visible(header.count);
     if (!visible.empty())  // memcpy from or to no storage is undefined even for 0 bytes
         std::memcpy(visible.data(), bytes.data() + sizeof header, sizeof(gpu::VisibleStipple) * visible.size());
+    // The splat appends them in whatever order its lanes finish: in candidate order, the same command lists the
+    // same stipples in the same order (the plot's chance-drawn least marks are drawn per dot in that order; a
+    // tick plot's dot count varied from run to run).
+    std::sort(visible.begin(), visible.end(),
+              [](const gpu::VisibleStipple& a, const gpu::VisibleStipple& b) { return a.index < b.index; });
     return visible;
 }
 
