@@ -39,9 +39,9 @@ void draw_dots(cairo_t* cr, const PlotLayer& layer, DotStyle style) {
     cairo_new_path(cr);
     for (const PlotDot& dot : layer.dots) {
         if (style == DotStyle::Tick) {
-            const double length = tick_length(dot.radius_mm, layer.stroke_mm);
-            cairo_move_to(cr, dot.mm.x - length / 2.0, dot.mm.y);
-            cairo_rel_line_to(cr, length, 0.0);
+            const std::array<glm::dvec2, 2> ends = dot_stroke_ends(dot, style, layer.stroke_mm);
+            cairo_move_to(cr, ends[0].x, ends[0].y);
+            cairo_line_to(cr, ends[1].x, ends[1].y);
             continue;
         }
         const double r = style == DotStyle::Filled ? dot.radius_mm : circle_stroke_radius(dot.radius_mm, layer.stroke_mm);

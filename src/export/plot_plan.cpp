@@ -7,6 +7,8 @@
 #include <numbers>
 #include <optional>
 
+#include <glm/geometric.hpp>
+
 #include "core/error.hpp"
 #include "core/hash.hpp"
 #include "export/drawing_fit.hpp"
@@ -52,6 +54,12 @@ double least_mark_radius(DotStyle style, double pen_mm) {
 }
 
 double circle_stroke_radius(double radius_mm, double pen_mm) { return std::max(radius_mm - pen_mm / 2.0, pen_mm / 4.0); }
+
+std::array<glm::dvec2, 2> dot_stroke_ends(const PlotDot& dot, DotStyle style, double pen_mm) {
+    if (style != DotStyle::Tick) return {dot.mm, dot.mm};
+    const glm::dvec2 half(tick_length(dot.radius_mm, pen_mm) / 2.0, 0.0);
+    return dot.reversed ? std::array<glm::dvec2, 2>{dot.mm + half, dot.mm - half} : std::array<glm::dvec2, 2>{dot.mm - half, dot.mm + half};
+}
 
 double tick_length(double radius_mm, double pen_mm) {
     if (!(pen_mm > 0.0)) return kMinTickMm;
@@ -155,7 +163,13 @@ PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indice
     }
     layer.dots.reserve(order.size());
     for (const uint32_t k : order) layer.dots.push_back({points[k], radius_mm[k], object, drawing.dots[dot_indices[k]].polygon});
-    if (!layer.dots.empty()) pen = layer.dots.back().mm;
+    // A tick is drawn from its end nearer the pen: drawn all one way, the pen crossed back over each tick before
+    // travelling on (the spot's pen-up travel 15% longer, a scene of 37k ticks' 1.5 times).
+    for (PlotDot& dot : layer.dots) {
+        const std::array<glm::dvec2, 2> ends = dot_stroke_ends(dot, plan.dot_style, pen_mm);
+        dot.reversed = plan.dot_style == DotStyle::Tick && glm::length(ends[1] - pen) < glm::length(ends[0] - pen);
+        pen = dot_stroke_ends(dot, plan.dot_style, pen_mm)[1];
+    }
     return layer;
 }
 

@@ -19,6 +19,7 @@
 // page). Such a dot is drawn as the least mark with the chance of its share of that mark's ink, decided by
 // a hash of the dot, as the paper's probabilistic polygon selection does for polygons under a stipple's
 // area (§2.3): the same ink in expectation. Filled dots are drawn at any size.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -72,6 +73,7 @@ struct PlotDot {
     glm::dvec2 mm{0.0};
     double radius_mm = 0.0;  // ink radius: radius_px * mm_per_px * sqrt(intensity)
     uint32_t object = 0, polygon = 0;
+    bool reversed = false;  // tick style: drawn right to left, from its end nearer where the pen was
 };
 
 struct PlotLayer {
@@ -107,6 +109,9 @@ double circle_stroke_radius(double radius_mm, double pen_mm);
 // kMinTickMm so that every driver lowers the pen.
 double tick_length(double radius_mm, double pen_mm);
 constexpr double kMinTickMm = 0.02;
+// Where the pen goes down for a dot and where it lifts: a tick's two ends (horizontal, through the centre, in
+// the order PlotDot::reversed says), a filled disc's or circle's centre (the driver's own start on it).
+std::array<glm::dvec2, 2> dot_stroke_ends(const PlotDot& dot, DotStyle style, double pen_mm);
 // The ink radius of the least mark a pen of width pen_mm makes for a dot (the radius of a disc of its ink):
 // a circle's ring inks no less than a disc of radius 3/4 of the pen (its centre line at pen/4), a tick no
 // shorter than kMinTickMm; 0 for filled dots, which are drawn at any size.

@@ -44,11 +44,12 @@ PlotStats plot_stats(const PlotPlan& plan) {
     glm::dvec2 pen = plan.home;
     for (const PlotLayer& layer : plan.layers) {
         for (size_t i = 0; i < layer.dots.size(); ++i) {
-            const double move = glm::length(layer.dots[i].mm - pen);
-            stats.pen_up_mm += move;
-            if (i > 0) stats.dot_travel_mm += move;
+            const std::array<glm::dvec2, 2> ends = dot_stroke_ends(layer.dots[i], plan.dot_style, layer.stroke_mm);
+            stats.pen_up_mm += glm::length(ends[0] - pen);
+            // The order's own figure: between the dots' centres, as its lower bound is.
+            if (i > 0) stats.dot_travel_mm += glm::length(layer.dots[i].mm - layer.dots[i - 1].mm);
             stats.pen_down_mm += dot_pen_down(layer.dots[i], plan.dot_style, layer.stroke_mm);
-            pen = layer.dots[i].mm;
+            pen = ends[1];
         }
         stats.dots += layer.dots.size();
         stats.dot_travel_bound_mm += dot_travel_bound(layer.dots);

@@ -32,15 +32,13 @@ void append_dots(std::string& out, const PlotLayer& layer, DotStyle style, const
         append_layer_open(out, layer, stroke_style(ink, layer.stroke_mm));
         for (size_t i = 0; i < layer.dots.size(); ++i) {
             if (i % kTicksPerPath == 0) out += i == 0 ? "<path d=\"" : "\"/>\n<path d=\"";
-            const PlotDot& dot = layer.dots[i];
-            const double length = tick_length(dot.radius_mm, layer.stroke_mm);
-            // Centred on the dot, drawn left to right.
+            const std::array<glm::dvec2, 2> ends = dot_stroke_ends(layer.dots[i], style, layer.stroke_mm);
             out += 'M';
-            append_number(out, dot.mm.x - length / 2.0, kPlace);
+            append_number(out, ends[0].x, kPlace);
             out += ' ';
-            append_number(out, dot.mm.y, kPlace);
+            append_number(out, ends[0].y, kPlace);
             out += 'h';
-            append_number(out, length, kPlace);
+            append_number(out, ends[1].x - ends[0].x, kPlace);
             out += '\n';
         }
         if (!layer.dots.empty()) out += "\"/>\n";
@@ -99,7 +97,11 @@ void append_travel(std::string& out, const PlotPlan& plan) {
         out += '\n';
     };
     for (const PlotLayer& layer : plan.layers) {
-        for (const PlotDot& dot : layer.dots) move(dot.mm), pen = dot.mm;
+        for (const PlotDot& dot : layer.dots) {
+            const std::array<glm::dvec2, 2> ends = dot_stroke_ends(dot, plan.dot_style, layer.stroke_mm);
+            move(ends[0]);
+            pen = ends[1];
+        }
         for (const Polyline& line : layer.lines) {
             if (line.points.empty()) continue;
             move(line.points.front());
