@@ -34,15 +34,15 @@ double darkness(const Image& image, size_t x, size_t y) {
 struct InkPair {
     double screen = 0.0, print = 0.0;
 };
-InkPair ink_inside(const Image& screen, const Image& mask, const Image& page, int margin_px) {
-    const int dw = page.width - 2 * margin_px, dh = page.height - 2 * margin_px;
+// The screen image's place on the page: `dw` x `dh` pixels from (x0, y0).
+InkPair ink_inside(const Image& screen, const Image& mask, const Image& page, int x0, int y0, int dw, int dh) {
     std::vector<double> sum(size_t(screen.width) * screen.height, 0.0);
     std::vector<uint32_t> count(sum.size(), 0);
     for (int y = 0; y < dh; ++y) {
         const size_t sy = size_t(y) * size_t(screen.height) / size_t(dh);
         for (int x = 0; x < dw; ++x) {
             const size_t sx = size_t(x) * size_t(screen.width) / size_t(dw);
-            sum[sy * screen.width + sx] += darkness(page, size_t(x + margin_px), size_t(y + margin_px));
+            sum[sy * screen.width + sx] += darkness(page, size_t(x + x0), size_t(y + y0));
             ++count[sy * screen.width + sx];
         }
     }
@@ -59,6 +59,9 @@ InkPair ink_inside(const Image& screen, const Image& mask, const Image& page, in
     ink.screen /= double(covered);
     ink.print /= double(covered);
     return ink;
+}
+InkPair ink_inside(const Image& screen, const Image& mask, const Image& page, int margin_px) {
+    return ink_inside(screen, mask, page, margin_px, margin_px, page.width - 2 * margin_px, page.height - 2 * margin_px);
 }
 
 // A3 at 600 dpi with 10 mm margins: a 6543 x 9449 drawing, beyond the 4096-pixel tiles, so tiled.
@@ -188,6 +191,55 @@ TEST(CliPrint, AFittedDrawingIsCentredAndItsTilesHoldItsDots) {
     std::printf("64-px tiles: %zu of %zu inked pixels differ from one piece\n", differing, inked);
     EXPECT_GT(inked, 10000u);
     EXPECT_LE(double(differing), 0.001 * double(inked));
+}
+
+// --width gives the print's screen frame the shape of the screen image it should look like (it was refused, and the
+// frame took the page's shape: a wide scene's side objects were cut where the screen image held them whole). Two
+// blobbies side by side, close up, in a frame 2.5 times as wide as tall: with --fit frame the print is that screen
+// image enlarged until it fits the room, centred, on a page turned as the frame is; fitted to its drawing, the
+// drawing keeps the screen image's shape.
+TEST(CliPrint, AScreenFramesShapeIsKeptWithItsWidth) {
+    const auto dir = test::temp_dir("cli-print-width");
+    const std::string scene = (dir / "pair.json").string(), screen = (dir / "screen.png").string(),
+                      mask = (dir / "mask.png").string(), frame = (dir / "frame.png").string(), fitted = (dir / "fitted.png").string(),
+                      page_shaped = (dir / "page_shaped.png").string();
+    {
+        std::ofstream out(scene);
+        const std::string model = test::source_path("assets/blobby.glb");
+        out << "{\"objects\": [{\"model\": \"" << model << "\", \"transform\": {\"translate\": [-1.6, 0, 0]}}, {\"model\": \"" << model
+            << "\", \"transform\": {\"translate\": [1.6, 0, 0]}}], \"camera\": {\"distance\": 0.55}}\n";
+    }
+    const std::vector<std::string> shape = {"--width", "400", "--height", "160"};
+    std::vector<std::string> a = {"render", scene, "-o", screen, "--mask", mask}, b = {"render", scene, "--page", "A5", "--dpi", "100", "--fit", "frame", "-o", frame},
+                             c = {"render", scene, "--page", "A5", "--dpi", "100", "-o", fitted};
+    for (auto* args : {&a, &b, &c}) args->insert(args->end(), shape.begin(), shape.end());
+    run_ok(a);
+    const test::CommandResult r = test::run_stipple(b);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("A5 landscape"), std::string::npos) << r.out;
+    run_ok(c);
+    run_ok({"render", scene, "--page", "A5", "--dpi", "100", "--height", "160", "-o", page_shaped});
+    const Image s = read_png(screen), whole = read_png(frame), fit = read_png(fitted), old = read_png(page_shaped);
+    ASSERT_EQ(whole.width, 827);
+    const int margin = int(std::lround(10.0 * 100.0 / 25.4));
+    const double room_w = whole.width - 2 * margin, room_h = whole.height - 2 * margin;
+    const double scale = std::min(room_w / 400.0, room_h / 160.0);
+    const int dw = int(std::lround(400 * scale)), dh = int(std::lround(160 * scale));
+    const int x0 = margin + int(std::lround((room_w - dw) / 2)), y0 = margin + int(std::lround((room_h - dh) / 2));
+    const InkPair ink = ink_inside(s, read_png(mask), whole, x0, y0, dw, dh);
+    std::printf("the frame on the page: %dx%d at (%d, %d); mean ink inside the objects: screen %.4f, print %.4f\n", dw, dh, x0, y0,
+                ink.screen, ink.print);
+    EXPECT_GT(ink.screen, 0.05);
+    EXPECT_NEAR(ink.print / ink.screen, 1.0, 0.05);
+    // The drawing's box: on the screen, and on the fitted page (the same shape), where the page-shaped frame cuts it.
+    const InkBox on_screen = ink_box(s, 0), on_page = ink_box(fit, margin), cut = ink_box(old, margin);
+    const double screen_shape = double(on_screen.width()) / on_screen.height();
+    std::printf("drawing's box width over height: screen %.3f, fitted print %.3f, page-shaped frame %.3f\n", screen_shape,
+                double(on_page.width()) / on_page.height(), double(cut.width()) / cut.height());
+    EXPECT_GT(on_screen.x0, 2) << "the screen image holds both objects whole";
+    EXPECT_LT(on_screen.x1, s.width - 3);
+    EXPECT_NEAR(double(on_page.width()) / on_page.height(), screen_shape, 0.03 * screen_shape);
+    EXPECT_GT(std::max(on_page.width() / room_w, on_page.height() / room_h), 0.98);
 }
 
 // A print records its resolution (a pHYs chunk in pixels per metre), so that it prints at its page size;

@@ -101,7 +101,8 @@ std::optional<DrawnBox> box_of_drawing(const gpu::Context& context, StippleRende
 
 // The print's image and the part of it inside the margins, for a drawing fitted to its room: `box`, widened by
 // a pixel (a print's disc reaches past the screen's square by an eighth of its side), enlarged by the most that
-// fits, at most plot::kMostEnlargement times the frame's scale, and centred in the room. Where the box lies
+// fits, at most plot::kMostEnlargement times the scale at which the whole frame fits (the frame may have a shape
+// of its own, --width), and centred in the room. Where the box lies
 // against the frame's edge, the room would reach past the frame, which shows nothing there: the region drawn
 // is the part inside the image, placed `at` that far into the room, and the rest is paper.
 struct FittedPrint {
@@ -114,10 +115,12 @@ FittedPrint fit_to_room(const DrawnBox& box, VkExtent2D room) {
     const glm::dvec2 lo = glm::max(glm::dvec2(box.min) - 1.0, glm::dvec2(0.0));
     const glm::dvec2 hi = glm::min(glm::dvec2(box.max) + 1.0, frame);
     const glm::dvec2 size = hi - lo;
-    const double enlargement = std::clamp(std::min(frame.x / size.x, frame.y / size.y), 1.0, plot::kMostEnlargement);
+    const glm::dvec2 room_px(room.width, room.height);
+    const double whole = std::min(room_px.x / frame.x, room_px.y / frame.y);  // print pixels per screen pixel
+    const double scale = std::clamp(std::min(room_px.x / size.x, room_px.y / size.y), whole, plot::kMostEnlargement * whole);
     FittedPrint fitted;
-    fitted.image = {uint32_t(std::lround(room.width * enlargement)), uint32_t(std::lround(room.height * enlargement))};
-    const glm::dvec2 image(fitted.image.width, fitted.image.height), room_px(room.width, room.height);
+    fitted.image = {uint32_t(std::max(1L, std::lround(frame.x * scale))), uint32_t(std::max(1L, std::lround(frame.y * scale)))};
+    const glm::dvec2 image(fitted.image.width, fitted.image.height);
     const glm::dvec2 centre = 0.5 * (lo + hi) * image / frame;
     const glm::dvec2 origin = glm::round(centre - 0.5 * room_px);  // the room's corner in the image, maybe outside it
     const glm::dvec2 begin = glm::max(origin, glm::dvec2(0.0)), end = glm::min(origin + room_px, image);
@@ -149,18 +152,25 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     std::optional<VkRect2D> region;
     VkOffset2D at{0, 0};  // where the drawn region goes in the room
     if (fitted_drawing) *fitted_drawing = false;
+    const VkExtent2D screen_extent = options.screen_width ? VkExtent2D{*options.screen_width, options.screen_height}
+                                                          : screen_frame(layout, options.screen_height);
+    auto fit = [&](const DrawnBox& box) {
+        const FittedPrint fitted = fit_to_room(box, layout.drawing_px);
+        print.extent = fitted.image;
+        print.detail_scale = float(fitted.image.height) / float(options.screen_height);
+        region = fitted.region;
+        at = fitted.at;
+    };
+    // A frame of its own shape, whole: enlarged until it fits the room, and centred.
+    if (options.fit == plot::Fit::Frame && options.screen_width) fit(DrawnBox{screen_extent, {0, 0}, {screen_extent.width, screen_extent.height}});
     if (options.fit == plot::Fit::Drawing) {
         FrameView screen = view;
-        screen.extent = screen_frame(layout, options.screen_height);
+        screen.extent = screen_extent;
         screen.detail_scale = 1.0f;
         if (const std::optional<DrawnBox> box = box_of_drawing(context, renderer, screen, options.max_tile)) {
             // The frame's image enlarged, of which the drawing's box is drawn: the stipples and their discs are
             // those of the screen frame, as in a print of the whole frame.
-            const FittedPrint fitted = fit_to_room(*box, layout.drawing_px);
-            print.extent = fitted.image;
-            print.detail_scale = float(fitted.image.height) / float(options.screen_height);
-            region = fitted.region;
-            at = fitted.at;
+            fit(*box);
             if (fitted_drawing) *fitted_drawing = true;
         }
     }

@@ -38,6 +38,9 @@ struct PrintOptions {
     double margin_mm = 10.0;
     double dpi = 300.0;
     uint32_t screen_height = 1024;
+    // The screen frame's width (--width): the frame the camera composes, enlarged onto the page as vector output
+    // enlarges it. Absent: the frame takes the room inside the margins' shape.
+    std::optional<uint32_t> screen_width;
     uint32_t max_tile = 4096;
     // Drawing: what the screen frame draws (its pixels unlike the paper) is enlarged to fill the drawing's
     // room, at most plot::kMostEnlargement times (as vector output's --fit drawing); Frame: the whole frame.
@@ -63,7 +66,8 @@ struct DrawnBox {
 std::optional<DrawnBox> drawn_box(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                                   const FrameView& screen, uint32_t max_tile, double scene_seconds = 0.0);
 
-// `view`'s camera frames the drawing at its aspect; its extent, scale and tiling come from the layout.
+// `view`'s camera frames the drawing at its aspect (the screen frame's where PrintOptions::screen_width is set); its
+// extent, scale and tiling come from the layout.
 // `stats`, when given, receives the figures of the renderer that drew the print (render --stats), with
 // the drawn stipples counted: every tile draws the whole drawing's densities, so the counts are the
 // print's, and the GPU times are the last tile's.

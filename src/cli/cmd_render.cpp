@@ -191,13 +191,14 @@ int run_render(const std::vector<std::string>& argv) {
     }
     if (print && (args.has("--repeat") || args.has("--mask")))
         fail("--dpi renders a print image; --repeat and --mask are for screen images");
-    if (print && args.has("--width"))
-        fail("--width does not apply to a print image: its size follows --page and --dpi (--height sets the screen "
-             "drawing it enlarges)");
     long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
     if (width < 1 || width > 16384 || height < 1 || height > 16384)
         fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
              std::to_string(height) + ")");
+    // A print enlarges a screen frame of --height rows: --width gives it the shape of the screen image it should
+    // look like (the same composition as -o x.png or x.svg at that size); without it the frame takes the page's.
+    if (print && args.has("--width")) print->screen_width = uint32_t(width);
+    const bool print_of_page_shape = print && !print->screen_width;
     long long device = device_index(args);
     long long repeat = args.integer("--repeat", 0);
     if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
@@ -258,7 +259,7 @@ int run_render(const std::vector<std::string>& argv) {
     const bool animated = any_animated(content.objects);
     const AnimationClock clock = read_animation_clock(args, animated, !scene.camera_path.empty());
     float aspect = float(width) / float(height);
-    if (print) {
+    if (print_of_page_shape) {
         const VkExtent2D drawing = app::print_layout(*print).drawing_px;
         aspect = float(drawing.width) / float(drawing.height);
     }
@@ -338,17 +339,24 @@ int run_render(const std::vector<std::string>& argv) {
     // name leaves the orientation open, as vector output's is; the cameras then frame the turned page. The
     // drawing is judged in a square frame: in the page's own frame, a scene the camera crops (a camera closer
     // than framing) showed a tall part of itself in a portrait frame and stayed portrait.
+    // A frame of the screen's own shape (--width) is judged as it is: its drawing, or with --fit frame the frame.
     bool print_turned = false;
-    if (print && print->fit == plot::Fit::Drawing && !print->page.orientation_given) {
-        const uint32_t side = print->screen_height;
-        const OrbitCamera square = frame_cameras(scene, bounds, 1.0f, size_t(frames), orbit, animated)[0];
-        const FrameView first = scene_frame_view(scene, square, bounds, VkExtent2D{side, side});
-        if (const std::optional<app::DrawnBox> box = app::drawn_box(context, scene, content.objects, first, print->max_tile,
-                                                                    animated ? clock.frame_time(0) : 0.0)) {
-            const plot::PageSize turned = plot::oriented_for(print->page, box->max.x - box->min.x, box->max.y - box->min.y);
-            if (turned.width_mm != print->page.width_mm) {
-                print->page = turned;
-                print_turned = true;
+    if (print && !print->page.orientation_given) {
+        std::optional<plot::PageSize> turned;
+        if (print->fit == plot::Fit::Frame && print->screen_width) {
+            turned = plot::oriented_for(print->page, double(width), double(height));
+        } else if (print->fit == plot::Fit::Drawing) {
+            const VkExtent2D frame = print->screen_width ? extent : VkExtent2D{print->screen_height, print->screen_height};
+            const OrbitCamera camera = print->screen_width ? cameras[0] : frame_cameras(scene, bounds, 1.0f, size_t(frames), orbit, animated)[0];
+            const FrameView first = scene_frame_view(scene, camera, bounds, frame);
+            if (const std::optional<app::DrawnBox> box = app::drawn_box(context, scene, content.objects, first, print->max_tile,
+                                                                        animated ? clock.frame_time(0) : 0.0))
+                turned = plot::oriented_for(print->page, box->max.x - box->min.x, box->max.y - box->min.y);
+        }
+        if (turned && turned->width_mm != print->page.width_mm) {
+            print->page = *turned;
+            print_turned = true;
+            if (print_of_page_shape) {
                 const VkExtent2D drawing = app::print_layout(*print).drawing_px;
                 aspect = float(drawing.width) / float(drawing.height);
                 cameras = frame_cameras(scene, bounds, aspect, size_t(frames), orbit, animated);
@@ -372,7 +380,7 @@ int run_render(const std::vector<std::string>& argv) {
     double render_seconds = 0.0;
     for (size_t i = 0; i < cameras.size(); ++i) {
         // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
-        view = scene_frame_view(scene, cameras[i], bounds, print ? app::print_layout(*print).drawing_px : extent);
+        view = scene_frame_view(scene, cameras[i], bounds, print_of_page_shape ? app::print_layout(*print).drawing_px : extent);
         if (animated && !print && screen_frame) set_scene_time(renderer, scene, content.objects, clock.frame_time(i));
         auto render_start = std::chrono::steady_clock::now();
         if (print) {

@@ -112,7 +112,9 @@ Vector and print output (render):
   --dpi N                 with -o x.png and --page: a print-resolution page (50..2400 dpi) that looks
                           like the screen image enlarged: the same stipples, each a disc of the same
                           share of ink, as at --height pixels (default 1024) for the drawing's height;
-                          its size follows the page (--width does not apply), its dpi is in the PNG
+                          its size follows the page, its dpi is in the PNG. The screen frame it enlarges
+                          takes the page's shape, or with --width the screen image's (--width W
+                          --height H prints the composition of the W x H screen image)
   --tile N                print images are drawn in tiles of at most N pixels a side (default 4096)
 
   With several frames, -o (and --mask) must hold a frame number, %%d or %%0Nd: -o frames/%%04d.png
