@@ -166,6 +166,30 @@ TEST(CliExportLines, ACubesVisibleCreasesAreTwoStrokesDrawnOnce) {
     EXPECT_LE(points, 13u);
 }
 
+// A contour's visible pieces that meet with a gap narrower than the pen are one stroke: their round caps already
+// meet, and the pen was lifted and set down again within its own width (the default scene's contours at
+// 320 x 256: 31 strokes, 16 beginning that close to where the last one ended; 15 strokes now).
+TEST(CliExportLines, StrokesMeetingWithinThePensWidthAreOne) {
+    const auto dir = test::temp_dir("cli-export-lines-gaps");
+    const std::string svg = (dir / "blobby.svg").string();
+    const test::CommandResult r = test::run_stipple({"render", "--contours", "--width", "320", "--height", "256", "-o", svg});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.LoadFile(svg.c_str()), tinyxml2::XML_SUCCESS);
+    double width = 0.0;
+    for (const tinyxml2::XMLElement* g = doc.RootElement()->FirstChildElement("g"); g; g = g->NextSiblingElement("g"))
+        if (const char* label = g->Attribute("inkscape:label"); label && std::string(label).find(" lines") != std::string::npos)
+            width = g->DoubleAttribute("stroke-width");
+    const std::vector<Path> paths = line_paths(svg);
+    size_t close = 0;
+    for (size_t i = 1; i < paths.size(); ++i)
+        close += !paths[i - 1].closed && !paths[i].closed && glm::distance(paths[i - 1].points.back(), paths[i].points.front()) < width;
+    std::printf("%zu strokes of a %.3f mm pen, %zu beginning within its width of where the last ended\n", paths.size(), width, close);
+    ASSERT_GT(width, 0.0);
+    EXPECT_GT(paths.size(), 3u);
+    EXPECT_EQ(close, 0u);
+}
+
 // A sphere's contour is one closed loop: one closed path, as long as the circle it outlines.
 TEST(CliExportLines, ASpheresContourIsOneClosedPath) {
     const std::vector<Path> paths = render_lines("sphere", make_icosphere(4), {"--contours", "--yaw", "20", "--pitch", "10"});

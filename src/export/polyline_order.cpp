@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 
+#include <glm/geometric.hpp>
+
 #include "export/nearest_alive_grid.hpp"
 
 namespace stipple::plot {
@@ -47,6 +49,24 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen) {
         ordered.push_back(std::move(line));
     }
     lines = std::move(ordered);
+}
+
+void join_close_strokes(std::vector<Polyline>& lines, double gap_mm) {
+    std::vector<Polyline> joined;
+    joined.reserve(lines.size());
+    for (Polyline& line : lines) {
+        if (line.points.empty()) continue;
+        if (!joined.empty()) {
+            Polyline& last = joined.back();
+            if (!last.closed && !line.closed && glm::length(line.points.front() - last.points.back()) < gap_mm) {
+                const bool same_point = line.points.front() == last.points.back();
+                last.points.insert(last.points.end(), line.points.begin() + (same_point ? 1 : 0), line.points.end());
+                continue;
+            }
+        }
+        joined.push_back(std::move(line));
+    }
+    lines = std::move(joined);
 }
 
 }  // namespace stipple::plot

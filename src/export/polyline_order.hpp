@@ -15,4 +15,9 @@ namespace stipple::plot {
 // Reorders (and reverses or rotates) `lines` in place; `pen` moves to where the last one ends.
 void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen);
 
+// Strokes in plotting order whose gap (from where one ends to where the next starts) is narrower than `gap_mm`
+// are made one: with the pen's width as the gap, their round caps already meet, so the pen stays down across it
+// and the ink is the same. A closed stroke is neither joined nor joined to.
+void join_close_strokes(std::vector<Polyline>& lines, double gap_mm);
+
 }  // namespace stipple::plot
