@@ -388,6 +388,36 @@ TEST(RepeatedFaces, ExactRepeatsAreDroppedAndReversedCopiesKept) {
     EXPECT_EQ(loaded.winding.parts, 1u);
 }
 
+// A triangle two of whose corners lie at one place (a a b, or two vertices of one position) has no area and no
+// edge of its own: it is dropped at load. Kept, its edges counted as faces' edges: creases fanned over a smooth
+// sphere from its pole, and each split its part in the winding repair (5,952 parts on a UV sphere).
+TEST(RepeatedFaces, TrianglesWithTwoCornersAtOnePlaceAreDropped) {
+    Mesh sphere = make_icosphere(3);
+    const size_t clean = sphere.triangle_count();
+    const uint32_t extra = uint32_t(sphere.positions.size());
+    for (size_t t = 0; t < clean; t += 4) {
+        const uint32_t a = sphere.indices[3 * t], b = sphere.indices[3 * t + 1];
+        sphere.indices.insert(sphere.indices.end(), {a, a, b});  // one index twice
+    }
+    for (size_t t = 2; t < clean; t += 4) {  // a second vertex at a corner's place
+        const uint32_t a = sphere.indices[3 * t], b = sphere.indices[3 * t + 1];
+        sphere.positions.push_back(sphere.positions[a]);
+        sphere.normals.push_back(sphere.normals[a]);
+        sphere.indices.insert(sphere.indices.end(), {a, b, uint32_t(sphere.positions.size() - 1)});
+    }
+    ASSERT_GT(sphere.positions.size(), extra);
+    const size_t added = sphere.triangle_count() - clean;
+    const auto dir = test::temp_dir("degenerate_faces");
+    write_file((dir / "sphere.obj").string(), test::obj_text(sphere));
+    const Mesh loaded = load_mesh((dir / "sphere.obj").string());
+    std::printf("%zu triangles with two corners at one place added to %zu: %zu loaded, %zu dropped, %zu part(s)\n", added, clean,
+                loaded.triangle_count(), loaded.duplicates_dropped, loaded.winding.parts);
+    EXPECT_EQ(loaded.triangle_count(), clean);
+    EXPECT_EQ(loaded.duplicates_dropped, added);
+    EXPECT_EQ(loaded.winding.parts, 1u);
+    EXPECT_EQ(loaded.winding.triangles_turned, 0u);
+}
+
 // A sheet made two-sided by a reversed copy on the same vertices: the computed normals of the two sides
 // summed to nothing at every vertex (+Z everywhere, what the toon ramp then read) until 2026-12-04. Each
 // such vertex is now split, one copy for the side turned away, so each side is smooth and faces its own

@@ -141,7 +141,8 @@ int run_info(const std::vector<std::string>& argv) {
         std::printf("surface area:        %.6g\n", area);
         std::printf("winding:             %s\n", describe_winding(mesh.winding).c_str());
         if (mesh.duplicates_dropped > 0)
-            std::printf("repeated faces:      %zu dropped (the same corners in the same order as an earlier face)\n",
+            std::printf("repeated faces:      %zu dropped (the same corners in the same order as an earlier face, or two "
+                        "corners at one place)\n",
                         mesh.duplicates_dropped);
         if (!mesh.decoded.empty()) std::printf("decoded:             %s\n", mesh.decoded.c_str());
         std::printf("bounds:              (%.6g, %.6g, %.6g) .. (%.6g, %.6g, %.6g)\n", bounds.min.x, bounds.min.y,

@@ -42,7 +42,7 @@ struct Mesh {
     std::vector<glm::vec3> normals;    // one per vertex, unit length (computed when the file has none)
     std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
     WindingRepair winding;             // set by load_mesh
-    size_t duplicates_dropped = 0;     // set by load_mesh (drop_duplicate_triangles)
+    size_t duplicates_dropped = 0;     // set by load_mesh (drop_duplicate_triangles: repeats, and two corners at one place)
     bool normals_computed = false;     // a reader computed some normals (a glTF primitive without them): not the file's
     std::string decoded;               // set by the glTF loader: the storage extensions it decoded, for `info`
 

@@ -96,6 +96,12 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
     // every pair of a bucket took 8 s for one polygon of 100k corners fanned around its first corner.)
     std::vector<uint8_t> repeat(triangles, 0);
     size_t dropped = 0;
+    for (size_t t = 0; t < triangles; ++t) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        if (i[0] >= n || i[1] >= n || i[2] >= n) continue;
+        const uint32_t a = corner[i[0]], b = corner[i[1]], c = corner[i[2]];
+        if (a == b || b == c || a == c) repeat[t] = 1, ++dropped;
+    }
     const auto order = [](const Rest& x, const Rest& y) {
         return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
     };
@@ -103,7 +109,8 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
         if (first[v + 1] - first[v] < 2) continue;
         std::sort(buckets.begin() + first[v], buckets.begin() + first[v + 1], order);
         for (uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
-            if (buckets[i].second == buckets[i - 1].second && buckets[i].third == buckets[i - 1].third)
+            if (buckets[i].second == buckets[i - 1].second && buckets[i].third == buckets[i - 1].third &&
+                !repeat[buckets[i].triangle])
                 repeat[buckets[i].triangle] = 1, ++dropped;
     }
     if (dropped == 0) return 0;

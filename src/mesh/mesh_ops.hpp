@@ -24,8 +24,10 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 // Drops every triangle that repeats an earlier one: the same corners (welded by position) in the same
 // cyclic order. Broken exports double whole surfaces, and each copy would get its own stipples at the same
 // depth: twice the tone. A copy wound the other way is kept (a sheet made two-sided by a reversed copy
-// shows its front from either side). Keeps the first of each and the order of the rest; returns how many
-// were dropped. Indices beyond the positions are left for validate_mesh to report.
+// shows its front from either side). Also drops every triangle two of whose corners lie at one place (a a b):
+// it has no area and no edge of its own, but its edges, counted as faces' edges, drew creases fanning over a
+// smooth surface and split its part in the winding repair. Keeps the first of each and the order of the
+// rest; returns how many were dropped. Indices beyond the positions are left for validate_mesh to report.
 size_t drop_duplicate_triangles(Mesh& mesh);
 // The same with the corners already welded (weld_by_position of mesh.positions).
 size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners);
