@@ -157,7 +157,7 @@ TEST(CliTone, BadOptionsGetOneLine) {
              {{"--seeds", "1,x"}, "stipple: --seeds: 'x' is not a finite number\n"},
              {{"--seeds", "1.5"}, "stipple: --seeds: '1.5' is not a whole number in [0, 4294967295]\n"},
              {{"--seed", "2", "--seeds", "1,2"}, "stipple: give --seed or --seeds, not both\n"},
-             {{"--distances", "0"}, "stipple: --distances: 0 must be in (0, 10000]\n"},
+             {{"--distances", "0"}, "stipple: --distances: 0 must be in [0.0001, 10000]\n"},
              {{"--views", "30"}, "stipple: --views: '30' is not YAW:PITCH (degrees)\n"}}) {
         std::vector<std::string> argv{"tone"};
         argv.insert(argv.end(), args.begin(), args.end());

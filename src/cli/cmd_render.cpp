@@ -109,8 +109,10 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
     }
     if (args.has("--distance")) {
         double distance = args.number("--distance", 1.0);
-        if (!(float(distance) > 0.0f) || distance > 1e4)
-            fail("--distance = " + args.get("--distance", "") + " must be in (0, 10000]");
+        // Below 1e-4 of the framing distance the camera sits inside any model and the projection degenerates
+        // (--distance 1e-20 counted every candidate drawn on a blank frame).
+        if (!(distance >= 1e-4) || distance > 1e4)
+            fail("--distance = " + args.get("--distance", "") + " must be in [0.0001, 10000]");
         scene.camera.distance = float(distance);
         scene.camera.world_distance.reset();
     }
@@ -166,11 +168,13 @@ int run_render(const std::vector<std::string>& argv) {
     if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
     if (args.flag("--fill-paper") && plot::is_csv_path(output))
         fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
+    // The option and what it sets, in the refusals below.
+    const auto what_it_sets = [](const std::string& name) {
+        return name + (name == "--pen-width" ? " sets the pen of SVG or PDF output's lines and dots" : " sets how SVG or PDF output draws its dots");
+    };
     for (const char* name : {"--dot-style", "--pen-width"})
         if (args.has(name) && plot::is_csv_path(output))
-            fail(std::string(name) + (std::string(name) == "--pen-width" ? " sets the pen of SVG or PDF output's lines and dots"
-                                                                          : " sets how SVG or PDF output draws its dots") +
-                 "; a CSV (" + output + ") lists each dot's centre and ink radius");
+            fail(what_it_sets(name) + "; a CSV (" + output + ") lists each dot's centre and ink radius");
     if (args.flag("--show-travel") && !plot::is_svg_path(output))
         fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
     if (!vector && !print && args.has("--fit"))
@@ -178,15 +182,14 @@ int run_render(const std::vector<std::string>& argv) {
     if (!vector && !print) {
         for (const char* name : {"--page", "--margin"})
             if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
-        // As the refusals for CSV and print images say: these set how SVG or PDF output draws its dots only.
         for (const char* name : {"--pen-width", "--dot-style"})
-            if (args.has(name)) fail(std::string(name) + " sets how SVG or PDF output draws its dots: give -o x.svg or x.pdf");
+            if (args.has(name)) fail(what_it_sets(name) + ": give -o x.svg or x.pdf");
         if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a PNG has its paper");
     }
     if (print) {
         // A print image draws the stipples and lines as the screen does, at the page's resolution.
         for (const char* name : {"--pen-width", "--dot-style"})
-            if (args.has(name)) fail(std::string(name) + " sets how SVG or PDF output draws its dots; a print image (--dpi) draws them as the screen does");
+            if (args.has(name)) fail(what_it_sets(name) + "; a print image (--dpi) draws them as the screen does");
         if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a print image has its paper");
     }
     if (print && (args.has("--repeat") || args.has("--mask")))

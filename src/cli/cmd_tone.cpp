@@ -40,7 +40,7 @@ std::vector<float> parse_distances(const std::string& text) {
     std::vector<float> distances;
     for (const std::string& part : split_list("--distances", text)) {
         double d = parse_number(part, "--distances");
-        if (!(float(d) > 0.0f) || d > 1e4) fail("--distances: " + part + " must be in (0, 10000]");
+        if (!(d >= 1e-4) || d > 1e4) fail("--distances: " + part + " must be in [0.0001, 10000]");
         distances.push_back(float(d));
     }
     if (distances.empty() || distances.size() > 64) fail("--distances needs 1 to 64 comma-separated values");

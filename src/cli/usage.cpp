@@ -50,7 +50,8 @@ Render options:
   --mask PATH.png         also write the coverage mask (white where a surface covers the pixel)
   --width N, --height N   image size in pixels (default 1280 x 1024)
   --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)
-  --distance D            camera distance as a multiple of the framing distance (default 1 = framed)
+  --distance D            camera distance as a multiple of the framing distance (default 1 = framed;
+                          0.0001..10000)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), the

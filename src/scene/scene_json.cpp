@@ -281,7 +281,7 @@ SceneCamera read_camera(const json& j, const Reader& r, const std::string& where
         r.error(where, "give either distance (a multiple of the framing distance) or world_distance, not both");
     if (j.contains("distance")) {
         c.distance = r.number(j["distance"], Reader::field(where, "distance"));
-        if (!(c.distance > 0.0f) || c.distance > 1e4f) r.error(Reader::field(where, "distance"), "must be in (0, 10000]");
+        if (!(c.distance >= 1e-4f) || c.distance > 1e4f) r.error(Reader::field(where, "distance"), "must be in [0.0001, 10000]");
     }
     if (j.contains("world_distance")) {
         float d = r.number(j["world_distance"], Reader::field(where, "world_distance"));
