@@ -1,6 +1,7 @@
 #include "mesh/orientation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -231,9 +232,88 @@ double signed_volume(const Mesh& mesh) {
     return volume;
 }
 
+namespace {
+
+// For each triangle, the earlier triangle it reverses (the same welded corners in the other cyclic order), or
+// kUnassigned: a sheet made two-sided by a reversed copy. (Repeats in the same order were dropped before.)
+std::vector<uint32_t> reversed_twins(const Mesh& mesh, std::span<const uint32_t> corner) {
+    struct Key {
+        std::array<uint32_t, 3> sorted;
+        uint8_t odd;  // the corners' cyclic order against the sorted one
+        uint32_t triangle;
+    };
+    std::vector<Key> keys;
+    keys.reserve(mesh.triangle_count());
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        if (!indices_in_range(mesh, t)) continue;
+        const uint32_t a = corner[mesh.indices[3 * t]], b = corner[mesh.indices[3 * t + 1]], c = corner[mesh.indices[3 * t + 2]];
+        if (a == b || b == c || a == c) continue;
+        std::array<uint32_t, 3> s{a, b, c};
+        std::sort(s.begin(), s.end());
+        // (a, b, c) is an even rotation of the sorted order when it starts with some rotation of it.
+        const bool even = (a == s[0] && b == s[1]) || (a == s[1] && b == s[2]) || (a == s[2] && b == s[0]);
+        keys.push_back({s, uint8_t(even ? 0 : 1), uint32_t(t)});
+    }
+    std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) {
+        return x.sorted != y.sorted ? x.sorted < y.sorted : x.triangle < y.triangle;
+    });
+    std::vector<uint32_t> twin(mesh.triangle_count(), kUnassigned);
+    for (size_t i = 0; i < keys.size();) {
+        size_t end = i + 1;
+        while (end < keys.size() && keys[end].sorted == keys[i].sorted) ++end;
+        // The first of each order: a later one of the other order is its twin.
+        for (size_t j = i + 1; j < end; ++j)
+            if (keys[j].odd != keys[i].odd && twin[keys[i].triangle] == kUnassigned) {
+                twin[keys[j].triangle] = keys[i].triangle;
+                break;
+            }
+        i = end;
+    }
+    return twin;
+}
+
+WindingRepair orient_parts(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file);
+
+}  // namespace
+
 WindingRepair orient_consistently(Mesh& mesh) { return orient_consistently(mesh, weld_by_position(mesh.positions)); }
 
+// A sheet made two-sided by a reversed copy (an export's "double-sided"): every edge of it has four triangles,
+// so no edge joined two and each triangle was a part of its own, turned or not by the rounding of a volume of
+// nothing (8,594 of a curved sheet's 24,964 turned: both copies then faced one way in places, drawn twice, with
+// lines along every cell). The twins are set aside, the rest oriented, and each twin wound against its first.
 WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file) {
+    const std::vector<uint32_t> twin = reversed_twins(mesh, corners);
+    if (std::all_of(twin.begin(), twin.end(), [](uint32_t t) { return t == kUnassigned; }))
+        return orient_parts(mesh, corners, normals_from_file);
+    const size_t triangles = mesh.triangle_count();
+    Mesh kept;
+    kept.positions = std::move(mesh.positions);
+    kept.normals = std::move(mesh.normals);
+    std::vector<uint32_t> kept_at(triangles, kUnassigned);
+    for (size_t t = 0; t < triangles; ++t) {
+        if (twin[t] != kUnassigned) continue;
+        kept_at[t] = uint32_t(kept.triangle_count());
+        kept.indices.insert(kept.indices.end(), mesh.indices.begin() + 3 * t, mesh.indices.begin() + 3 * t + 3);
+    }
+    WindingRepair repair = orient_parts(kept, corners, normals_from_file);
+    mesh.positions = std::move(kept.positions);
+    mesh.normals = std::move(kept.normals);
+    // Turned where its first was turned (only corners 1 and 2 swap).
+    std::vector<uint8_t> turned(triangles, 0);
+    for (size_t t = 0; t < triangles; ++t) {
+        if (kept_at[t] == kUnassigned) continue;
+        turned[t] = kept.indices[3 * kept_at[t] + 1] != mesh.indices[3 * t + 1];
+        std::copy_n(kept.indices.begin() + 3 * kept_at[t], 3, mesh.indices.begin() + 3 * t);
+    }
+    for (size_t t = 0; t < triangles; ++t)
+        if (twin[t] != kUnassigned && turned[twin[t]]) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]), ++repair.triangles_turned;
+    return repair;
+}
+
+namespace {
+
+WindingRepair orient_parts(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file) {
     const size_t triangles = mesh.triangle_count();
     const Adjacency adjacency = manifold_adjacency(mesh, corners);
     WindingRepair repair;
@@ -385,6 +465,8 @@ WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners,
     }
     return repair;
 }
+
+}  // namespace
 
 size_t turn_normals_to_faces(Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size()) return 0;
