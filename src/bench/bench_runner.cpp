@@ -237,7 +237,9 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
         const std::shared_ptr<const StippleSet> generated = make_stipples(mesh, params.generation, StippleSource::Generate);
         const StippleSet& stipples = *generated;
         model.generation_seconds = stipples.generation_seconds;
-        const FrameView view = standard_view(compute_bounding_sphere(mesh), extent);
+        Sphere bounds = compute_bounding_sphere(mesh);
+        bounds.center += glm::vec3(mesh.origin);  // where the renderer puts it (object_to_world)
+        const FrameView view = standard_view(bounds, extent);
 
         count_frames(context, target, mesh, stipples, view, options, results.columns, model);
         log(printf_string("%s: %zu triangles (%s); load %.2f s, stipple generation %.2f s; %llu candidates, "

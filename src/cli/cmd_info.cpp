@@ -108,6 +108,7 @@ int run_info(const std::vector<std::string>& argv) {
     const Mesh& mesh = *object.mesh;
     const StippleSet& stipples = *object.stipples;
     Bounds bounds = compute_bounds(mesh);
+    bounds.min += glm::vec3(mesh.origin), bounds.max += glm::vec3(mesh.origin);  // in the file's coordinates
     double area = total_area(mesh);
     double stipples_per_second =
         stipples.generation_seconds > 0 ? stipples.size() / stipples.generation_seconds : 0.0;

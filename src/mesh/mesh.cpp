@@ -90,7 +90,10 @@ void validate_mesh(const Mesh& mesh) {
                       double(extent), double(kMinExtent));
         fail_file(source, text);
     }
-    const float offset = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+    // Where the file has it (a model stored about its own centre keeps its shape, but the drawing puts it back
+    // there in single precision: a sphere 1e7 times its size from the origin lost a tenth of its tone).
+    const glm::dvec3 flo = glm::dvec3(lo) + mesh.origin, fhi = glm::dvec3(hi) + mesh.origin;
+    const float offset = float(std::max({std::abs(flo.x), std::abs(flo.y), std::abs(flo.z), std::abs(fhi.x), std::abs(fhi.y), std::abs(fhi.z)}));
     if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
         char text[200];
         std::snprintf(text, sizeof(text),
@@ -116,8 +119,21 @@ Bounds compute_bounds(const Mesh& mesh) {
     return b;
 }
 
+glm::dvec3 far_origin(std::span<const glm::dvec3> positions) {
+    if (positions.empty()) return glm::dvec3(0.0);
+    glm::dvec3 lo(positions[0]), hi(positions[0]);
+    for (const glm::dvec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const glm::dvec3 size = hi - lo, centre = 0.5 * (lo + hi);
+    const double extent = std::max({size.x, size.y, size.z});
+    const double farthest = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+    if (!(extent > 0.0) || farthest > double(kMaxCoordinate)) return glm::dvec3(0.0);
+    const double offset = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    return offset > kRecentreOverExtent * extent ? centre : glm::dvec3(0.0);
+}
+
 Mesh reflected_through_origin(const Mesh& mesh) {
     Mesh reflected = mesh;
+    reflected.origin = -mesh.origin;
     for (glm::vec3& p : reflected.positions) p = -p;
     for (glm::vec3& n : reflected.normals) n = -n;
     for (size_t t = 0; t + 2 < reflected.indices.size(); t += 3) std::swap(reflected.indices[t + 1], reflected.indices[t + 2]);

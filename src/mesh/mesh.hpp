@@ -2,6 +2,7 @@
 // The one in-memory form of every model: an indexed triangle list in object space.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct Mesh {
     std::vector<glm::vec3> positions;  // one per vertex, finite
     std::vector<glm::vec3> normals;    // one per vertex, unit length (computed when the file has none)
     std::vector<uint32_t> indices;     // 3 per triangle, each < positions.size()
+    // Where the file puts the stored (0, 0, 0): a model far from its file's origin is stored about the centre of
+    // its box (far_origin), so that single precision keeps its shape; the drawing puts it back (object_to_world).
+    glm::dvec3 origin{0.0};
     WindingRepair winding;             // set by load_mesh
     size_t duplicates_dropped = 0;     // set by load_mesh (drop_duplicate_triangles: repeats, and two corners at one place)
     bool normals_computed = false;     // a reader computed some normals (a glTF primitive without them): not the file's
@@ -64,6 +68,14 @@ inline constexpr float kMinExtent = 1e-15f;
 // drawn with ~170 steps across (the shared spot moved 1e7 units away collapsed to a few points and drew
 // nothing).
 inline constexpr float kMaxOffsetOverExtent = 1e5f;
+// A model read in double precision (OBJ) whose box's centre lies farther than this many times its extent from
+// the file's origin is stored about that centre (Mesh::origin): at 1e4 times its size a sphere's stipples fell
+// on a lattice of float steps and its tone fell by a tenth, at 1e5 by half. Below it single precision keeps its
+// shape to 1e-5 of its size, and models near their origin keep their coordinates (and their stipples) exactly.
+inline constexpr double kRecentreOverExtent = 100.0;
+// The origin to store `positions` about (kRecentreOverExtent), or 0 where they are near their own; 0 too where a
+// coordinate lies beyond kMaxCoordinate (validate_mesh refuses the model).
+glm::dvec3 far_origin(std::span<const glm::dvec3> positions);
 
 // Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf or beyond
 // kMaxCoordinate, the model is less than kMinExtent across or lies beyond kMaxOffsetOverExtent times its size

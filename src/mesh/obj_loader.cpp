@@ -51,6 +51,22 @@ enum class Number { ok, not_a_number, too_large };
 // A decimal number as a float. Magnitudes below float's smallest read as that tiny value or zero (they
 // are a model's rounding, 1e-50); above its largest they are refused (too_large).
 // too_large sets `value` to the infinity of its sign.
+Number parse_float(std::string_view word, float& value);
+
+// A decimal number in double precision, refused (too_large) beyond float's range as parse_float refuses it.
+Number parse_coordinate(std::string_view word, double& value) {
+    float narrow = 0.0f;
+    const Number n = parse_float(word, narrow);
+    if (n != Number::ok) {
+        value = double(narrow);
+        return n;
+    }
+    if (word.size() > 1 && word.front() == '+') word.remove_prefix(1);
+    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (ec != std::errc() || ptr != word.data() + word.size()) value = double(narrow);  // below double's range: float's reading
+    return Number::ok;
+}
+
 Number parse_float(std::string_view word, float& value) {
     // from_chars refuses the sign strtod accepts (but "+-5" stays refused).
     if (word.size() > 1 && word.front() == '+' && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.'))
@@ -119,7 +135,11 @@ public:
             !normals_.empty() && std::none_of(corner_normal_.begin(), corner_normal_.end(), [](int32_t n) { return n < 0; });
         Mesh mesh;
         mesh.source = path_;
-        mesh.positions = std::move(positions_);
+        // In double as read, then about the model's own centre where it lies far from the file's origin.
+        mesh.origin = far_origin(positions_);
+        mesh.positions.reserve(positions_.size());
+        for (const glm::dvec3& p : positions_) mesh.positions.push_back(glm::vec3(p - mesh.origin));
+        std::vector<glm::dvec3>().swap(positions_);
         std::vector<int32_t> normal_of;  // the normal index that claimed each position, -1 while unused
         if (all_normals) {
             mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));  // +Z for unused positions
@@ -196,11 +216,11 @@ private:
 
     void vertex(std::string_view rest) {
         within_limit(positions_.size(), "vertices");
-        glm::vec3 p;
+        glm::dvec3 p;
         for (int axis = 0; axis < 3; ++axis) {
             const std::string_view word = next_word(rest);
             if (word.empty()) fail_file(path_, vertex_here() + " has fewer than 3 coordinates");
-            switch (parse_float(word, p[axis])) {
+            switch (parse_coordinate(word, p[axis])) {
                 case Number::ok: break;
                 case Number::not_a_number: fail_file(path_, vertex_here() + ": " + shown(word) + " is not a number");
                 case Number::too_large:
@@ -273,7 +293,8 @@ private:
     const std::string& path_;
     uint64_t limit_;
     size_t line_ = 0;  // the (first) line of the line being read
-    std::vector<glm::vec3> positions_, normals_;
+    std::vector<glm::dvec3> positions_;  // as read, in double: a model far from its origin keeps its shape
+    std::vector<glm::vec3> normals_;
     std::vector<uint32_t> corner_vertex_;  // 0-based, by corner, faces one after another
     std::vector<int32_t> corner_normal_;   // 0-based, -1 where the corner names none
     std::vector<size_t> face_end_;         // each face's end in the corner lists

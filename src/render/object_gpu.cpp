@@ -124,6 +124,7 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     object.polygons.corner_positions = upload.polygons.corner_positions;
     object.polygons.corner_indices = upload.polygons.corner_indices;
     object.polygons.bounds = upload.polygons.bounds;
+    object.polygons.origin = upload.polygons.origin;
     object.polygons.box_min = upload.polygons.box_min;
     object.polygons.box_size = upload.polygons.box_size;
     object.polygons.gpu = std::move(buffers[kPolygons]);
@@ -340,7 +341,11 @@ glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center) {
 }
 
 glm::mat4 object_to_world(const ObjectGpu& object) {
-    return object.model * up_axis_rotation(object.params.up, object.polygons.bounds.center);
+    // A model stored about its own centre (Mesh::origin) is put back where its file has it, before the scene's
+    // transform: the transform and the framing (ObjectData::bounds) read the file's coordinates.
+    glm::mat4 placed = object.model;
+    if (object.polygons.origin != glm::vec3(0.0f)) placed = glm::translate(placed, object.polygons.origin);
+    return placed * up_axis_rotation(object.params.up, object.polygons.bounds.center);
 }
 
 namespace {

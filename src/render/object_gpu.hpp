@@ -66,6 +66,7 @@ struct PolygonConstants {
     // generation framed in its reference view.
     Sphere bounds;
     glm::vec3 box_min{0.0f}, box_size{0.0f};  // object space: the box the centroids are quantised in (every pose)
+    glm::vec3 origin{0.0f};  // Mesh::origin: where the file puts object space's (0, 0, 0) (object_to_world)
     gpu::Buffer full_areas;  // animated objects: float per polygon, rest area x headroom; else a placeholder
 };
 

@@ -46,6 +46,7 @@ PolygonConstants compute_polygon_constants(const Mesh& mesh, const StippleSet& s
                                            const Bounds* quantisation_box) {
     PolygonConstants polygons;
     polygons.bounds = compute_bounding_sphere(mesh);
+    polygons.origin = glm::vec3(mesh.origin);
     const Bounds box = quantisation_box ? *quantisation_box : compute_bounds(mesh);
     polygons.box_min = box.min;
     polygons.box_size = box.max - box.min;

@@ -57,6 +57,9 @@ ObjectData load_model_data(const std::string& path) {
         object.mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
     }
     if (!object.motion) object.bounds = compute_bounding_sphere(*object.mesh), object.box = compute_bounds(*object.mesh);
+    // In the file's coordinates, as the scene's transform reads them (a model stored about its own centre).
+    const glm::vec3 origin(object.mesh->origin);
+    object.bounds.center += origin, object.box.min += origin, object.box.max += origin;
     object.load_seconds = seconds_since(start);
     return object;
 }

@@ -23,7 +23,7 @@ enum class StippleSource { Cache, Generate };
 // model (and, for stipples, the same generation parameters): a scene may show one model many times.
 struct ObjectData {
     std::shared_ptr<const Mesh> mesh;  // a glTF file's rest mesh (anim::AnimatedModel::rest)
-    Sphere bounds;  // object space; an animated model's holds every pose of every animation
+    Sphere bounds;  // the file's coordinates (Mesh::origin added); an animated model's holds every pose of every animation
     Bounds box;     // the same points' box (scene framing under a matrix that scales axes unequally)
     std::shared_ptr<const StippleSet> stipples;
     anim::Motion motion;  // a glTF file with an animation: what moves it and its stretch headroom
