@@ -78,6 +78,21 @@ TEST(AnimStretch, BendingCylinderAgainstADenseHandSweep) {
     EXPECT_LT(report.min_ratio, 0.9f);  // the inside is squeezed
 }
 
+// Two vertices at one place at rest, which a morph target pulls apart: the triangle they collapse is kept in the
+// rest mesh (a static model's is dropped at load: it has no area and draws creases), else the animation opened
+// a hole where it grew (the quad drew half its square).
+TEST(AnimStretch, ATriangleCollapsedAtRestIsKeptForTheAnimationToOpen) {
+    GltfBuilder quad = rigs::morphed_quad();
+    quad.doc["nodes"][0]["weights"] = {0.0, 0.0};
+    const int base = quad.add_floats({0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");  // vertex 2 on vertex 1
+    const int lift = quad.add_floats({0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0}, "VEC3");
+    quad.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = base;
+    quad.doc["meshes"][0]["primitives"][0]["targets"][0]["POSITION"] = lift;
+    const AnimatedModel model = load_rig(quad, "anim_stretch_collapsed", "collapsed");
+    EXPECT_EQ(model.rest.triangle_count(), 2u) << "the collapsed triangle was dropped";
+    EXPECT_EQ(measure_headroom(model).opened_triangles, 1u);
+}
+
 // A polygon of no area at rest has no candidates: its ratio (5e-41 at rest, 0.5 posed) went beyond float
 // range and info printed "infx" (inf in --json). It reports 1 and is counted as opened, which info says.
 TEST(AnimStretch, APolygonOfNoAreaAtRestIsCountedAsOpenedNotAsInfiniteStretch) {

@@ -510,15 +510,17 @@ TEST_F(SceneObjects, AModelFarFromItsOriginKeepsItsShape) {
 // A mirroring transform draws the model's mirror image: the same drawing as the mirror image stored in a file
 // (it was refused; drawn with the model's own winding it came out inside out: the depth pass kept the far faces,
 // the toon ramp and the contours read the normals reversed). An egg, wide on one side, so that a mirror is not
-// the model; turned Z-up too (the up axis turns the model about its centre before the transform).
+// the model; turned Z-up too (the up axis turns the model about its centre before the transform), mirrored there
+// across the world's z = 0 plane, which the turn makes the file's y: a mirror that does not commute with the turn.
 TEST_F(SceneObjects, AMirroringTransformDrawsTheMirrorImage) {
     auto dir = test::temp_dir("scene-mirror");
     Mesh egg = make_icosphere(4);
     for (glm::vec3& p : egg.positions) p = glm::vec3(p.x * (1.0f + 0.5f * std::max(p.x, 0.0f)), p.y, p.z + 0.3f * p.x * p.y);
     write_mesh_obj(dir, "egg.obj", egg);
-    Mesh mirrored = egg;  // across x = 0, re-wound
+    Mesh mirrored = egg;  // re-wound; across x = 0 (Y-up) or y = 0 (Z-up)
     for (size_t t = 0; t < mirrored.triangle_count(); ++t) std::swap(mirrored.indices[3 * t + 1], mirrored.indices[3 * t + 2]);
-    write_mesh_obj(dir, "egg_mirrored.obj", mirrored, [](const glm::vec3& p) { return glm::vec3(-p.x, p.y, p.z); });
+    write_mesh_obj(dir, "egg_mirrored_x.obj", mirrored, [](const glm::vec3& p) { return glm::vec3(-p.x, p.y, p.z); });
+    write_mesh_obj(dir, "egg_mirrored_y.obj", mirrored, [](const glm::vec3& p) { return glm::vec3(p.x, -p.y, p.z); });
     struct Drawn {
         std::vector<uint8_t> covered;
         double ink = 0.0;   // mean darkness over the covered pixels
@@ -551,17 +553,16 @@ TEST_F(SceneObjects, AMirroringTransformDrawsTheMirrorImage) {
         Transform by_scale;
         by_scale.translate = {0.2f, -0.1f, 0.3f};
         by_scale.rotate_deg = {0.0f, 20.0f, 0.0f};
-        by_scale.axis_scale = {-1.0f, 1.0f, 1.0f};
+        by_scale.axis_scale = up == UpAxis::Y ? glm::vec3(-1.0f, 1.0f, 1.0f) : glm::vec3(1.0f, 1.0f, -1.0f);
         Transform stored;
         stored.translate = by_scale.translate, stored.rotate_deg = by_scale.rotate_deg;
         ASSERT_TRUE(by_scale.mirrors() && !stored.mirrors());
-        const Drawn reference = draw("egg_mirrored.obj", stored, up), mirror = draw("egg.obj", by_scale, up);
-        if (up == UpAxis::Y) {
-            const Drawn plain = draw("egg.obj", stored, up);
-            size_t unlike = 0;
-            for (size_t i = 0; i < reference.covered.size(); ++i) unlike += reference.covered[i] != plain.covered[i];
-            EXPECT_GT(unlike, 1000u) << "the egg is its own mirror image";
-        }
+        const std::string mirrored_file = up == UpAxis::Y ? "egg_mirrored_x.obj" : "egg_mirrored_y.obj";
+        const Drawn reference = draw(mirrored_file, stored, up), mirror = draw("egg.obj", by_scale, up);
+        const Drawn plain = draw("egg.obj", stored, up);
+        size_t unlike = 0;
+        for (size_t i = 0; i < reference.covered.size(); ++i) unlike += reference.covered[i] != plain.covered[i];
+        EXPECT_GT(unlike, 1000u) << "the egg is its own mirror image";
         size_t both = 0, either = 0;
         for (size_t i = 0; i < mirror.covered.size(); ++i)
             both += mirror.covered[i] && reference.covered[i], either += mirror.covered[i] || reference.covered[i];

@@ -5,8 +5,8 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$STIPPLE_ROOT"
 third_party_config/install_deps.sh
-# A fresh tree builds the program alone; a developer's existing build-release keeps its own settings
-# (passing OFF there would drop the tests from the developer's next build).
+# A fresh tree builds the program alone; a developer's existing build-release keeps its tests option
+# (passing OFF there would drop the tests from the developer's next build). It is always a Release build.
 tests_option=()
 [ -f build-release/CMakeCache.txt ] || tests_option=(-DSTIPPLE_BUILD_TESTS=OFF)
 cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release "${tests_option[@]}" >/dev/null

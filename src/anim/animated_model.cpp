@@ -192,6 +192,7 @@ namespace {
 LoadOptions rest_mesh_options(const LoadOptions& options) {
     LoadOptions rest = options;
     rest.split_two_sided_vertices = false;
+    rest.drop_collapsed_by_position = false;
     return rest;
 }
 

@@ -161,8 +161,10 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
         region = fitted.region;
         at = fitted.at;
     };
-    // A frame of its own shape, whole: enlarged until it fits the room, and centred.
-    if (options.fit == plot::Fit::Frame && options.screen_width) fit(DrawnBox{screen_extent, {0, 0}, {screen_extent.width, screen_extent.height}});
+    // A frame of its own shape, whole: enlarged until it fits the room, and centred (also a fitted drawing's frame
+    // where nothing is drawn: the view's projection has the frame's shape, not the room's).
+    const DrawnBox whole_frame{screen_extent, {0, 0}, {screen_extent.width, screen_extent.height}};
+    if (options.screen_width) fit(whole_frame);
     if (options.fit == plot::Fit::Drawing) {
         FrameView screen = view;
         screen.extent = screen_extent;

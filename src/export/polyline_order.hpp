@@ -17,7 +17,7 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen);
 
 // Strokes in plotting order whose gap (from where one ends to where the next starts) is narrower than `gap_mm`
 // are made one: with the pen's width as the gap, their round caps already meet, so the pen stays down across it
-// and the ink is the same. A closed stroke is neither joined nor joined to.
+// (the bridge inks a sliver more than the two caps did). A closed stroke is neither joined nor joined to.
 void join_close_strokes(std::vector<Polyline>& lines, double gap_mm);
 
 }  // namespace stipple::plot

@@ -85,7 +85,7 @@ Mesh finish(Mesh mesh, const std::string& name, const LoadOptions& options) {
         fail_file(name, "no triangle with non-zero area (all " + std::to_string(mesh.triangle_count()) +
                             " triangles are degenerate)");
     const std::vector<uint32_t> corners = weld_by_position(mesh.positions);  // dropping faces keeps the vertices
-    mesh.duplicates_dropped = drop_duplicate_triangles(mesh, corners);
+    mesh.duplicates_dropped = drop_duplicate_triangles(mesh, corners, options.drop_collapsed_by_position);
     mesh.winding = orient_consistently(mesh, corners, file_normals);
     // Computed normals followed the file's winding (where it was mixed they cancelled out), counted
     // repeated faces again, and summed the two sides of a two-sided sheet to nothing.

@@ -19,6 +19,10 @@ struct LoadOptions {
     // Split the vertices a two-sided sheet's sides share (split_vertices_between_opposite_sides). Off for
     // the rest mesh of an animated model, whose skin and morph data are per vertex of the file.
     bool split_two_sided_vertices = true;
+    // Drop triangles two of whose vertices lie at one place (drop_duplicate_triangles). Off for the rest mesh of
+    // an animated model, whose skin or morph targets may pull those vertices apart (a triangle opened by the
+    // animation); a triangle naming one vertex twice is dropped either way.
+    bool drop_collapsed_by_position = true;
 };
 
 // Loads .obj, .ply, .gltf, .glb or .stl (chosen by extension, case-insensitive), validates the result

@@ -66,7 +66,7 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
 
 size_t drop_duplicate_triangles(Mesh& mesh) { return drop_duplicate_triangles(mesh, weld_by_position(mesh.positions)); }
 
-size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
+size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner, bool collapsed_by_position) {
     const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
     // Each triangle rotated to start at its smallest corner, bucketed by that corner (a counting sort), so
     // that a repeat lies in its first's bucket, after it.
@@ -100,7 +100,8 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner) {
         const uint32_t* i = &mesh.indices[3 * t];
         if (i[0] >= n || i[1] >= n || i[2] >= n) continue;
         const uint32_t a = corner[i[0]], b = corner[i[1]], c = corner[i[2]];
-        if (a == b || b == c || a == c) repeat[t] = 1, ++dropped;
+        const bool named_twice = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
+        if (named_twice || (collapsed_by_position && (a == b || b == c || a == c))) repeat[t] = 1, ++dropped;
     }
     const auto order = [](const Rest& x, const Rest& y) {
         return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;

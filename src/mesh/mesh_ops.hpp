@@ -26,11 +26,13 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 // depth: twice the tone. A copy wound the other way is kept (a sheet made two-sided by a reversed copy
 // shows its front from either side). Also drops every triangle two of whose corners lie at one place (a a b):
 // it has no area and no edge of its own, but its edges, counted as faces' edges, drew creases fanning over a
-// smooth surface and split its part in the winding repair. Keeps the first of each and the order of the
-// rest; returns how many were dropped. Indices beyond the positions are left for validate_mesh to report.
+// smooth surface and split its part in the winding repair (with `collapsed_by_position` off, only a triangle
+// naming one vertex twice: an animation may pull two vertices at one place apart). Keeps the first of each and
+// the order of the rest; returns how many were dropped. Indices beyond the positions are left for
+// validate_mesh to report.
 size_t drop_duplicate_triangles(Mesh& mesh);
 // The same with the corners already welded (weld_by_position of mesh.positions).
-size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners);
+size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners, bool collapsed_by_position = true);
 
 // A sheet made two-sided by a reversed copy that shares its vertices (as files write it) gets computed
 // normals that cancel: +n and -n summed at every vertex, +Z left, and the toon ramp reads those. A vertex
