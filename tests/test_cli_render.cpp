@@ -669,6 +669,16 @@ TEST(CliRender, StatsInkIsReadBetweenThePaperAndTheInk) {
     EXPECT_GT(a, 5.0);
     EXPECT_NEAR(b, a, 0.02 * a);
     EXPECT_NE(grey.find("not measured"), std::string::npos) << grey;
+    // Light ink on dark paper as SVG: the page is left unpainted unless --fill-paper, so white paper would show.
+    std::ofstream(dir / "dark.json") << R"({"objects": [{"model": ")" << test::source_path("assets/blobby.glb")
+                                     << R"("}], "paper": [0.1, 0.1, 0.15], "ink": [0.95, 0.95, 0.9]})";
+    for (const bool painted : {false, true}) {
+        std::vector<std::string> args = {"render", (dir / "dark.json").string(), "-o", (dir / "dark.svg").string(), "--width", "160", "--height", "128"};
+        if (painted) args.push_back("--fill-paper");
+        const test::CommandResult r = run_stipple(args);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(r.err.find("the ink is lighter than the paper") != std::string::npos, !painted) << r.err;
+    }
 }
 
 // A round dot (point size above 2.5) is the disc of the square's area: the tone does not fall where the dots

@@ -324,6 +324,11 @@ TEST(ExportPlan, StatsOfAKnownPlot) {
     const std::string text = format_stats(stats);
     EXPECT_EQ(text.find('\n'), std::string::npos);
     EXPECT_NE(text.find("2 dots, 1 polylines, pen down 46.3 mm, pen up 30 mm, 3 pen lifts, travel between dots 1x"), std::string::npos) << text;
+    // Lines alone: no travel between dots to rate (it read "1x its lower bound (0 mm)").
+    PlotPlan lines_alone = plan;
+    lines_alone.layers = {lines};
+    const std::string no_dots = format_stats(plot_stats(lines_alone));
+    EXPECT_NE(no_dots.find("1 pen lifts, no travel between dots"), std::string::npos) << no_dots;
 
     // A plan of a real-sized set in plotter order stays within the target; in the given order
     // (row by row, back and forth across the grid) it does not.

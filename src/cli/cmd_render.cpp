@@ -239,6 +239,12 @@ int run_render(const std::vector<std::string>& argv) {
     if ((!vector || vector_options.fill_paper) && glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f))))
         std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
                      what.c_str());
+    // Light ink for dark paper, on a page left unpainted (vector output without --fill-paper): white paper shows.
+    const auto luminance = [](glm::vec3 c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
+    if (vector && !plot::is_csv_path(output) && !vector_options.fill_paper && luminance(scene.ink) > luminance(scene.paper) + 0.3f)
+        std::fprintf(stderr, "stipple: warning: %s: the ink is lighter than the paper, and %s leaves the page unpainted "
+                             "(the sheet it is printed on shows): --fill-paper paints it\n",
+                     what.c_str(), output.c_str());
     // A scene's camera_path places every frame's camera: options that set the scene's camera, or turn it,
     // would be silently ignored.
     if (!scene.camera_path.empty()) {

@@ -68,8 +68,11 @@ PlotStats plot_stats(const PlotPlan& plan) {
 std::string format_stats(const PlotStats& stats) {
     return "plot: " + std::to_string(stats.dots) + " dots, " + std::to_string(stats.polylines) + " polylines, pen down " +
            format_number(stats.pen_down_mm, 1) + " mm, pen up " + format_number(stats.pen_up_mm, 1) + " mm, " +
-           std::to_string(stats.pen_lifts) + " pen lifts, travel between dots " + format_number(stats.travel_ratio(), 2) +
-           "x its lower bound (" + format_number(stats.dot_travel_bound_mm, 1) + " mm)" +
+           std::to_string(stats.pen_lifts) + " pen lifts, " +
+           // With no two dots in a layer there is no travel between dots to rate (it said "1x its lower bound (0 mm)").
+           (stats.dot_travel_bound_mm > 0.0 ? "travel between dots " + format_number(stats.travel_ratio(), 2) + "x its lower bound (" +
+                                                  format_number(stats.dot_travel_bound_mm, 1) + " mm)"
+                                            : std::string("no travel between dots")) +
            (stats.small_dots ? ", " + std::to_string(stats.small_dots) + " dots under the pen's least mark drawn as it by chance" : "");
 }
 
