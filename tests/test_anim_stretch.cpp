@@ -91,6 +91,13 @@ TEST(AnimStretch, ATriangleCollapsedAtRestIsKeptForTheAnimationToOpen) {
     const AnimatedModel model = load_rig(quad, "anim_stretch_collapsed", "collapsed");
     EXPECT_EQ(model.rest.triangle_count(), 2u) << "the collapsed triangle was dropped";
     EXPECT_EQ(measure_headroom(model).opened_triangles, 1u);
+    // Without an animation nothing pulls them apart: dropped as in a static model (a morphed UV sphere kept its
+    // pole's collapsed triangles, their creases fanning from the pole).
+    quad.doc.erase("animations");
+    quad.doc["nodes"][0]["weights"] = {0.0, 0.5};  // posed, so the file is read by the animated loader
+    const AnimatedModel still = load_rig(quad, "anim_stretch_collapsed_still", "still");
+    EXPECT_FALSE(still.is_animated());
+    EXPECT_EQ(still.rest.triangle_count(), 1u);
 }
 
 // A polygon of no area at rest has no candidates: its ratio (5e-41 at rest, 0.5 posed) went beyond float

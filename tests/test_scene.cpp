@@ -476,9 +476,15 @@ TEST_F(SceneObjects, AModelFarFromItsOriginKeepsItsShape) {
     const glm::vec3 far(3e4f, -2e4f, 1e4f);
     write_mesh_obj(dir, "near.obj", sphere);
     write_mesh_obj(dir, "far.obj", sphere, [&](const glm::vec3& p) { return glm::dvec3(p) + glm::dvec3(far); });
-    const Mesh loaded = load_mesh((dir / "far.obj").string());
-    EXPECT_NEAR(loaded.origin.x, 3e4, 1e-3);
-    EXPECT_NEAR(total_area(loaded), total_area(sphere), 1e-4 * total_area(sphere)) << "the shape is kept";
+    Mesh stray = sphere;  // and a vertex no face uses, left at the file's origin (it hid how far the model lies)
+    stray.positions.push_back(-far);
+    stray.normals.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+    write_mesh_obj(dir, "far_stray.obj", stray, [&](const glm::vec3& p) { return glm::dvec3(p) + glm::dvec3(far); });
+    for (const char* name : {"far.obj", "far_stray.obj"}) {
+        const Mesh loaded = load_mesh((dir / name).string());
+        EXPECT_NEAR(loaded.origin.x, 3e4, 1e-3) << name;
+        EXPECT_NEAR(total_area(loaded), total_area(sphere), 1e-4 * total_area(sphere)) << name << ": the shape is kept";
+    }
     auto draw = [&](const std::string& model, std::vector<glm::vec3> places) {
         Scene scene;
         scene.base_dir = dir;

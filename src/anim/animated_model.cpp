@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "anim/deform_cpu.hpp"
+#include "anim/gltf_probe.hpp"
 #include "anim/gltf_reading.hpp"
 #include "anim/pose.hpp"
 #include "core/error.hpp"
@@ -188,11 +189,13 @@ bool AnimatedModel::is_animated() const {
 namespace {
 
 // The static loader's options for the rest mesh: no vertex of the file split (its skin and morph data are
-// per vertex; a two-sided sheet's split vertices made the load fail).
-LoadOptions rest_mesh_options(const LoadOptions& options) {
+// per vertex; a two-sided sheet's split vertices made the load fail), and where the file has animations no
+// triangle dropped for two of its vertices at one place (the animation may pull them apart). A file that only
+// poses its rest (skins or morph weights, no animation) drops them as a static model does.
+LoadOptions rest_mesh_options(const LoadOptions& options, bool may_move) {
     LoadOptions rest = options;
     rest.split_two_sided_vertices = false;
-    rest.drop_collapsed_by_position = false;
+    rest.drop_collapsed_by_position = !may_move;
     return rest;
 }
 
@@ -202,14 +205,14 @@ AnimatedModel load_animated_model(const std::string& path, const LoadOptions& op
     require_gltf_name(path);
     // The static loader decides the rest mesh (its checks, normals and orientation).
     tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh(path, rest_mesh_options(options), gltf);
+    const Mesh file_order = load_gltf_mesh(path, rest_mesh_options(options, gltf_declares_animations(path)), gltf);
     return build_animated_model(path, file_order, gltf, options);
 }
 
 AnimatedModel load_animated_model_from_bytes(const std::string& name, std::string_view bytes, const LoadOptions& options) {
     require_gltf_name(name);
     tinygltf::Model gltf;
-    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, rest_mesh_options(options), gltf);
+    const Mesh file_order = load_gltf_mesh_from_bytes(name, bytes, nullptr, rest_mesh_options(options, true), gltf);
     return build_animated_model(name, file_order, gltf, options);
 }
 

@@ -72,6 +72,7 @@ std::string format_stats(const PlotStats& stats) {
            // With no two dots in a layer there is no travel between dots to rate (it said "1x its lower bound (0 mm)").
            (stats.dot_travel_bound_mm > 0.0 ? "travel between dots " + format_number(stats.travel_ratio(), 2) + "x its lower bound (" +
                                                   format_number(stats.dot_travel_bound_mm, 1) + " mm)"
+            : stats.dot_travel_mm > 0.0     ? "travel between dots " + format_number(stats.dot_travel_mm, 1) + " mm (dots on each other)"
                                             : std::string("no travel between dots")) +
            (stats.small_dots ? ", " + std::to_string(stats.small_dots) + " dots under the pen's least mark drawn as it by chance" : "");
 }
