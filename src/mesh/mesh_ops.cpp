@@ -68,32 +68,6 @@ size_t drop_duplicate_triangles(Mesh& mesh) { return drop_duplicate_triangles(me
 
 size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner, bool collapsed_by_position) {
     const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
-    // Each triangle rotated to start at its smallest corner, bucketed by that corner (a counting sort), so
-    // that a repeat lies in its first's bucket, after it.
-    struct Rest {
-        uint32_t second, third, triangle;
-    };
-    auto rotated = [&](size_t t, uint32_t& smallest, Rest& rest) {
-        const uint32_t* i = &mesh.indices[3 * t];
-        if (i[0] >= n || i[1] >= n || i[2] >= n) return false;
-        const uint32_t a = corner[i[0]], b = corner[i[1]], c = corner[i[2]];
-        if (a <= b && a <= c) smallest = a, rest = {b, c, uint32_t(t)};
-        else if (b <= c) smallest = b, rest = {c, a, uint32_t(t)};
-        else smallest = c, rest = {a, b, uint32_t(t)};
-        return true;
-    };
-    std::vector<uint32_t> first(n + 1, 0);
-    uint32_t smallest;
-    Rest rest;
-    for (size_t t = 0; t < triangles; ++t)
-        if (rotated(t, smallest, rest)) ++first[smallest + 1];
-    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<Rest> buckets(first[n]);
-    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-    for (size_t t = 0; t < triangles; ++t)
-        if (rotated(t, smallest, rest)) buckets[fill[smallest]++] = rest;
-    // Each bucket sorted by its other two corners, then by triangle: a repeat follows its first. (Comparing
-    // every pair of a bucket took 8 s for one polygon of 100k corners fanned around its first corner.)
     std::vector<uint8_t> repeat(triangles, 0);
     size_t dropped = 0;
     for (size_t t = 0; t < triangles; ++t) {
@@ -103,17 +77,14 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner, bo
         const bool named_twice = i[0] == i[1] || i[1] == i[2] || i[0] == i[2];
         if (named_twice || (collapsed_by_position && (a == b || b == c || a == c))) repeat[t] = 1, ++dropped;
     }
-    const auto order = [](const Rest& x, const Rest& y) {
-        return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
-    };
-    for (size_t v = 0; v < n; ++v) {
-        if (first[v + 1] - first[v] < 2) continue;
-        std::sort(buckets.begin() + first[v], buckets.begin() + first[v + 1], order);
-        for (uint32_t i = first[v] + 1; i < first[v + 1]; ++i)
-            if (buckets[i].second == buckets[i - 1].second && buckets[i].third == buckets[i - 1].third &&
-                !repeat[buckets[i].triangle])
-                repeat[buckets[i].triangle] = 1, ++dropped;
-    }
+    // A repeat follows its first in their bucket. (Comparing every pair of a bucket took 8 s for one polygon of
+    // 100k corners fanned around its first corner.)
+    const CornerBuckets buckets = bucket_by_smallest_corner(mesh, corner, false);
+    for (size_t v = 0; v < n; ++v)
+        for (uint32_t i = buckets.first[v] + 1; i < buckets.first[v + 1]; ++i) {
+            const CornerBuckets::Entry &e = buckets.entries[i], &previous = buckets.entries[i - 1];
+            if (e.second == previous.second && e.third == previous.third && !repeat[e.triangle]) repeat[e.triangle] = 1, ++dropped;
+        }
     if (dropped == 0) return 0;
     size_t kept = 0;
     for (size_t t = 0; t < triangles; ++t) {
@@ -123,6 +94,36 @@ size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corner, bo
     }
     mesh.indices.resize(3 * kept);
     return dropped;
+}
+
+CornerBuckets bucket_by_smallest_corner(const Mesh& mesh, std::span<const uint32_t> corner, bool skip_collapsed) {
+    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
+    using Entry = CornerBuckets::Entry;
+    auto rotated = [&](size_t t, uint32_t& smallest, Entry& entry) {
+        const uint32_t* i = &mesh.indices[3 * t];
+        if (i[0] >= n || i[1] >= n || i[2] >= n) return false;
+        const uint32_t a = corner[i[0]], b = corner[i[1]], c = corner[i[2]];
+        if (skip_collapsed && (a == b || b == c || a == c)) return false;
+        if (a <= b && a <= c) smallest = a, entry = {b, c, uint32_t(t)};
+        else if (b <= c) smallest = b, entry = {c, a, uint32_t(t)};
+        else smallest = c, entry = {a, b, uint32_t(t)};
+        return true;
+    };
+    CornerBuckets buckets;
+    buckets.first.assign(n + 1, 0);
+    uint32_t smallest = 0;
+    Entry entry{};
+    for (size_t t = 0; t < triangles; ++t)
+        if (rotated(t, smallest, entry)) ++buckets.first[smallest + 1];
+    for (size_t v = 0; v < n; ++v) buckets.first[v + 1] += buckets.first[v];
+    buckets.entries.resize(buckets.first[n]);
+    std::vector<uint32_t> fill(buckets.first.begin(), buckets.first.end() - 1);
+    for (size_t t = 0; t < triangles; ++t)
+        if (rotated(t, smallest, entry)) buckets.entries[fill[smallest]++] = entry;
+    for (size_t v = 0; v < n; ++v)
+        if (buckets.first[v + 1] - buckets.first[v] > 1)
+            std::sort(buckets.entries.begin() + buckets.first[v], buckets.entries.begin() + buckets.first[v + 1], CornerBuckets::before);
+    return buckets;
 }
 
 size_t split_vertices_between_opposite_sides(Mesh& mesh) {

@@ -31,6 +31,23 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 // the order of the rest; returns how many were dropped. Indices beyond the positions are left for
 // validate_mesh to report.
 size_t drop_duplicate_triangles(Mesh& mesh);
+
+// Each triangle rotated to start at its smallest corner (welded by position) and bucketed by that corner (a
+// counting sort: comparison sorts of every triangle took much of a large scan's load), each bucket sorted by the
+// other two corners, then by triangle: a repeat follows its first in their bucket, and a reversed copy (a, c, b)
+// of (a, b, c) lies in the same bucket with those two swapped. Triangles with an index beyond the positions are
+// left out, and with `skip_collapsed` those with two corners at one place.
+struct CornerBuckets {
+    struct Entry {
+        uint32_t second, third, triangle;
+    };
+    static bool before(const Entry& x, const Entry& y) {
+        return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
+    }
+    std::vector<uint32_t> first;  // bucket v (a welded corner) holds entries [first[v], first[v + 1])
+    std::vector<Entry> entries;
+};
+CornerBuckets bucket_by_smallest_corner(const Mesh& mesh, std::span<const uint32_t> corners, bool skip_collapsed);
 // The same with the corners already welded (weld_by_position of mesh.positions).
 size_t drop_duplicate_triangles(Mesh& mesh, std::span<const uint32_t> corners, bool collapsed_by_position = true);
 

@@ -237,46 +237,17 @@ namespace {
 // For each triangle, the earlier triangle it reverses (the same welded corners in the other cyclic order), or
 // kUnassigned: a sheet made two-sided by a reversed copy. (Repeats in the same order were dropped before.)
 std::vector<uint32_t> reversed_twins(const Mesh& mesh, std::span<const uint32_t> corner) {
-    // As drop_duplicate_triangles finds repeats: each triangle rotated to start at its smallest corner and bucketed
-    // by it (a counting sort; a comparison sort of every triangle took 0.16 s of an 869k-triangle load), so that
-    // a reversed copy, (a, c, b) against (a, b, c), lies in its first's bucket with its other two corners swapped.
-    const size_t triangles = mesh.triangle_count(), n = mesh.positions.size();
-    struct Rest {
-        uint32_t second, third, triangle;
-    };
-    auto rotated = [&](size_t t, uint32_t& smallest, Rest& rest) {
-        if (!indices_in_range(mesh, t)) return false;
-        const uint32_t a = corner[mesh.indices[3 * t]], b = corner[mesh.indices[3 * t + 1]], c = corner[mesh.indices[3 * t + 2]];
-        if (a == b || b == c || a == c) return false;
-        if (a < b && a < c) smallest = a, rest = {b, c, uint32_t(t)};
-        else if (b < c) smallest = b, rest = {c, a, uint32_t(t)};
-        else smallest = c, rest = {a, b, uint32_t(t)};
-        return true;
-    };
-    std::vector<uint32_t> first(n + 1, 0);
-    uint32_t smallest = 0;
-    Rest rest{};
-    for (size_t t = 0; t < triangles; ++t)
-        if (rotated(t, smallest, rest)) ++first[smallest + 1];
-    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<Rest> buckets(first[n]);
-    {
-        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-        for (size_t t = 0; t < triangles; ++t)
-            if (rotated(t, smallest, rest)) buckets[fill[smallest]++] = rest;
-    }
-    const auto order = [](const Rest& x, const Rest& y) {
-        return x.second != y.second ? x.second < y.second : x.third != y.third ? x.third < y.third : x.triangle < y.triangle;
-    };
+    // A reversed copy lies in its first's bucket (bucket_by_smallest_corner; a comparison sort of every triangle
+    // took 0.16 s of an 869k-triangle load).
+    const CornerBuckets buckets = bucket_by_smallest_corner(mesh, corner, true);
+    const size_t triangles = mesh.triangle_count();
     std::vector<uint32_t> twin(triangles, kUnassigned);
     std::vector<uint8_t> taken(triangles, 0);  // a first that has its twin
-    for (size_t v = 0; v < n; ++v) {
-        const auto begin = buckets.begin() + first[v], end = buckets.begin() + first[v + 1];
-        if (end - begin < 2) continue;
-        std::sort(begin, end, order);
+    for (size_t v = 0; v + 1 < buckets.first.size(); ++v) {
+        const auto begin = buckets.entries.begin() + buckets.first[v], end = buckets.entries.begin() + buckets.first[v + 1];
         for (auto e = begin; e != end; ++e) {
             // The earliest triangle of the other order; a later triangle is its twin.
-            const auto other = std::lower_bound(begin, end, Rest{e->third, e->second, 0}, order);
+            const auto other = std::lower_bound(begin, end, CornerBuckets::Entry{e->third, e->second, 0}, CornerBuckets::before);
             if (other == end || other->second != e->third || other->third != e->second) continue;
             if (other->triangle < e->triangle && !taken[other->triangle] && twin[other->triangle] == kUnassigned)
                 twin[e->triangle] = other->triangle, taken[other->triangle] = 1;
