@@ -168,7 +168,7 @@ PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indice
     for (PlotDot& dot : layer.dots) {
         const std::array<glm::dvec2, 2> ends = dot_stroke_ends(dot, plan.dot_style, pen_mm);
         dot.reversed = plan.dot_style == DotStyle::Tick && glm::length(ends[1] - pen) < glm::length(ends[0] - pen);
-        pen = dot_stroke_ends(dot, plan.dot_style, pen_mm)[1];
+        pen = dot.reversed ? ends[0] : ends[1];
     }
     return layer;
 }
