@@ -142,13 +142,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // 1.081 / 1.104 (seed 1) while the progressive order searched for placed stipples
                       // within 12 spacings only, which left the prefixes below 1/256 unspread.
                       ToneCase{"cad_cylinder", 1280, 1024},
-                      // Every sliver is cut into the same slab-wide pieces (progressive_order.cpp): until
-                      // 2026-12-04 each took its first stipples from the same pieces, and at a distance the
-                      // side drew in bands (1.282 / 1.179, `stipple tone` on this mesh as an OBJ, seed 1).
-                      // Now the mean of seeds 1-3 reads 1.111 / 1.109 (a known gap, issue 18: 10% lighter at
-                      // 1/8, where most slivers draw one dot or none and neighbours' dots overlap;
-                      // docs/paper-reading.md, "Pieces of a cut triangle").
-                      ToneCase{"cad_cylinder_1024", 1280, 1024, 1.13, 0.0f, 3},
+                      // 1024 slivers 650 times longer than wide. Until 2026-12-05 the progressive order's slabs
+                      // lay across the longest axis and cut every sliver into pieces, ordered apart: at a
+                      // distance neighbours' single dots fell on each other (the mean of seeds 1-3 read
+                      // 1.111 / 1.109, 10% lighter at 1/8; with every sliver taking its first stipples from
+                      // the same pieces, until 2026-12-04, 1.282 / 1.179 for seed 1). Slabs along the
+                      // slivers leave them whole: 1.029 / 1.039 (progressive_order.cpp, make_units).
+                      ToneCase{"cad_cylinder_1024", 1280, 1024, 1.05, 0.0f, 3},
                       ToneCase{"stanford-bunny.obj", 2560, 2048},
                       // At 640x512 the bunny at 1/16 is 32 pixels high and draws about 560 dots over the 16
                       // frames: one seed's figure is 1.02-1.07 (seeds 1-3 of cache format 12; `stipple tone
@@ -161,9 +161,9 @@ INSTANTIATE_TEST_SUITE_P(
                       ToneCase{"stanford-bunny.obj", 1280, 1024, 1.05, 1.0f},
                       ToneCase{"horse.ply", 1280, 1024},
                       // The fox's 576 polygons leave only ~1,000 stipples at 1/16, so one seed's figure is
-                      // mostly which ones it draws: 1.02-1.06 over seeds 1-3 (cache format 14), their mean
-                      // 1.039 / 1.040 (format 13: 1.045 / 1.047; drawn without its motion, as until 2026-12-04,
-                      // 1.014 / 1.017). Its large polygons stay in the large regime there and draw
+                      // mostly which ones it draws: 1.02-1.06 over seeds 1-3 (cache format 15), their mean
+                      // 1.035 / 1.038 (format 14: 1.039 / 1.040; 13: 1.045 / 1.047; drawn without its motion,
+                      // as until 2026-12-04, 1.014 / 1.017). Its large polygons stay in the large regime there and draw
                       // the first 1/400-1/1000 of their lists: with the progressive order's search at 12
                       // spacings (cache format 12) those prefixes were unspread, and the mean read 1.027 /
                       // 1.049, a real loss of 4-5% at 1/16 (docs/paper-reading.md, §2.1 "Order").

@@ -305,9 +305,12 @@ TEST(StippleCache, AWriterKilledMidEntryLeavesNothingThatLoads) {
 TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     uint64_t fingerprint = 0;
     GenerationParams params;
-    params.dmax = 0.01f;
-    // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density).
-    for (const Mesh& mesh : {make_icosphere(2), make_grid(1), make_cad_cylinder(48)}) {
+    // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density);
+    // slivers dense enough for slabs along them, which leave them whole (cache format 15).
+    const std::pair<Mesh, float> meshes[] = {
+        {make_icosphere(2), 0.01f}, {make_grid(1), 0.01f}, {make_cad_cylinder(48), 0.01f}, {make_cad_cylinder(256), 0.05f}};
+    for (const auto& [mesh, dmax] : meshes) {
+        params.dmax = dmax;
         const StippleSet set = generate_stipples(mesh, params);
         ASSERT_GT(set.size(), 1000u);
         for (const glm::vec3& p : set.positions) {

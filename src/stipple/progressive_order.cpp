@@ -13,8 +13,8 @@
 
 // How the greedy runs on two cores and stays deterministic.
 //
-// The surface is cut into slabs across its longest axis, at least kSearchCap spacings plus two
-// unit extents wide, so that only neighbouring slabs interact (see make_units). Time is cut into
+// The surface is cut into slabs across one axis (make_units), at least kSearchCap spacings plus two
+// unit extents wide, so that only neighbouring slabs interact. Time is cut into
 // windows of tau, each 2^(1/8) times the previous one. In a window every slab fills its slots up to the window's
 // end, in parallel, seeing every stipple placed before the window anywhere and its own placed in
 // the window; between windows each slab takes in what its neighbours placed near it. No state is
@@ -175,20 +175,28 @@ void Orderer::run(const std::function<void(double)>& progress) {
     merge_pieces();
 }
 
-// Slabs across the longest axis, and the units in each. A slab is at least kSearchCap spacings
-// plus two unit extents wide, so that only neighbouring slabs interact. Triangles too large for
-// slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the borders
-// into pieces, each ordered as a unit of its own: without that, a model of a few large triangles
-// would be one slab, on one core, with a working set beyond the caches.
+// Slabs across one axis, and the units in each. A slab is at least kSearchCap spacings plus two unit
+// extents (along the axis) wide, so that only neighbouring slabs interact. Triangles too long on the axis
+// for slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the borders into
+// pieces, each ordered as a unit of its own: without that, a model of a few large triangles would be one
+// slab, on one core, with a working set beyond the caches.
+//
+// The axis is the one that cuts the fewest stipples' triangles, the longest on ties (every axis when no
+// triangle is that large, as on a scan), among those that make at least two slabs. A cut triangle's
+// pieces are ordered apart and merged by their own times (merge_pieces), so its prefix is spread over
+// the triangle but not chosen away from its neighbours' prefixes: long slivers side by side, cut across
+// their length (a CAD cylinder's sides, slabs across its axis), drew single dots on each other at a
+// distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024), until 2026-12-05). Slabs along the
+// slivers leave them whole.
 void Orderer::make_units() {
     const size_t triangles = first_.size() - 1;
     glm::vec3 lo = positions_[0], hi = positions_[0];
     for (const glm::vec3& p : positions_) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const glm::vec3 size = hi - lo;
-    axis_ = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    const int longest = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
 
-    // Centroid and extent of each triangle's stipples.
-    std::vector<float> centre(triangles, 0.0f), extent(triangles, 0.0f);
+    // Centroid and extent on each axis (the farthest stipple from the centroid) of each triangle's stipples.
+    std::vector<glm::vec3> centre(triangles, glm::vec3(0.0f)), extent(triangles, glm::vec3(0.0f));
     parallel_for_chunks(triangles, 4096, [&](size_t, size_t begin, size_t end) {
         for (size_t t = begin; t < end; ++t) {
             const uint32_t b = first_[t], e = first_[t + 1];
@@ -196,21 +204,38 @@ void Orderer::make_units() {
             glm::vec3 sum(0.0f);
             for (uint32_t i = b; i < e; ++i) sum += positions_[i];
             const glm::vec3 m = sum / float(e - b);
-            for (uint32_t i = b; i < e; ++i) extent[t] = std::max(extent[t], glm::length(positions_[i] - m));
-            centre[t] = m[axis_];
+            for (uint32_t i = b; i < e; ++i) extent[t] = glm::max(extent[t], glm::abs(positions_[i] - m));
+            centre[t] = m;
         }
     });
     // Slabs of about 1/kSlabs of the object, but at least kMinSlabSearches search caps wide:
     // stipples near a border miss their neighbour's placed in the same window, so narrower slabs
     // (more border) leave more close pairs (a cube's prefixes at 1/64-1/256 within half their
     // spacing: 1.4-1.8% of them at 1 cap, 0.8% at 4, 0.3-0.6% at 8), and wider ones leave fewer
-    // slabs to share between the cores. Triangles wider than such a slab allows (a search cap plus
+    // slabs to share between the cores. Triangles longer than such a slab allows (a search cap plus
     // twice their extent) are cut, so the triangles kept whole fit it.
-    const double wanted = std::max(double(size[axis_]) / kSlabs, kMinSlabSearches * kSearchCap * spacing_);
-    const float split_extent = static_cast<float>(0.5 * (wanted - kSearchCap * spacing_));
+    auto wanted_width = [&](int axis) {
+        return std::max(double(size[axis]) / kSlabs, kMinSlabSearches * kSearchCap * spacing_);
+    };
+    auto split_extent_on = [&](int axis) { return static_cast<float>(0.5 * (wanted_width(axis) - kSearchCap * spacing_)); };
+    // An axis across which the object is too thin for two slabs (a plane seen edge-on: nothing cut, one
+    // slab, one core) is not taken while the longest gives two.
+    auto slabs_on = [&](int axis) { return std::ceil(double(size[axis]) / wanted_width(axis)); };
+    const double fewest_slabs = std::min(2.0, slabs_on(longest));
+    uint64_t fewest_cut = std::numeric_limits<uint64_t>::max();
+    for (int a : {longest, (longest + 1) % 3, (longest + 2) % 3}) {
+        if (slabs_on(a) < fewest_slabs) continue;
+        const float split = split_extent_on(a);
+        uint64_t cut = 0;
+        for (size_t t = 0; t < triangles; ++t)
+            if (extent[t][a] > split) cut += first_[t + 1] - first_[t];
+        if (cut < fewest_cut) fewest_cut = cut, axis_ = a;
+    }
+    const double wanted = wanted_width(axis_);
+    const float split_extent = split_extent_on(axis_);
     float max_extent = 0.0f;  // of the triangles kept whole
     for (size_t t = 0; t < triangles; ++t)
-        if (extent[t] <= split_extent) max_extent = std::max(max_extent, extent[t]);
+        if (extent[t][axis_] <= split_extent) max_extent = std::max(max_extent, extent[t][axis_]);
     // `wanted`, but for float rounding of split_extent.
     const double width = std::max(wanted, kSearchCap * spacing_ + 2.0 * max_extent);
     const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size[axis_] / width)));
@@ -231,8 +256,8 @@ void Orderer::make_units() {
     for (size_t t = 0; t < triangles; ++t) {
         const uint32_t b = first_[t], e = first_[t + 1];
         if (b == e) continue;
-        if (extent[t] <= split_extent) {
-            add_unit({b, e, uint32_t(t), 0}, slab_at(centre[t]));
+        if (extent[t][axis_] <= split_extent) {
+            add_unit({b, e, uint32_t(t), 0}, slab_at(centre[t][axis_]));
             continue;
         }
         // Cut: the triangle's stipples grouped by slab (a stable counting sort), one unit each.
