@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "mesh/primitives.hpp"
@@ -306,9 +308,17 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     uint64_t fingerprint = 0;
     GenerationParams params;
     // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density);
-    // slivers dense enough for slabs along them, which leave them whole (cache format 15).
-    const std::pair<Mesh, float> meshes[] = {
-        {make_icosphere(2), 0.01f}, {make_grid(1), 0.01f}, {make_cad_cylinder(48), 0.01f}, {make_cad_cylinder(256), 0.05f}};
+    // slivers dense enough for slabs along them, which leave them whole, laid along an axis and along none
+    // (cache format 15).
+    Mesh tilted = make_cad_cylinder(256);
+    const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1.0f, 0.0f, 0.6f))));
+    for (glm::vec3& p : tilted.positions) p = turn * p;
+    for (glm::vec3& n : tilted.normals) n = turn * n;
+    const std::pair<Mesh, float> meshes[] = {{make_icosphere(2), 0.01f},
+                                             {make_grid(1), 0.01f},
+                                             {make_cad_cylinder(48), 0.01f},
+                                             {make_cad_cylinder(256), 0.05f},
+                                             {tilted, 0.05f}};
     for (const auto& [mesh, dmax] : meshes) {
         params.dmax = dmax;
         const StippleSet set = generate_stipples(mesh, params);

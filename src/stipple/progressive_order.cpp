@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 #include "stipple/push_grid.hpp"
+#include "stipple/slab_direction.hpp"
 
 // How the greedy runs on two cores and stays deterministic.
 //
@@ -103,7 +104,8 @@ private:
     std::span<const uint32_t> first_;
     double spacing_;
     uint64_t seed_;
-    int axis_ = 0;
+    glm::vec3 dir_{1.0f, 0.0f, 0.0f};  // across the slabs (make_units)
+    float along(const glm::vec3& p) const { return glm::dot(p, dir_); }
     std::vector<Unit> units_;                        // by triangle, then piece
     std::vector<std::vector<uint32_t>> slab_units_;  // units per slab
     std::vector<float> slab_lo_, slab_hi_;           // extent of each slab's stipples on the axis
@@ -175,71 +177,38 @@ void Orderer::run(const std::function<void(double)>& progress) {
     merge_pieces();
 }
 
-// Slabs across one axis, and the units in each. A slab is at least kSearchCap spacings plus two unit
-// extents (along the axis) wide, so that only neighbouring slabs interact. Triangles too long on the axis
-// for slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the borders into
-// pieces, each ordered as a unit of its own: without that, a model of a few large triangles would be one
-// slab, on one core, with a working set beyond the caches.
+// Slabs across one direction, and the units in each. A slab is at least kSearchCap spacings plus two
+// unit extents (along the direction) wide, so that only neighbouring slabs interact. Triangles too long
+// along it for slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the
+// borders into pieces, each ordered as a unit of its own: without that, a model of a few large triangles
+// would be one slab, on one core, with a working set beyond the caches.
 //
-// The axis is the one that cuts the fewest stipples' triangles, the longest on ties (every axis when no
-// triangle is that large, as on a scan), among those that make at least two slabs. A cut triangle's
-// pieces are ordered apart and merged by their own times (merge_pieces), so its prefix is spread over
-// the triangle but not chosen away from its neighbours' prefixes: long slivers side by side, cut across
-// their length (a CAD cylinder's sides, slabs across its axis), drew single dots on each other at a
-// distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024), until 2026-12-05). Slabs along the
-// slivers leave them whole.
+// The direction is the axis that cuts the fewest stipples' triangles, the longest on ties (every axis
+// when no triangle is that large, as on a scan), among those that make at least two slabs; where every
+// axis cuts, a direction across the cut triangles' common direction when it cuts at most half as many.
+// A cut triangle's pieces are ordered apart and merged by their own times (merge_pieces), so its prefix
+// is spread over the triangle but not chosen away from its neighbours' prefixes: long slivers side by
+// side, cut across their length (a CAD cylinder's sides, slabs across its axis), drew single dots on
+// each other at a distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024), until 2026-12-05).
+// Slabs along the slivers leave them whole.
 void Orderer::make_units() {
     const size_t triangles = first_.size() - 1;
-    glm::vec3 lo = positions_[0], hi = positions_[0];
-    for (const glm::vec3& p : positions_) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    const glm::vec3 size = hi - lo;
-    const int longest = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
-
-    // Centroid and extent on each axis (the farthest stipple from the centroid) of each triangle's stipples.
-    std::vector<glm::vec3> centre(triangles, glm::vec3(0.0f)), extent(triangles, glm::vec3(0.0f));
-    parallel_for_chunks(triangles, 4096, [&](size_t, size_t begin, size_t end) {
-        for (size_t t = begin; t < end; ++t) {
-            const uint32_t b = first_[t], e = first_[t + 1];
-            if (b == e) continue;
-            glm::vec3 sum(0.0f);
-            for (uint32_t i = b; i < e; ++i) sum += positions_[i];
-            const glm::vec3 m = sum / float(e - b);
-            for (uint32_t i = b; i < e; ++i) extent[t] = glm::max(extent[t], glm::abs(positions_[i] - m));
-            centre[t] = m;
-        }
-    });
-    // Slabs of about 1/kSlabs of the object, but at least kMinSlabSearches search caps wide:
-    // stipples near a border miss their neighbour's placed in the same window, so narrower slabs
-    // (more border) leave more close pairs (a cube's prefixes at 1/64-1/256 within half their
-    // spacing: 1.4-1.8% of them at 1 cap, 0.8% at 4, 0.3-0.6% at 8), and wider ones leave fewer
-    // slabs to share between the cores. Triangles longer than such a slab allows (a search cap plus
-    // twice their extent) are cut, so the triangles kept whole fit it.
-    auto wanted_width = [&](int axis) {
-        return std::max(double(size[axis]) / kSlabs, kMinSlabSearches * kSearchCap * spacing_);
-    };
-    auto split_extent_on = [&](int axis) { return static_cast<float>(0.5 * (wanted_width(axis) - kSearchCap * spacing_)); };
-    // An axis across which the object is too thin for two slabs (a plane seen edge-on: nothing cut, one
-    // slab, one core) is not taken while the longest gives two.
-    auto slabs_on = [&](int axis) { return std::ceil(double(size[axis]) / wanted_width(axis)); };
-    const double fewest_slabs = std::min(2.0, slabs_on(longest));
-    uint64_t fewest_cut = std::numeric_limits<uint64_t>::max();
-    for (int a : {longest, (longest + 1) % 3, (longest + 2) % 3}) {
-        if (slabs_on(a) < fewest_slabs) continue;
-        const float split = split_extent_on(a);
-        uint64_t cut = 0;
-        for (size_t t = 0; t < triangles; ++t)
-            if (extent[t][a] > split) cut += first_[t + 1] - first_[t];
-        if (cut < fewest_cut) fewest_cut = cut, axis_ = a;
-    }
-    const double wanted = wanted_width(axis_);
-    const float split_extent = split_extent_on(axis_);
+    const SlabRule rule{spacing_, kSearchCap, kSlabs, kMinSlabSearches};
+    SlabDirection choice = choose_slab_direction(positions_, first_, rule);
+    dir_ = choice.direction;
+    const float lo_along = choice.lo;
+    const double size_along = choice.size;
+    const std::vector<float>& centre_along = choice.centre;
+    const std::vector<float>& extent_along = choice.extent;
+    const double wanted = rule.wanted_width(size_along);
+    const float split_extent = rule.split_extent(size_along);
     float max_extent = 0.0f;  // of the triangles kept whole
     for (size_t t = 0; t < triangles; ++t)
-        if (extent[t][axis_] <= split_extent) max_extent = std::max(max_extent, extent[t][axis_]);
+        if (extent_along[t] <= split_extent) max_extent = std::max(max_extent, extent_along[t]);
     // `wanted`, but for float rounding of split_extent.
     const double width = std::max(wanted, kSearchCap * spacing_ + 2.0 * max_extent);
-    const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size[axis_] / width)));
-    auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - lo[axis_]) / width))); };
+    const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size_along / width)));
+    auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - lo_along) / width))); };
     slab_units_.assign(slabs, {});
     slab_lo_.assign(slabs, std::numeric_limits<float>::infinity());
     slab_hi_.assign(slabs, -std::numeric_limits<float>::infinity());
@@ -247,8 +216,8 @@ void Orderer::make_units() {
         slab_units_[slab].push_back(static_cast<uint32_t>(units_.size()));
         units_.push_back(unit);
         for (uint32_t i = unit.begin; i < unit.end; ++i) {
-            slab_lo_[slab] = std::min(slab_lo_[slab], positions_[i][axis_]);
-            slab_hi_[slab] = std::max(slab_hi_[slab], positions_[i][axis_]);
+            slab_lo_[slab] = std::min(slab_lo_[slab], along(positions_[i]));
+            slab_hi_[slab] = std::max(slab_hi_[slab], along(positions_[i]));
         }
     };
     std::vector<uint32_t> count;
@@ -256,17 +225,17 @@ void Orderer::make_units() {
     for (size_t t = 0; t < triangles; ++t) {
         const uint32_t b = first_[t], e = first_[t + 1];
         if (b == e) continue;
-        if (extent[t][axis_] <= split_extent) {
-            add_unit({b, e, uint32_t(t), 0}, slab_at(centre[t][axis_]));
+        if (extent_along[t] <= split_extent) {
+            add_unit({b, e, uint32_t(t), 0}, slab_at(centre_along[t]));
             continue;
         }
         // Cut: the triangle's stipples grouped by slab (a stable counting sort), one unit each.
         count.assign(slabs + 1, 0);
-        for (uint32_t i = b; i < e; ++i) ++count[slab_at(positions_[i][axis_]) + 1];
+        for (uint32_t i = b; i < e; ++i) ++count[slab_at(along(positions_[i])) + 1];
         for (size_t s = 1; s <= slabs; ++s) count[s] += count[s - 1];
         sorted.resize(e - b);
         std::vector<uint32_t> fill(count.begin(), count.end() - 1);
-        for (uint32_t i = b; i < e; ++i) sorted[fill[slab_at(positions_[i][axis_])]++] = positions_[i];
+        for (uint32_t i = b; i < e; ++i) sorted[fill[slab_at(along(positions_[i]))]++] = positions_[i];
         std::copy(sorted.begin(), sorted.end(), positions_.begin() + b);
         const uint32_t first_unit = static_cast<uint32_t>(units_.size());
         for (size_t s = 0; s < slabs; ++s)
@@ -424,7 +393,7 @@ void Orderer::take_in_neighbours(size_t slab) {
     for (size_t nb : {slab - 1, slab + 1}) {
         if (nb >= state_.size()) continue;  // also catches slab - 1 for slab 0
         for (const auto& [p, reach] : state_[nb].placed_in_window)
-            if (p[axis_] >= slab_lo_[slab] - reach && p[axis_] <= slab_hi_[slab] + reach) state.grid->push(p, reach);
+            if (along(p) >= slab_lo_[slab] - reach && along(p) <= slab_hi_[slab] + reach) state.grid->push(p, reach);
     }
 }
 
