@@ -75,14 +75,37 @@ TEST(SlabDirection, AModelOfSmallTrianglesKeepsItsLongestAxis) {
     EXPECT_EQ(choice.cut_stipples, 0u);
 }
 
-TEST(SlabDirection, AFlatPlateIsNotCutAcrossItsThickness) {
-    // Two large triangles in the xz plane: across y nothing would be cut, but there is room for one slab
-    // only (one core); across x or z they are cut into pieces, two slabs or more.
-    const StippleSet set = stipples_of(make_grid(1), 0.25f);
+// A box of 12 triangles, 2 x 0.02 x 2 (a plate).
+Mesh thin_plate() {
+    Mesh mesh;
+    mesh.source = "plate";
+    for (int i = 0; i < 8; ++i)
+        mesh.positions.push_back(glm::vec3(i & 1 ? 1.0f : -1.0f, i & 2 ? 0.01f : -0.01f, i & 4 ? 1.0f : -1.0f));
+    // Outward, counter-clockwise: -x, +x, -y, +y, -z, +z.
+    mesh.indices = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                    2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+    return mesh;
+}
+
+TEST(SlabDirection, APlateIsNotCutAcrossItsThickness) {
+    // Across y its faces would not be cut (the large ones are flat in y, the thin ones 0.02 high), but
+    // there is room for one slab only (one core); across x or z its large faces are cut, two slabs or more.
+    const StippleSet set = stipples_of(thin_plate(), 0.25f);
     const SlabDirection choice = choose_slab_direction(set.positions, set.first, rule_for(set));
+    std::printf("plate: slabs across (%.3f, %.3f, %.3f), %.1f slabs, %llu of %zu stipples cut\n", choice.direction.x,
+                choice.direction.y, choice.direction.z, rule_for(set).slab_count(choice.size),
+                static_cast<unsigned long long>(choice.cut_stipples), set.positions.size());
     EXPECT_NEAR(choice.direction.y, 0.0f, 1e-6f);
     EXPECT_GE(rule_for(set).slab_count(choice.size), 2.0);
     EXPECT_GT(choice.cut_stipples, 0u);
+}
+
+TEST(SlabDirection, NothingToOrderIsNoFault) {
+    const std::vector<glm::vec3> none;
+    const std::vector<uint32_t> first = {0, 0, 0};
+    const SlabDirection choice = choose_slab_direction(none, first, SlabRule{0.01, 24.0, 24, 4.0});
+    EXPECT_EQ(choice.cut_stipples, 0u);
+    EXPECT_TRUE(choice.centre.empty());
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 
 // How the greedy runs on two cores and stays deterministic.
 //
-// The surface is cut into slabs across one axis (make_units), at least kSearchCap spacings plus two
+// The surface is cut into slabs across one direction (make_units), at least kSearchCap spacings plus two
 // unit extents wide, so that only neighbouring slabs interact. Time is cut into
 // windows of tau, each 2^(1/8) times the previous one. In a window every slab fills its slots up to the window's
 // end, in parallel, seeing every stipple placed before the window anywhere and its own placed in
@@ -108,7 +108,7 @@ private:
     float along(const glm::vec3& p) const { return glm::dot(p, dir_); }
     std::vector<Unit> units_;                        // by triangle, then piece
     std::vector<std::vector<uint32_t>> slab_units_;  // units per slab
-    std::vector<float> slab_lo_, slab_hi_;           // extent of each slab's stipples on the axis
+    std::vector<float> slab_lo_, slab_hi_;           // extent of each slab's stipples along dir_
     struct Split {
         uint32_t triangle, first_unit, end_unit;
     };

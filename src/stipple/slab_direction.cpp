@@ -1,6 +1,7 @@
 #include "stipple/slab_direction.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -20,124 +21,157 @@ double SlabRule::slab_count(double object_size) const { return std::ceil(object_
 
 namespace {
 
-uint64_t stipples_cut(const SlabDirection& choice, std::span<const uint32_t> first, const SlabRule& rule) {
-    const float split = rule.split_extent(choice.size);
-    uint64_t cut = 0;
-    for (size_t t = 0; t + 1 < first.size(); ++t)
-        if (choice.extent[t] > split) cut += first[t + 1] - first[t];
-    return cut;
+constexpr size_t kChunk = 4096;  // triangles per chunk of the parallel passes
+constexpr int kAcross = 4;       // directions tried across the cut triangles' common one
+
+// The centroid of triangle t's stipples (the same float arithmetic wherever it is needed: nothing per
+// triangle is kept but the chosen direction's centre and extent, 8 bytes a triangle, as before 2026-12-05).
+glm::vec3 centroid(std::span<const glm::vec3> positions, std::span<const uint32_t> first, size_t t) {
+    const uint32_t b = first[t], e = first[t + 1];
+    glm::vec3 sum(0.0f);
+    for (uint32_t i = b; i < e; ++i) sum += positions[i];
+    return sum / float(e - b);
 }
 
-// The stipples' span along unit direction d, and each triangle's centroid along it and reach from that.
-SlabDirection measure_along(glm::vec3 d, std::span<const glm::vec3> positions, std::span<const uint32_t> first,
-                            std::span<const glm::vec3> centre) {
-    SlabDirection along;
-    along.direction = d;
+// How many stipples lie in triangles reaching farther than split[k] along directions[k] from their
+// centroids, for up to four directions in one pass (counts summed per chunk, in chunk order).
+template <size_t N>
+std::array<uint64_t, N> stipples_cut(const std::array<glm::vec3, N>& directions, const std::array<float, N>& split,
+                                     std::span<const glm::vec3> positions, std::span<const uint32_t> first) {
+    const size_t triangles = first.size() - 1;
+    std::vector<std::array<uint64_t, N>> per_chunk((triangles + kChunk - 1) / kChunk);
+    parallel_for_chunks(triangles, kChunk, [&](size_t chunk, size_t begin, size_t end) {
+        std::array<uint64_t, N> cut{};
+        for (size_t t = begin; t < end; ++t) {
+            const uint32_t b = first[t], e = first[t + 1];
+            if (b == e) continue;
+            const glm::vec3 m = centroid(positions, first, t);
+            std::array<float, N> reach{};
+            for (uint32_t i = b; i < e; ++i)
+                for (size_t k = 0; k < N; ++k) reach[k] = std::max(reach[k], std::abs(glm::dot(positions[i] - m, directions[k])));
+            for (size_t k = 0; k < N; ++k)
+                if (reach[k] > split[k]) cut[k] += e - b;
+        }
+        per_chunk[chunk] = cut;
+    });
+    std::array<uint64_t, N> total{};
+    for (const std::array<uint64_t, N>& cut : per_chunk)
+        for (size_t k = 0; k < N; ++k) total[k] += cut[k];
+    return total;
+}
+
+// The stipples' least coordinate along unit direction d, and their span.
+std::pair<float, double> span_along(glm::vec3 d, std::span<const glm::vec3> positions) {
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     for (const glm::vec3& p : positions) lo = std::min(lo, glm::dot(p, d)), hi = std::max(hi, glm::dot(p, d));
-    along.lo = lo;
-    along.size = double(hi) - double(lo);
-    along.centre.assign(centre.size(), 0.0f);
-    along.extent.assign(centre.size(), 0.0f);
-    parallel_for_chunks(centre.size(), 4096, [&](size_t, size_t begin, size_t end) {
-        for (size_t t = begin; t < end; ++t) {
-            along.centre[t] = glm::dot(centre[t], d);
-            for (uint32_t i = first[t]; i < first[t + 1]; ++i)
-                along.extent[t] = std::max(along.extent[t], std::abs(glm::dot(positions[i] - centre[t], d)));
-        }
-    });
-    return along;
+    return {lo, double(hi) - double(lo)};
 }
 
-// The direction the cut triangles share: the principal eigenvector of the sum, weighted by their counts, of
-// r r^T over the unit vectors r from their centroids to their farthest stipples (power iteration). Zero
-// when there is none.
-glm::vec3 cut_triangles_direction(const SlabDirection& choice, std::span<const glm::vec3> positions,
-                                  std::span<const uint32_t> first, std::span<const glm::vec3> centre,
-                                  const SlabRule& rule) {
-    const float split = rule.split_extent(choice.size);
+// The direction the triangles reaching farther than `split` along d share: the principal eigenvector of
+// the sum, weighted by their counts, of r r^T over the unit vectors r from their centroids to their
+// farthest stipples (power iteration). Zero when there is none.
+glm::vec3 cut_triangles_direction(glm::vec3 d, float split, std::span<const glm::vec3> positions,
+                                  std::span<const uint32_t> first) {
     glm::mat3 spread(0.0f);
     for (size_t t = 0; t + 1 < first.size(); ++t) {
-        if (!(choice.extent[t] > split)) continue;
+        const uint32_t b = first[t], e = first[t + 1];
+        if (b == e) continue;
+        const glm::vec3 m = centroid(positions, first, t);
+        float along = 0.0f;
         glm::vec3 reach(0.0f);
-        for (uint32_t i = first[t]; i < first[t + 1]; ++i) {
-            const glm::vec3 d = positions[i] - centre[t];
-            if (glm::dot(d, d) > glm::dot(reach, reach)) reach = d;
+        for (uint32_t i = b; i < e; ++i) {
+            const glm::vec3 r = positions[i] - m;
+            along = std::max(along, std::abs(glm::dot(r, d)));
+            if (glm::dot(r, r) > glm::dot(reach, reach)) reach = r;
         }
-        if (glm::dot(reach, reach) > 0.0f) {
+        if (along > split && glm::dot(reach, reach) > 0.0f) {
             const glm::vec3 r = glm::normalize(reach);
-            spread += float(first[t + 1] - first[t]) * glm::outerProduct(r, r);
+            spread += float(e - b) * glm::outerProduct(r, r);
         }
     }
     glm::vec3 along = spread[0] + spread[1] + spread[2] + glm::vec3(1e-3f, 2e-3f, 3e-3f);  // not across it
-    for (int i = 0; i < 32; ++i) {
+    for (int i = 0; i <= 32; ++i) {
         const float norm = glm::length(along);
         if (!(norm > 0.0f) || !std::isfinite(norm)) return glm::vec3(0.0f);
-        along = spread * (along / norm);
+        along /= norm;
+        if (i < 32) along = spread * along;
     }
-    const float norm = glm::length(along);
-    return norm > 0.0f && std::isfinite(norm) ? along / norm : glm::vec3(0.0f);
+    return along;
 }
 
 }  // namespace
 
 SlabDirection choose_slab_direction(std::span<const glm::vec3> positions, std::span<const uint32_t> first,
                                     const SlabRule& rule) {
+    SlabDirection choice;
+    if (positions.empty() || first.size() < 2) return choice;
     const size_t triangles = first.size() - 1;
     glm::vec3 lo = positions[0], hi = positions[0];
     for (const glm::vec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const glm::vec3 size = hi - lo;
-    const int longest = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
 
-    // Centroid and extent on each axis (the farthest stipple from the centroid) of each triangle's stipples.
-    std::vector<glm::vec3> centre(triangles, glm::vec3(0.0f)), extent(triangles, glm::vec3(0.0f));
-    parallel_for_chunks(triangles, 4096, [&](size_t, size_t begin, size_t end) {
+    // The axes, longest first (ties by x, y, z). One across which the object is too thin for two slabs (a
+    // plane seen edge-on: nothing cut, one slab, one core) is not taken while the longest gives two.
+    std::array<int, 3> axes = {0, 1, 2};
+    std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return size[a] > size[b]; });
+    const double fewest_slabs = std::min(2.0, rule.slab_count(size[axes[0]]));
+    std::array<glm::vec3, 3> unit{};
+    std::array<float, 3> split{};
+    for (int k = 0; k < 3; ++k) unit[k][axes[k]] = 1.0f, split[k] = rule.split_extent(size[axes[k]]);
+    const std::array<uint64_t, 3> cut = stipples_cut(unit, split, positions, first);
+    int best = 0;
+    for (int k = 1; k < 3; ++k)
+        if (rule.slab_count(size[axes[k]]) >= fewest_slabs && cut[k] < cut[best]) best = k;
+    choice.direction = unit[best];
+    choice.lo = lo[axes[best]];
+    choice.size = size[axes[best]];
+    choice.cut_stipples = cut[best];
+
+    // Slivers along no axis (a CAD part's tilted pipe) are cut by every axis: the directions across the
+    // cut triangles' common direction are tried, and the one cutting the fewest taken where it cuts at
+    // most half what the axis does (a cylinder's fanned caps are cut about the same across any direction
+    // of their plane; an axis keeps its exact coordinates). With one slab a cut triangle is one piece anyway.
+    if (choice.cut_stipples > 0 && fewest_slabs >= 2.0) {
+        const glm::vec3 along = cut_triangles_direction(choice.direction, split[best], positions, first);
+        if (along != glm::vec3(0.0f)) {
+            const glm::vec3 a = glm::abs(along);
+            const glm::vec3 least = a.x <= a.y && a.x <= a.z ? glm::vec3(1, 0, 0) : (a.y <= a.z ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1));
+            const glm::vec3 u0 = glm::normalize(glm::cross(along, least)), u1 = glm::cross(along, u0);
+            std::array<glm::vec3, kAcross> across{};
+            std::array<float, kAcross> across_split{};
+            std::array<std::pair<float, double>, kAcross> spans{};
+            for (int k = 0; k < kAcross; ++k) {
+                const double angle = 3.141592653589793 * k / kAcross;
+                across[k] = float(std::cos(angle)) * u0 + float(std::sin(angle)) * u1;
+                spans[k] = span_along(across[k], positions);
+                across_split[k] = rule.split_extent(spans[k].second);
+            }
+            const std::array<uint64_t, kAcross> across_cut = stipples_cut(across, across_split, positions, first);
+            int fewest = -1;
+            for (int k = 0; k < kAcross; ++k)
+                if (rule.slab_count(spans[k].second) >= fewest_slabs && (fewest < 0 || across_cut[k] < across_cut[fewest]))
+                    fewest = k;
+            if (fewest >= 0 && 2 * across_cut[fewest] <= choice.cut_stipples) {
+                choice.direction = across[fewest];
+                choice.lo = spans[fewest].first;
+                choice.size = spans[fewest].second;
+                choice.cut_stipples = across_cut[fewest];
+            }
+        }
+    }
+
+    // The chosen direction's centre and reach per triangle, for the slabs.
+    choice.centre.assign(triangles, 0.0f);
+    choice.extent.assign(triangles, 0.0f);
+    parallel_for_chunks(triangles, kChunk, [&](size_t, size_t begin, size_t end) {
         for (size_t t = begin; t < end; ++t) {
-            const uint32_t b = first[t], e = first[t + 1];
-            if (b == e) continue;
-            glm::vec3 sum(0.0f);
-            for (uint32_t i = b; i < e; ++i) sum += positions[i];
-            const glm::vec3 m = sum / float(e - b);
-            for (uint32_t i = b; i < e; ++i) extent[t] = glm::max(extent[t], glm::abs(positions[i] - m));
-            centre[t] = m;
+            if (first[t] == first[t + 1]) continue;
+            const glm::vec3 m = centroid(positions, first, t);
+            choice.centre[t] = glm::dot(m, choice.direction);
+            for (uint32_t i = first[t]; i < first[t + 1]; ++i)
+                choice.extent[t] = std::max(choice.extent[t], std::abs(glm::dot(positions[i] - m, choice.direction)));
         }
     });
-    // An axis across which the object is too thin for two slabs (a plane seen edge-on: nothing cut, one
-    // slab, one core) is not taken while the longest gives two.
-    const double fewest_slabs = std::min(2.0, rule.slab_count(size[longest]));
-    SlabDirection choice;
-    choice.cut_stipples = std::numeric_limits<uint64_t>::max();
-    for (int a : {longest, (longest + 1) % 3, (longest + 2) % 3}) {
-        if (rule.slab_count(size[a]) < fewest_slabs) continue;
-        SlabDirection axis;
-        axis.direction[0] = 0.0f;
-        axis.direction[a] = 1.0f;
-        axis.lo = lo[a];
-        axis.size = size[a];
-        axis.centre.resize(triangles);
-        axis.extent.resize(triangles);
-        for (size_t t = 0; t < triangles; ++t) axis.centre[t] = centre[t][a], axis.extent[t] = extent[t][a];
-        axis.cut_stipples = stipples_cut(axis, first, rule);
-        if (axis.cut_stipples < choice.cut_stipples) choice = std::move(axis);
-    }
-    // Slivers along no axis (a CAD part's tilted pipe) are cut by every axis: directions across the cut
-    // triangles' common direction are tried as the axes were, and one taken only where it cuts at most half
-    // as many (a cylinder's fanned caps are cut about the same across any direction of their plane, and
-    // an axis makes the same stipples as before). With one slab a cut triangle is one piece anyway.
-    if (choice.cut_stipples == 0 || fewest_slabs < 2.0) return choice;
-    const glm::vec3 along = cut_triangles_direction(choice, positions, first, centre, rule);
-    if (along == glm::vec3(0.0f)) return choice;
-    const glm::vec3 a = glm::abs(along);
-    const glm::vec3 least = a.x <= a.y && a.x <= a.z ? glm::vec3(1, 0, 0) : (a.y <= a.z ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1));
-    const glm::vec3 u0 = glm::normalize(glm::cross(along, least)), u1 = glm::cross(along, u0);
-    for (int k = 0; k < 4; ++k) {
-        const double angle = 0.7853981633974483 * k;  // k * 45 degrees
-        SlabDirection across =
-            measure_along(float(std::cos(angle)) * u0 + float(std::sin(angle)) * u1, positions, first, centre);
-        if (rule.slab_count(across.size) < fewest_slabs) continue;
-        across.cut_stipples = stipples_cut(across, first, rule);
-        if (2 * across.cut_stipples <= choice.cut_stipples) choice = std::move(across);
-    }
     return choice;
 }
 

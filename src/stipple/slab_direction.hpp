@@ -35,11 +35,11 @@ struct SlabDirection {
 
 // The direction for the stipples positions[first[t] .. first[t+1]) of each triangle t: the axis that cuts
 // the fewest stipples' triangles, the longest on ties (every axis when no triangle is that large, as on
-// a scan), among those that make at least two slabs; where every axis cuts, a direction across the cut
-// triangles' common direction when it cuts at most half as many. Long slivers side by side cut across
-// their length (a CAD cylinder's sides, slabs across its axis) drew single dots on each other at a
-// distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024), until 2026-12-05): slabs along the
-// slivers leave them whole.
+// a scan), among those that make at least two slabs; where every axis cuts, of four directions across
+// the cut triangles' common direction the one cutting the fewest, when it cuts at most half as many.
+// Long slivers side by side cut across their length (a CAD cylinder's sides, slabs across its axis)
+// drew single dots on each other at a distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024),
+// until 2026-12-05): slabs along the slivers leave them whole. Deterministic for any thread count.
 SlabDirection choose_slab_direction(std::span<const glm::vec3> positions, std::span<const uint32_t> first,
                                     const SlabRule& rule);
 
