@@ -181,34 +181,22 @@ void Orderer::run(const std::function<void(double)>& progress) {
 // unit extents (along the direction) wide, so that only neighbouring slabs interact. Triangles too long
 // along it for slabs of about 1/kSlabs of the object (or kMinSlabSearches search caps) are cut at the
 // borders into pieces, each ordered as a unit of its own: without that, a model of a few large triangles
-// would be one slab, on one core, with a working set beyond the caches.
-//
-// The direction is the axis that cuts the fewest stipples' triangles, the longest on ties (every axis
-// when no triangle is that large, as on a scan), among those that make at least two slabs; where every
-// axis cuts, a direction across the cut triangles' common direction when it cuts at most half as many.
-// A cut triangle's pieces are ordered apart and merged by their own times (merge_pieces), so its prefix
-// is spread over the triangle but not chosen away from its neighbours' prefixes: long slivers side by
-// side, cut across their length (a CAD cylinder's sides, slabs across its axis), drew single dots on
-// each other at a distance, 10% lighter at 1/8 of the size (make_cad_cylinder(1024), until 2026-12-05).
-// Slabs along the slivers leave them whole.
+// would be one slab, on one core, with a working set beyond the caches. Which direction, and why it
+// follows slivers: stipple/slab_direction.hpp.
 void Orderer::make_units() {
     const size_t triangles = first_.size() - 1;
     const SlabRule rule{spacing_, kSearchCap, kSlabs, kMinSlabSearches};
-    SlabDirection choice = choose_slab_direction(positions_, first_, rule);
+    const SlabDirection choice = choose_slab_direction(positions_, first_, rule);
     dir_ = choice.direction;
-    const float lo_along = choice.lo;
-    const double size_along = choice.size;
-    const std::vector<float>& centre_along = choice.centre;
-    const std::vector<float>& extent_along = choice.extent;
-    const double wanted = rule.wanted_width(size_along);
-    const float split_extent = rule.split_extent(size_along);
+    const double wanted = rule.wanted_width(choice.size);
+    const float split_extent = rule.split_extent(choice.size);
     float max_extent = 0.0f;  // of the triangles kept whole
     for (size_t t = 0; t < triangles; ++t)
-        if (extent_along[t] <= split_extent) max_extent = std::max(max_extent, extent_along[t]);
+        if (choice.extent[t] <= split_extent) max_extent = std::max(max_extent, choice.extent[t]);
     // `wanted`, but for float rounding of split_extent.
     const double width = std::max(wanted, kSearchCap * spacing_ + 2.0 * max_extent);
-    const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(size_along / width)));
-    auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - lo_along) / width))); };
+    const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(choice.size / width)));
+    auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - choice.lo) / width))); };
     slab_units_.assign(slabs, {});
     slab_lo_.assign(slabs, std::numeric_limits<float>::infinity());
     slab_hi_.assign(slabs, -std::numeric_limits<float>::infinity());
@@ -225,8 +213,8 @@ void Orderer::make_units() {
     for (size_t t = 0; t < triangles; ++t) {
         const uint32_t b = first_[t], e = first_[t + 1];
         if (b == e) continue;
-        if (extent_along[t] <= split_extent) {
-            add_unit({b, e, uint32_t(t), 0}, slab_at(centre_along[t]));
+        if (choice.extent[t] <= split_extent) {
+            add_unit({b, e, uint32_t(t), 0}, slab_at(choice.centre[t]));
             continue;
         }
         // Cut: the triangle's stipples grouped by slab (a stable counting sort), one unit each.
