@@ -27,6 +27,7 @@
 #include "stipple/stipple_cache.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
+#include "support/test_shapes.hpp"
 
 namespace stipple {
 namespace {
@@ -309,18 +310,25 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     GenerationParams params;
     // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density);
     // slivers dense enough for slabs along them, which leave them whole, laid along an axis and along none
-    // (cache format 15).
+    // (cache format 15); particles whose selection values are made uniform per facing (16).
     Mesh tilted = make_cad_cylinder(256);
     const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1.0f, 0.0f, 0.6f))));
     for (glm::vec3& p : tilted.positions) p = turn * p;
     for (glm::vec3& n : tilted.normals) n = turn * n;
-    const std::pair<Mesh, float> meshes[] = {{make_icosphere(2), 0.01f},
-                                             {make_grid(1), 0.01f},
-                                             {make_cad_cylinder(48), 0.01f},
-                                             {make_cad_cylinder(256), 0.05f},
-                                             {tilted, 0.05f}};
-    for (const auto& [mesh, dmax] : meshes) {
+    struct Case {
+        Mesh mesh;
+        float dmax;
+        uint64_t max_stipples = GenerationParams{}.max_stipples;
+    };
+    const Case meshes[] = {{make_icosphere(2), 0.01f},
+                           {make_grid(1), 0.01f},
+                           {make_cad_cylinder(48), 0.01f},
+                           {make_cad_cylinder(256), 0.05f},
+                           {tilted, 0.05f},
+                           {test::make_tetrahedron_cloud(8000, 0.01f), 0.25f, 4 * 4 * 8000}};
+    for (const auto& [mesh, dmax, max_stipples] : meshes) {
         params.dmax = dmax;
+        params.max_stipples = max_stipples;
         const StippleSet set = generate_stipples(mesh, params);
         ASSERT_GT(set.size(), 1000u);
         for (const glm::vec3& p : set.positions) {

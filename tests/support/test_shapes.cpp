@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/hash.hpp"
+
 namespace stipple::test {
 
 namespace {
@@ -60,6 +62,24 @@ Mesh make_disc(int segments, int rings) {
     });
     mesh.source = "disc";
     face_outward(mesh, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    return mesh;
+}
+
+Mesh make_tetrahedron_cloud(size_t copies, float size) {
+    Mesh mesh;
+    const glm::vec3 corners[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    const uint32_t faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    for (size_t copy = 0; copy < copies; ++copy) {
+        const uint64_t bits = mix64(copy + 1);
+        const glm::vec3 centre = glm::vec3(float(bits & 0xFFFF), float((bits >> 16) & 0xFFFF), float((bits >> 32) & 0xFFFF)) / 65536.0f;
+        const float angle = float((bits >> 48) & 0xFFFF) / 65536.0f * 6.2831853f;
+        const float c = std::cos(angle), s = std::sin(angle);
+        const uint32_t base = uint32_t(mesh.positions.size());
+        for (const glm::vec3& v : corners) mesh.positions.push_back(centre + size * glm::vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z));
+        for (const auto& f : faces) mesh.indices.insert(mesh.indices.end(), {base + f[0], base + f[1], base + f[2]});
+    }
+    mesh.source = "tetrahedron cloud";
+    optimize_draw_order(mesh);
     return mesh;
 }
 

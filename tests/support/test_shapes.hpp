@@ -1,6 +1,7 @@
 #pragma once
 // Small meshes whose lines are known exactly, for the line tests: an open bowl, a flat disc, a box.
-// Each is wound counter-clockwise seen from its outside (a disc: from +z), with vertex normals.
+// Each is wound counter-clockwise seen from its outside (a disc: from +z), with vertex normals. And a cloud
+// of small tetrahedra for the selection values.
 #include <string>
 
 #include <glm/glm.hpp>
@@ -19,6 +20,12 @@ Mesh make_disc(int segments, int rings);
 // A box centred on the origin with these side lengths: 8 shared corners, 12 triangles, so each of its
 // 12 edges joins two faces at 90 degrees and each face's diagonal joins two triangles of one plane.
 Mesh make_box(glm::vec3 size);
+
+// `copies` regular tetrahedra of half-diagonal `size` at hashed places in the unit cube, each turned about z
+// by a hashed angle (so a face of a given number faces about the same way in every copy), wound outward,
+// in the draw order a model is loaded in (optimize_draw_order: each copy's faces in the same order). Far
+// away, such particles lie below a dot and are drawn by the probabilistic selection.
+Mesh make_tetrahedron_cloud(size_t copies, float size);
 
 // Triangle t's normal scaled by twice its area (counter-clockwise corners give the side they face), and
 // its centroid, in double.
