@@ -127,44 +127,52 @@ TEST(SelectionValues, UniformForPolygonsOfEveryCandidateCount) {
 // the same order, as the draw order leaves them: within a copy the faces rank by where their first stipples
 // lie, which follows the order they were placed in, so the faces of one facing ranked earlier than the
 // others in every copy; and p follows the facing (shading, the orientation term). With classes by count and
-// area alone, on this mesh, the faces of one octant read 0.180 below p = 0.2 and of another 0.223, and p =
-// 0.6 (N.L)(N.E) for the faces turned to an eye drew 0.88 of the stipples it owed. Within each facing
-// (the octant of the normal), the share below p is p, and the ink drawn is the ink owed.
+// area alone, the tetrahedra's faces of one octant read 0.180 below p = 0.2 and of another 0.223, and p =
+// 0.6 (N.L)(N.E) drew 0.88 of what it owed; the boxes' faces 0.148-0.257 by direction. Within each facing
+// (the octant of the normal and its longest axis), the share below p is p, and the ink drawn is the ink owed,
+// for a light off the axes and one along an axis.
 TEST(SelectionValues, UniformForEveryFacingOfRepeatedParts) {
-    const Mesh mesh = test::make_tetrahedron_cloud(20000, 0.01f);
-    GenerationParams params;
-    params.max_stipples = 4 * mesh.triangle_count();  // 4 a face
-    const StippleSet stipples = generate_stipples(mesh, params);
-    const std::vector<float> values = polygon_selection_values(mesh, stipples, params.seed);
-    std::vector<glm::vec3> normals(values.size());
-    for (size_t t = 0; t < values.size(); ++t) normals[t] = glm::vec3(glm::normalize(test::face_normal(mesh, t)));
-    for (int octant = 0; octant < 8; ++octant) {
-        auto in_octant = [&](size_t t) {
-            return (normals[t].x < 0.0f) == bool(octant & 1) && (normals[t].y < 0.0f) == bool(octant & 2) &&
-                   (normals[t].z < 0.0f) == bool(octant & 4);
-        };
-        size_t polygons = 0;
-        for (size_t t = 0; t < values.size(); ++t) polygons += in_octant(t);
-        ASSERT_GT(polygons, 5000u) << "octant " << octant;
-        for (double p : {0.05, 0.2, 0.5}) {
-            size_t below = 0;
-            for (size_t t = 0; t < values.size(); ++t) below += in_octant(t) && values[t] < p;
-            const double share = double(below) / double(polygons);
-            std::printf("octant %d, %zu faces: %.4f below p = %.2f\n", octant, polygons, share, p);
-            EXPECT_NEAR(share, p, 3.0 * std::sqrt(p * (1.0 - p) / double(polygons))) << "octant " << octant;
+    auto facing = [](const glm::vec3& n) {
+        const glm::vec3 m = glm::abs(n);
+        const int axis = m.x >= m.y && m.x >= m.z ? 0 : m.y >= m.z ? 1 : 2;
+        return 3 * (int(n.x < 0.0f) | int(n.y < 0.0f) << 1 | int(n.z < 0.0f) << 2) + axis;
+    };
+    const std::pair<const char*, Mesh> clouds[] = {{"tetrahedra turned about z", test::make_tetrahedron_cloud(20000, 0.01f)},
+                                                   {"boxes not turned", test::make_box_cloud(8000, 0.02f)}};
+    for (const auto& [name, mesh] : clouds) {
+        GenerationParams params;
+        params.max_stipples = 4 * mesh.triangle_count();  // 4 a face
+        const StippleSet stipples = generate_stipples(mesh, params);
+        const std::vector<float> values = polygon_selection_values(mesh, stipples, params.seed);
+        std::vector<glm::vec3> normals(values.size());
+        for (size_t t = 0; t < values.size(); ++t) normals[t] = glm::vec3(glm::normalize(test::face_normal(mesh, t)));
+        for (int bin = 0; bin < 24; ++bin) {
+            size_t polygons = 0;
+            for (size_t t = 0; t < values.size(); ++t) polygons += facing(normals[t]) == bin;
+            if (polygons < 1000) continue;
+            for (double p : {0.05, 0.2, 0.5}) {
+                size_t below = 0;
+                for (size_t t = 0; t < values.size(); ++t) below += facing(normals[t]) == bin && values[t] < p;
+                const double share = double(below) / double(polygons);
+                std::printf("%s, facing %d, %zu faces: %.4f below p = %.2f\n", name, bin, polygons, share, p);
+                EXPECT_NEAR(share, p, 3.0 * std::sqrt(p * (1.0 - p) / double(polygons))) << name << ", facing " << bin;
+            }
+        }
+        // The selection's ink for an eye and a light off the axes, and a light along one: each face turned to
+        // the eye owes p and draws one stipple when its value is below p.
+        const glm::vec3 eye = glm::normalize(glm::vec3(0.5f, 0.17f, 0.85f));
+        for (const glm::vec3 light : {glm::normalize(glm::vec3(-0.45f, 0.55f, 0.7f)), glm::vec3(0.0f, 0.0f, 1.0f)}) {
+            double owed = 0.0, variance = 0.0, drawn = 0.0;
+            for (size_t t = 0; t < values.size(); ++t) {
+                if (glm::dot(normals[t], eye) <= 0.0f) continue;
+                const double p = 0.6 * std::max(0.0f, glm::dot(normals[t], light)) * glm::dot(normals[t], eye);
+                owed += p, variance += p * (1.0 - p), drawn += values[t] < p;
+            }
+            std::printf("%s, light (%.2f, %.2f, %.2f): drawn %.0f of %.1f owed (%.4f)\n", name, light.x, light.y, light.z,
+                        drawn, owed, drawn / owed);
+            EXPECT_NEAR(drawn, owed, 3.0 * std::sqrt(variance)) << name;
         }
     }
-    // The selection's ink for a light and an eye off the axes: each face turned to the eye owes p and draws one
-    // stipple when its value is below p.
-    const glm::vec3 light = glm::normalize(glm::vec3(-0.45f, 0.55f, 0.7f)), eye = glm::normalize(glm::vec3(0.5f, 0.17f, 0.85f));
-    double owed = 0.0, variance = 0.0, drawn = 0.0;
-    for (size_t t = 0; t < values.size(); ++t) {
-        if (glm::dot(normals[t], eye) <= 0.0f) continue;
-        const double p = 0.6 * std::max(0.0f, glm::dot(normals[t], light)) * glm::dot(normals[t], eye);
-        owed += p, variance += p * (1.0 - p), drawn += values[t] < p;
-    }
-    std::printf("faces turned to the eye: drawn %.0f of %.1f owed (%.4f)\n", drawn, owed, drawn / owed);
-    EXPECT_NEAR(drawn, owed, 3.0 * std::sqrt(variance));
 }
 
 // The ranking tests its sites in blocks, each against the centroids ranked before the block on every

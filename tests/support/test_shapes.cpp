@@ -65,22 +65,37 @@ Mesh make_disc(int segments, int rings) {
     return mesh;
 }
 
-Mesh make_tetrahedron_cloud(size_t copies, float size) {
+namespace {
+
+// `copies` of `part` at hashed places in the unit cube, each turned about z by a hashed angle if `turn`, in
+// the draw order a model is loaded in.
+Mesh cloud_of(const Mesh& part, size_t copies, bool turn, const char* source) {
     Mesh mesh;
-    const glm::vec3 corners[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-    const uint32_t faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
     for (size_t copy = 0; copy < copies; ++copy) {
         const uint64_t bits = mix64(copy + 1);
         const glm::vec3 centre = glm::vec3(float(bits & 0xFFFF), float((bits >> 16) & 0xFFFF), float((bits >> 32) & 0xFFFF)) / 65536.0f;
-        const float angle = float((bits >> 48) & 0xFFFF) / 65536.0f * 6.2831853f;
+        const float angle = turn ? float((bits >> 48) & 0xFFFF) / 65536.0f * 6.2831853f : 0.0f;
         const float c = std::cos(angle), s = std::sin(angle);
         const uint32_t base = uint32_t(mesh.positions.size());
-        for (const glm::vec3& v : corners) mesh.positions.push_back(centre + size * glm::vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z));
-        for (const auto& f : faces) mesh.indices.insert(mesh.indices.end(), {base + f[0], base + f[1], base + f[2]});
+        for (const glm::vec3& v : part.positions) mesh.positions.push_back(centre + glm::vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z));
+        for (uint32_t i : part.indices) mesh.indices.push_back(base + i);
     }
-    mesh.source = "tetrahedron cloud";
+    mesh.source = source;
     optimize_draw_order(mesh);
     return mesh;
+}
+
+}  // namespace
+
+Mesh make_tetrahedron_cloud(size_t copies, float size) {
+    Mesh tetrahedron;
+    tetrahedron.positions = {{size, size, size}, {size, -size, -size}, {-size, size, -size}, {-size, -size, size}};
+    tetrahedron.indices = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};  // outward
+    return cloud_of(tetrahedron, copies, true, "tetrahedron cloud");
+}
+
+Mesh make_box_cloud(size_t copies, float size) {
+    return cloud_of(make_box(glm::vec3(size)), copies, false, "box cloud");
 }
 
 Mesh make_box(glm::vec3 size) {

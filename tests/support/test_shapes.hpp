@@ -21,11 +21,14 @@ Mesh make_disc(int segments, int rings);
 // 12 edges joins two faces at 90 degrees and each face's diagonal joins two triangles of one plane.
 Mesh make_box(glm::vec3 size);
 
-// `copies` regular tetrahedra of half-diagonal `size` at hashed places in the unit cube, each turned about z
-// by a hashed angle (so a face of a given number faces about the same way in every copy), wound outward,
-// in the draw order a model is loaded in (optimize_draw_order: each copy's faces in the same order). Far
-// away, such particles lie below a dot and are drawn by the probabilistic selection.
+// Clouds of small parts for the selection values, in the draw order a model is loaded in
+// (optimize_draw_order: each copy's faces in the same order); far away such particles lie below a dot and
+// are drawn by the probabilistic selection. `copies` regular tetrahedra inscribed in cubes of half-edge
+// `size`, wound outward, at hashed places in the unit cube, each turned about z by a hashed angle (a face
+// of a given number has the same elevation in every copy); and `copies` boxes of edge `size`, not turned
+// (each face of a given number faces the same way in every copy, along an axis).
 Mesh make_tetrahedron_cloud(size_t copies, float size);
+Mesh make_box_cloud(size_t copies, float size);
 
 // Triangle t's normal scaled by twice its area (counter-clockwise corners give the side they face), and
 // its centroid, in double.
