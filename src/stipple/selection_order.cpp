@@ -106,7 +106,8 @@ uint8_t facing_bin(const glm::vec3& n) {
 // (n + 1)(n - m) / (12 n^2 m), at most 1 / (12 m); the bound is used, which understates z where one facing
 // holds much of its class (a miss, never a false split). Used by calibrate_per_class, below.
 template <class Keyed>
-bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t end, const std::vector<uint8_t>& facings) {
+bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t end,
+                         const std::vector<uint8_t>& facings) {
     constexpr double kFacingZ = 5.0;
     const size_t n = end - begin;
     if (n < 64) return false;
@@ -116,8 +117,10 @@ bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t
         rank_sum[f] += (double(k - begin) + 0.5) / double(n);
         members[f] += 1.0;
     }
-    for (int f = 0; f < kFacings; ++f)
-        if (members[f] > 0.0 && std::abs(rank_sum[f] / members[f] - 0.5) * std::sqrt(12.0 * members[f]) > kFacingZ) return true;
+    for (int f = 0; f < kFacings; ++f) {
+        const double z = members[f] > 0.0 ? std::abs(rank_sum[f] / members[f] - 0.5) * std::sqrt(12.0 * members[f]) : 0.0;
+        if (z > kFacingZ) return true;
+    }
     return false;
 }
 
@@ -138,20 +141,21 @@ bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t
 // the area to within 1/16, and a class of one count would hold a triangle or two, whose values would
 // keep nothing of the blue-noise order.
 // And a class whose ranks measurably follow the facing (facing_bin: the octant of the triangle's normal and
-// its longest axis) is made uniform per facing too, for the same reason: p follows the facing (shading, the orientation term). Many copies
-// of one small shape turned alike (particles, glyphs, an instanced part, whose faces the draw order leaves in
-// the same order in every copy) are ranked within a copy by where each face's first stipple lies, which
-// follows the order the faces were placed in, so the faces of one facing rank earlier than the others in
-// every copy: a cloud of 100,000 tetrahedra turned about z alone, its faces facing up 0.91 p below p = 0.2
-// and those facing down 1.08 p, drew 0.92-0.96 of what the probabilistic regime owed (`stipple tone CLOUD.obj
-// --regimes`); 8,000 boxes not turned, their faces 0.74-1.28 p by direction, drew 0.71-0.75 of the owed
-// (SelectionValues.UniformForEveryFacingOfRepeatedParts; 0.78-0.86 with bins by octant alone, now 1.000).
-// Only such classes: every class split by octant left a scan's classes of a few dozen
-// triangles, whose values keep little of the blue-noise order (the bunny's tone at 1/16 of its size fell 5%).
-// The shared models' and the default scene's classes read at most 4.6 standard errors over seeds 1-5 (the
-// ogre, seed 1; none split: a class split by chance would only lose some of its order); the test's boxes
-// 35 and tetrahedra 9.5, the cloud above 14.5; with each copy's faces shuffled the cloud reads 3.7 and is
-// not split, keeping a bias of 1-2%.
+// its longest axis) is made uniform per facing too, for the same reason: p follows the facing (shading, the
+// orientation term). Many copies of one small shape turned alike (particles, glyphs, an instanced part,
+// whose faces the draw order leaves in the same order in every copy) are ranked within a copy by where each
+// face's first stipple lies, which follows the order the faces were placed in, so the faces of one facing
+// rank earlier than the others in every copy: a cloud of 100,000 tetrahedra turned about z alone
+// (tools/tone_survey_meshes.py g11), its faces facing up 0.91 p below p = 0.2 and those facing down 1.08 p,
+// drew 0.92-0.96 of what the probabilistic regime owed (`stipple tone CLOUD.obj --regimes`); 8,000 boxes not
+// turned, their faces 0.74-1.28 p by direction, drew 0.71-0.75 of it
+// (SelectionValues.UniformForEveryFacingOfRepeatedParts; 0.78-0.86 with bins by octant alone; now 1.000).
+// Only such classes: every class split by octant left a scan's classes of a few dozen triangles, whose
+// values keep little of the blue-noise order (the bunny's tone at 1/16 of its size fell 5%). The shared
+// models' and the default scene's classes read at most 4.6 standard errors over seeds 1-5 (the ogre, seed
+// 1; none split: a class split by chance would only lose some of its order); the test's boxes 35 and
+// tetrahedra 9.5, the cloud above 14.5; with each copy's faces shuffled the cloud reads 3.7 and is not
+// split, keeping a bias of 1-2%.
 void calibrate_per_class(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
                          const std::vector<uint8_t>& facings, const std::vector<double>& scaled, uint64_t seed,
                          std::vector<float>& values) {

@@ -73,11 +73,13 @@ Mesh cloud_of(const Mesh& part, size_t copies, bool turn, const char* source) {
     Mesh mesh;
     for (size_t copy = 0; copy < copies; ++copy) {
         const uint64_t bits = mix64(copy + 1);
-        const glm::vec3 centre = glm::vec3(float(bits & 0xFFFF), float((bits >> 16) & 0xFFFF), float((bits >> 32) & 0xFFFF)) / 65536.0f;
+        const glm::vec3 centre =
+            glm::vec3(float(bits & 0xFFFF), float((bits >> 16) & 0xFFFF), float((bits >> 32) & 0xFFFF)) / 65536.0f;
         const float angle = turn ? float((bits >> 48) & 0xFFFF) / 65536.0f * 6.2831853f : 0.0f;
         const float c = std::cos(angle), s = std::sin(angle);
         const uint32_t base = uint32_t(mesh.positions.size());
-        for (const glm::vec3& v : part.positions) mesh.positions.push_back(centre + glm::vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z));
+        for (const glm::vec3& v : part.positions)
+            mesh.positions.push_back(centre + glm::vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z));
         for (uint32_t i : part.indices) mesh.indices.push_back(base + i);
     }
     mesh.source = source;
