@@ -412,7 +412,6 @@ int run_render(const std::vector<std::string>& argv) {
         if (vector) {
             last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
                                           output_path(output, i, sequence), animated ? clock.frame_time(i) : 0.0);
-            if (args.flag("--stats")) std::printf("%s\n", plot::format_stats(last_plot).c_str());
             if (last_plot.dots == 0 && last_plot.polylines == 0) {
                 ++empty_pages;
                 empty_small_dots += last_plot.small_dots;
@@ -475,6 +474,8 @@ int run_render(const std::vector<std::string>& argv) {
         // Vector output's plot line counts the dots left after hidden-stipple removal: say which this is.
         std::printf("drawn stipples:     %lld%s\n", (long long)stats.drawn_stipples,
                     vector ? " (by the density, before hidden-stipple removal; the plot's dots are those visible)" : "");
+        // The plot's line under the scene's header with the rest (it came before the header until 2026-12-05).
+        if (vector) std::printf("%s%s\n", plot::format_stats(last_plot).c_str(), sequence ? " (last frame)" : "");
         std::string paths;
         for (const SceneObject& o : scene.objects)
             if (paths.find(density_path_name(o.params.density_path)) == std::string::npos)
