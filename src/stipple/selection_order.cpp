@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 #include "core/hash.hpp"
 #include "core/parallel.hpp"
@@ -228,6 +227,57 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
     });
 }
 
+// The order in which the dart throwing below offers the triangles' sites: each arrives at u / w, u uniform per
+// triangle and w its weight, the candidate count where counts are known (p, the probability of §2.3's
+// selection, is proportional to it) and the area otherwise. The sites offered before any time x are then a
+// Poisson sample of x stipples' worth per unit of weight, so as many per unit of area wherever the triangles
+// are small or large, and where a level's radius leaves room for one site among several triangles, the first
+// offered is the one that owes the most: a triangle reaches an early rank about in proportion to what it owes,
+// whatever the sizes beside it. Then the triangles a small p selects in each class of size (calibrate_per_class)
+// are the early ranks of one blue-noise order. Offered in a random order alone (until 2026-12-06), a room went
+// to any of the triangles in it alike: a class's early ranks fell where its triangles were many rather than
+// large, a different share in each class, and where neighbouring triangles differ widely in area (an
+// isosurface's slivers beside its full triangles) the selected triangles of different classes fell on each
+// other as if thrown at random. The metaballs of tools/tone_survey_meshes.py g03b at 1/16 of the frame height:
+// their dots' ink over their unshared ink 0.903 (a sphere's 0.94), now 0.934; their tone over a 16-fold range
+// of size 1.049 / 1.059 (seeds 1-3, two views), now 1.021 / 1.021; the gyroid (g03) 1.053 / 1.050, now 1.044 /
+// 1.047 (docs/paper-reading.md, §2.3 regime (b)). Where the triangles are alike in size the order is a random
+// one, as before. A triangle of no weight (no candidate: p = 0) comes after all others, in random order.
+std::vector<uint32_t> arrival_order(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
+                                    uint64_t seed) {
+    const size_t count = areas.size();
+    const bool counted = std::any_of(counts.begin(), counts.end(), [](uint32_t c) { return c > 0; });
+    struct Arrival {
+        double time;
+        uint32_t weightless;  // 1: no weight, ordered by u alone after every other
+        uint32_t triangle;
+    };
+    const uint64_t key = mix64(seed ^ 0x9E3779B97F4A7C15ull);
+    std::vector<Arrival> arrivals(count);
+    for (size_t t = 0; t < count; ++t) {
+        const double u = (double(mix64(key ^ t) >> 11) + 0.5) * 0x1p-53;  // in (0, 1)
+        const double weight = counted ? double(counts[t]) : areas[t];
+        const bool weightless = !(weight > 0.0) || !std::isfinite(u / weight);
+        arrivals[t] = {weightless ? u : u / weight, weightless ? 1u : 0u, uint32_t(t)};
+    }
+    auto earlier = [](const Arrival& a, const Arrival& b) {
+        if (a.weightless != b.weightless) return a.weightless < b.weightless;
+        return a.time < b.time || (a.time == b.time && a.triangle < b.triangle);
+    };
+    // Halves sorted on two cores and merged (a total order: the result is the one sort's).
+    const size_t half = count >= 65536 ? count / 2 : 0;
+    parallel_for(half > 0 ? 2 : 1, 1, [&](size_t part) {
+        const auto from = arrivals.begin() + std::ptrdiff_t(part == 0 ? 0 : half);
+        const auto to = part == 0 && half > 0 ? arrivals.begin() + std::ptrdiff_t(half) : arrivals.end();
+        std::sort(from, to, earlier);
+    });
+    if (half > 0)
+        std::inplace_merge(arrivals.begin(), arrivals.begin() + std::ptrdiff_t(half), arrivals.end(), earlier);
+    std::vector<uint32_t> order(count);
+    for (size_t i = 0; i < count; ++i) order[i] = arrivals[i].triangle;
+    return order;
+}
+
 glm::vec3 centroid(const Mesh& mesh, size_t t) {
     return (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
             mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
@@ -243,6 +293,13 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     const double area = std::max(total_area(mesh), 1e-30);
     glm::vec3 lowest = sites[0];
     for (const glm::vec3& c : sites) lowest = glm::min(lowest, c);
+    std::vector<double> areas(count);
+    std::vector<uint8_t> facings(count);
+    for (size_t t = 0; t < count; ++t) {  // in the mesh's order: its memory in order
+        areas[t] = triangle_area(mesh, t);
+        facings[t] = facing_bin(glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
+                                           mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]));
+    }
 
     // A site waiting to be ranked, with the squared distance to a ranked centroid near it (infinity
     // when none is known): once a site is rejected for a centroid at distance d, it is rejected at every
@@ -254,11 +311,8 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     };
     std::vector<Pending> pending(count);
     {
-        std::vector<uint32_t> shuffled(count);
-        std::iota(shuffled.begin(), shuffled.end(), 0u);
-        std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
-        std::shuffle(shuffled.begin(), shuffled.end(), rng);
-        for (size_t i = 0; i < count; ++i) pending[i] = {shuffled[i], INFINITY};
+        const std::vector<uint32_t> order = arrival_order(areas, counts, seed);
+        for (size_t i = 0; i < count; ++i) pending[i] = {order[i], INFINITY};
     }
     size_t head = 0;  // pending[head..] wait, in order: moving the head, not the sites, per level
 
@@ -325,13 +379,6 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // ranked before its regular share once its region runs out of sites. So the value is made exactly
     // uniform where it matters, among triangles of about the same area and count (calibrate_per_class).
     const double mean_area = area / double(count);
-    std::vector<double> areas(count);
-    std::vector<uint8_t> facings(count);
-    for (size_t t = 0; t < count; ++t) {  // in the mesh's order: its memory in order
-        areas[t] = triangle_area(mesh, t);
-        facings[t] = facing_bin(glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
-                                           mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]));
-    }
     std::vector<double> scaled(count);
     for (size_t rank = 0; rank < count; ++rank) {
         uint32_t t = ranked[rank];
