@@ -123,6 +123,19 @@ bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t
     return false;
 }
 
+// Sorted as std::sort would, in halves on two cores and merged; for a total order (no two elements equal)
+// the result is the one sort's. The 871k-triangle dragon's classes took 0.13 s on one core, 0.08 on two.
+template <class T, class Less>
+void sort_on_two_cores(std::vector<T>& items, const Less& less) {
+    const size_t half = items.size() >= 65536 ? items.size() / 2 : 0;
+    parallel_for(half > 0 ? 2 : 1, 1, [&](size_t part) {
+        const auto from = items.begin() + std::ptrdiff_t(part == 0 ? 0 : half);
+        const auto to = part == 0 && half > 0 ? items.begin() + std::ptrdiff_t(half) : items.end();
+        std::sort(from, to, less);
+    });
+    if (half > 0) std::inplace_merge(items.begin(), items.begin() + std::ptrdiff_t(half), items.end(), less);
+}
+
 // Triangles in classes of the same candidate count (below kExactCounts; from there on the area decides
 // alone) and about the same area (within kClassRatio of the class's smallest); in each class of n the
 // k-th in the order of `scaled` (the blue-noise rank) gets a value in [k / n, (k + 1) / n), at a place
@@ -174,16 +187,7 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
         if (a.count_class != b.count_class) return a.count_class < b.count_class;
         return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
     };
-    // Halves sorted on two cores and merged: the order is total (triangles break ties), so the result
-    // is the one sort's (the 871k-triangle dragon's sort took 0.13 s on one core, 0.08 on two).
-    const size_t half = count >= 65536 ? count / 2 : 0;
-    parallel_for(half > 0 ? 2 : 1, 1, [&](size_t part) {
-        const auto from = by_area.begin() + std::ptrdiff_t(part == 0 ? 0 : half);
-        const auto to = part == 0 && half > 0 ? by_area.begin() + std::ptrdiff_t(half) : by_area.end();
-        std::sort(from, to, by_class_and_area);
-    });
-    if (half > 0)
-        std::inplace_merge(by_area.begin(), by_area.begin() + std::ptrdiff_t(half), by_area.end(), by_class_and_area);
+    sort_on_two_cores(by_area, by_class_and_area);  // the order is total: triangles break ties
     const uint64_t key = mix64(seed ^ 0x53454C4543540001ull);
     // The classes' bounds first (each starts at a triangle whose area sets its limit), then the
     // classes on both cores: each writes its own range and its own triangles' values.
@@ -264,15 +268,7 @@ std::vector<uint32_t> arrival_order(const std::vector<double>& areas, const std:
         if (a.weightless != b.weightless) return a.weightless < b.weightless;
         return a.time < b.time || (a.time == b.time && a.triangle < b.triangle);
     };
-    // Halves sorted on two cores and merged (a total order: the result is the one sort's).
-    const size_t half = count >= 65536 ? count / 2 : 0;
-    parallel_for(half > 0 ? 2 : 1, 1, [&](size_t part) {
-        const auto from = arrivals.begin() + std::ptrdiff_t(part == 0 ? 0 : half);
-        const auto to = part == 0 && half > 0 ? arrivals.begin() + std::ptrdiff_t(half) : arrivals.end();
-        std::sort(from, to, earlier);
-    });
-    if (half > 0)
-        std::inplace_merge(arrivals.begin(), arrivals.begin() + std::ptrdiff_t(half), arrivals.end(), earlier);
+    sort_on_two_cores(arrivals, earlier);  // a total order: triangles break ties
     std::vector<uint32_t> order(count);
     for (size_t i = 0; i < count; ++i) order[i] = arrivals[i].triangle;
     return order;
