@@ -310,7 +310,8 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     GenerationParams params;
     // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density);
     // slivers dense enough for slabs along them, which leave them whole, laid along an axis and along none
-    // (cache format 15); boxes not turned, whose selection values are made uniform per facing (16).
+    // (cache format 15); boxes not turned, whose selection values are made uniform per facing (16); a fine
+    // sphere at a low density, most of whose triangles hold no candidate and are ranked after all others (17).
     Mesh tilted = make_cad_cylinder(256);
     const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1.0f, 0.0f, 0.6f))));
     for (glm::vec3& p : tilted.positions) p = turn * p;
@@ -325,7 +326,8 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
                            {make_cad_cylinder(48), 0.01f},
                            {make_cad_cylinder(256), 0.05f},
                            {tilted, 0.05f},
-                           {test::make_box_cloud(2000, 0.02f), 0.25f, 4 * 12 * 2000}};
+                           {test::make_box_cloud(2000, 0.02f), 0.25f, 4 * 12 * 2000},
+                           {make_icosphere(5), 0.001f}};
     for (const auto& [mesh, dmax, max_stipples] : meshes) {
         params.dmax = dmax;
         params.max_stipples = max_stipples;

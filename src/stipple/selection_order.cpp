@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "core/hash.hpp"
 #include "core/parallel.hpp"
@@ -233,22 +232,24 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
 
 // The order in which the dart throwing below offers the triangles' sites: each arrives at u / w, u uniform per
 // triangle and w its weight, the candidate count where counts are known (p, the probability of §2.3's
-// selection, is proportional to it) and the area otherwise. The sites offered before any time x are then a
-// Poisson sample of x stipples' worth per unit of weight, so as many per unit of area wherever the triangles
-// are small or large, and where a level's radius leaves room for one site among several triangles, the first
-// offered is the one that owes the most: a triangle reaches an early rank about in proportion to what it owes,
-// whatever the sizes beside it. Then the triangles a small p selects in each class of size (calibrate_per_class)
-// are the early ranks of one blue-noise order. Offered in a random order alone (until 2026-12-06), a room went
-// to any of the triangles in it alike: a class's early ranks fell where its triangles were many rather than
-// large, a different share in each class, and where neighbouring triangles differ widely in area (an
-// isosurface's slivers beside its full triangles) the selected triangles of different classes fell on each
-// other as if thrown at random. The metaballs of tools/tone_survey_meshes.py g03b at 1/16 of the frame height:
-// their dots' ink over their unshared ink 0.903 (a sphere's 0.94), now 0.934; their tone over a 16-fold range
-// of size 1.049 / 1.059 (seeds 1-3, two views), now 1.021 / 1.021; the gyroid (g03) 1.053 / 1.050, now 1.044 /
-// 1.047 (docs/paper-reading.md, §2.3 regime (b)). Where the triangles are alike in size the order is a random
-// one, as before. A triangle of no weight (no candidate: p = 0) comes after all others, in random order.
+// selection, is proportional to it) and the area otherwise. By any time x a triangle has been offered with
+// probability min(1, x w): each level of the ranking, which examines the earliest arrivals, sees as many sites
+// per unit of area where the triangles are small as where they are large, and where a level's radius leaves
+// room for one site among several triangles, the one that owes more is the likelier to be offered first
+// (of two, weights w_i > w_j: first with probability 1 - w_j / (2 w_i)). So a triangle reaches an early rank
+// about in proportion to what it owes, whatever the sizes beside it, and the triangles a small p selects in
+// each class of size (calibrate_per_class) are the early ranks of one blue-noise order. Offered in a random
+// order (until 2026-12-06), a room went to any of the triangles in it alike: a class's early ranks fell where
+// its triangles were many rather than large, a different share in each class, and where neighbouring
+// triangles differ widely in area (an isosurface's slivers beside its full triangles) the selected triangles
+// of different classes fell on each other as if thrown at random. The metaballs of
+// tools/tone_survey_meshes.py g03b at 1/16 of the frame height: their dots' ink over their unshared ink 0.903
+// (a sphere's 0.94), now 0.935; their tone over a 16-fold range of size 1.049 / 1.059 (seeds 1-3, two views),
+// now 1.020 / 1.021; the gyroid (g03) 1.053 / 1.050, now 1.039 / 1.044 (docs/paper-reading.md, §2.3 regime
+// (b)). Where the triangles are alike in size the order is a random one, as before. A triangle of no weight
+// (no candidate: p = 0) comes after all others, in random order, so that it takes no room from the others.
 std::vector<uint32_t> arrival_order(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
-                                    uint64_t seed) {
+                                    uint64_t seed, size_t& weighted) {
     const size_t count = areas.size();
     const bool counted = std::any_of(counts.begin(), counts.end(), [](uint32_t c) { return c > 0; });
     struct Arrival {
@@ -270,7 +271,8 @@ std::vector<uint32_t> arrival_order(const std::vector<double>& areas, const std:
     };
     sort_on_two_cores(arrivals, earlier);  // a total order: triangles break ties
     std::vector<uint32_t> order(count);
-    for (size_t i = 0; i < count; ++i) order[i] = arrivals[i].triangle;
+    weighted = 0;
+    for (size_t i = 0; i < count; ++i) order[i] = arrivals[i].triangle, weighted += arrivals[i].weightless == 0;
     return order;
 }
 
@@ -290,12 +292,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     glm::vec3 lowest = sites[0];
     for (const glm::vec3& c : sites) lowest = glm::min(lowest, c);
     std::vector<double> areas(count);
-    std::vector<uint8_t> facings(count);
-    for (size_t t = 0; t < count; ++t) {  // in the mesh's order: its memory in order
-        areas[t] = triangle_area(mesh, t);
-        facings[t] = facing_bin(glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
-                                           mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]));
-    }
+    for (size_t t = 0; t < count; ++t) areas[t] = triangle_area(mesh, t);  // in the mesh's order: its memory in order
 
     // A site waiting to be ranked, with the squared distance to a ranked centroid near it (infinity
     // when none is known): once a site is rejected for a centroid at distance d, it is rejected at every
@@ -305,10 +302,19 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         uint32_t triangle;
         float near2;
     };
-    std::vector<Pending> pending(count);
+    // Only the triangles of some weight take part: one of none (p = 0) ranked among them would take a room
+    // that a triangle which draws needs, and at the last levels, where the rejected sites wait behind the
+    // unexamined ones, the weightless ones' sites came first (a plane at D_max 0.01, four triangles of five
+    // without a candidate: 55% of the first 1,000 ranks were theirs). They follow all others.
+    std::vector<Pending> pending;
+    std::vector<uint32_t> weightless;
     {
-        const std::vector<uint32_t> order = arrival_order(areas, counts, seed);
-        for (size_t i = 0; i < count; ++i) pending[i] = {order[i], INFINITY};
+        size_t weighted = 0;
+        // The sort's memory is freed before the ranking's arrays are made.
+        const std::vector<uint32_t> order = arrival_order(areas, counts, seed, weighted);
+        pending.resize(weighted);
+        for (size_t i = 0; i < weighted; ++i) pending[i] = {order[i], INFINITY};
+        weightless.assign(order.begin() + std::ptrdiff_t(weighted), order.end());
     }
     size_t head = 0;  // pending[head..] wait, in order: moving the head, not the sites, per level
 
@@ -367,6 +373,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         pending.insert(pending.end(), rejected.begin(), rejected.end());
     }
     for (size_t i = head; i < pending.size(); ++i) ranked.push_back(pending[i].triangle);
+    ranked.insert(ranked.end(), weightless.begin(), weightless.end());
 
     // The ranking is about uniform over the surface's area, so a triangle a times the mean area reaches a
     // given rank about a times as often as the mean one: rank / count x relative area is close to uniform
@@ -375,6 +382,13 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // ranked before its regular share once its region runs out of sites. So the value is made exactly
     // uniform where it matters, among triangles of about the same area and count (calibrate_per_class).
     const double mean_area = area / double(count);
+    std::vector<uint8_t> facings(count);
+    for (size_t t = 0; t < count; ++t) {
+        const glm::vec3& a = mesh.positions[mesh.indices[3 * t]];
+        const glm::vec3& b = mesh.positions[mesh.indices[3 * t + 1]];
+        const glm::vec3& c = mesh.positions[mesh.indices[3 * t + 2]];
+        facings[t] = facing_bin(glm::cross(b - a, c - a));
+    }
     std::vector<double> scaled(count);
     for (size_t rank = 0; rank < count; ++rank) {
         uint32_t t = ranked[rank];
