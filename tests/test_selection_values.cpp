@@ -14,6 +14,7 @@
 #include "core/parallel.hpp"
 #include "mesh/load_mesh.hpp"
 #include "mesh/primitives.hpp"
+#include "stipple/quality.hpp"
 #include "stipple/selection_order.hpp"
 #include "stipple/stipple_set.hpp"
 #include "support/test_paths.hpp"
@@ -120,19 +121,6 @@ Mesh make_fanned_squares(int n, uint64_t seed) {
     return mesh;
 }
 
-// delta-bar (mean nearest-neighbour distance over the hexagonal spacing) of points on the plane [-1, 1]^2.
-double plane_delta_bar(const std::vector<glm::vec2>& points) {
-    double nearest_sum = 0.0;
-    for (size_t i = 0; i < points.size(); ++i) {
-        double nearest = 1e30;
-        for (size_t j = 0; j < points.size(); ++j)
-            if (i != j) nearest = std::min(nearest, double(glm::length(points[i] - points[j])));
-        nearest_sum += nearest;
-    }
-    const double hexagonal = std::sqrt(2.0 * 4.0 / (std::sqrt(3.0) * double(points.size())));
-    return nearest_sum / double(points.size()) / hexagonal;
-}
-
 TEST(SelectionValues, SelectedPolygonsOfMixedSizesAreEvenlySpread) {
     // The selection as the density pass makes it: p in proportion to what the polygon owes, its area where
     // no stipples are known and its candidate count where they are. The selected polygons of every size
@@ -154,7 +142,7 @@ TEST(SelectionValues, SelectedPolygonsOfMixedSizesAreEvenlySpread) {
                                                        : polygon_selection_values(mesh, seed);
             const double mean = total_area(mesh) / double(mesh.triangle_count());
             double smallest = 1e30, largest = 0.0, owed = 0.0;
-            std::vector<glm::vec2> selected;
+            std::vector<glm::vec3> selected;
             for (size_t t = 0; t < mesh.triangle_count(); ++t) {
                 const double relative = triangle_area(mesh, t) / mean;
                 smallest = std::min(smallest, relative), largest = std::max(largest, relative);
@@ -164,14 +152,13 @@ TEST(SelectionValues, SelectedPolygonsOfMixedSizesAreEvenlySpread) {
                                           : 0.025 * relative;
                 owed += p;
                 if (!(values[t] < p)) continue;
-                const glm::vec3 site =
-                    by_count ? stipples.positions[stipples.first[t]]
-                             : (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                                mesh.positions[mesh.indices[3 * t + 2]]) / 3.0f;
-                selected.emplace_back(site.x, site.y);
+                const uint32_t* corner = &mesh.indices[3 * t];
+                selected.push_back(by_count ? stipples.positions[stipples.first[t]]
+                                            : (mesh.positions[corner[0]] + mesh.positions[corner[1]] +
+                                               mesh.positions[corner[2]]) / 3.0f);
             }
             ASSERT_GT(largest / smallest, 200.0);
-            const double delta_bar = plane_delta_bar(selected);
+            const double delta_bar = normalized_nn_distance(selected, total_area(mesh));
             delta_bar_sum += delta_bar;
             std::printf("%s, seed %llu: relative areas %.3g .. %.3g, %zu selected of %.1f owed, delta-bar %.3f\n",
                         by_count ? "p by count" : "p by area", static_cast<unsigned long long>(seed), smallest,
