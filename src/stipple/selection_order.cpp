@@ -88,6 +88,10 @@ private:
     std::vector<Entry> entries_;   // centroids in insertion order
 };
 
+// How many triangles ahead the arrays indexed by triangle are fetched where they are read in the order of
+// rank or of area, which is random over the mesh's memory.
+constexpr size_t kFetchAhead = 16;
+
 // The facing of a triangle, coarsely: the octant of its normal and the axis along which it is longest (24
 // bins). The octant alone put the +x, +y and +z faces of axis-aligned parts in one bin (a zero component
 // counts as positive).
@@ -111,6 +115,7 @@ bool ranks_follow_facing(const std::vector<Keyed>& by_area, size_t begin, size_t
     if (n < 64) return false;
     double rank_sum[kFacings] = {}, members[kFacings] = {};
     for (size_t k = begin; k < end; ++k) {
+        if (k + kFetchAhead < end) __builtin_prefetch(&facings[by_area[k + kFetchAhead].triangle]);
         const uint8_t f = facings[by_area[k].triangle];
         rank_sum[f] += (double(k - begin) + 0.5) / double(n);
         members[f] += 1.0;
@@ -202,7 +207,10 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
     class_begin.push_back(count);
     parallel_for(class_begin.size() - 1, 1, [&](size_t c) {
         const size_t begin = class_begin[c], end = class_begin[c + 1];
-        for (size_t k = begin; k < end; ++k) by_area[k].key = scaled[by_area[k].triangle];
+        for (size_t k = begin; k < end; ++k) {
+            if (k + kFetchAhead < end) __builtin_prefetch(&scaled[by_area[k + kFetchAhead].triangle]);
+            by_area[k].key = scaled[by_area[k].triangle];
+        }
         std::sort(by_area.begin() + std::ptrdiff_t(begin), by_area.begin() + std::ptrdiff_t(end),
                   [](const Keyed& a, const Keyed& b) {
                       return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
@@ -211,6 +219,7 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
         auto assign = [&](size_t from, size_t to) {
             const double n = double(to - from);
             for (size_t k = from; k < to; ++k) {
+                if (k + kFetchAhead < to) __builtin_prefetch(&values[by_area[k + kFetchAhead].triangle], 1);
                 const uint32_t t = by_area[k].triangle;
                 const double within = double(mix64(key ^ t) >> 11) * 0x1p-53;
                 const double value = std::min((double(k - from) + within) / n, 1.0 - 1.0 / 16777216.0);
@@ -320,6 +329,11 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
 
     std::vector<uint32_t> ranked;
     ranked.reserve(count);
+    // The ranked sites by rank, read in order to fill each level's grid; and how far ahead the sites and the
+    // grid's buckets are fetched where they are read in the order of arrival, which is random in space.
+    std::vector<glm::vec3> ranked_sites;
+    ranked_sites.reserve(pending.size());
+    constexpr size_t kInsertAhead = 8;
     // Sites tested against the level's ranked centroids at once, and per chunk of that test.
     constexpr size_t kBlock = 16384, kQueryChunk = 2048;
     std::vector<float> near_ranked(kBlock);
@@ -329,7 +343,10 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         float radius = float(0.75 * std::sqrt(2.0 * area / (std::sqrt(3.0) * double(target))));
         const size_t budget = std::min(pending.size() - head, 8 * target);
         RankedGrid grid(lowest, radius, ranked.size() + budget);
-        for (uint32_t t : ranked) grid.insert(sites[t]);
+        for (size_t r = 0; r < ranked_sites.size(); ++r) {
+            if (r + kInsertAhead < ranked_sites.size()) grid.prefetch(ranked_sites[r + kInsertAhead]);
+            grid.insert(ranked_sites[r]);
+        }
         RankedGrid block_grid(lowest, radius, kBlock);
         std::vector<Pending> rejected;
         // Dart throwing in blocks, with the same result as one site after the other: a site near a centroid
@@ -342,26 +359,34 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
             parallel_for_chunks(block_end - block, kQueryChunk, [&](size_t, size_t begin, size_t end) {
                 constexpr size_t kAhead = 8;  // queries whose memory is fetched while this one runs
                 for (size_t i = block + begin; i < block + end; ++i) {
+                    // Fetched ahead for the sites to be queried, not for those a known centroid rejects.
+                    if (i + 2 * kAhead < block + end && !(pending[i + 2 * kAhead].near2 < grid.radius2()))
+                        __builtin_prefetch(&sites[pending[i + 2 * kAhead].triangle]);
+                    if (i + kAhead < block + end && !(pending[i + kAhead].near2 < grid.radius2()))
+                        grid.prefetch(sites[pending[i + kAhead].triangle]);
                     if (pending[i].near2 < grid.radius2()) {
                         near_ranked[i - block] = pending[i].near2;
                         continue;
                     }
-                    if (i + 2 * kAhead < block + end) __builtin_prefetch(&sites[pending[i + 2 * kAhead].triangle]);
-                    if (i + kAhead < block + end) grid.prefetch(sites[pending[i + kAhead].triangle]);
                     near_ranked[i - block] = grid.nearest_within(sites[pending[i].triangle]);
                 }
             });
             for (size_t i = block; i < block_end; ++i) {
+                if (i + kInsertAhead < block_end && !(near_ranked[i + kInsertAhead - block] < INFINITY))
+                    __builtin_prefetch(&sites[pending[i + kInsertAhead].triangle]);
                 const uint32_t t = pending[i].triangle;
                 float near2 = near_ranked[i - block];
                 if (near2 < INFINITY || (near2 = block_grid.nearest_within(sites[t])) < INFINITY) {
                     rejected.push_back({t, near2});
                 } else {
-                    ranked.push_back(t);
+                    ranked.push_back(t), ranked_sites.push_back(sites[t]);
                     block_grid.insert(sites[t]);
                 }
             }
-            for (size_t r = ranked.size() - block_grid.size(); r < ranked.size(); ++r) grid.insert(sites[ranked[r]]);
+            for (size_t r = ranked.size() - block_grid.size(); r < ranked.size(); ++r) {
+                if (r + kInsertAhead < ranked.size()) grid.prefetch(ranked_sites[r + kInsertAhead]);
+                grid.insert(ranked_sites[r]);
+            }
             block_grid.clear();
         }
         // Unexamined sites go first at the next level, then the rejected ones.
@@ -390,10 +415,16 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         facings[t] = facing_bin(glm::cross(b - a, c - a));
     }
     std::vector<double> scaled(count);
-    for (size_t rank = 0; rank < count; ++rank) {
-        uint32_t t = ranked[rank];
-        scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
-    }
+    parallel_for_chunks(count, size_t(1) << 16, [&](size_t, size_t begin, size_t end) {  // each rank its own triangle
+        for (size_t rank = begin; rank < end; ++rank) {
+            if (rank + kFetchAhead < end) {
+                __builtin_prefetch(&scaled[ranked[rank + kFetchAhead]], 1);
+                __builtin_prefetch(&areas[ranked[rank + kFetchAhead]]);
+            }
+            const uint32_t t = ranked[rank];
+            scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
+        }
+    });
     calibrate_per_class(areas, counts, facings, scaled, seed, values);
     return values;
 }
