@@ -1,8 +1,9 @@
 // Stipple generation speed and quality on UV spheres of ~100k and ~1M triangles and on a 12-triangle
 // cube, whose few large triangles hold ~10^5 stipples each (relaxation and progressive order
 // included), with delta-bar and, on a face of the cube, the six-fold order psi_6 (quality.hpp). Prints
-// its figures; the test suite asserts quality, never time. Each line ends with the time of the polygons'
-// selection ranking that follows generation when a model is opened (per triangle, not per stipple).
+// its figures; the test suite asserts quality, never time. Each line ends with what opening a model adds to
+// generation: the polygons' selection ranking (it grows with the triangles, and more with those that hold a
+// candidate) and the stipples' round trip through their stored coordinates.
 // `pile`: a grid beside 3,000 copies of one small triangle (a broken model's piled faces), whose stipples
 // crowd one place: it checks that generation stays linear there (relax.cpp kMaxNeighbours,
 // progressive_order.cpp kMaxPushed; 80 s for 330k stipples before those).
@@ -86,13 +87,13 @@ int main(int argc, char** argv) {
                     std::printf(", psi_6 on a face: local %.3f, windowed %.3f", order.local, order.windowed);
                 }
                 // What opening a model waits for besides: the polygons' selection ranking (§2.3) and the
-                // round trip through the stored coordinates, which `stipple info` and the bench count in its
-                // generation time. It is per triangle: on fine meshes it takes longer than generating.
+                // round trip through the stored coordinates, which `stipple info` and the bench count in their
+                // generation time. The ranking is per triangle: on fine meshes it takes longer than generating.
                 StippleSet finished = set;
                 const auto start = std::chrono::steady_clock::now();
                 finish_generated_stipples(mesh, params.seed, finished);
                 const double ranking = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                std::printf("; with the polygons' ranking %.3f s more: %.0f stipples/s\n", ranking,
+                std::printf("; with the polygons' ranking and the stored coordinates %.3f s more: %.0f stipples/s\n", ranking,
                             set.size() / (set.generation_seconds + ranking));
             }
         }

@@ -38,9 +38,9 @@ public:
         entries_.clear();
     }
 
-    // The bucket of p's own cell into the cache ahead of a query there (the queries come in random
-    // order, each a wait for memory otherwise; prefetching all nine rows, or their first centroids too,
-    // measured no better).
+    // The bucket of p's own cell into the cache ahead of a query or an insertion there (both come in an
+    // order that is random in space, each a wait for memory otherwise; prefetching all nine rows of a
+    // query, or their first centroids too, measured no better).
     void prefetch(const glm::vec3& p) const { __builtin_prefetch(&last_[hash_.bucket(hash_.cell_of(p))]); }
 
     size_t size() const { return entries_.size(); }
@@ -333,7 +333,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
     // grid's buckets are fetched where they are read in the order of arrival, which is random in space.
     std::vector<glm::vec3> ranked_sites;
     ranked_sites.reserve(pending.size());
-    constexpr size_t kInsertAhead = 8;
+    constexpr size_t kArrivalAhead = 8;
     // Sites tested against the level's ranked centroids at once, and per chunk of that test.
     constexpr size_t kBlock = 16384, kQueryChunk = 2048;
     std::vector<float> near_ranked(kBlock);
@@ -344,7 +344,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         const size_t budget = std::min(pending.size() - head, 8 * target);
         RankedGrid grid(lowest, radius, ranked.size() + budget);
         for (size_t r = 0; r < ranked_sites.size(); ++r) {
-            if (r + kInsertAhead < ranked_sites.size()) grid.prefetch(ranked_sites[r + kInsertAhead]);
+            if (r + kArrivalAhead < ranked_sites.size()) grid.prefetch(ranked_sites[r + kArrivalAhead]);
             grid.insert(ranked_sites[r]);
         }
         RankedGrid block_grid(lowest, radius, kBlock);
@@ -372,8 +372,8 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
                 }
             });
             for (size_t i = block; i < block_end; ++i) {
-                if (i + kInsertAhead < block_end && !(near_ranked[i + kInsertAhead - block] < INFINITY))
-                    __builtin_prefetch(&sites[pending[i + kInsertAhead].triangle]);
+                if (i + kArrivalAhead < block_end && !(near_ranked[i + kArrivalAhead - block] < INFINITY))
+                    __builtin_prefetch(&sites[pending[i + kArrivalAhead].triangle]);
                 const uint32_t t = pending[i].triangle;
                 float near2 = near_ranked[i - block];
                 if (near2 < INFINITY || (near2 = block_grid.nearest_within(sites[t])) < INFINITY) {
@@ -384,7 +384,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
                 }
             }
             for (size_t r = ranked.size() - block_grid.size(); r < ranked.size(); ++r) {
-                if (r + kInsertAhead < ranked.size()) grid.prefetch(ranked_sites[r + kInsertAhead]);
+                if (r + kArrivalAhead < ranked_sites.size()) grid.prefetch(ranked_sites[r + kArrivalAhead]);
                 grid.insert(ranked_sites[r]);
             }
             block_grid.clear();
@@ -397,6 +397,7 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
         }
         pending.insert(pending.end(), rejected.begin(), rejected.end());
     }
+    std::vector<glm::vec3>().swap(ranked_sites);  // before the calibration's arrays
     for (size_t i = head; i < pending.size(); ++i) ranked.push_back(pending[i].triangle);
     ranked.insert(ranked.end(), weightless.begin(), weightless.end());
 
