@@ -31,11 +31,13 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // cut nowhere, unchanged); 16: selection values uniform per facing too (the normal's octant and longest
 // axis), in classes whose ranks follow the facing (z > 5, 64 polygons or more; the stipples unchanged); 17:
 // the selection's sites offered to its ranking in order of arrival weighted by the candidate count, the
-// triangles without a candidate ranked after all others (the stipples unchanged)
-inline constexpr uint32_t kVersion = 17;
+// triangles without a candidate ranked after all others (the stipples unchanged); 18: the triangles without a
+// candidate, which never draw, given the last selection value rather than ranked and calibrated (the other
+// triangles' values and the stipples unchanged)
+inline constexpr uint32_t kVersion = 18;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0x17b59bba985b4a27;
+inline constexpr uint64_t kGenerationFingerprint = 0x70fb05d5c2ee5abc;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

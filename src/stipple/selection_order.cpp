@@ -92,6 +92,9 @@ private:
 // rank or of area, which is random over the mesh's memory.
 constexpr size_t kFetchAhead = 16;
 
+// The largest selection value: values are multiples of 2^-24 below 1.
+constexpr float kLastValue = 1.0f - 1.0f / 16777216.0f;
+
 // The facing of a triangle, coarsely: the octant of its normal and the axis along which it is longest (24
 // bins). The octant alone put the +x, +y and +z faces of axis-aligned parts in one bin (a zero component
 // counts as positive).
@@ -172,12 +175,12 @@ void sort_on_two_cores(std::vector<T>& items, const Less& less) {
 // 1; none split: a class split by chance would only lose some of its order); the test's boxes 35 and
 // tetrahedra 9.5, the cloud above 14.5; with each copy's faces shuffled the cloud reads 3.7 and is not
 // split, keeping a bias of 1-2%.
+// Only the triangles for which `calibrated` is set take part (the others keep their values).
 void calibrate_per_class(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
-                         const std::vector<uint8_t>& facings, const std::vector<double>& scaled, uint64_t seed,
-                         std::vector<float>& values) {
+                         const std::vector<uint8_t>& facings, const std::vector<double>& scaled,
+                         const std::vector<uint8_t>& calibrated, uint64_t seed, std::vector<float>& values) {
     constexpr double kClassRatio = 1.19;  // 2^(1/4): p varies by under 10% across a class
     constexpr uint32_t kExactCounts = 8;
-    const size_t count = areas.size();
     // The sort keys beside their triangles: sorting indices that compare through the arrays read one
     // random cache line per comparison (most of this function's time on the 871k-triangle dragon).
     struct Keyed {
@@ -185,8 +188,11 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
         uint32_t triangle;
         double key;  // the area, then the blue-noise rank scaled by it
     };
-    std::vector<Keyed> by_area(count);
-    for (size_t t = 0; t < count; ++t) by_area[t] = {std::min(counts[t], kExactCounts), uint32_t(t), areas[t]};
+    std::vector<Keyed> by_area;
+    by_area.reserve(areas.size());
+    for (size_t t = 0; t < areas.size(); ++t)
+        if (calibrated[t]) by_area.push_back({std::min(counts[t], kExactCounts), uint32_t(t), areas[t]});
+    const size_t count = by_area.size();
     auto by_class_and_area = [](const Keyed& a, const Keyed& b) {
         if (a.count_class != b.count_class) return a.count_class < b.count_class;
         return a.key < b.key || (a.key == b.key && a.triangle < b.triangle);
@@ -222,7 +228,7 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
                 if (k + kFetchAhead < to) __builtin_prefetch(&values[by_area[k + kFetchAhead].triangle], 1);
                 const uint32_t t = by_area[k].triangle;
                 const double within = double(mix64(key ^ t) >> 11) * 0x1p-53;
-                const double value = std::min((double(k - from) + within) / n, 1.0 - 1.0 / 16777216.0);
+                const double value = std::min((double(k - from) + within) / n, double(kLastValue));
                 values[t] = float(std::floor(value * 16777216.0)) * (1.0f / 16777216.0f);  // a multiple of 2^-24
             }
         };
@@ -256,32 +262,36 @@ void calibrate_per_class(const std::vector<double>& areas, const std::vector<uin
 // (a sphere's 0.94), now 0.935; their tone over a 16-fold range of size 1.049 / 1.059 (seeds 1-3, two views),
 // now 1.020 / 1.021; the gyroid (g03) 1.053 / 1.050, now 1.039 / 1.044 (docs/paper-reading.md, §2.3 regime
 // (b)). Where the triangles are alike in size the order is a random one, as before. A triangle of no weight
-// (no candidate: p = 0) comes after all others, in random order, so that it takes no room from the others.
+// (no candidate: p = 0) comes after all others, in the mesh's order, so that it takes no room from the others:
+// it never draws, and its value is not ranked at all (selection_values_at).
 std::vector<uint32_t> arrival_order(const std::vector<double>& areas, const std::vector<uint32_t>& counts,
                                     uint64_t seed, size_t& weighted) {
     const size_t count = areas.size();
     const bool counted = std::any_of(counts.begin(), counts.end(), [](uint32_t c) { return c > 0; });
     struct Arrival {
         double time;
-        uint32_t weightless;  // 1: no weight, ordered by u alone after every other
         uint32_t triangle;
     };
     const uint64_t key = mix64(seed ^ 0x9E3779B97F4A7C15ull);
-    std::vector<Arrival> arrivals(count);
+    std::vector<Arrival> arrivals;
+    arrivals.reserve(count);
+    std::vector<uint32_t> weightless;
     for (size_t t = 0; t < count; ++t) {
         const double u = (double(mix64(key ^ t) >> 11) + 0.5) * 0x1p-53;  // in (0, 1)
         const double weight = counted ? double(counts[t]) : areas[t];
-        const bool weightless = !(weight > 0.0) || !std::isfinite(u / weight);
-        arrivals[t] = {weightless ? u : u / weight, weightless ? 1u : 0u, uint32_t(t)};
+        if (!(weight > 0.0) || !std::isfinite(u / weight))
+            weightless.push_back(uint32_t(t));
+        else
+            arrivals.push_back({u / weight, uint32_t(t)});
     }
     auto earlier = [](const Arrival& a, const Arrival& b) {
-        if (a.weightless != b.weightless) return a.weightless < b.weightless;
         return a.time < b.time || (a.time == b.time && a.triangle < b.triangle);
     };
     sort_on_two_cores(arrivals, earlier);  // a total order: triangles break ties
     std::vector<uint32_t> order(count);
-    weighted = 0;
-    for (size_t i = 0; i < count; ++i) order[i] = arrivals[i].triangle, weighted += arrivals[i].weightless == 0;
+    weighted = arrivals.size();
+    for (size_t i = 0; i < weighted; ++i) order[i] = arrivals[i].triangle;
+    std::copy(weightless.begin(), weightless.end(), order.begin() + std::ptrdiff_t(weighted));
     return order;
 }
 
@@ -426,7 +436,12 @@ std::vector<float> selection_values_at(const Mesh& mesh, std::vector<glm::vec3>&
             scaled[t] = double(rank) / double(count) * areas[t] / mean_area;
         }
     });
-    calibrate_per_class(areas, counts, facings, scaled, seed, values);
+    // A triangle without weight never draws: its value is the last there is, and it takes no part in the
+    // calibration (on a fine mesh at a low D_max most triangles have no candidate, and sorting them took
+    // most of the calibration's time).
+    std::vector<uint8_t> calibrated(count, 1);
+    for (const uint32_t t : weightless) calibrated[t] = 0, values[t] = kLastValue;
+    calibrate_per_class(areas, counts, facings, scaled, calibrated, seed, values);
     return values;
 }
 
