@@ -81,6 +81,10 @@ public:
 
     size_t bucket_count() const { return size_t(mask_) + 1; }
     float cell_size() const { return cell_size_; }
+    // Within one window, the bucket of the cell one step along y (or z) is this many buckets on, modulo the
+    // table: the window's cells share its hash, so a neighbourhood's rows need one hash, not nine.
+    uint32_t y_step() const { return uint32_t(1) << window_bits_; }
+    uint32_t z_step() const { return uint32_t(1) << (2 * window_bits_); }
 
 private:
     uint32_t window_hash(const glm::ivec3& c) const {
