@@ -280,10 +280,12 @@ STIPPLE_FN uint hash_uint(uint x) {
 // from a hash of its other constants (8 more bits). Far away on a fine mesh a polygon's probability is
 // a few steps or less; compared with the step alone, every polygon of a region would round alike (to
 // nothing, below half a step). With the hash the values are uniform within the step, so the share
-// selected stays the probability down to 2^-24.
+// selected stays the probability down to 2^-24. The last place of the last step rounds to 1 in float: it is
+// kept below (the largest float under 1), which no probability under 1 tells apart, so that the value stays
+// in (0, 1) (the triangles without a candidate all hold the last step; selection_order.cpp).
 STIPPLE_FN float polygon_selection(TriangleInfo info) {
     uint within = hash_uint(info.center_xy ^ hash_uint(info.normal ^ (info.center_z_selection << 16u))) >> 24u;
-    return (float(((info.center_z_selection >> 16u) << 8u) | within) + 0.5f) * (1.0f / 16777216.0f);
+    return min((float(((info.center_z_selection >> 16u) << 8u) | within) + 0.5f) * (1.0f / 16777216.0f), 0.99999994f);
 }
 
 // The polygon's centroid in object space, as TriangleInfo quantises it in the object's box.
