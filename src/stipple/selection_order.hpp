@@ -18,7 +18,8 @@ namespace stipple {
 // centroid already ranked get the next ranks. The values are then made exactly uniform among triangles
 // of about the same area (and, in the overload below, the same small candidate count), keeping that
 // order, so that P(value < p) = p for a triangle of any size and count on a mesh of any mix of sizes
-// (see the .cpp). Values are multiples of 2^-24, so C++ and GLSL compare
+// (see the .cpp); a triangle of no weight (no candidate, or no area where counts are not known) never draws,
+// and holds the last value without being ranked. Values are multiples of 2^-24, so C++ and GLSL compare
 // them exactly. Deterministic for a seed.
 std::vector<float> polygon_selection_values(const Mesh& mesh, uint64_t seed = 1);
 
