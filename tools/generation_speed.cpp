@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
                 // sphere's radius spans kReferenceHeight / 2 px.
                 const double radius = compute_bounding_sphere(mesh).radius;
                 params.dmax = float(count / (area * std::pow(kReferenceHeight / 2.0 / radius, 2)));
-                const StippleSet set = generate_stipples(mesh, params);
+                StippleSet set = generate_stipples(mesh, params);  // finished in place after its figures
                 std::printf("%s: %zu triangles, %zu stipples: %.3f s, %.0f stipples/s",
                             name == "cube" ? "cube" : name == "pile" ? "grid and pile" : "UV sphere", mesh.triangle_count(),
                             set.size(), set.generation_seconds, set.size() / set.generation_seconds);
@@ -89,9 +89,8 @@ int main(int argc, char** argv) {
                 // What opening a model waits for besides: the polygons' selection ranking (§2.3) and the
                 // round trip through the stored coordinates, which `stipple info` and the bench count in their
                 // generation time. The ranking is per triangle: on fine meshes it takes longer than generating.
-                StippleSet finished = set;
                 const auto start = std::chrono::steady_clock::now();
-                finish_generated_stipples(mesh, params.seed, finished);
+                finish_generated_stipples(mesh, params.seed, set);
                 const double ranking = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 std::printf("; with the polygons' ranking and the stored coordinates %.3f s more: %.0f stipples/s\n", ranking,
                             set.size() / (set.generation_seconds + ranking));
