@@ -442,7 +442,7 @@ TEST_F(GpuAnimation, StipplesStickToTheSkin) {
     // The share kept is bounded by how much each polygon's count changes between frames: a polygon draws
     // a prefix of its candidates (the most coherent choice for a count), so what it loses is what its
     // density loses. The Run's legs turn and stretch fast enough that shading, orientation and stretch
-    // take 2-6% of the stipples from one frame to the next (over the cycle: mean 96.8%, worst pair 94.4%
+    // take 2-6% of the stipples from one frame to the next (over the cycle: mean 96.9%, worst pair 94.85%
     // on this view): below the 97% for some pairs, so the bounds below are those measurements.
     // That bound is checked pair by pair: the stipples lost are exactly the polygons' count decreases.
     const std::string path = test::shared_model("fox.glb");

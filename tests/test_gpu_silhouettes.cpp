@@ -131,7 +131,9 @@ TEST_F(Silhouettes, LinesInkTheOutline) {
         std::printf("%s: outline inked within 1 px: %.1f%% with lines, %.1f%% without\n", name, 100 * with,
                     100 * without);
         EXPECT_GE(with, 0.95);
-        EXPECT_LT(without, 0.7 * with);
+        // The stipples alone ink about three quarters of the outline's pixels (a half to two thirds before the
+        // orientation term was read as N_z, 2026-12-06, which keeps the tone up to the outline).
+        EXPECT_LT(without, 0.8 * with);
     }
 }
 
