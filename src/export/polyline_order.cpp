@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "export/nearest_alive_grid.hpp"
+#include "export/simplify.hpp"
 
 namespace stipple::plot {
 
@@ -53,6 +54,7 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen) {
 
 void join_close_strokes(std::vector<Polyline>& lines, double gap_mm) {
     std::vector<Polyline> joined;
+    std::vector<uint8_t> was_joined;
     joined.reserve(lines.size());
     for (Polyline& line : lines) {
         if (line.points.empty()) continue;
@@ -61,11 +63,18 @@ void join_close_strokes(std::vector<Polyline>& lines, double gap_mm) {
             if (!last.closed && !line.closed && glm::length(line.points.front() - last.points.back()) < gap_mm) {
                 const bool same_point = line.points.front() == last.points.back();
                 last.points.insert(last.points.end(), line.points.begin() + (same_point ? 1 : 0), line.points.end());
+                was_joined.back() = 1;
                 continue;
             }
         }
         joined.push_back(std::move(line));
+        was_joined.push_back(0);
     }
+    // Pieces that overlap where they meet (a contour's visible pieces, each ending a little past where the next
+    // begins along the zig-zag) make the joined stroke step back over its last stretch and on again: the pen
+    // drew that stretch three times, a knob on paper. Folds within half the pen's width are drawn once.
+    for (size_t i = 0; i < joined.size(); ++i)
+        if (was_joined[i]) joined[i] = unfold(joined[i], 0.5 * gap_mm);
     lines = std::move(joined);
 }
 

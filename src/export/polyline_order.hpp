@@ -17,7 +17,9 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen);
 
 // Strokes in plotting order whose gap (from where one ends to where the next starts) is narrower than `gap_mm`
 // are made one: with the pen's width as the gap, their round caps already meet, so the pen stays down across it
-// (the bridge inks a sliver more than the two caps did). A closed stroke is neither joined nor joined to.
+// (the bridge inks a sliver more than the two caps did). A closed stroke is neither joined nor joined to. A joined
+// stroke is unfolded within half the gap (simplify.hpp unfold): pieces that overlap where they meet made it step
+// back over its last stretch and on again.
 void join_close_strokes(std::vector<Polyline>& lines, double gap_mm);
 
 }  // namespace stipple::plot
