@@ -26,7 +26,7 @@ Cut cut(const std::vector<glm::vec3>& positions, std::vector<uint32_t> corners =
         for (uint32_t i = 0; i < positions.size(); ++i) corners.push_back(i);
     Cut c;
     c.triangles.assign(3 * (corners.size() - 2), UINT32_MAX);
-    c.clipped = triangulate_polygon(positions, corners, c.triangles);
+    c.clipped = triangulate_polygon(positions, corners, c.triangles) == Triangulated::clipped;
     return c;
 }
 
@@ -140,6 +140,23 @@ TEST(PolygonTriangulation, BadPolygonsStillGiveTheirTriangles) {
 // the small one (until 2026-12-03 any polygon of more than 256 corners was fanned, a comb of 403 corners
 // and area 402 loading as 20,602).
 TEST(PolygonTriangulation, ALargeStarIsCoveredOnce) { EXPECT_TRUE(expect_covered_once(star(4000, 0.9), 1e-6).clipped); }
+
+// A star of 100,000 points (200,000 corners, half of them reflex): the clipping, which went back after each
+// ear, cut a fan around one corner whose ever longer ears spanned the reflex corners ahead; it spent its
+// budget and fanned the rest, which covered 200 times the star's area. It now walks on after an ear and fans
+// what is left once no corner is reflex (convex then).
+TEST(PolygonTriangulation, AStarOf200000CornersIsCoveredOnce) {
+    EXPECT_TRUE(expect_covered_once(star(100000, 0.5), 1e-6).clipped);
+}
+
+// Beyond what the budget allows (a star of 500,000 points), the cut says so, and the loaders refuse the face in
+// one line (obj_loader.cpp, ply_loader.cpp) rather than load a fan that covers the star wrongly.
+TEST(PolygonTriangulation, APolygonBeyondTheBudgetIsReported) {
+    const std::vector<glm::vec3> polygon = star(500000, 0.5);
+    std::vector<uint32_t> corners(polygon.size()), triangles(3 * (polygon.size() - 2));
+    for (uint32_t i = 0; i < corners.size(); ++i) corners[i] = i;
+    EXPECT_EQ(triangulate_polygon(polygon, corners, triangles), Triangulated::budget_spent);
+}
 
 // An L of area 19 whose straight edges are divided into 75,000 corners (as CAD exports write faces along
 // curves that happen to be straight): the corners on the edges are cut off as triangles of no area, and

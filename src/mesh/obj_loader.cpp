@@ -124,6 +124,7 @@ public:
         // Positive indices may refer to vertices defined further down, so they are checked here.
         check_far(far_vertex_, positions_.size(), "vertex", "vertices");
         check_far(far_normal_, normals_.size(), "normal", "normals");
+        check_far(far_texcoord_, texcoords_, "texture coordinate", "texture coordinates");
         if (face_end_.empty()) fail_file(path_, "the model has no triangles");
     }
 
@@ -188,7 +189,9 @@ public:
             slots.resize(n);
             cut.resize(3 * (n - 2));
             for (size_t k = 0; k < n; ++k) polygon[k] = mesh.positions[corner_vertex_[begin + k]], slots[k] = uint32_t(k);
-            triangulate_polygon(polygon, slots, cut);
+            if (triangulate_polygon(polygon, slots, cut) == Triangulated::budget_spent)
+                fail_file(path_, "face " + std::to_string(f + 1) + ": a concave polygon of " + std::to_string(n) +
+                                     " corners is too large to cut into triangles here (split it into smaller faces)");
             for (uint32_t slot : cut) mesh.indices.push_back(vertex_of(begin + slot));
         }
         return mesh;
@@ -214,7 +217,8 @@ private:
         if (keyword == "v") vertex(rest);
         else if (keyword == "vn") normal(rest);
         else if (keyword == "f") face(rest);
-        // Anything else (vt, o, g, s, usemtl, mtllib, l, p, t, comments, ...) plays no part in stippling.
+        else if (keyword == "vt") ++texcoords_;  // counted only: a face's texture index must name one
+        // Anything else (o, g, s, usemtl, mtllib, l, p, t, comments, ...) plays no part in stippling.
     }
 
     void within_limit(uint64_t count, const char* what) const {
@@ -262,6 +266,10 @@ private:
             const size_t slash = word.find('/');
             corner_vertex_.push_back(index(word.substr(0, slash), positions_.size(), far_vertex_, "vertex", "vertices"));
             const size_t slash2 = slash == std::string_view::npos ? slash : word.find('/', slash + 1);
+            // Texture coordinates play no part, but an index beyond them is a broken file all the same.
+            if (slash != std::string_view::npos && slash2 != slash + 1)
+                index(word.substr(slash + 1, slash2 == std::string_view::npos ? std::string_view::npos : slash2 - slash - 1),
+                      texcoords_, far_texcoord_, "texture coordinate", "texture coordinates");
             corner_normal_.push_back(slash2 == std::string_view::npos
                                          ? -1
                                          : int32_t(index(word.substr(slash2 + 1), normals_.size(), far_normal_, "normal", "normals")));
@@ -306,7 +314,8 @@ private:
     std::vector<uint32_t> corner_vertex_;  // 0-based, by corner, faces one after another
     std::vector<int32_t> corner_normal_;   // 0-based, -1 where the corner names none
     std::vector<size_t> face_end_;         // each face's end in the corner lists
-    Far far_vertex_, far_normal_;
+    uint64_t texcoords_ = 0;               // vt lines: counted, not kept
+    Far far_vertex_, far_normal_, far_texcoord_;
 };
 
 }  // namespace

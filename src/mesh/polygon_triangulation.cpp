@@ -13,8 +13,8 @@ double orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 
 }  // namespace
 
-bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
-                         std::span<uint32_t> triangles) {
+Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
+                                 std::span<uint32_t> triangles) {
     const size_t n = corners.size();
     size_t written = 0;
     auto emit = [&](size_t a, size_t b, size_t c) {
@@ -27,7 +27,7 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
     };
     if (n <= 3) {
         fan();
-        return false;
+        return Triangulated::fanned;
     }
 
     // The plane it spans (Newell's normal), and the polygon in it, counter-clockwise.
@@ -41,7 +41,7 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
         magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
     if (!(magnitude[axis] > 0.0) || !std::isfinite(magnitude[axis])) {
         fan();  // no area, or not finite (validate_mesh reports the coordinates)
-        return false;
+        return Triangulated::fanned;
     }
     int u = (axis + 1) % 3, v = (axis + 2) % 3;
     if (normal[axis] < 0.0) std::swap(u, v);
@@ -53,7 +53,7 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
         convex = orientation(point[i], point[(i + 1) % n], point[(i + 2) % n]) >= 0.0;
     if (convex) {
         fan();
-        return false;
+        return Triangulated::fanned;
     }
 
     // Ear clipping over a ring of the corners left.
@@ -136,6 +136,7 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
     auto now_convex = [&](size_t b) {
         if (!reflex[b] || turn(b) < 0.0) return;
         reflex[b] = 0;
+        --reflex_count;
         const size_t k = cell_index(cell_of(point[b]));
         const uint32_t last = in_cell[--cell_end[k]];
         in_cell[slot_of[b]] = last;
@@ -164,22 +165,47 @@ bool triangulate_polygon(std::span<const glm::vec3> positions, std::span<const u
         return true;
     };
     size_t tried = 0;
-    while (left > 3 && tried < left && budget > 0) {
+    // After an ear the walk goes on forward, not back to the corner before it: going back cut a fan around
+    // that corner whose ears, ever longer, spanned the reflex corners still ahead (a star of 200,000 corners
+    // spent the whole budget, and was fanned).
+    auto clip_at = [&](size_t b) {
+        const size_t a = prev[b], c = next[b];
+        clip(b);
+        now_convex(a);
+        now_convex(c);
+        at = c;
+        tried = 0;
+    };
+    // Without a reflex corner what is left is convex: fanned (below), as a convex polygon is.
+    while (left > 3 && budget > 0 && reflex_count > 0) {
+        if (tried >= left) {
+            // A full turn without an ear: the polygon crosses itself (or its corners, rounded to floats, make it
+            // cross). The convex corner of the smallest triangle is cut off as if it were an ear, and the
+            // clipping goes on: a fan of the rest (what was done before) overlapped itself across the whole
+            // polygon, a star of 200,000 corners loaded as 200 times its area.
+            size_t best = n;
+            double least = INFINITY;
+            size_t b = at;
+            do {
+                const double t = turn(b);
+                if (t > 0.0 && t < least) least = t, best = b;
+                b = next[b];
+            } while (b != at);
+            budget -= std::min<uint64_t>(budget, left);
+            if (best == n) break;  // no convex corner: nothing has area; the rest is fanned
+            clip_at(best);
+            continue;
+        }
         if (is_ear(at)) {
-            const size_t a = prev[at], c = next[at];
-            clip(at);
-            now_convex(a);
-            now_convex(c);
-            at = a;
-            tried = 0;
+            clip_at(at);
         } else {
             at = next[at];
             ++tried;
         }
     }
-    // The last triangle, or, where no ear was left (a polygon crossing itself), a fan of the rest.
+    // The last triangle, or, where the clipping spent its budget or found no convex corner, a fan of the rest.
     for (size_t b = next[at]; next[b] != at; b = next[b]) emit(at, b, next[b]);
-    return true;
+    return budget == 0 && reflex_count > 0 && left > 3 ? Triangulated::budget_spent : Triangulated::clipped;
 }
 
 }  // namespace stipple
