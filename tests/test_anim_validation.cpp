@@ -132,6 +132,15 @@ TEST(AnimValidation, SkinsAndMorphWeightsThatDoNotFit) {
     zeros.doc["skins"][0]["inverseBindMatrices"] = zeros.add_floats(two, "MAT4");
     expect_error(zeros, "bind_row", "skins[0].inverseBindMatrices: matrix 1's fourth row is (0, 0, 0, 0); glTF requires (0, 0, 0, 1)");
 
+    // A singular matrix with the right fourth row (its y row all zeros): every vertex the joint moves went to one
+    // plane, and the skinned object vanished silently.
+    GltfBuilder singular = rigs::bending_cylinder();
+    std::vector<float> flat = one;
+    flat.insert(flat.end(), one.begin(), one.end());
+    flat[16 + 5] = 0.0f;
+    singular.doc["skins"][0]["inverseBindMatrices"] = singular.add_floats(flat, "MAT4");
+    expect_error(singular, "bind_singular", "skins[0].inverseBindMatrices: matrix 1 is singular (its 3x3 part has determinant 0)");
+
     GltfBuilder weights = rigs::morphed_quad();
     weights.doc["nodes"][0]["weights"] = {0.25};
     expect_error(weights, "morph_weights", "nodes[0].weights: 1 weights for 2 morph targets");

@@ -405,6 +405,13 @@ TEST(CliExport, ABlankPageIsSaid) {
     EXPECT_TRUE(read_svg(out).dots.empty());
     const test::CommandResult drawn = test::run_stipple({"render", "--width", "200", "--height", "160", "-o", out});
     EXPECT_EQ(drawn.err.find("nothing is drawn"), std::string::npos) << drawn.err;
+    // A PNG of bare paper is said the same way (it was written without a word).
+    const std::string png = (dir / "blank.png").string();
+    const test::CommandResult bare = test::run_stipple({"render", "--width", "200", "--height", "160", "--distance", "1000", "-o", png});
+    ASSERT_EQ(bare.exit_code, 0) << bare.err;
+    EXPECT_NE(bare.err.find("stipple: warning: " + png + ": nothing is drawn (no dot, no line)"), std::string::npos) << bare.err;
+    const test::CommandResult inked = test::run_stipple({"render", "--width", "200", "--height", "160", "-o", png});
+    EXPECT_EQ(inked.err.find("nothing is drawn"), std::string::npos) << inked.err;
 }
 
 // What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger

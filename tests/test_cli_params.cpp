@@ -155,6 +155,25 @@ TEST(ParamTable, HelpReadmeAndParamsCommandListTheTablesText) {
         << "README.md's parameter table is not the table's: paste `stipple params --markdown` into it";
 }
 
+// A value after an option that takes none (`--shading yes`) is named with the option, not taken for a second
+// model ("render takes at most one MODEL or SCENE.json" did not say which word was wrong).
+TEST(CliParams, AValueAfterAFlagIsNamed) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"render", "--shading", "yes"},
+                                                 std::vector<std::string>{"tone", "--regimes", "true"},
+                                                 std::vector<std::string>{"info", "model.obj", "--json", "1"}}) {
+        const test::CommandResult r = test::run_stipple(args);
+        EXPECT_EQ(r.exit_code, 1) << args[0];
+        const size_t flag = args[0] == "info" ? 2 : 1;
+        EXPECT_NE(r.err.find("option " + args[flag] + " takes no value (got '" + args[flag + 1] + "' after it"), std::string::npos)
+            << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    // Another word there, beside the model: named too, rather than "at most one MODEL".
+    const test::CommandResult r = test::run_stipple({"render", "model.obj", "--shading", "softly"});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("'softly' after --shading, which takes no value"), std::string::npos) << r.err;
+}
+
 // --help anywhere after the command prints the usage (it was "unknown option --help" unless it came first).
 TEST(ParamTable, HelpAnywhereAfterTheCommandPrintsTheUsage) {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{

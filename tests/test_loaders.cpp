@@ -493,6 +493,19 @@ TEST(BadInput, ObjIndexOutOfRange) {
                       "face 1 (line 4) refers to vertex 9 but there are only 3 vertices");
 }
 
+// Texture coordinates play no part in stippling, but an index beyond them is a broken file like any other
+// (it loaded without a word). Indices within them, and corners that name none, load.
+TEST(BadInput, ObjTextureIndexOutOfRange) {
+    const auto dir = temp_dir("loaders_obj_vt_range");
+    expect_load_error(write_file(dir / "vt.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/9\n"),
+                      "face 1 (line 5) refers to texture coordinate 9 but there are only 1 texture coordinates");
+    expect_load_error(write_file(dir / "vt_back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/-1 2/-1 3/-1\n"),
+                      "face 1 (line 4) refers to texture coordinate -1 but only 0 texture coordinates come before it");
+    const Mesh ok = load_mesh(write_file(dir / "vt_ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+                                                           "f 1/1/1 2//1 3/-1\n"));
+    EXPECT_EQ(ok.triangle_count(), 1u);
+}
+
 TEST(BadInput, PlyIndexOutOfRange) {
     const std::string path = write_file(temp_dir("loaders_ply_range") / "range.ply",
                                         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 
+#include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "anim/gltf_reading.hpp"
@@ -150,6 +151,15 @@ private:
                         fail_file(path_, field + printf_string(".inverseBindMatrices: matrix %zu's fourth row is (%g, %g, %g, %g); "
                                                                "glTF requires (0, 0, 0, 1)", j, double(row[3]), double(row[7]),
                                                                double(row[11]), double(row[15])));
+                    // An inverse bind matrix is the inverse of the joint's bind pose, so it has one itself: a
+                    // singular one (a row or column of zeros) flattens every vertex the joint moves onto a plane
+                    // or a line, and the skinned object vanished without a word.
+                    const glm::dmat3 linear(glm::make_mat4(row));
+                    const double size = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+                    const double det = glm::determinant(linear);
+                    if (!std::isfinite(det) || !(std::abs(det) > 1e-9 * size * size * size))
+                        fail_file(path_, field + printf_string(".inverseBindMatrices: matrix %zu is singular (its 3x3 part has "
+                                                               "determinant %g): no bind pose inverts to it", j, det));
                     skin.inverse_bind[j] = glm::make_mat4(row);
                 }
             }

@@ -16,7 +16,14 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
     for (size_t i = 0; i < argv.size(); ++i) {
         const std::string& arg = argv[i];
         if (arg.size() < 2 || arg[0] != '-' || (arg.size() > 1 && (std::isdigit(arg[1]) || arg[1] == '.'))) {
+            const std::string before = i > 0 && flags.count(argv[i - 1]) ? argv[i - 1] : std::string();
+            // A switch's value, as other tools take one (`--shading yes`): it would be read as a model ("yes: no
+            // such file"), not a word about the option.
+            static const std::set<std::string> kSwitchWords = {"yes", "no", "true", "false", "on", "off", "0", "1"};
+            if (!before.empty() && kSwitchWords.count(arg))
+                fail("option " + before + " takes no value (got '" + arg + "' after it; see --help)");
             positionals_.push_back(arg);
+            flag_before_.push_back(before);
             continue;
         }
         std::string name = arg;
@@ -41,6 +48,14 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             fail("unknown option " + name + " (see --help)");
         }
     }
+}
+
+void Args::expect_at_most_positionals(size_t most, const std::string& usage) const {
+    if (positionals_.size() <= most) return;
+    for (size_t i = 0; i < positionals_.size(); ++i)
+        if (!flag_before_[i].empty())
+            fail("'" + positionals_[i] + "' after " + flag_before_[i] + ", which takes no value (" + usage + "; see stipple --help)");
+    fail(usage + " (see stipple --help)");
 }
 
 std::string Args::get(const std::string& name, const std::string& fallback) const {

@@ -18,6 +18,9 @@ public:
          const std::set<std::string>& options);
 
     const std::vector<std::string>& positionals() const { return positionals_; }
+    // Fails (stipple::Error) when more than `most` positionals were given, with `usage` (say "render takes at most
+    // one MODEL"): naming the flag a surplus one came right after, which takes no value (`--shading yes`).
+    void expect_at_most_positionals(size_t most, const std::string& usage) const;
     bool flag(const std::string& name) const { return flags_.count(name) > 0; }
     bool has(const std::string& name) const { return values_.count(name) > 0; }
     std::string get(const std::string& name, const std::string& fallback) const;
@@ -27,6 +30,7 @@ public:
 
 private:
     std::vector<std::string> positionals_;
+    std::vector<std::string> flag_before_;  // by positional: the flag right before it, else empty
     std::set<std::string> flags_;
     std::map<std::string, std::string> values_;
 };

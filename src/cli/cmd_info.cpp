@@ -101,6 +101,7 @@ int run_info(const std::vector<std::string>& argv) {
     options.merge(cache_options());
     Args args(argv, flags, options);
     apply_cache_options(args);
+    args.expect_at_most_positionals(1, "info needs exactly one MODEL");
     if (args.positionals().size() != 1) fail("info needs exactly one MODEL (see stipple --help)");
     const std::string path = args.positionals()[0];
     ObjectParams params = read_object_params(args);

@@ -49,7 +49,7 @@ int run_parity(const std::vector<std::string>& argv) {
     options_set.insert({"--devices", "--paths", "--yaws", "--width", "--height"});
     Args args(argv, object_flags(), options_set);
     if (args.has("--density-path")) fail("parity draws each path of --paths (default splat,vertex); --density-path does not apply");
-    if (args.positionals().size() > 1) fail("parity takes at most one MODEL (see stipple --help)");
+    args.expect_at_most_positionals(1, "parity takes at most one MODEL");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     const std::vector<std::string> names = gpu::Context::list_devices();
     if (names.empty()) fail("parity: this machine has no Vulkan device");

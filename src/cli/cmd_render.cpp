@@ -66,6 +66,15 @@ bool same_file(const std::string& a, const std::string& b) {
 
 // A single frame reads -o as a pattern where it is one (%% a literal %, %d the frame number) and keeps it
 // as written where it is not (50%.png).
+// Whether every pixel of the image is the same (bare paper: no dot, no line, no toon grey).
+bool is_blank(const Image& image) {
+    const size_t step = size_t(std::max(image.channels, 1));
+    for (size_t i = step; i + step <= image.pixels.size(); i += step)
+        if (!std::equal(image.pixels.begin() + std::ptrdiff_t(i), image.pixels.begin() + std::ptrdiff_t(i + step), image.pixels.begin()))
+            return false;
+    return true;
+}
+
 std::string output_path(const std::string& pattern, size_t index, bool sequence) {
     if (sequence) return frame_path(pattern, index);
     try {
@@ -141,7 +150,7 @@ int run_render(const std::vector<std::string>& argv) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
         return 0;
     }
-    if (args.positionals().size() > 1) fail("render takes at most one MODEL or SCENE.json (see stipple --help)");
+    args.expect_at_most_positionals(1, "render takes at most one MODEL or SCENE.json");
     if (args.has("-o") && args.has("--output"))
         fail("-o " + args.get("-o", "") + " and --output " + args.get("--output", "") + " name the output twice: give one");
     const std::string output = args.get("--output", args.get("-o", "stipple.png"));
@@ -381,7 +390,7 @@ int run_render(const std::vector<std::string>& argv) {
     ProgressBar bar("Rendering frames", sequence);
     RenderedFrame frame;
     plot::PlotStats last_plot;  // vector output: the last frame's
-    size_t empty_pages = 0;     // vector output: frames with nothing drawn
+    size_t empty_pages = 0;     // frames (vector output: pages) with nothing drawn
     size_t empty_small_dots = 0;  // on them, dots under the pen's least mark (none drawn by chance)
     FrameStats print_stats;     // a print's, from the renderer that draws it (app::render_print)
     bool print_fitted = false;  // the last print's drawing fitted to its page (not when it drew nothing)
@@ -397,6 +406,7 @@ int run_render(const std::vector<std::string>& argv) {
                                                  args.flag("--stats") ? &print_stats : nullptr, &print_fitted);
             render_seconds = seconds_since(render_start);
             write_png(output_path(output, i, sequence), page, print->dpi);
+            empty_pages += is_blank(page);
             bar.update(double(i + 1) / double(cameras.size()));
             continue;
         }
@@ -404,6 +414,7 @@ int run_render(const std::vector<std::string>& argv) {
             const Image image = render_tiled(context, renderer, view, largest_tile_side(context));
             render_seconds = seconds_since(render_start);
             write_png(output_path(output, i, sequence), image);
+            empty_pages += is_blank(image);
             bar.update(double(i + 1) / double(cameras.size()));
             continue;
         }
@@ -418,6 +429,7 @@ int run_render(const std::vector<std::string>& argv) {
             }
         } else {
             write_png(output_path(output, i, sequence), frame.color);
+            empty_pages += is_blank(frame.color);
         }
         if (args.has("--mask")) write_png(output_path(args.get("--mask", ""), i, sequence), frame.coverage_mask());
         bar.update(double(i + 1) / double(cameras.size()));
@@ -429,7 +441,7 @@ int run_render(const std::vector<std::string>& argv) {
                                          [](const SceneObject& o) { return o.params.generation.dmax == 0.0f; });
     if (empty_pages > 0 && !draws_nothing)
         std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
-                     sequence ? printf_string("%zu of %zu pages", empty_pages, cameras.size()).c_str() : output_path(output, 0, false).c_str(),
+                     sequence ? printf_string("%zu of %zu %s", empty_pages, cameras.size(), vector ? "pages" : "frames").c_str() : output_path(output, 0, false).c_str(),
                      empty_small_dots ? printf_string(" - its %zu dots are under the pen's least mark and none was drawn as it by "
                                                       "chance: a finer --pen-width, or --dot-style filled",
                                                       empty_small_dots).c_str()

@@ -188,7 +188,7 @@ int run_tone(const std::vector<std::string>& argv) {
     options_set.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
                         "--images", "--seeds"});
     Args args(argv, flags, options_set);
-    if (args.positionals().size() > 1) fail("tone takes at most one MODEL (see stipple --help)");
+    args.expect_at_most_positionals(1, "tone takes at most one MODEL");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     if (args.flag("--extrinsic") || args.flag("--no-extrinsic"))
         fail("tone draws every table with the extrinsic enhancement on and off; drop --extrinsic/--no-extrinsic");
