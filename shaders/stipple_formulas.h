@@ -35,7 +35,7 @@ STIPPLE_FN float shading_fraction(vec3 unit_normal, vec3 unit_to_light, float ex
 // approximated projected screen area", so we read the term as the projected area's own factor: N_z, measured
 // against the eye ray (perspective-correct facing ratio). Until 2026-12-06 we read it as the ramp
 // (1 - cos(pi N_z)) / 2 = sin^2(pi N_z / 2), which is 0 edge-on and 1 facing like N_z but falls below it
-// toward the outline (0.62 N_z at 75 degrees): an unlit plate read 0.548 facing and 0.334 at 75 degrees, and
+// toward the outline (0.60 N_z at 75 degrees): an unlit plate read 0.548 facing and 0.334 at 75 degrees, and
 // where one part passes in front of another a light band 4-6 px wide ran along its outline (two spheres, the
 // bunny's back against its head). With N_z the plate reads 0.544 facing, 0.498 at 75 degrees and 0.454 at 85
 // (what its foreshortened dots lose to overlap), and the band is gone.

@@ -154,8 +154,8 @@ Mesh two_triangle_square() {
 // The enhancements act across a polygon, not only from one polygon to the next (stipple_density_here). A
 // floor of two triangles seen at a slant, the extrinsic enhancement alone: evaluated once per polygon its
 // far third read 1.70 times as dark as its near third (ink 0.563, 0.435, 0.331: the far end drew as densely
-// in object space, compressed on screen); now 0.445, 0.483, 0.523, the far end a little lighter by the
-// orientation term (which thins what is seen at a grazing angle). The intrinsic enhancement alone: the
+// in object space, compressed on screen); then 0.445, 0.483, 0.523, the far end a little lighter by the
+// orientation term read as a ramp, and 0.515, 0.518, 0.522 since it is read as N_z (2026-12-06). The intrinsic enhancement alone: the
 // share of the candidates drawn falls with depth within each triangle (per polygon it was 0.98 and 1.0
 // at every depth: no depth cue on a floor of two triangles) and is the same at a depth on both sides of
 // the diagonal.

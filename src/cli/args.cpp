@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -20,7 +21,8 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             // A switch's value, as other tools take one (`--shading yes`): it would be read as a model ("yes: no
             // such file"), not a word about the option.
             static const std::set<std::string> kSwitchWords = {"yes", "no", "true", "false", "on", "off", "0", "1"};
-            if (!before.empty() && kSwitchWords.count(arg))
+            std::error_code ec;
+            if (!before.empty() && kSwitchWords.count(arg) && !std::filesystem::exists(arg, ec))
                 fail("option " + before + " takes no value (got '" + arg + "' after it; see --help)");
             positionals_.push_back(arg);
             flag_before_.push_back(before);
@@ -52,9 +54,13 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
 
 void Args::expect_at_most_positionals(size_t most, const std::string& usage) const {
     if (positionals_.size() <= most) return;
-    for (size_t i = 0; i < positionals_.size(); ++i)
-        if (!flag_before_[i].empty())
+    // A word right after a switch that names no file is the likely stray (`--shading softly model.obj`); a model
+    // there is not (`--no-shading bunny.obj dragon.obj`).
+    for (size_t i = 0; i < positionals_.size(); ++i) {
+        std::error_code ec;
+        if (!flag_before_[i].empty() && !std::filesystem::exists(positionals_[i], ec))
             fail("'" + positionals_[i] + "' after " + flag_before_[i] + ", which takes no value (" + usage + "; see stipple --help)");
+    }
     fail(usage + " (see stipple --help)");
 }
 

@@ -267,9 +267,11 @@ private:
             corner_vertex_.push_back(index(word.substr(0, slash), positions_.size(), far_vertex_, "vertex", "vertices"));
             const size_t slash2 = slash == std::string_view::npos ? slash : word.find('/', slash + 1);
             // Texture coordinates play no part, but an index beyond them is a broken file all the same.
-            if (slash != std::string_view::npos && slash2 != slash + 1)
-                index(word.substr(slash + 1, slash2 == std::string_view::npos ? std::string_view::npos : slash2 - slash - 1),
-                      texcoords_, far_texcoord_, "texture coordinate", "texture coordinates");
+            if (slash != std::string_view::npos) {
+                const std::string_view texture =
+                    word.substr(slash + 1, slash2 == std::string_view::npos ? std::string_view::npos : slash2 - slash - 1);
+                if (!texture.empty()) index(texture, texcoords_, far_texcoord_, "texture coordinate", "texture coordinates");
+            }
             corner_normal_.push_back(slash2 == std::string_view::npos
                                          ? -1
                                          : int32_t(index(word.substr(slash2 + 1), normals_.size(), far_normal_, "normal", "normals")));

@@ -512,8 +512,8 @@ void triangulate_polygons(Target& t) {
         for (uint32_t i = 0; i + 2 < count; ++i) corners.push_back(fan[3 * i + 2]);
         if (triangulate_polygon(t.mesh.positions, corners, std::span<uint32_t>(fan, 3 * (size_t(count) - 2))) ==
             Triangulated::budget_spent)
-            fail_file(t.path, "a face: a concave polygon of " + std::to_string(count) +
-                                  " corners is too large to cut into triangles here (split it into smaller faces)");
+            fail_file(t.path, "a face of " + std::to_string(count) +
+                                  " corners is a concave polygon too large to cut into triangles here (split it into smaller faces)");
     }
 }
 

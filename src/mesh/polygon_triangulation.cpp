@@ -14,7 +14,7 @@ double orientation(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 }  // namespace
 
 Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
-                                 std::span<uint32_t> triangles) {
+                                 std::span<uint32_t> triangles, uint64_t budget) {
     const size_t n = corners.size();
     size_t written = 0;
     auto emit = [&](size_t a, size_t b, size_t c) {
@@ -90,9 +90,10 @@ Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span
     }
     // Only a reflex corner can lie inside an ear of a simple polygon, so the ear test visits those alone,
     // and only those in the cells of a grid that the ear's box touches: a comb of 10,000 teeth is cut in
-    // a fraction of a second where testing every corner cost the cube of the corners. Clipping only ever
-    // turns a reflex corner convex (its neighbours are the only corners whose angle changes); such a
-    // corner leaves its cell at once.
+    // a fraction of a second where testing every corner cost the cube of the corners. Clipping an ear of a
+    // simple polygon only ever turns a reflex corner convex (its neighbours are the only corners whose angle
+    // changes); such a corner leaves its cell at once. A corner cut where no ear was found (a polygon crossing
+    // itself) can turn a neighbour reflex: those few are kept in a list of their own, which every ear test reads.
     std::vector<uint8_t> reflex(n, 0);
     size_t reflex_count = 0;
     glm::dvec2 lo = point[at], hi = point[at];
@@ -133,38 +134,58 @@ Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span
             slot_of[b] = cell_end[k];
             in_cell[cell_end[k]++] = uint32_t(b);
         }
+    std::vector<uint32_t> late_reflex;  // corners that turned reflex after the grid was made (reflex[b] == 2)
     auto now_convex = [&](size_t b) {
         if (!reflex[b] || turn(b) < 0.0) return;
-        reflex[b] = 0;
         --reflex_count;
+        if (reflex[b] == 2) {
+            reflex[b] = 0;
+            late_reflex.erase(std::find(late_reflex.begin(), late_reflex.end(), uint32_t(b)));
+            return;
+        }
+        reflex[b] = 0;
         const size_t k = cell_index(cell_of(point[b]));
         const uint32_t last = in_cell[--cell_end[k]];
         in_cell[slot_of[b]] = last;
         slot_of[last] = slot_of[b];
     };
-    uint64_t budget = kEarTestBudget;  // a polygon that crosses itself may find no ear for long
+    auto now_reflex = [&](size_t b) {
+        if (reflex[b] || !(turn(b) < 0.0)) return;
+        reflex[b] = 2;
+        ++reflex_count;
+        late_reflex.push_back(uint32_t(b));
+    };
+    // A reflex corner p other than the would-be ear's own corners inside it (or on its edge).
+    auto inside_ear = [&](size_t p, size_t a, size_t b, size_t c) {
+        if (p == a || p == c) return false;
+        if (point[p] == point[a] || point[p] == point[b] || point[p] == point[c]) return false;
+        return orientation(point[a], point[b], point[p]) >= 0.0 && orientation(point[b], point[c], point[p]) >= 0.0 &&
+               orientation(point[c], point[a], point[p]) >= 0.0;
+    };
+    // `budget`: a polygon that crosses itself may find no ear for long.
     auto is_ear = [&](size_t b) {
         const size_t a = prev[b], c = next[b];
         --budget;
         if (orientation(point[a], point[b], point[c]) <= 0.0) return false;  // reflex or flat
+        budget -= std::min<uint64_t>(budget, late_reflex.size());
+        for (const uint32_t p : late_reflex)
+            if (inside_ear(p, a, b, c)) return false;
         const glm::ivec2 c0 = cell_of(glm::min(point[a], glm::min(point[b], point[c])));
         const glm::ivec2 c1 = cell_of(glm::max(point[a], glm::max(point[b], point[c])));
         for (int y = c0.y; y <= c1.y; ++y)
             for (int x = c0.x; x <= c1.x; ++x) {
                 const size_t k = cell_index({x, y});
                 budget -= std::min<uint64_t>(budget, 1 + cell_end[k] - cell_begin[k]);
-                for (uint32_t slot = cell_begin[k]; slot < cell_end[k]; ++slot) {
-                    const size_t p = in_cell[slot];
-                    if (p == a || p == c) continue;
-                    if (point[p] == point[a] || point[p] == point[b] || point[p] == point[c]) continue;
-                    if (orientation(point[a], point[b], point[p]) >= 0.0 && orientation(point[b], point[c], point[p]) >= 0.0 &&
-                        orientation(point[c], point[a], point[p]) >= 0.0)
-                        return false;  // a reflex corner inside (or on the edge of) the would-be ear
-                }
+                for (uint32_t slot = cell_begin[k]; slot < cell_end[k]; ++slot)
+                    if (inside_ear(in_cell[slot], a, b, c)) return false;
             }
         return true;
     };
     size_t tried = 0;
+    // Corners cut where a full turn found no ear, each after a turn of ear tests: a few at most, so that a polygon
+    // crossing itself at every step costs a few turns more than before and is then fanned, as it was.
+    constexpr int kMostForced = 16;
+    int forced = 0;
     // After an ear the walk goes on forward, not back to the corner before it: going back cut a fan around
     // that corner whose ears, ever longer, spanned the reflex corners still ahead (a star of 200,000 corners
     // spent the whole budget, and was fanned).
@@ -173,16 +194,19 @@ Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span
         clip(b);
         now_convex(a);
         now_convex(c);
+        now_reflex(a);
+        now_reflex(c);
         at = c;
         tried = 0;
     };
-    // Without a reflex corner what is left is convex: fanned (below), as a convex polygon is.
+    // Without a reflex corner what is left turns left at every corner: convex, and fanned (below) as a convex
+    // polygon is (unless it crosses itself, winding more than once: then no cut covers it once).
     while (left > 3 && budget > 0 && reflex_count > 0) {
         if (tried >= left) {
             // A full turn without an ear: the polygon crosses itself (or its corners, rounded to floats, make it
-            // cross). The convex corner of the smallest triangle is cut off as if it were an ear, and the
-            // clipping goes on: a fan of the rest (what was done before) overlapped itself across the whole
-            // polygon, a star of 200,000 corners loaded as 200 times its area.
+            // cross). The convex corner of the smallest turn is cut off as if it were an ear, and the clipping goes
+            // on, where a fan of the whole rest (what was done before) overlapped itself across the polygon.
+            if (++forced > kMostForced) break;
             size_t best = n;
             double least = INFINITY;
             size_t b = at;
@@ -192,7 +216,7 @@ Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span
                 b = next[b];
             } while (b != at);
             budget -= std::min<uint64_t>(budget, left);
-            if (best == n) break;  // no convex corner: nothing has area; the rest is fanned
+            if (best == n) break;  // no corner turns left: the rest winds the other way (a lobe of a crossing); fanned
             clip_at(best);
             continue;
         }
@@ -203,7 +227,8 @@ Triangulated triangulate_polygon(std::span<const glm::vec3> positions, std::span
             ++tried;
         }
     }
-    // The last triangle, or, where the clipping spent its budget or found no convex corner, a fan of the rest.
+    // The last triangle, or a fan of the rest: convex, or where the clipping spent its budget or gave up on a
+    // polygon crossing itself.
     for (size_t b = next[at]; next[b] != at; b = next[b]) emit(at, b, next[b]);
     return budget == 0 && reflex_count > 0 && left > 3 ? Triangulated::budget_spent : Triangulated::clipped;
 }
