@@ -155,6 +155,26 @@ TEST(ParamTable, HelpReadmeAndParamsCommandListTheTablesText) {
         << "README.md's parameter table is not the table's: paste `stipple params --markdown` into it";
 }
 
+// A D_max the stipple budget caps is said: a larger one changes nothing (a review found --dmax 4 and 16 drawing
+// the same image without a word).
+TEST(CliParams, ADmaxTheBudgetCapsIsSaid) {
+    const std::string blobby = test::source_path("assets/blobby.glb");
+    const test::CommandResult info = test::run_stipple({"info", blobby, "--dmax", "2", "--max-stipples", "100000"});
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    const size_t at = info.out.find("D_max:");
+    ASSERT_NE(at, std::string::npos) << info.out;
+    const double in_effect = std::stod(info.out.substr(at + 6));
+    EXPECT_GT(in_effect, 0.0);
+    EXPECT_LT(in_effect, 2.0);
+    const test::CommandResult render = test::run_stipple({"render", blobby, "--dmax", "2", "--max-stipples", "100000", "-o",
+                                                          (test::temp_dir("cli-dmax-capped") / "capped.png").string(),
+                                                          "--width", "160", "--height", "128"});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_NE(render.err.find("D_max 2 is capped at"), std::string::npos) << render.err;
+    const test::CommandResult uncapped = test::run_stipple({"info", blobby, "--dmax", "0.1"});
+    EXPECT_EQ(uncapped.out.find("D_max:"), std::string::npos) << uncapped.out;
+}
+
 // A value after an option that takes none (`--shading yes`) is named with the option, not taken for a second
 // model ("render takes at most one MODEL or SCENE.json" did not say which word was wrong).
 TEST(CliParams, AValueAfterAFlagIsNamed) {

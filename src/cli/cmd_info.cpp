@@ -140,6 +140,9 @@ int run_info(const std::vector<std::string>& argv) {
         std::printf("triangles:           %zu\n", mesh.triangle_count());
         std::printf("vertices:            %zu\n", mesh.vertex_count());
         std::printf("stipple candidates:  %zu\n", stipples.size());
+        if (const double dmax = effective_dmax(mesh, params.generation); dmax < 0.999 * double(params.generation.dmax))
+            std::printf("D_max:               %g in effect of the %g asked (the stipple budget, max_stipples %llu, caps it)\n", dmax,
+                        double(params.generation.dmax), (unsigned long long)params.generation.max_stipples);
         std::printf("surface area:        %.6g\n", area);
         std::printf("winding:             %s\n", describe_winding(mesh.winding).c_str());
         if (mesh.duplicates_dropped > 0)

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "core/unit_direction.hpp"
 #include "anim/pose.hpp"
@@ -32,6 +33,7 @@
 #include "scene/frame_sequence.hpp"
 #include "scene/scene_content.hpp"
 #include "scene/scene_json.hpp"
+#include "stipple/stipple_set.hpp"
 
 namespace stipple::cli {
 
@@ -64,9 +66,9 @@ bool same_file(const std::string& a, const std::string& b) {
            std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec);
 }
 
-// A single frame reads -o as a pattern where it is one (%% a literal %, %d the frame number) and keeps it
-// as written where it is not (50%.png).
-// Whether every pixel of the image is the same (bare paper: no dot, no line, no toon grey).
+// Whether every pixel of the image is the same colour. A caller counts it bare paper (no dot, no line, no toon grey)
+// where the image shows the paper somewhere: a frame's pixels no surface covers, a print's margins; a tiled image
+// uniform all over is taken as paper too (one solid colour over every pixel of a large image is not a drawing).
 bool is_blank(const Image& image) {
     const size_t step = size_t(std::max(image.channels, 1));
     for (size_t i = step; i + step <= image.pixels.size(); i += step)
@@ -75,6 +77,8 @@ bool is_blank(const Image& image) {
     return true;
 }
 
+// A single frame reads -o as a pattern where it is one (%% a literal %, %d the frame number) and keeps it
+// as written where it is not (50%.png).
 std::string output_path(const std::string& pattern, size_t index, bool sequence) {
     if (sequence) return frame_path(pattern, index);
     try {
@@ -245,7 +249,8 @@ int run_render(const std::vector<std::string>& argv) {
                      what.c_str());
     // A scene's paper and ink of one colour draw a plain image without a word otherwise (vector output paints no
     // paper unless asked, and a CSV has no colour).
-    if ((!vector || vector_options.fill_paper) && glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f))))
+    const bool one_colour = glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f)));
+    if ((!vector || vector_options.fill_paper) && one_colour)
         std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
                      what.c_str());
     // Light ink for dark paper, on a page left unpainted (vector output without --fill-paper): white paper shows.
@@ -350,6 +355,16 @@ int run_render(const std::vector<std::string>& argv) {
             planned_bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_bytes);
             if (vector && copy == 0) planned_bytes += check_visible_list_fits(context, planned[i]);
         }
+    // A D_max the stipple budget caps draws as the cap does: a larger one changes nothing, so it is said (once for
+    // the copies of one model).
+    std::set<std::tuple<const Mesh*, float, uint64_t>> told;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const GenerationParams& generation = scene.objects[i].params.generation;
+        if (!told.insert({content.objects[i].mesh.get(), generation.dmax, generation.max_stipples}).second) continue;
+        if (const double dmax = effective_dmax(*content.objects[i].mesh, generation); dmax < 0.999 * double(generation.dmax))
+            std::fprintf(stderr, "stipple: note: %s: D_max %g is capped at %g by the stipple budget (max_stipples %llu)\n",
+                         scene.model_path(i).c_str(), double(generation.dmax), dmax, (unsigned long long)generation.max_stipples);
+    }
     start = std::chrono::steady_clock::now();
     make_scene_stipples(scene, content);
     prepare_seconds += seconds_since(start);
@@ -429,7 +444,8 @@ int run_render(const std::vector<std::string>& argv) {
             }
         } else {
             write_png(output_path(output, i, sequence), frame.color);
-            empty_pages += is_blank(frame.color);
+            // A frame that a surface covers everywhere may be uniform ink: only one that shows the paper is blank.
+            empty_pages += is_blank(frame.color) && std::find(frame.depth.begin(), frame.depth.end(), 1.0f) != frame.depth.end();
         }
         if (args.has("--mask")) write_png(output_path(args.get("--mask", ""), i, sequence), frame.coverage_mask());
         bar.update(double(i + 1) / double(cameras.size()));
@@ -439,7 +455,7 @@ int run_render(const std::vector<std::string>& argv) {
     // or too far or too light for a dot, or asked for no stipples.
     const bool no_stipples = std::all_of(scene.objects.begin(), scene.objects.end(),
                                          [](const SceneObject& o) { return o.params.generation.dmax == 0.0f; });
-    if (empty_pages > 0 && !draws_nothing)
+    if (empty_pages > 0 && !draws_nothing && !one_colour)
         std::fprintf(stderr, "stipple: warning: %s: nothing is drawn (no dot, no line)%s\n",
                      sequence ? printf_string("%zu of %zu %s", empty_pages, cameras.size(), vector ? "pages" : "frames").c_str() : output_path(output, 0, false).c_str(),
                      empty_small_dots ? printf_string(" - its %zu dots are under the pen's least mark and none was drawn as it by "

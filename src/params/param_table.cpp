@@ -57,7 +57,8 @@ const ParamSpec kTable[] = {
 
     {"shading", "shading", "shading", kShading,
      "§2.2 shading by (N.L)^n: fewer stipples toward the light (off: the light takes none away; the distance, "
-     "orientation and depth terms still apply: --no-extrinsic --no-intrinsic too for the paper's uniform stippling)",
+     "orientation and depth terms still apply: --no-extrinsic --no-intrinsic too for the paper's uniform stippling, "
+     "where every candidate is drawn: at the default --dmax they cover the surface, so take a lower one, e.g. 0.05)",
      ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
      [](const P& p) { return double(p.shading); }, [](P& p, double v) { p.shading = v != 0.0; }},
     {"shading_exponent", "shading-exponent", "exponent n", kShading,

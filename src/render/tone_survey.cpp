@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <cstdio>
+#include <cstdlib>
 
 #include "anim/deform_cpu.hpp"
 #include "core/error.hpp"
@@ -368,8 +369,13 @@ ToneSurvey survey_tone(const gpu::Context& context, StippleRenderer& renderer, s
                     for (size_t r = 0; r < kToneRegimeCount; ++r) add(tally.regimes[r], one.regimes[r]);
                 }
                 if (j == 0 && !options.image_dir.empty()) {
+                    // The distance as typed (0.4, not the float's 0.400000006), unless 6 digits would not tell
+                    // it from its neighbours.
+                    char shown[32];
+                    std::snprintf(shown, sizeof shown, "%g", double(distance));
+                    if (std::strtof(shown, nullptr) != distance) std::snprintf(shown, sizeof shown, "%.9g", double(distance));
                     char name[160];
-                    std::snprintf(name, sizeof name, "/tone-%g_%g-d%.9g-%s.png", yaw, pitch, distance,
+                    std::snprintf(name, sizeof name, "/tone-%g_%g-d%s-%s.png", yaw, pitch, shown,
                                   renderer.params(object).extrinsic ? "on" : "off");
                     write_png(options.image_dir + name, enlarged(frame.color, std::clamp(int(256 / crop.height), 1, 8)));
                 }

@@ -174,6 +174,13 @@ double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params
     return density_for_area(mesh, params, total_area_in_order(mesh));
 }
 
+double effective_dmax(const Mesh& mesh, const GenerationParams& params) {
+    const float radius = compute_bounding_sphere(mesh).radius;
+    const double px_per_unit = (kReferenceHeight / 2.0) / radius;
+    return px_per_unit > 0.0 && std::isfinite(px_per_unit) ? stipple_density_per_area(mesh, params) / (px_per_unit * px_per_unit)
+                                                            : double(params.dmax);
+}
+
 namespace {
 
 // Generation in float multiplies coordinates together (the relaxation's squared distances, and the

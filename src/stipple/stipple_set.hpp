@@ -50,4 +50,8 @@ uint64_t planned_stipple_count(const Mesh& mesh, const GenerationParams& params,
 // Stipples per object-space unit area for this mesh and parameters (the paper's N_max per area).
 double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params);
 
+// The D_max the stipples are generated for: the one asked, or less where Object_max (max_stipples) caps the
+// candidates (commands say so: a larger --dmax then changes nothing).
+double effective_dmax(const Mesh& mesh, const GenerationParams& params);
+
 }  // namespace stipple
