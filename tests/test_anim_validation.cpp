@@ -109,6 +109,11 @@ TEST(AnimValidation, ChannelsThatCannotApply) {
     sampler.doc["animations"][0]["channels"][2]["sampler"] = 5;
     expect_error(sampler, "sampler", "animations[0].channels[2].sampler: sampler 5 does not exist");
 
+    // A rotation key of no length was drawn as no turn (a node's own such rotation was refused already).
+    GltfBuilder zero_key = rigs::node_animated_box();
+    zero_key.doc["animations"][0]["samplers"][1]["output"] = zero_key.add_floats({0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC4");
+    expect_error(zero_key, "zero_key", "animations[0].samplers[1].output: key 1 is (0, 0, 0, 0), not a rotation quaternion");
+
     GltfBuilder interpolation = rigs::node_animated_box();
     interpolation.doc["animations"][0]["samplers"][0]["interpolation"] = "BEZIER";
     expect_error(interpolation, "interpolation", "animations[0].samplers[0].interpolation: expected one of LINEAR, STEP, CUBICSPLINE, got 'BEZIER'");

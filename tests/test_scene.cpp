@@ -752,6 +752,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "objects[0].params.dmx", "unknown field"},
         BadScene{"unknown_top_level", R"({"objects": [{"model": "sphere.obj"}], "lights": [1, 1, 1]})", "lights",
                  "unknown field"},
+        // A key of 100 characters is cut short in the message (one of a megabyte made a message of a megabyte).
+        BadScene{"long_unknown_key", R"({"objects": [{"model": "sphere.obj"}], "kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk": 1})",
+                 "kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk...: unknown field", "expected one of"},
         BadScene{"missing_model_field", R"({"objects": [{"params": {}}]})", "objects[0].model",
                  "required field is missing"},
         BadScene{"missing_model_file", R"({"objects": [{"model": "sphere.obj"}, {"model": "nowhere.obj"}]})",

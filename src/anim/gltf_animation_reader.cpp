@@ -124,6 +124,17 @@ private:
         const size_t elements = sampler.values.size() / (path == ChannelPath::Weights ? 1 : components);
         if (elements == keys * per_key) {
             check_magnitudes(sampler.values, path == ChannelPath::Weights ? 1 : components, output);
+            // A key of no length is no rotation (a node's own rotation of (0, 0, 0, 0) is refused the same way): it
+            // was drawn as no turn at all. A CUBICSPLINE key's tangents may be zero; its value may not.
+            if (path == ChannelPath::Rotation)
+                for (size_t k = 0; k < keys; ++k) {
+                    const size_t at = 4 * (per_key == 3 ? 3 * k + 1 : k);
+                    const float* q = &sampler.values[at];
+                    const double length = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2] + double(q[3]) * q[3]);
+                    if (!(length > 1e-6))
+                        fail_file(path_, output + ": key " + std::to_string(k) + " is (" + format(q[0]) + ", " + format(q[1]) + ", " +
+                                             format(q[2]) + ", " + format(q[3]) + "), not a rotation quaternion");
+                }
             return;
         }
         std::string why;

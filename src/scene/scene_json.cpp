@@ -59,7 +59,9 @@ public:
             if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
             std::string list;
             for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-            error(field(where, key), "unknown field (expected one of: " + list + ")");
+            // Cut short: a key of a megabyte made a message of a megabyte.
+            const std::string shown = key.size() > 64 ? key.substr(0, 60) + "..." : key;
+            error(field(where, shown), "unknown field (expected one of: " + list + ")");
         }
     }
 
