@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "anim/animated_model.hpp"
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
 #include "scene/scene_json.hpp"
@@ -49,6 +50,11 @@ const Regression kRegressions[] = {
     // A field name with a backspace ("o\bj_y") was quoted raw, breaking the one-line message.
     {"scene_control_character_in_field_name.json",
      "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},
+    // An instanced mesh 6e-4 across (EXT_mesh_gpu_instancing scales of 6e-4 and 3e-6) placed 3 units out: the
+    // animated loader's check that its vertices are the static mesh's allowed 1e-5 of the mesh's size, less than
+    // the float rounding at 3 units, and called the file's own vertices an internal error (fuzz_anim, 2026-12-06).
+    // Read by the animated loader (the files named anim_*), as its harness reads them.
+    {"anim_scaled_instance_rounds_beyond_the_tolerance.glb", ""},
 };
 
 void PrintTo(const Regression& r, std::ostream* os) { *os << r.file; }
@@ -72,7 +78,9 @@ TEST_P(FuzzRegression, RefusedInOneLineOrLoadedWhole) {
             EXPECT_TRUE(expected.empty()) << "read without the expected error: " << expected;
             return;
         }
-        const stipple::Mesh mesh = stipple::load_mesh(path.string());
+        const stipple::Mesh mesh = path.filename().string().rfind("anim_", 0) == 0
+                                       ? stipple::anim::load_animated_model(path.string()).rest
+                                       : stipple::load_mesh(path.string());
         EXPECT_TRUE(expected.empty()) << "loaded without the expected error: " << expected;
         ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
         for (uint32_t i : mesh.indices) ASSERT_LT(i, mesh.positions.size());
