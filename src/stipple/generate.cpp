@@ -158,13 +158,23 @@ std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const ui
     return positions;
 }
 
-double density_for_area(const Mesh& mesh, const GenerationParams& params, double area) {
+// The D_max generation uses for a surface of `area` (Object_max may cap the asked one), and the reference view's
+// pixels per unit; both 0 where there is nothing to generate.
+struct ReferenceDensity {
+    double dmax = 0.0;
+    double px_per_unit = 0.0;
+};
+ReferenceDensity reference_density(const Mesh& mesh, const GenerationParams& params, double area) {
     const float radius = compute_bounding_sphere(mesh).radius;
-    if (!(area > 0.0) || !(radius > 0.0f) || params.dmax <= 0.0f || params.max_stipples == 0) return 0.0;
+    if (!(area > 0.0) || !(radius > 0.0f) || params.dmax <= 0.0f || params.max_stipples == 0) return {};
     const double px_per_unit = (kReferenceHeight / 2.0) / radius;
     const double reference_area = area * px_per_unit * px_per_unit;
-    const double d = std::min(static_cast<double>(params.dmax), static_cast<double>(params.max_stipples) / reference_area);
-    return d * px_per_unit * px_per_unit;
+    return {std::min(static_cast<double>(params.dmax), static_cast<double>(params.max_stipples) / reference_area), px_per_unit};
+}
+
+double density_for_area(const Mesh& mesh, const GenerationParams& params, double area) {
+    const ReferenceDensity r = reference_density(mesh, params, area);
+    return r.dmax * r.px_per_unit * r.px_per_unit;
 }
 
 }  // namespace
@@ -175,10 +185,8 @@ double stipple_density_per_area(const Mesh& mesh, const GenerationParams& params
 }
 
 double effective_dmax(const Mesh& mesh, const GenerationParams& params) {
-    const float radius = compute_bounding_sphere(mesh).radius;
-    const double px_per_unit = (kReferenceHeight / 2.0) / radius;
-    return px_per_unit > 0.0 && std::isfinite(px_per_unit) ? stipple_density_per_area(mesh, params) / (px_per_unit * px_per_unit)
-                                                            : double(params.dmax);
+    check_params(mesh, params);
+    return reference_density(mesh, params, total_area_in_order(mesh)).dmax;
 }
 
 namespace {
