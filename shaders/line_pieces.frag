@@ -15,5 +15,5 @@ void main() {
     vec2 a = in_piece.xy, ab = in_piece.zw - in_piece.xy;
     float t = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-12), 0.0, 1.0);
     if (distance(p, a + t * ab) > 0.5 * in_width) discard;
-    out_color = vec4(frame.ink_color.rgb, 1.0);
+    out_color = vec4(object.ink_color.rgb, 1.0);
 }

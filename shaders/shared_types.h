@@ -391,6 +391,7 @@ struct ObjectUniforms {
     vec4 box_size;          // xyz: the box's extent; w: how far a centroid quantised in it may lie from the true one, in
                             // view depth (DensityParams::near_margin)
     vec4 lines;             // x: line width px (thinned, §3.1); y: cosine of the crease angle; z: crease width px; w: unused
+    vec4 ink_color;         // rgb: the object's ink (ObjectParams::ink, else the frame's); a unused
 };
 
 #ifdef __cplusplus

@@ -6,8 +6,8 @@
 
 layout(location = 0) out vec4 out_color;
 
-layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 
 void main() {
-    out_color = vec4(frame.ink_color.rgb, 1.0);
+    out_color = vec4(object.ink_color.rgb, 1.0);
 }

@@ -11,6 +11,7 @@ layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 layout(location = 0) out vec4 out_color;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 // The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
 // storage buffer lane by lane.
 layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
@@ -21,5 +22,5 @@ void main() {
     bool behind = kDepthUnorm24 ? uint(gl_FragCoord.z * 16777215.0 + 0.5) > (word & 0xFFFFFFu)
                                 : gl_FragCoord.z > uintBitsToFloat(word);
     if (behind) discard;
-    out_color = vec4(frame.ink_color.rgb, 1.0);
+    out_color = vec4(object.ink_color.rgb, 1.0);
 }

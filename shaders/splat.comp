@@ -264,7 +264,7 @@ void main() {
         depth_slope = window_depth_slope(polygon, model_view_proj, frame.viewport.xy);
         depth_pull = large_dot_depth_pull(depth_slope, whole_extent);
     }
-    SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(frame.ink_color.rgb, 0.0), frame.ink_color.rgb,
+    SplatConstants c = SplatConstants(frame.viewport.xy, pack_color(object.ink_color.rgb, 0.0), object.ink_color.rgb,
                                       frame.paper_color.rgb);
     // The whole stipples, then the fractional last one (§2.1) if it is in this run: each loop inks
     // in one way only. (On a SIMD software rasteriser a per-pixel choice between a store and an atomic

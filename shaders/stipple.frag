@@ -16,5 +16,5 @@ void main() {
         if (dot(d, d) > 0.25) discard;
     }
     // Blended "over" the paper: the fractional last stipple fades in instead of popping (§2.1).
-    out_color = vec4(frame.ink_color.rgb, abs(in_intensity));
+    out_color = vec4(object.ink_color.rgb, abs(in_intensity));
 }

@@ -18,5 +18,5 @@ void main() {
     vec3 normal = gl_FrontFacing ? normalize(in_normal_view) : -normalize(in_normal_view);
     vec3 to_eye = normalize(-in_position_view);
     float ink = toon_surface_ink(dot(normal, to_eye), object.shading.z);
-    out_color = vec4(mix(frame.paper_color.rgb, frame.ink_color.rgb, ink), 1.0);
+    out_color = vec4(mix(frame.paper_color.rgb, object.ink_color.rgb, ink), 1.0);
 }

@@ -497,6 +497,10 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--width", " 320"}, "--width: ' 320' is not an integer"},
         {{"render", "--light", "0x1,0,1"}, "is not three numbers X,Y,Z"},
         {{"render", "--light", "1,0,1,"}, "is not three numbers X,Y,Z"},
+        {{"render", "--ink", "red"}, "--ink: 'red' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)"},
+        {{"render", "--ink", "#12345"}, "--ink: '#12345' is not a colour"},
+        {{"render", "--paper", "1.5,0,0"}, "--paper: '1.5,0,0' is not a colour: each of R,G,B must be in 0..1"},
+        {{"view", "--paper", "1,0"}, "--paper: '1,0' is not three numbers"},
         {{"tone", "--distances", "0x10"}, "--distances: '0x10' is not a finite number"},
         {{"tone", "--views", "30:10,30.01:10"}, "is the same view as an earlier one to 0.1 degree"},
         {{"tone", "--views", "30.05:10,30.05:10"}, "is the same view as an earlier one to 0.1 degree"},
@@ -680,6 +684,41 @@ TEST(CliRender, StatsInkIsReadBetweenThePaperAndTheInk) {
         const test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 0) << r.err;
         EXPECT_EQ(r.err.find("the ink is lighter than the paper") != std::string::npos, !painted) << r.err;
+    }
+}
+
+// --ink and --paper colour the image (#rrggbb, #rgb, or R,G,B): the background is the paper, every inked pixel
+// a mix of the paper and the ink; with a scene file they replace the scene's colours.
+TEST(CliRender, InkAndPaperOptionsColourTheImage) {
+    const std::filesystem::path dir = test::temp_dir("cli-ink-paper");
+    std::ofstream(dir / "scene.json") << R"({"objects": [{"model": ")" << test::source_path("assets/blobby.glb")
+                                      << R"("}], "paper": [1, 1, 1], "ink": [0, 0, 0]})";
+    const glm::vec3 paper(0.0f, 0.0f, 0.2f), ink(0.8f, 0.8f, 0.2f);  // 0,0,0.2 and #cc3 (#cccc33)
+    for (const bool scene : {false, true}) {
+        std::vector<std::string> args = {"render", "-o", (dir / "c.png").string(), "--mask", (dir / "m.png").string(),
+                                         "--width", "320", "--height", "256", "--ink", "#cc3", "--paper", "0,0,0.2"};
+        if (scene) args.insert(args.begin() + 1, (dir / "scene.json").string());
+        const test::CommandResult r = run_stipple(args);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const Image image = read_png((dir / "c.png").string()), mask = read_png((dir / "m.png").string());
+        size_t background = 0, paper_background = 0, inked = 0, on_the_way = 0;
+        for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+            const uint8_t* p = &image.pixels[size_t(image.channels) * i];
+            const glm::vec3 c(p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f);
+            if (mask.pixels[size_t(mask.channels) * i] == 0) {
+                ++background;
+                paper_background += glm::all(glm::lessThan(glm::abs(c - paper), glm::vec3(1.0f / 255.0f)));
+                continue;
+            }
+            if (glm::all(glm::lessThan(glm::abs(c - paper), glm::vec3(0.02f)))) continue;  // bare paper
+            ++inked;
+            const float a = (c.x - paper.x) / (ink.x - paper.x);  // the red channel: the farthest from the paper
+            on_the_way += glm::all(glm::lessThan(glm::abs(c - (paper + a * (ink - paper))), glm::vec3(3.0f / 255.0f)));
+        }
+        EXPECT_GT(background, 10000u) << scene;
+        EXPECT_EQ(paper_background, background) << scene;
+        EXPECT_GT(inked, 3000u) << scene;
+        EXPECT_EQ(on_the_way, inked) << scene;
     }
 }
 

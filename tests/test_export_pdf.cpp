@@ -111,6 +111,43 @@ TEST(ExportPdf, RasterisedInkIsWhereTheDrawingIs) {
     EXPECT_GT(stipple::luminance(image, 300, 150), 200);
 }
 
+// An object with an ink of its own draws its layers in it, the others in the drawing's (rasterised by pdftoppm).
+TEST(ExportPdf, EachObjectsLayersTakeItsInk) {
+    if (!stipple::test::have_tool("pdftoppm")) GTEST_SKIP() << "pdftoppm (poppler-utils) not installed";
+    Drawing drawing = grid_drawing(10, 10);
+    for (Dot& dot : drawing.dots) dot.radius_px = 4.0f;
+    drawing.objects.push_back({"ball", 2.0f});
+    const glm::vec2 ball(320.0f, 260.0f);
+    drawing.dots.push_back({ball, 6.0f, 1.0f, 1, 0});
+    drawing.ink = glm::vec3(0.0f, 0.0f, 1.0f);
+    drawing.objects[0].ink = glm::vec3(1.0f, 0.0f, 0.0f);
+    ExportOptions options;
+    options.page = parse_page("400x300mm");
+    options.margin_mm = 0.0;  // 1 mm per pixel
+    options.fit = Fit::Frame;
+    options.pen_width_mm = 2.0;
+    const auto dir = stipple::test::temp_dir("export_pdf_inks");
+    write_pdf(make_plot_plan(drawing, options), (dir / "drawing.pdf").string());
+    ASSERT_EQ(stipple::test::run_shell("pdftoppm -png -r 25.4 -singlefile " + stipple::test::quoted(dir / "drawing.pdf") + " " +
+                                       stipple::test::quoted(dir / "drawing")),
+              0);
+    const stipple::Image image = stipple::read_png((dir / "drawing.png").string());
+    const auto rgb = [&](int x, int y) {
+        const uint8_t* p = &image.pixels[size_t(image.channels) * (size_t(y) * image.width + x)];
+        return glm::ivec3(p[0], p[1], p[2]);
+    };
+    for (const Dot& dot : drawing.dots) {
+        const glm::ivec3 c = rgb(int(dot.px.x), int(dot.px.y));
+        const bool own = dot.object == 0;
+        EXPECT_GT(own ? c.r : c.b, 200) << dot.px.x << "," << dot.px.y;
+        EXPECT_LT(own ? c.b : c.r, 60) << dot.px.x << "," << dot.px.y;
+        EXPECT_LT(c.g, 60) << dot.px.x << "," << dot.px.y;
+    }
+    const glm::ivec3 outline = rgb(300, 100);  // the first object's square outline
+    EXPECT_GT(outline.r, 200);
+    EXPECT_LT(outline.b, 100);
+}
+
 TEST(ExportPdf, UnwritablePathIsOneLineError) {
     const PlotPlan plan = make_plot_plan(grid_drawing(2, 2), {});
     stipple::test::expect_plot_error([&] { write_pdf(plan, "/nonexistent-dir/x.pdf"); }, "/nonexistent-dir/x.pdf: cannot write PDF");

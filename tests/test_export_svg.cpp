@@ -102,6 +102,22 @@ TEST(ExportSvg, PageLayersAndCounts) {
     EXPECT_TRUE(has_corner);
 }
 
+// An object with an ink of its own draws its layers in it (a pen of that colour on a plotter), the others
+// in the drawing's.
+TEST(ExportSvg, EachObjectsLayersTakeItsInk) {
+    Drawing drawing = two_objects();
+    drawing.ink = glm::vec3(0.0f, 0.0f, 1.0f);
+    drawing.objects[0].ink = glm::vec3(1.0f, 0.0f, 0.0f);
+    const std::string text = svg_document(make_plot_plan(drawing, ExportOptions{}));
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS) << doc.ErrorStr();
+    const auto layers = layers_of(doc.RootElement());
+    ASSERT_EQ(layers.size(), 3u);
+    EXPECT_STREQ(layers[0]->Attribute("fill"), "#ff0000");    // 1 bunny stipples
+    EXPECT_STREQ(layers[1]->Attribute("stroke"), "#ff0000");  // 2 bunny lines
+    EXPECT_STREQ(layers[2]->Attribute("fill"), "#0000ff");    // 4 horse & co stipples: the drawing's ink
+}
+
 TEST(ExportSvg, DotStylesForPlotters) {
     Drawing drawing = grid_drawing(4, 3);
     ExportOptions options;

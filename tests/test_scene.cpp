@@ -136,6 +136,7 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
         glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.3f, 0.2f, -0.4f)), glm::vec3(0.5f));
     scene.objects[1].params.intrinsic = false;
     scene.objects[1].params.density_path = DensityPath::Indirect;
+    scene.objects[1].params.ink = glm::vec3(0.2f, 0.4f, 0.9f);
     scene.camera.yaw_deg = 30.0f;
     scene.camera.pitch_deg = 15.0f;
     scene.camera.distance = 1.1f;
@@ -156,6 +157,9 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     ASSERT_EQ(loaded.objects.size(), 2u);
     EXPECT_TRUE(std::filesystem::equivalent(loaded.model_path(0), scene.model_path(0)));
     EXPECT_EQ(scene_to_json(loaded, dir), scene_to_json(scene, dir)) << "every field survives the round trip";
+    EXPECT_FALSE(loaded.objects[0].params.ink) << "an object without an ink of its own takes the scene's";
+    ASSERT_TRUE(loaded.objects[1].params.ink);
+    EXPECT_EQ(*loaded.objects[1].params.ink, glm::vec3(0.2f, 0.4f, 0.9f));
 
     RenderedFrame original = render_scene(*context, scene, {400, 300});
     RenderedFrame again = render_scene(*context, loaded, {400, 300});
@@ -306,6 +310,61 @@ TEST_F(SceneObjects, EveryPairOfDensityPathsDrawsTheSameStipples) {
             EXPECT_NEAR(l, left_ink, 0.02 * left_ink) << density_path_name(left) << " then " << density_path_name(right);
             EXPECT_NEAR(r, right_ink, 0.02 * right_ink) << density_path_name(left) << " then " << density_path_name(right);
         }
+}
+
+// Where a pixel of the columns [x0, x1) holds ink: its colour away from the paper (white), and whether it lies
+// on the way from the paper to `ink` (mix(paper, ink, a) for some a, within rounding): what every stipple,
+// fractional one, line and toon shade of an object drawn in that ink leaves.
+struct InkHue {
+    size_t inked = 0, on_the_way = 0;
+};
+InkHue ink_hue(const RenderedFrame& frame, int x0, int x1, glm::vec3 ink) {
+    InkHue hue;
+    int most_ink_channel = 0;  // where the ink is farthest from the paper: the surest reading of how much ink
+    for (int k = 1; k < 3; ++k)
+        if (ink[k] < ink[most_ink_channel]) most_ink_channel = k;
+    for (int y = 0; y < frame.color.height; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const uint8_t* p = &frame.color.pixels[4 * (size_t(y) * frame.color.width + x)];
+            const glm::vec3 c(p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f);
+            if (glm::all(glm::greaterThan(c, glm::vec3(0.98f)))) continue;  // paper
+            ++hue.inked;
+            const float a = (1.0f - c[most_ink_channel]) / (1.0f - ink[most_ink_channel]);
+            const glm::vec3 expected = glm::vec3(1.0f) + a * (ink - glm::vec3(1.0f));
+            hue.on_the_way += glm::all(glm::lessThan(glm::abs(c - expected), glm::vec3(3.0f / 255.0f)));
+        }
+    return hue;
+}
+
+// Each object draws in its own ink (ObjectParams::ink), the others in the scene's, on every density path,
+// with the Raskar-Cohen lines, the object-space contours and the toon shade: the left sphere red, the right
+// one the scene's blue, each pixel of each side a mix of the paper and that side's ink alone.
+TEST_F(SceneObjects, EachObjectDrawsInItsOwnInk) {
+    auto dir = test::temp_dir("scene-object-inks");
+    write_sphere_obj(dir);
+    const VkExtent2D extent{480, 240};
+    Scene scene = two_spheres(dir, 0.25f, 0.25f);
+    const glm::vec3 red(0.9f, 0.1f, 0.1f), blue(0.1f, 0.2f, 0.8f);
+    scene.ink = blue;
+    scene.objects[0].params.ink = red;
+    scene.objects[0].params.silhouette_lines = true;
+    scene.objects[1].params.contours = true;
+    scene.objects[1].params.toon = true;
+    for (DensityPath path : kAllDensityPaths) {
+        for (SceneObject& o : scene.objects) o.params.density_path = path;
+        const RenderedFrame frame = render_scene(*context, scene, extent);
+        const InkHue left = ink_hue(frame, 0, 240, red), right = ink_hue(frame, 240, 480, blue);
+        std::printf("%s: left %zu inked px, %.2f%% of them red ink on paper; right %zu, %.2f%% blue\n", density_path_name(path),
+                    left.inked, 100.0 * double(left.on_the_way) / double(left.inked), right.inked,
+                    100.0 * double(right.on_the_way) / double(right.inked));
+        EXPECT_GT(left.inked, 2000u) << density_path_name(path);
+        EXPECT_GT(right.inked, 2000u) << density_path_name(path);
+        // Any pixel in another colour is drawn in the wrong ink (or mixed with it): none is.
+        EXPECT_EQ(left.on_the_way, left.inked) << density_path_name(path);
+        EXPECT_EQ(right.on_the_way, right.inked) << density_path_name(path);
+        // And the object without its own ink is not drawn in red (nor the other in blue).
+        EXPECT_LT(ink_hue(frame, 0, 240, blue).on_the_way, left.inked / 10) << density_path_name(path);
+    }
 }
 
 TEST_F(SceneObjects, ObjectsAtDifferentScalesKeepTheirTone) {
@@ -784,6 +843,8 @@ INSTANTIATE_TEST_SUITE_P(
                  [1e20,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "column 0 scales its axis by 1e+20"},
         BadScene{"bad_colour", R"({"objects": [{"model": "sphere.obj"}], "paper": [1, 2, 0]})", "paper", "0..1"},
+        BadScene{"bad_object_ink", R"({"objects": [{"model": "sphere.obj"}, {"model": "sphere.obj", "ink": [0, 0, 1.5]}]})",
+                 "objects[1].ink", "0..1"},
         BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",
                  "camera.distance", "must be in"},
         BadScene{"empty_objects", R"({"objects": []})", "objects", "no objects"},

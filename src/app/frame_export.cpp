@@ -214,7 +214,7 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
     for (size_t i = 0; i < objects.size(); ++i) {
         const ObjectGpu& object = renderer.object(i);
         drawing.objects.push_back({std::filesystem::path(scene.objects[i].model).stem().string(), object.frame.line_width,
-                                   object.frame.crease_width});
+                                   object.frame.crease_width, object.params.ink});
         const std::vector<uint32_t>& first = object.geometry.first_stipple;
         const float radius = stipple_ink_radius(object.params.point_size);  // the same ink as on screen
         for (const gpu::VisibleStipple& s : renderer.read_visible_stipples(i)) {

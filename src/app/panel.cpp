@@ -63,7 +63,7 @@ void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests)
     if (ImGui::Button("hide (H)")) requests.hide = true;
 }
 
-void object_section(SceneObject& object, size_t index, const std::string& name, size_t object_count,
+void object_section(SceneObject& object, size_t index, const std::string& name, size_t object_count, glm::vec3 scene_ink,
                     const PanelFigures& f, PanelRequests& requests) {
     ObjectParams& p = object.params;
     ImGui::PushID(int(index));
@@ -84,6 +84,16 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
             // for a big model take a while, and regenerating on every slider tick would stall the viewer.
             if (draw_param_widget(spec, p, limit).committed && spec.effect == ParamEffect::Regenerate)
                 requests.regenerate.push_back(index);
+        }
+
+        // The object's own ink, else the scene's (the colours above).
+        bool own_ink = p.ink.has_value();
+        if (ImGui::Checkbox("own ink", &own_ink)) p.ink = own_ink ? std::optional<glm::vec3>(scene_ink) : std::nullopt;
+        help("Draw this object's stipples, lines and toon shade in an ink of its own (a layer of that colour in "
+             "vector output); off, the scene's ink.");
+        if (p.ink) {
+            ImGui::SameLine();
+            ImGui::ColorEdit3("object ink", &p.ink->x);
         }
 
         ImGui::TextDisabled("placement");
@@ -145,7 +155,7 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
         ImGui::Separator();
         ImGui::TextDisabled("drag: left orbit, right/middle pan, wheel zoom; drop model files to add them");
         for (size_t i = 0; i < scene.objects.size(); ++i)
-            object_section(scene.objects[i], i, names.at(i), scene.objects.size(), figures, requests);
+            object_section(scene.objects[i], i, names.at(i), scene.objects.size(), scene.ink, figures, requests);
         if (!figures.messages.empty()) {
             ImGui::Separator();
             size_t first = figures.messages.size() > 6 ? figures.messages.size() - 6 : 0;

@@ -106,6 +106,31 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
     return glm::vec3(v);
 }
 
+glm::vec3 Args::colour(const std::string& name, glm::vec3 fallback) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) return fallback;
+    const std::string& text = it->second;
+    // Without commas it is hex digits, with or without the '#' (which a shell may need quoted).
+    if (text.find(',') == std::string::npos) {
+        const std::string digits = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+        const bool hex = !digits.empty() && digits.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
+        if (!hex || (digits.size() != 6 && digits.size() != 3))
+            fail("option " + name + ": '" + text + "' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)");
+        const size_t width = digits.size() / 3;  // 2 or 1 hex digits a channel; #abc is #aabbcc
+        glm::vec3 c;
+        for (int i = 0; i < 3; ++i) {
+            const unsigned value = unsigned(std::stoul(digits.substr(size_t(i) * width, width), nullptr, 16));
+            c[i] = float(width == 2 ? value : value * 17u) / 255.0f;
+        }
+        return c;
+    }
+    const glm::vec3 c = vec3(name, fallback);
+    for (int i = 0; i < 3; ++i)
+        if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+            fail("option " + name + ": '" + text + "' is not a colour: each of R,G,B must be in 0..1 (or give #rrggbb)");
+    return c;
+}
+
 int device_index(const Args& args) {
     if (!args.has("--device")) return -1;
     const long long index = args.integer("--device", -1);

@@ -27,6 +27,8 @@ public:
     double number(const std::string& name, double fallback) const;
     long long integer(const std::string& name, long long fallback) const;
     glm::vec3 vec3(const std::string& name, glm::vec3 fallback) const;
+    // A colour: #rrggbb (or #rgb) as web pages write it, or R,G,B each in 0..1 as scene files do.
+    glm::vec3 colour(const std::string& name, glm::vec3 fallback) const;
 
 private:
     std::vector<std::string> positionals_;

@@ -134,6 +134,8 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
         if (!light) fail("--light must not be the zero vector");
         scene.light = *light;
     }
+    scene.paper = args.colour("--paper", scene.paper);
+    scene.ink = args.colour("--ink", scene.ink);
     return scene;
 }
 
@@ -144,7 +146,7 @@ int run_render(const std::vector<std::string>& argv) {
     std::set<std::string> options = object_options();
     options.merge(cache_options());
     options.merge(vector_options());
-    options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
+    options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper",
                     "--device", "--frames", "--orbit", "--depth-cull", "--depth-raster", "--queued"});
     options.merge(animation_options());
     Args args(argv, flags, options);
@@ -248,14 +250,19 @@ int run_render(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "stipple: warning: %s: D_max is 0 (no stipples) and no line or toon is asked: nothing is drawn\n",
                      what.c_str());
     // A scene's paper and ink of one colour draw a plain image without a word otherwise (vector output paints no
-    // paper unless asked, and a CSV has no colour).
-    const bool one_colour = glm::all(glm::lessThan(glm::abs(scene.paper - scene.ink), glm::vec3(0.02f)));
+    // paper unless asked, and a CSV has no colour). Each object draws in its own ink where it has one.
+    std::vector<glm::vec3> inks;
+    for (const SceneObject& o : scene.objects) inks.push_back(o.params.ink.value_or(scene.ink));
+    const bool one_colour = std::all_of(inks.begin(), inks.end(), [&](glm::vec3 ink) {
+        return glm::all(glm::lessThan(glm::abs(scene.paper - ink), glm::vec3(0.02f)));
+    });
     if ((!vector || vector_options.fill_paper) && one_colour)
         std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
                      what.c_str());
     // Light ink for dark paper, on a page left unpainted (vector output without --fill-paper): white paper shows.
     const auto luminance = [](glm::vec3 c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
-    if (vector && !plot::is_csv_path(output) && !vector_options.fill_paper && luminance(scene.ink) > luminance(scene.paper) + 0.3f)
+    const bool light_ink = std::any_of(inks.begin(), inks.end(), [&](glm::vec3 ink) { return luminance(ink) > luminance(scene.paper) + 0.3f; });
+    if (vector && !plot::is_csv_path(output) && !vector_options.fill_paper && light_ink)
         std::fprintf(stderr, "stipple: warning: %s: the ink is lighter than the paper, and %s leaves the page unpainted "
                              "(the sheet it is printed on shows): --fill-paper paints it\n",
                      what.c_str(), output.c_str());
@@ -480,7 +487,11 @@ int run_render(const std::vector<std::string>& argv) {
         // The tone as `tone` measures it (measure_ink: from the paper's luminance toward the ink's over the covered
         // pixels, 1 - luminance for black on white), grey ink included:
         // counting the pixels darker than half (until 2026-12-05) read a faint drawing's 1.08% as 0.1%.
-        const InkFigures ink = measure_ink(frame, scene.paper, scene.ink);
+        // Objects of inks of other luminances have no one scale from paper to ink.
+        const bool one_ink_luminance = std::all_of(inks.begin(), inks.end(), [&](glm::vec3 c) {
+            return std::abs(luminance(c) - luminance(inks.front())) < 0.02f;
+        });
+        const InkFigures ink = measure_ink(frame, scene.paper, inks.front());
         if (scene.source.empty())
             std::printf("model:              %s\n", what.c_str());
         else
@@ -527,7 +538,9 @@ int run_render(const std::vector<std::string>& argv) {
             std::printf("covered pixels:     not measured (drawn in tiles)\n");
         } else {
             std::printf("covered pixels:     %zu\n", ink.covered);
-            if (!ink_readable(scene.paper, scene.ink))
+            if (!one_ink_luminance)
+                std::printf("mean ink inside:    not measured (the objects' inks are of different luminances)\n");
+            else if (!ink_readable(scene.paper, inks.front()))
                 std::printf("mean ink inside:    not measured (the paper and the ink are of about the same luminance)\n");
             else
                 std::printf("mean ink inside:    %.2f%% (of the way from the paper's luminance to the ink's over the covered "

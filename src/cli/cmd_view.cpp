@@ -17,7 +17,7 @@ int run_view(const std::vector<std::string>& argv) {
     flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
     std::set<std::string> options = object_options();
     options.merge(cache_options());
-    options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--device", "--screenshot-dir",
+    options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper", "--device", "--screenshot-dir",
                     "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log", "--animation", "--time", "--depth-cull", "--depth-raster"});
     Args args(argv, flags, options);
     apply_cache_options(args);

@@ -54,6 +54,10 @@ Render options:
                           0.0001..10000)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
+  --ink COLOUR, --paper COLOUR
+                          the colours of the stipples and lines, and of the paper: #rrggbb (#rgb)
+                          or R,G,B each in 0..1 (default #000000 on #ffffff); a scene file's
+                          objects may each have their own ink ("ink" below)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), the
                           mean ink inside the object (as tone measures it), and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
@@ -122,9 +126,10 @@ Vector and print output (render):
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
   progress bar shows on a terminal; the same command always writes the same files (but a PDF's creation
   date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch,
-  --distance and --light override the scene's camera and light.
+  --distance, --light, --ink and --paper override the scene's camera, light and colours.
 
-View options (view also takes --yaw, --pitch, --distance, --light, --device and the stipple options):
+View options (view also takes --yaw, --pitch, --distance, --light, --ink, --paper, --device and the
+stipple options):
   --width N, --height N   window size (default 1280 x 1024)
   --no-vsync              present without waiting for the display (MAILBOX or IMMEDIATE) from the start
   --present MODE          auto, swapchain or shm: how frames reach the window. shm hands them to the
@@ -175,7 +180,9 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
     std::istringstream example(param_scene_example());
     for (std::string line; std::getline(example, line);) std::printf("                %s\n", line.c_str());
     std::printf(R"(                (an animated glTF model also: "animation": {"name": "Walk" or an index (default:
-                 its first), "start": seconds into it at time 0, "speed": 1, "loop": true})
+                 its first), "start": seconds into it at time 0, "speed": 1, "loop": true}),
+                "ink": [r,g,b] (the object's own ink: its stipples, lines and toon shade, and its
+                               layers in vector output; default: the scene's ink)
    }],
    "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
               "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},

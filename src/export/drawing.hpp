@@ -7,6 +7,7 @@
 // nothing of Vulkan. Coordinates are pixels of the rendered image: origin at the top-left corner,
 // y down, so a dot at px lies where the PNG shows it.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct DrawnObject {
     std::string name;           // shown in the layer labels ("1 bunny stipples")
     float line_width_px = 1.0f;  // the width the frame drew its outline with (used when no pen width is set)
     float crease_width_px = 1.0f;  // and its creases
+    std::optional<glm::vec3> ink;  // its own ink (ObjectParams::ink); unset: the drawing's
 };
 
 struct Drawing {

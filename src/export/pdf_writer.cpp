@@ -112,7 +112,7 @@ void write_pdf(const PlotPlan& plan, const std::string& path) {
     }
     for (const PlotLayer& layer : plan.layers) {
         cairo_push_group(cr);
-        set_colour(cr, plan.ink);
+        set_colour(cr, layer.ink);
         if (layer.kind == LayerKind::Stipples) draw_dots(cr, layer, plan.dot_style);
         else draw_lines(cr, layer);
         cairo_pop_group_to_source(cr);

@@ -132,6 +132,7 @@ PlotLayer stipple_layer(const Drawing& drawing, std::vector<uint32_t> dot_indice
     layer.number = 3 * object + 1;
     layer.label = layer_label(layer.number, drawing, object, LayerKind::Stipples);
     layer.object = object;
+    layer.ink = drawing.objects[object].ink.value_or(drawing.ink);
     layer.kind = LayerKind::Stipples;
     layer.stroke_mm = pen_mm;
     // Dots under the pen's least mark: drawn as it with the chance of their share of its ink (plot_plan.hpp).
@@ -198,6 +199,7 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
     layer.number = 3 * object + (kind == LayerKind::Lines ? 2 : 3);
     layer.label = layer_label(layer.number, drawing, object, kind);
     layer.object = object;
+    layer.ink = drawing.objects[object].ink.value_or(drawing.ink);
     layer.kind = kind;
     layer.stroke_mm = options.pen_width_mm.value_or(line_width_px(drawing, object, kind) * plan.layout.mm_per_px);
     // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).

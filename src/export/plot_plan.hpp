@@ -82,6 +82,7 @@ struct PlotLayer {
     uint32_t object = 0;
     LayerKind kind = LayerKind::Stipples;
     double stroke_mm = 0.0;  // pen width of this layer's strokes (lines, or circle and tick dots)
+    glm::vec3 ink{0.0f};     // its pen's colour: its object's ink (a pen per colour on a plotter)
     std::vector<PlotDot> dots;
     std::vector<Polyline> lines;
 };

@@ -125,8 +125,8 @@ std::string svg_document(const PlotPlan& plan, bool with_travel) {
     out += "<title>stipple drawing</title>\n";
     if (plan.fill_paper)
         out += "<rect width=\"" + width + "\" height=\"" + height + "\" fill=\"" + hex_colour(plan.paper) + "\" stroke=\"none\"/>\n";
-    const std::string ink = hex_colour(plan.ink);
     for (const PlotLayer& layer : plan.layers) {
+        const std::string ink = hex_colour(layer.ink);
         if (layer.kind == LayerKind::Stipples) append_dots(out, layer, plan.dot_style, ink);
         else append_lines(out, layer, ink);
     }

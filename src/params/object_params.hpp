@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec3.hpp>
+
 namespace stipple {
 
 // How the per-frame density reaches the stipples (Table 1's columns, and ones beyond the paper).
@@ -74,6 +76,10 @@ struct ObjectParams {
     // Open surfaces: polygons facing away, seen through an opening, get stipples with the flipped normal.
     bool two_sided = false;
     UpAxis up = UpAxis::Y;
+    // The object's own ink (beyond the paper, which draws in black): its stipples, lines and toon shade,
+    // and its layers' colour in vector output. Unset, the scene's ink. Not in the parameter table (a
+    // colour, not a number): a scene file's object key "ink" and the panel set it.
+    std::optional<glm::vec3> ink;
 };
 
 // Whether the object draws any kind of line from the mesh's edges (Raskar-Cohen or object-space).

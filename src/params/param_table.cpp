@@ -274,6 +274,9 @@ double param_lowest_value(const ParamSpec& spec) {
 void validate_params(const ObjectParams& params) {
     for (const ParamSpec& spec : kTable)
         if (auto problem = param_value_problem(spec, spec.get(params))) fail("--" + std::string(spec.cli) + " = " + *problem);
+    if (params.ink)
+        for (int i = 0; i < 3; ++i)
+            if (!((*params.ink)[i] >= 0.0f && (*params.ink)[i] <= 1.0f)) fail("ink: colour components must be in 0..1");
 }
 
 bool needs_regeneration(const ObjectParams& a, const ObjectParams& b) {

@@ -384,6 +384,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     u.extrinsic = glm::vec4(p.pr, p.min_area, 0.5f * kReferenceHeight / radius_mean, scale.mean * scale.mean);
     glm::vec3 center_view = glm::vec3(u.model_view * glm::vec4(bounds.center, 1.0f));
     u.intrinsic = glm::vec4(p.de, radius_world, -center_view.z, scale.uniform ? 0.0f : 1.0f);
+    u.ink_color = glm::vec4(p.ink.value_or(view.ink_color), 1.0f);
     uint32_t flags = gpu::kFlagBackfaceCull;
     if (p.shading) flags |= gpu::kFlagShading;
     if (p.extrinsic) flags |= gpu::kFlagExtrinsic;

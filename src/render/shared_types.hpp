@@ -60,7 +60,7 @@ static_assert(offsetof(FrameUniforms, paper_color) == 160);
 static_assert(offsetof(FrameUniforms, viewport) == 176);
 static_assert(offsetof(FrameUniforms, projection) == 192);
 
-static_assert(sizeof(ObjectUniforms) == 3 * 64 + 7 * 16);
+static_assert(sizeof(ObjectUniforms) == 3 * 64 + 8 * 16);
 static_assert(offsetof(ObjectUniforms, normal_view) == 64);
 static_assert(offsetof(ObjectUniforms, model_view_proj) == 128);
 static_assert(offsetof(ObjectUniforms, shading) == 192);
@@ -70,5 +70,6 @@ static_assert(offsetof(ObjectUniforms, flags) == 240);
 static_assert(offsetof(ObjectUniforms, box_min) == 256);
 static_assert(offsetof(ObjectUniforms, box_size) == 272);
 static_assert(offsetof(ObjectUniforms, lines) == 288);
+static_assert(offsetof(ObjectUniforms, ink_color) == 304);
 
 }  // namespace stipple::gpu

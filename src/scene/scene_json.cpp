@@ -437,13 +437,14 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     for (size_t i = 0; i < objects.size(); ++i) {
         std::string where = "objects[" + std::to_string(i) + "]";
         const json& o = objects[i];
-        r.expect_object(o, where, {"model", "transform", "params", "animation"});
+        r.expect_object(o, where, {"model", "transform", "params", "animation", "ink"});
         SceneObject object;
         if (!o.contains("model")) r.error(Reader::field(where, "model"), "required field is missing");
         object.model = r.string(o["model"], Reader::field(where, "model"));
         if (object.model.empty()) r.error(Reader::field(where, "model"), "the model path is empty");
         if (o.contains("transform")) object.transform = read_transform(o["transform"], r, Reader::field(where, "transform"));
         if (o.contains("params")) object.params = read_params(o["params"], r, Reader::field(where, "params"));
+        if (o.contains("ink")) object.params.ink = r.color(o["ink"], Reader::field(where, "ink"));
         if (o.contains("animation"))
             object.animation = read_animation(o["animation"], r, Reader::field(where, "animation"));
         scene.objects.push_back(std::move(object));
@@ -514,6 +515,7 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
             if (!spec.alias) params[spec.key] = param_json(spec, spec.get(o.params));
         object["params"] = params;
         if (!o.animation.is_default()) object["animation"] = animation_json(o.animation);
+        if (o.params.ink) object["ink"] = vec3_json(*o.params.ink);
         objects.push_back(object);
     }
     json root = {{"objects", objects}, {"camera", camera_json(scene.camera)}};

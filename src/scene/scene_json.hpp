@@ -6,7 +6,8 @@
 //   "objects": [{"model": "blobby.glb",
 //                "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s or [x,y,z]}
 //                             or {"matrix": [16 numbers, column-major]},
-//                "params": {"dmax": 0.15, "shading_exponent": 1, ...}}],
+//                "params": {"dmax": 0.15, "shading_exponent": 1, ...},
+//                "ink": [r,g,b] (the object's own ink; default: the scene's)}],
 //   "camera": {"yaw": 20, "pitch": 10, "distance": 1.0, "target": [x,y,z], "world_distance": d, "fov_y": 30},
 //   "camera_path": [camera, camera, ...],
 //   "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]
