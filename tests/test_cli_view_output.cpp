@@ -193,6 +193,11 @@ TEST(CliView, TheWindowShowsTheFrameThroughSharedMemoryAndTheSwapchain) {
         ASSERT_EQ(session.viewer().wait_exit(60s), 0) << session.out() << session.err();
         // auto takes shared memory on lavapipe (the tests' device) under Xvfb; swapchain does not.
         EXPECT_EQ(session.out().find("X11 shared memory") != std::string::npos, present == "auto") << session.out();
+        // --verbose says which, and why.
+        EXPECT_NE(session.out().find(present == "auto" ? "presenting through X11 shared memory: a CPU device"
+                                                       : "presenting through the swapchain: --present swapchain"),
+                  std::string::npos)
+            << session.out();
         ASSERT_EQ(shown.width, kWidth) << "could not read the window back";
         const Image drawn = read_png(shot);
         ASSERT_EQ(drawn.width, kWidth);

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <numbers>
 #include <numeric>
@@ -187,7 +188,12 @@ int main(int argc, char** argv) {
     if (counts.empty()) counts = {150000};
     try {
         for (const size_t count : counts) measure(count, compare);
-        if (!out_dir.empty()) whole_plot(counts.front(), out_dir);
+        if (!out_dir.empty()) {
+            std::error_code ec;  // a missing folder is made, as render's -o makes one
+            std::filesystem::create_directories(out_dir, ec);
+            if (ec) stipple::fail_file(out_dir, "cannot make the folder: " + ec.message());
+            whole_plot(counts.front(), out_dir);
+        }
     } catch (const stipple::Error& e) {
         std::fprintf(stderr, "plot_order_speed: %s\n", e.what());
         return 1;

@@ -31,13 +31,24 @@ RendererOptions renderer_options(const ViewerOptions& options) {
 // Xvnc, X without a GPU driver do not): on a CPU device, X11 shared memory instead where it works.
 std::unique_ptr<X11SharedMemory> shared_memory_for(const ViewerOptions& options, const gpu::Context& context,
                                                    const Window& window) {
-    if (options.present == PresentMethod::Swapchain) return nullptr;
-    if (options.present == PresentMethod::Auto && context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+    const auto say = [&](const char* how, const std::string& why) {
+        if (options.verbose) std::printf("stipple: presenting through %s: %s\n", how, why.c_str());
+    };
+    if (options.present == PresentMethod::Swapchain) {
+        say("the swapchain", "--present swapchain");
         return nullptr;
+    }
+    if (options.present == PresentMethod::Auto && context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) {
+        say("the swapchain", "a GPU device");
+        return nullptr;
+    }
     std::string why;
     std::unique_ptr<X11SharedMemory> shared = X11SharedMemory::open(window.handle(), &why);
     if (!shared && options.present == PresentMethod::SharedMemory) fail("--present shm: " + why);
-    if (!shared && options.verbose) std::printf("stipple: presenting through the swapchain: %s\n", why.c_str());
+    if (!shared) say("the swapchain", why);
+    else say("X11 shared memory", options.present == PresentMethod::SharedMemory
+                                      ? "--present shm"
+                                      : "a CPU device, whose swapchain would write every frame into the X socket");
     return shared;
 }
 

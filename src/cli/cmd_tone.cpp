@@ -284,12 +284,12 @@ int run_tone(const std::vector<std::string>& argv) {
             print_table((*surveys)[k], options, extrinsic, several ? std::to_string(seeds[k]) : "");
         if (several) print_seed_average(*surveys, options, extrinsic);
     }
-    print_sampling_note(ons.front(), options, params.point_size);
     if (args.flag("--regimes"))
         for (size_t k = 0; k < seeds.size(); ++k) {
             if (several) std::printf("\nseed %llu:\n", static_cast<unsigned long long>(seeds[k]));
             print_regimes(ons[k], options, params.point_size);
         }
+    print_sampling_note(ons.front(), options, params.point_size);  // the last line, as --help says
     return 0;
 }
 

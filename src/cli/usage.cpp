@@ -221,7 +221,8 @@ Tone options (and the stipple options; without MODEL the default scene's model):
                           enhancement owes and draws, and the ink they leave on the screen
   --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
                           each distance's ink averaged over the seeds (instead of --seed)
-  --images DIR            write each view and distance (cropped to the object, enlarged) as PNG:
+  --images DIR            write each view and distance (cropped to the object; a crop under 256 px
+                          high enlarged to about that, at most 8 times) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
   A distance at which the object covers no pixel (beyond the frame, or the camera inside it) shows
