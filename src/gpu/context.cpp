@@ -285,9 +285,10 @@ void Context::create_device(const ContextOptions& options) {
     if (options.swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     // How much memory is left, for a clear message before an object that cannot fit is uploaded.
     uint32_t available_count = 0;
-    vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, nullptr);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, nullptr));
     std::vector<VkExtensionProperties> available(available_count);
-    vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, available.data());
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physical_device, nullptr, &available_count, available.data()));
+    available.resize(available_count);
     for (const VkExtensionProperties& e : available)
         if (std::strcmp(e.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME) == 0) memory_budget_ = true;
     if (memory_budget_) extensions.push_back(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
