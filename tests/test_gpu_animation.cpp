@@ -301,6 +301,13 @@ TEST_F(GpuAnimation, TheViewersSavedSceneHoldsThePoseShown) {
         EXPECT_NEAR(saved.objects[1].animation.start, second, 1e-9) << "at " << seconds << " s: as it runs";
         EXPECT_EQ(saved.objects[1].animation.speed, 2.0);
     }
+    // And as fast as the timeline plays it: its speed (2.5 scene seconds a wall second) folded into each object's,
+    // which it was lost from (the saved file played at the object's own speed).
+    live.save(path, OrbitCamera{}, 0.5, 2.5);
+    const Scene faster = load_scene(path);
+    EXPECT_NEAR(faster.objects[0].animation.speed, 2.5, 1e-6);
+    EXPECT_NEAR(faster.objects[1].animation.speed, 5.0, 1e-6);
+    EXPECT_NEAR(faster.objects[1].animation.start, 1.25, 1e-9) << "the pose shown, from the speed it was shown at";
 }
 
 TEST_F(GpuAnimation, TheViewerUndoesACpuPathForAnAnimatedObject) {

@@ -25,8 +25,15 @@ void pan(OrbitCamera& camera, glm::vec2 drag_pixels, float viewport_height);
 // so the camera can neither pass through the target nor lose the scene.
 void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
 
-// Looks at the centre of `bounds` from the framing distance, keeping the direction.
-void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect);
+// Looks at the centre of `bounds` from the framing distance, keeping the direction, so that it fills the
+// window's columns `free` (fractions of its width, from the left: [0, 1] the whole window) and sits in their
+// middle: the viewer leaves out the columns its open panel covers.
+void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free = {0.0f, 1.0f});
+
+// The widest run of the window's columns that `rect` (x, y, width, height in pixels, the panel's) leaves
+// uncovered, as fractions of `window` (its width and height): [0, 1] where it covers under half the window's
+// height (a panel folded to its title bar) or no column at all.
+glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window);
 
 // The camera's right and up axes in world space.
 glm::vec3 camera_right(const OrbitCamera& camera);

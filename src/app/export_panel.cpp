@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include "app/param_widgets.hpp"
 #include "core/error.hpp"
 
 namespace stipple::app {
@@ -14,13 +15,11 @@ std::optional<ExportRequest> draw_export_section(ExportPanelState& state, const 
     ImGui::RadioButton("PDF", &state.format, 1);
     ImGui::SameLine();
     ImGui::InputText("page", state.page, sizeof state.page);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A3, A4, A5, letter, legal or WxHmm, with -portrait or -landscape (as --page; a bare A4 is "
-                          "turned as the drawing is)");
+    hover_help("A3, A4, A5, letter, legal or WxHmm, with -portrait or -landscape (as --page; a bare A4 is "
+               "turned as the drawing is)");
     ImGui::SliderFloat("margin mm", &state.margin_mm, 0.0f, 50.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
     ImGui::Checkbox("fit the drawing", &state.fit_drawing);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("on: what is drawn fills the page inside the margins; off: the whole window's view (as --fit)");
+    hover_help("on: what is drawn fills the page inside the margins; off: the whole window's view (as --fit)");
     const char* label = state.format == 0 ? "export SVG" : "export PDF";
     if (ImGui::Button(label)) {
         try {
@@ -35,8 +34,7 @@ std::optional<ExportRequest> draw_export_section(ExportPanelState& state, const 
             state.error = e.what();  // a page name still being typed: say so, export nothing
         }
     }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s", ("stipple-NNNN" + std::string(state.format == 0 ? ".svg" : ".pdf") + " in " + screenshot_dir).c_str());
+    hover_help("stipple-NNNN" + std::string(state.format == 0 ? ".svg" : ".pdf") + " in " + screenshot_dir);
     if (!state.error.empty()) ImGui::TextWrapped("%s", state.error.c_str());
     return request;
 }

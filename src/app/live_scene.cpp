@@ -138,7 +138,7 @@ void LiveScene::remove(size_t object) {
     ids_.erase(ids_.begin() + std::ptrdiff_t(object));
 }
 
-void LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds) const {
+void LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds, double playback_speed) const {
     Scene saved = scene_;
     saved.camera = scene_camera_from(camera);
     // Parameters as generated: a slider not yet released has not changed the picture.
@@ -154,6 +154,9 @@ void LiveScene::save(const std::string& path, const OrbitCamera& camera, double 
             data_[i].motion.model->animations.at(size_t(resolve_animation(data_[i], choice)));
         choice.start = choice.loop ? anim::animation_time(animation, choice.time_at(scene_seconds), true)
                                    : std::clamp(choice.time_at(scene_seconds), -kMaxAnimationSeconds, kMaxAnimationSeconds);
+        // And as fast as it plays: the timeline's speed (scene seconds per wall second) is folded into the
+        // object's own, so that the saved scene plays, and render --frames draws, what the viewer showed.
+        choice.speed = std::clamp(choice.speed * playback_speed, -kMaxAnimationSpeed, kMaxAnimationSpeed);
     }
     save_scene(path, saved);
 }

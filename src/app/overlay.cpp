@@ -7,6 +7,8 @@
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 #include "app/panel_layer.hpp"
 #include "app/swapchain.hpp"
@@ -19,6 +21,11 @@ namespace stipple::app {
 
 namespace {
 
+// The overlay whose window's key events on_key latches (one window, one overlay), and the callback it chains to
+// (the backend's, which chains to the window's own).
+Overlay* g_key_overlay = nullptr;
+GLFWkeyfun g_backend_key_callback = nullptr;
+
 // The backend reports its VkResults here; a failure ends the viewer like any other Vulkan failure.
 void check_imgui_result(VkResult result) {
     if (result < 0) stipple::gpu::vk_check(result, "Dear ImGui Vulkan backend", __FILE__, __LINE__);
@@ -26,7 +33,13 @@ void check_imgui_result(VkResult result) {
 
 }  // namespace
 
-Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchain& swapchain) : context_(context) {
+void Overlay::on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    if (g_backend_key_callback) g_backend_key_callback(window, key, scancode, action, mods);
+    if (g_key_overlay && action == GLFW_PRESS) g_key_overlay->key_latch_.pressed(key);
+}
+
+Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchain& swapchain)
+    : context_(context), window_(window) {
     render_pass_ = create_panel_pass(context.device, swapchain.format(), PanelTarget::Frame, swapchain.present_layout());
     layer_ = std::make_unique<PanelLayer>(context, swapchain.format());
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
@@ -44,6 +57,10 @@ Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchai
     ImGui::StyleColorsDark();
     ImGui::GetStyle().Alpha = 0.94f;
     ImGui_ImplGlfw_InitForVulkan(window, true);  // chains to the window's own callbacks
+    // Ahead of the backend's key callback: presses to latch (app/key_latch.hpp). The backend's shutdown puts the
+    // window's own callback back.
+    g_key_overlay = this;
+    g_backend_key_callback = glfwSetKeyCallback(window, on_key);
 
     ImGui_ImplVulkan_InitInfo init{};
     init.Instance = context.instance;
@@ -72,6 +89,8 @@ Overlay::~Overlay() {
     if (in_frame_) ImGui::EndFrame();
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();
+    g_key_overlay = nullptr;
+    g_backend_key_callback = nullptr;
     ImGui::DestroyContext();
     destroy_framebuffers();
     vkDestroyDescriptorPool(context_.device, pool_, nullptr);
@@ -100,9 +119,10 @@ void Overlay::rebuild(const Swapchain& swapchain) {
 void Overlay::new_frame() {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    ImGuiIO& io = ImGui::GetIO();
+    key_latch_.apply(io.KeysDown, IM_ARRAYSIZE(io.KeysDown), [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS; });
     // The panel is drawn into the frame, which a window larger than the device can draw is clamped to
     // (swapchain.cpp): its viewport must not be the window's.
-    ImGuiIO& io = ImGui::GetIO();
     if (extent_.width > 0 && extent_.height > 0 && io.DisplayFramebufferScale.x > 0.0f && io.DisplayFramebufferScale.y > 0.0f) {
         io.DisplaySize.x = std::min(io.DisplaySize.x, float(extent_.width) / io.DisplayFramebufferScale.x);
         io.DisplaySize.y = std::min(io.DisplaySize.y, float(extent_.height) / io.DisplayFramebufferScale.y);

@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "app/key_latch.hpp"
 #include "app/pixel_over.hpp"
 
 struct GLFWwindow;
@@ -56,7 +57,11 @@ private:
     void destroy_framebuffers();
     static bool layer_enabled();
 
+    static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+
     const gpu::Context& context_;
+    GLFWwindow* window_ = nullptr;
+    KeyLatch key_latch_;
     VkRenderPass render_pass_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     std::vector<VkFramebuffer> framebuffers_;

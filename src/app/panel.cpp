@@ -16,9 +16,7 @@ namespace {
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
-void help(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
+void help(const char* text) { hover_help(text); }
 
 void figures_section(const PanelFigures& f, PanelRequests& requests) {
     ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
@@ -138,6 +136,10 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     static uint64_t errors_seen = 0;
     if (figures.errors_said > errors_seen) ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
     errors_seen = figures.errors_said;
+    // A click on the folded title bar (not a drag, which moves it) unfolds it, not only one on its arrow.
+    static bool unfold = false;
+    if (unfold) ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
+    unfold = false;
     char title[64];
     std::snprintf(title, sizeof title, "stipple  %.1f fps###stipple", figures.fps);  // ### keeps one window
     bool open = ImGui::Begin(title);
@@ -145,6 +147,10 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     if (size.y >= max_height - 0.5f) clamped_at = max_height;
     last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
+    if (!open && ImGui::IsWindowHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+        const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+        unfold = drag.x * drag.x + drag.y * drag.y < 9.0f;
+    }
     if (open) {
         ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
         figures_section(figures, requests);

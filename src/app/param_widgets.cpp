@@ -10,6 +10,15 @@
 
 namespace stipple::app {
 
+void hover_help(const std::string& text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 WidgetResult draw_param_widget(const ParamSpec& spec, ObjectParams& params, double upper_limit) {
     const double before = spec.get(params);
     const double lowest = param_lowest_value(spec);
@@ -55,10 +64,7 @@ WidgetResult draw_param_widget(const ParamSpec& spec, ObjectParams& params, doub
             break;
         }
     }
-    if (ImGui::IsItemHovered()) {
-        const std::string tip = std::string(spec.help) + "\n(" + param_range_text(spec) + ")";
-        ImGui::SetTooltip("%s", tip.c_str());
-    }
+    hover_help(std::string(spec.help) + "\n(" + param_range_text(spec) + ")");
     // The table's range holds whatever the widget allowed (typed input, steps past the ends).
     if (spec.type == ParamType::Int || spec.type == ParamType::Float) value = std::clamp(value, lowest, highest);
     if (value != before) spec.set(params, value);

@@ -17,6 +17,7 @@ class Timeline {
 public:
     double time() const { return time_; }  // scene seconds
     bool playing() const { return playing_; }
+    float speed() const { return speed_; }  // scene seconds per wall second
     // Play or pause; playing from the end of an animation that does not loop starts it again.
     void toggle_play(const Scene& scene, const std::vector<ObjectData>& objects);
     void set_time(double seconds) { time_ = seconds; }

@@ -155,7 +155,7 @@ void Viewer::message(const std::string& text, bool error) {
 
 void Viewer::save_scene() {
     try {
-        live_.save(options_.scene_path, camera_, timeline_.time());
+        live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed());
         message("scene saved: " + options_.scene_path);
         // render follows a camera_path over every other camera: say where the view just saved goes.
         if (!live_.scene().camera_path.empty())
@@ -323,7 +323,7 @@ void Viewer::handle_input(const Input& input, float aspect) {
             case KeyCommand::OrbitDown: orbit_degrees(camera_, 0.0f, -kKeyOrbitDegrees); break;
             case KeyCommand::ZoomIn: zoom(camera_, 1.0f, bounds, aspect); break;
             case KeyCommand::ZoomOut: zoom(camera_, -1.0f, bounds, aspect); break;
-            case KeyCommand::FrameAll: frame_all(camera_, bounds, aspect); break;
+            case KeyCommand::FrameAll: frame_all(camera_, bounds, aspect, free_columns()); break;
             case KeyCommand::TogglePanel: panel_visible_ = !panel_visible_; break;
             case KeyCommand::Screenshot: screenshot_.request(); break;
             case KeyCommand::ToggleVsync:
@@ -346,11 +346,17 @@ void Viewer::handle_input(const Input& input, float aspect) {
     }
 }
 
+glm::vec2 Viewer::free_columns() const {
+    if (!panel_visible_) return {0.0f, 1.0f};
+    const VkExtent2D size = window_.framebuffer_size();
+    return columns_left_free(panel_rect_, glm::vec2(float(size.width), float(size.height)));
+}
+
 void Viewer::handle_requests(const PanelRequests& r, float aspect) {
     panel_rect_ = r.rect;
     if (r.screenshot) screenshot_.request();
     if (r.save_scene) save_scene();
-    if (r.frame_all) frame_all(camera_, live_.bounds(), aspect);
+    if (r.frame_all) frame_all(camera_, live_.bounds(), aspect, free_columns());
     if (r.toggle_vsync) {
         vsync_ = !vsync_;
         recreate_ = true;

@@ -63,6 +63,8 @@ private:
     void finish_previous_frame();
     void handle_input(const Input& input, float aspect);
     void handle_requests(const PanelRequests& requests, float aspect);
+    // The window's columns the open panel leaves free, where "frame all" puts the scene (columns_left_free).
+    glm::vec2 free_columns() const;
     bool ensure_swapchain();
     void record(uint32_t image_index);
     void message(const std::string& text, bool error = false);

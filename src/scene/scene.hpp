@@ -38,6 +38,8 @@ struct Transform {
 // rejects a name.
 // The most seconds an animation's start (a scene file's, or --time) may lie from 0, either way.
 inline constexpr double kMaxAnimationSeconds = 1e6;
+// The fastest an animation may play, animation seconds per scene second, either way (a scene file's "speed").
+inline constexpr double kMaxAnimationSpeed = 1000.0;
 
 struct AnimationChoice {
     std::string name;     // the animation's name, or its index ("0", "1", ...); "" for the model's first

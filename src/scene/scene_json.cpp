@@ -252,7 +252,7 @@ AnimationChoice read_animation(const json& j, const Reader& r, const std::string
     }
     if (j.contains("speed")) {
         a.speed = r.number(j["speed"], Reader::field(where, "speed"));
-        if (std::abs(a.speed) > 1000.0) r.error(Reader::field(where, "speed"), "must be in -1000..1000");
+        if (std::abs(a.speed) > kMaxAnimationSpeed) r.error(Reader::field(where, "speed"), "must be in -1000..1000");
     }
     if (j.contains("loop")) a.loop = r.boolean(j["loop"], Reader::field(where, "loop"));
     return a;

@@ -1,0 +1,28 @@
+#pragma once
+// Keys pressed and released between two frames, held down for one frame so that Dear ImGui sees them.
+//
+// Debian's Dear ImGui 1.86 reads the keyboard as states (io.KeysDown), once a frame, and its GLFW backend
+// sets them from the key callback. A key pressed and released between two frames is never seen down:
+// a typed value's Enter (xdotool's key, a quick typist, any frame slower than a keystroke: a heavy scene
+// draws at a few frames a second) did not commit it, and D_max stayed as it was. (1.87 queues the events
+// instead; this is that queue's effect for the keys that need it.)
+#include <functional>
+#include <vector>
+
+namespace stipple::app {
+
+class KeyLatch {
+public:
+    // From the key callback, on a press (after the backend has set the key's state).
+    void pressed(int key);
+    // Once a frame, before ImGui::NewFrame: `keys_down` is io.KeysDown (`count` of them), `down_now` the
+    // key's real state. A key latched last frame gets its real state back; a key pressed since then and no
+    // longer down is held down for this frame.
+    void apply(bool* keys_down, int count, const std::function<bool(int)>& down_now);
+
+private:
+    std::vector<int> pressed_;  // since the last apply
+    std::vector<int> held_;     // held down by the last apply
+};
+
+}  // namespace stipple::app

@@ -1,0 +1,65 @@
+// The viewer's camera arithmetic (app/camera_control.hpp), without a window: "frame all" fits the scene into
+// the columns the open panel leaves free, and centres it there.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "app/camera_control.hpp"
+
+namespace {
+
+using namespace stipple;
+
+// The normalised device x and y extent of points on the sphere's surface as `camera` sees them.
+struct Extent {
+    float left = 1e9f, right = -1e9f, bottom = 1e9f, top = -1e9f;
+};
+Extent projected(const OrbitCamera& camera, const Sphere& sphere, float aspect) {
+    const CameraMatrices m = camera_matrices(camera, aspect, sphere);
+    std::mt19937 random(7);
+    std::normal_distribution<float> normal;
+    Extent e;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 p = sphere.center + sphere.radius * glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+        const glm::vec4 clip = m.proj * m.view * glm::vec4(p, 1.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        e.left = std::min(e.left, ndc.x), e.right = std::max(e.right, ndc.x);
+        e.bottom = std::min(e.bottom, ndc.y), e.top = std::max(e.top, ndc.y);
+    }
+    return e;
+}
+
+TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
+    const Sphere sphere{glm::vec3(3.0f, -1.0f, 2.0f), 2.5f};
+    const float aspect = 1280.0f / 1024.0f;
+    for (const glm::vec2 free : {glm::vec2(0.0f, 1.0f), glm::vec2(0.375f, 1.0f), glm::vec2(0.0f, 0.6f)}) {
+        OrbitCamera camera;
+        camera.yaw_deg = 35.0f;
+        camera.pitch_deg = -20.0f;
+        app::frame_all(camera, sphere, aspect, free);
+        const Extent e = projected(camera, sphere, aspect);
+        const float left = 2.0f * free.x - 1.0f, right = 2.0f * free.y - 1.0f;
+        std::printf("free columns %.3f..%.3f: the sphere spans x %.3f..%.3f (room %.3f..%.3f), y %.3f..%.3f\n", free.x, free.y,
+                    e.left, e.right, left, right, e.bottom, e.top);
+        // Inside the free columns and the window's height, and filling one of the two (framing_distance).
+        EXPECT_GE(e.left, left - 0.01f);
+        EXPECT_LE(e.right, right + 0.01f);
+        EXPECT_GE(e.bottom, -1.01f);
+        EXPECT_LE(e.top, 1.01f);
+        EXPECT_GT(std::max((e.right - e.left) / (right - left), (e.top - e.bottom) / 2.0f), 0.9f);
+        // In the middle of them.
+        EXPECT_NEAR(0.5f * (e.left + e.right), 0.5f * (left + right), 0.03f);
+    }
+}
+
+TEST(AppCamera, TheColumnsAnOpenPanelLeaves) {
+    const glm::vec2 window(1280.0f, 1024.0f);
+    // Open at the left (the default place), moved to the right, folded to its title bar, hidden off the window.
+    EXPECT_EQ(app::columns_left_free({10.0f, 10.0f, 470.0f, 990.0f}, window), glm::vec2(480.0f / 1280.0f, 1.0f));
+    EXPECT_EQ(app::columns_left_free({900.0f, 0.0f, 380.0f, 700.0f}, window), glm::vec2(0.0f, 900.0f / 1280.0f));
+    EXPECT_EQ(app::columns_left_free({10.0f, 10.0f, 470.0f, 22.0f}, window), glm::vec2(0.0f, 1.0f));
+    EXPECT_EQ(app::columns_left_free({1300.0f, 0.0f, 400.0f, 1000.0f}, window), glm::vec2(0.0f, 1.0f));
+}
+
+}  // namespace
