@@ -370,8 +370,7 @@ struct FrameUniforms {
     mat4 view_proj;      // world -> clip
     mat4 view;           // world -> view (camera at origin looking down -z)
     vec4 light_view;     // xyz: unit direction toward the light, view space
-    vec4 ink_color;      // rgb ink, a unused
-    vec4 paper_color;    // rgb paper (background), a unused
+    vec4 paper_color;    // rgb paper (background), a unused; the ink is each object's (ObjectUniforms::ink_color)
     vec4 viewport;       // width, height, 1/width, 1/height
     vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2 / detail), for the
                          // densities; y: near; z: far; w: detail scale (FrameView::detail_scale)

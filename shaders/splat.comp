@@ -116,7 +116,7 @@ bool uncovered(uint word) {
 struct SplatConstants {
     vec2 size;          // the viewport
     uint ink_word;      // a whole stipple's word
-    vec3 ink, paper;    // the frame's colours
+    vec3 ink, paper;    // the object's ink, the frame's paper
 };
 
 // Inks one pixel with a stipple of the given intensity (see the top of this file). `full` is

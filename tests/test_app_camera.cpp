@@ -33,14 +33,20 @@ Extent projected(const OrbitCamera& camera, const Sphere& sphere, float aspect) 
 TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
     const Sphere sphere{glm::vec3(3.0f, -1.0f, 2.0f), 2.5f};
     const float aspect = 1280.0f / 1024.0f;
-    for (const glm::vec2 free : {glm::vec2(0.0f, 1.0f), glm::vec2(0.375f, 1.0f), glm::vec2(0.0f, 0.6f)}) {
+    struct Case {
+        glm::vec2 free;
+        float pitch;
+    };
+    for (const Case c : {Case{{0.0f, 1.0f}, -20.0f}, Case{{0.375f, 1.0f}, -20.0f}, Case{{0.0f, 0.6f}, -20.0f},
+                         Case{{0.375f, 1.0f}, 89.0f}, Case{{0.25f, 0.5f}, -89.0f}}) {
+        const glm::vec2 free = c.free;
         OrbitCamera camera;
         camera.yaw_deg = 35.0f;
-        camera.pitch_deg = -20.0f;
+        camera.pitch_deg = c.pitch;
         app::frame_all(camera, sphere, aspect, free);
         const Extent e = projected(camera, sphere, aspect);
         const float left = 2.0f * free.x - 1.0f, right = 2.0f * free.y - 1.0f;
-        std::printf("free columns %.3f..%.3f: the sphere spans x %.3f..%.3f (room %.3f..%.3f), y %.3f..%.3f\n", free.x, free.y,
+        std::printf("pitch %.0f, free columns %.3f..%.3f: the sphere spans x %.3f..%.3f (room %.3f..%.3f), y %.3f..%.3f\n", c.pitch, free.x, free.y,
                     e.left, e.right, left, right, e.bottom, e.top);
         // Inside the free columns and the window's height, and filling one of the two (framing_distance).
         EXPECT_GE(e.left, left - 0.01f);
@@ -55,11 +61,12 @@ TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
 
 TEST(AppCamera, TheColumnsAnOpenPanelLeaves) {
     const glm::vec2 window(1280.0f, 1024.0f);
-    // Open at the left (the default place), moved to the right, folded to its title bar, hidden off the window.
+    // Open at the left (the default place), moved to the right, off the window, and over nearly all of it (a
+    // narrow window: the whole window then, not a sliver at its edge).
     EXPECT_EQ(app::columns_left_free({10.0f, 10.0f, 470.0f, 990.0f}, window), glm::vec2(480.0f / 1280.0f, 1.0f));
     EXPECT_EQ(app::columns_left_free({900.0f, 0.0f, 380.0f, 700.0f}, window), glm::vec2(0.0f, 900.0f / 1280.0f));
-    EXPECT_EQ(app::columns_left_free({10.0f, 10.0f, 470.0f, 22.0f}, window), glm::vec2(0.0f, 1.0f));
     EXPECT_EQ(app::columns_left_free({1300.0f, 0.0f, 400.0f, 1000.0f}, window), glm::vec2(0.0f, 1.0f));
+    EXPECT_EQ(app::columns_left_free({10.0f, 10.0f, 1100.0f, 1000.0f}, window), glm::vec2(0.0f, 1.0f));
 }
 
 }  // namespace

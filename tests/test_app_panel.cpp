@@ -17,7 +17,7 @@ using namespace stipple;
 
 // The panel's height after a few frames of a `width` x 512 window (ImGui fits its height to the content
 // over the first frames), `messages` given from frame `message_frame` on, `errors` of them errors.
-// `click_at`: the mouse pressed there in frame 3 and released in frame 4, moving by `drag` in between.
+// `click_at`: the mouse pressed there in frame 3, moved by `drag` while held in frame 4, released in frame 5.
 float panel_height(uint32_t width, const std::vector<std::string>& messages = {}, int message_frame = 0, uint64_t errors = 0,
                    ImVec2 click_at = ImVec2(-1.0f, -1.0f), ImVec2 drag = ImVec2(0.0f, 0.0f)) {
     ImGui::CreateContext();
@@ -33,14 +33,14 @@ float panel_height(uint32_t width, const std::vector<std::string>& messages = {}
     figures.extent = {width, 512};
     app::ExportPanelState export_state;
     float height = 0.0f;
-    for (int frame = 0; frame < 6; ++frame) {
+    for (int frame = 0; frame < 8; ++frame) {
         if (frame == message_frame) {
             figures.messages = messages;
             figures.errors_said += errors;
         }
         if (click_at.x >= 0.0f) {
             io.MousePos = frame >= 4 ? ImVec2(click_at.x + drag.x, click_at.y + drag.y) : click_at;
-            io.MouseDown[0] = frame == 3;
+            io.MouseDown[0] = frame == 3 || frame == 4;
         }
         ImGui::NewFrame();
         height = app::draw_panel(scene, {}, figures, export_state).rect.w;
@@ -64,6 +64,8 @@ TEST(AppPanel, ANarrowWindowStartsWithThePanelFolded) {
 TEST(AppPanel, AClickOnTheFoldedTitleOpensThePanel) {
     EXPECT_GT(panel_height(640, {}, 0, 0, ImVec2(120.0f, 20.0f)), 150.0f);
     EXPECT_LT(panel_height(640, {}, 0, 0, ImVec2(120.0f, 20.0f), ImVec2(40.0f, 10.0f)), 40.0f);
+    // Its arrow opens it too (Dear ImGui's own toggle, which the title's click must not undo).
+    EXPECT_GT(panel_height(640, {}, 0, 0, ImVec2(20.0f, 19.0f)), 150.0f);
     EXPECT_LT(panel_height(640), 40.0f);
 }
 
@@ -111,6 +113,29 @@ std::pair<bool, float> type_and_enter(bool latched) {
     }
     ImGui::DestroyContext();
     return {committed, params.generation.dmax};
+}
+
+// The latch alone: a quick press is down for one frame; pressed again while latched, up for a frame then down
+// again (two presses, not one long one); presses made while the panel was hidden are forgotten.
+TEST(AppPanel, TheKeyLatchHoldsEachQuickPressForOneFrame) {
+    bool down[8] = {};
+    app::KeyLatch latch;
+    const auto released = [](int) { return false; };
+    std::string seen;  // key 3's state, frame by frame
+    const auto frame = [&] {
+        latch.apply(down, 8, released);
+        seen += down[3] ? '1' : '0';
+    };
+    latch.pressed(3);  // press and release before frame 1
+    frame();
+    latch.pressed(3);  // again, before frame 2
+    frame();
+    frame();
+    frame();
+    latch.pressed(3);
+    latch.forget();  // the panel hidden for that frame
+    frame();
+    EXPECT_EQ(seen, "10100");
 }
 
 TEST(AppPanel, AnEnterBetweenTwoFramesCommitsTheTypedValue) {

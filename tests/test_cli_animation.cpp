@@ -242,7 +242,7 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "0"}, "--fps"},
         {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "1e-308"}, "must be in 0.001..1000"},
         {{"render", model, "-o", out, "--fps", "30"}, "--fps needs --frames"},
-        {{"render", model, "-o", out, "--density-path", "cpu"}, "cannot draw an animated model"},
+        {{"render", model, "-o", out, "--density-path", "cpu"}, model + ": the cpu density path cannot draw an animated model (it"},
         {{"render", model, "-o", out, "--density-path", "cpu-splat"}, "cannot draw an animated model"},
         {{"render", "-o", out, "--time", "1"}, "--time needs an animated model"},
         {{"render", "-o", out, "--animation", "Walk"}, "has no animation to play"},
@@ -251,7 +251,7 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", (scenes / "field.json").string(), "-o", out}, "objects[0].animation.clip: unknown field"},
         // Said where the scene names the path.
         {{"render", (scenes / "cpu.json").string(), "-o", out},
-         "cpu.json: objects[0].params.density_path: the cpu density path cannot draw an animated model"},
+         "cpu.json: objects[0].params.density_path: " + model + ": the cpu density path cannot draw an animated model"},
         {{"render", (scenes / "unknown.json").string(), "-o", out, "--animation", "Bend"}, "scene file"},
         {{"render", broken_path, "-o", out}, "animations[0].samplers[0].input: key 2 (time 1) comes before key 1"},
         {{"info", broken_path}, "animations[0].samplers[0].input"},

@@ -499,6 +499,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--light", "1,0,1,"}, "is not three numbers X,Y,Z"},
         {{"render", "--ink", "red"}, "--ink: 'red' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)"},
         {{"render", "--ink", "#12345"}, "--ink: '#12345' is not a colour"},
+        {{"render", "--ink", "100"}, "--ink: '100' is not a colour: write #100 for hex digits"},
         {{"render", "--paper", "1.5,0,0"}, "--paper: '1.5,0,0' is not a colour: each of R,G,B must be in 0..1"},
         {{"view", "--paper", "1,0"}, "--paper: '1,0' is not three numbers"},
         {{"tone", "--distances", "0x10"}, "--distances: '0x10' is not a finite number"},

@@ -72,9 +72,10 @@ std::filesystem::path write_sphere_obj(const std::filesystem::path& dir, int sub
     return write_mesh_obj(dir, name, make_icosphere(subdivisions));
 }
 
-RenderedFrame render_scene(const gpu::Context& context, const Scene& scene, VkExtent2D extent) {
+RenderedFrame render_scene(const gpu::Context& context, const Scene& scene, VkExtent2D extent,
+                           const RendererOptions& options = {}) {
     SceneContent content = load_scene_content(scene);
-    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
     add_scene_objects(renderer, scene, content.objects);
     Sphere bounds = scene_bounds(scene, content.objects);
     float aspect = float(extent.width) / float(extent.height);
@@ -336,35 +337,44 @@ InkHue ink_hue(const RenderedFrame& frame, int x0, int x1, glm::vec3 ink) {
     return hue;
 }
 
-// Each object draws in its own ink (ObjectParams::ink), the others in the scene's, on every density path,
-// with the Raskar-Cohen lines, the object-space contours and the toon shade: the left sphere red, the right
-// one the scene's blue, each pixel of each side a mix of the paper and that side's ink alone.
+// Each object draws in its own ink (ObjectParams::ink), not the scene's, on every density path, with the
+// Raskar-Cohen lines (drawn against the depth image, or against the compute depth pass's words), the
+// object-space contours and the toon shade: the left sphere red, the right one blue, the scene's ink green,
+// each pixel of each side a mix of the paper and that side's ink alone.
 TEST_F(SceneObjects, EachObjectDrawsInItsOwnInk) {
     auto dir = test::temp_dir("scene-object-inks");
     write_sphere_obj(dir);
     const VkExtent2D extent{480, 240};
     Scene scene = two_spheres(dir, 0.25f, 0.25f);
-    const glm::vec3 red(0.9f, 0.1f, 0.1f), blue(0.1f, 0.2f, 0.8f);
-    scene.ink = blue;
+    const glm::vec3 red(0.9f, 0.1f, 0.1f), blue(0.1f, 0.2f, 0.8f), green(0.1f, 0.6f, 0.1f);
+    scene.ink = green;
     scene.objects[0].params.ink = red;
-    scene.objects[0].params.silhouette_lines = true;
-    scene.objects[1].params.contours = true;
-    scene.objects[1].params.toon = true;
-    for (DensityPath path : kAllDensityPaths) {
-        for (SceneObject& o : scene.objects) o.params.density_path = path;
-        const RenderedFrame frame = render_scene(*context, scene, extent);
-        const InkHue left = ink_hue(frame, 0, 240, red), right = ink_hue(frame, 240, 480, blue);
-        std::printf("%s: left %zu inked px, %.2f%% of them red ink on paper; right %zu, %.2f%% blue\n", density_path_name(path),
-                    left.inked, 100.0 * double(left.on_the_way) / double(left.inked), right.inked,
-                    100.0 * double(right.on_the_way) / double(right.inked));
-        EXPECT_GT(left.inked, 2000u) << density_path_name(path);
-        EXPECT_GT(right.inked, 2000u) << density_path_name(path);
-        // Any pixel in another colour is drawn in the wrong ink (or mixed with it): none is.
-        EXPECT_EQ(left.on_the_way, left.inked) << density_path_name(path);
-        EXPECT_EQ(right.on_the_way, right.inked) << density_path_name(path);
-        // And the object without its own ink is not drawn in red (nor the other in blue).
-        EXPECT_LT(ink_hue(frame, 0, 240, blue).on_the_way, left.inked / 10) << density_path_name(path);
-    }
+    scene.objects[1].params.ink = blue;
+    for (SceneObject& o : scene.objects) o.params.silhouette_lines = o.params.contours = true;
+    for (const DepthRaster raster : {DepthRaster::Fixed, DepthRaster::Compute})
+        for (DensityPath path : kAllDensityPaths) {
+            // A toon object makes the frame's depth pass the fixed one (depth_raster.hpp): toon with it alone.
+            if (raster == DepthRaster::Compute && path != DensityPath::Splat && path != DensityPath::Vertex) continue;
+            for (SceneObject& o : scene.objects) {
+                o.params.density_path = path;
+                o.params.toon = raster == DepthRaster::Fixed;
+            }
+            RendererOptions options;
+            options.depth_raster = raster;
+            const RenderedFrame frame = render_scene(*context, scene, extent, options);
+            const std::string what = std::string(density_path_name(path)) + (raster == DepthRaster::Fixed ? ", fixed depth" : ", compute depth");
+            const InkHue left = ink_hue(frame, 0, 240, red), right = ink_hue(frame, 240, 480, blue);
+            std::printf("%s: left %zu inked px, %.2f%% of them red ink on paper; right %zu, %.2f%% blue\n", what.c_str(),
+                        left.inked, 100.0 * double(left.on_the_way) / double(left.inked), right.inked,
+                        100.0 * double(right.on_the_way) / double(right.inked));
+            EXPECT_GT(left.inked, 2000u) << what;
+            EXPECT_GT(right.inked, 2000u) << what;
+            // Any pixel in another colour is drawn in the wrong ink (or mixed with it): none is.
+            EXPECT_EQ(left.on_the_way, left.inked) << what;
+            EXPECT_EQ(right.on_the_way, right.inked) << what;
+            // Nor in the scene's.
+            EXPECT_LT(ink_hue(frame, 0, 480, green).on_the_way, (left.inked + right.inked) / 20) << what;
+        }
 }
 
 TEST_F(SceneObjects, ObjectsAtDifferentScalesKeepTheirTone) {

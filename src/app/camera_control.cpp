@@ -96,10 +96,11 @@ void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec
 }
 
 glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window) {
-    if (window.x <= 0.0f || window.y <= 0.0f || rect.w < 0.5f * window.y) return {0.0f, 1.0f};
+    if (window.x <= 0.0f || window.y <= 0.0f) return {0.0f, 1.0f};
     const float left = std::clamp(rect.x / window.x, 0.0f, 1.0f), right = std::clamp((rect.x + rect.z) / window.x, 0.0f, 1.0f);
     if (right <= left) return {0.0f, 1.0f};
-    return left >= 1.0f - right ? glm::vec2(0.0f, left) : glm::vec2(right, 1.0f);
+    const glm::vec2 free = left >= 1.0f - right ? glm::vec2(0.0f, left) : glm::vec2(right, 1.0f);
+    return free.y - free.x < 0.25f ? glm::vec2(0.0f, 1.0f) : free;
 }
 
 }  // namespace stipple::app

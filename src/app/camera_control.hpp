@@ -25,14 +25,15 @@ void pan(OrbitCamera& camera, glm::vec2 drag_pixels, float viewport_height);
 // so the camera can neither pass through the target nor lose the scene.
 void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
 
-// Looks at the centre of `bounds` from the framing distance, keeping the direction, so that it fills the
-// window's columns `free` (fractions of its width, from the left: [0, 1] the whole window) and sits in their
-// middle: the viewer leaves out the columns its open panel covers.
+// Frames `bounds`, keeping the direction, so that it fills the window's columns `free` (fractions of its
+// width, from the left: [0, 1] the whole window) and sits in their middle: the viewer leaves out the columns
+// its open panel covers. With the whole window it looks at the centre of `bounds`; beside the panel the
+// target moves aside by as much as the scene's image must (the orbit then turns about that point).
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free = {0.0f, 1.0f});
 
-// The widest run of the window's columns that `rect` (x, y, width, height in pixels, the panel's) leaves
-// uncovered, as fractions of `window` (its width and height): [0, 1] where it covers under half the window's
-// height (a panel folded to its title bar) or no column at all.
+// The wider run of the window's columns left and right of `rect` (the open panel's x, y, width, height in
+// pixels), as fractions of `window` (its width and height in those pixels); the whole window where the
+// panel covers none of it, or where what it leaves is under a quarter of the width (a narrow window).
 glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window);
 
 // The camera's right and up axes in world space.

@@ -11,13 +11,18 @@ void KeyLatch::pressed(int key) {
 void KeyLatch::apply(bool* keys_down, int count, const std::function<bool(int)>& down_now) {
     for (int key : held_)
         if (key >= 0 && key < count) keys_down[key] = down_now(key);
-    held_.clear();
+    std::vector<int> held, carried;
     for (int key : pressed_) {
         if (key < 0 || key >= count || keys_down[key]) continue;  // still down: ImGui sees it as it is
+        if (std::find(held_.begin(), held_.end(), key) != held_.end()) {
+            carried.push_back(key);  // down last frame: up now, then down again
+            continue;
+        }
         keys_down[key] = true;
-        held_.push_back(key);
+        held.push_back(key);
     }
-    pressed_.clear();
+    held_ = std::move(held);
+    pressed_ = std::move(carried);
 }
 
 }  // namespace stipple::app

@@ -17,8 +17,11 @@ public:
     void pressed(int key);
     // Once a frame, before ImGui::NewFrame: `keys_down` is io.KeysDown (`count` of them), `down_now` the
     // key's real state. A key latched last frame gets its real state back; a key pressed since then and no
-    // longer down is held down for this frame.
+    // longer down is held down for this frame (one latched last frame and pressed again: up for this frame,
+    // down for the next, so that the second press is a press of its own).
     void apply(bool* keys_down, int count, const std::function<bool(int)>& down_now);
+    // Forgets the presses since the last apply: frames without the panel (hidden), whose keys are not its.
+    void forget() { pressed_.clear(); }
 
 private:
     std::vector<int> pressed_;  // since the last apply

@@ -138,7 +138,8 @@ void LiveScene::remove(size_t object) {
     ids_.erase(ids_.begin() + std::ptrdiff_t(object));
 }
 
-void LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds, double playback_speed) const {
+size_t LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds, double playback_speed) const {
+    size_t clamped = 0;
     Scene saved = scene_;
     saved.camera = scene_camera_from(camera);
     // Parameters as generated: a slider not yet released has not changed the picture.
@@ -156,9 +157,12 @@ void LiveScene::save(const std::string& path, const OrbitCamera& camera, double 
                                    : std::clamp(choice.time_at(scene_seconds), -kMaxAnimationSeconds, kMaxAnimationSeconds);
         // And as fast as it plays: the timeline's speed (scene seconds per wall second) is folded into the
         // object's own, so that the saved scene plays, and render --frames draws, what the viewer showed.
-        choice.speed = std::clamp(choice.speed * playback_speed, -kMaxAnimationSpeed, kMaxAnimationSpeed);
+        const double speed = choice.speed * playback_speed;
+        choice.speed = std::clamp(speed, -kMaxAnimationSpeed, kMaxAnimationSpeed);
+        clamped += choice.speed != speed;
     }
     save_scene(path, saved);
+    return clamped;
 }
 
 }  // namespace stipple::app

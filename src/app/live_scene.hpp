@@ -55,8 +55,9 @@ public:
     // The current state with `camera` as the scene's camera; model paths relative to the file.
     // The scene as drawn at `scene_seconds` of the timeline: each animated object's start is the pose it shows
     // (its animation time then, wrapped or held), so that render draws the saved file as the window shows it;
-    // `playback_speed` (the timeline's scene seconds per wall second) multiplies each object's speed.
-    void save(const std::string& path, const OrbitCamera& camera, double scene_seconds = 0.0, double playback_speed = 1.0) const;
+    // `playback_speed` (the timeline's scene seconds per wall second) multiplies each object's speed. Returns
+    // how many objects' speeds that took beyond a scene file's range, saved at its end (kMaxAnimationSpeed).
+    size_t save(const std::string& path, const OrbitCamera& camera, double scene_seconds = 0.0, double playback_speed = 1.0) const;
 
 private:
     Scene scene_;

@@ -57,10 +57,6 @@ Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchai
     ImGui::StyleColorsDark();
     ImGui::GetStyle().Alpha = 0.94f;
     ImGui_ImplGlfw_InitForVulkan(window, true);  // chains to the window's own callbacks
-    // Ahead of the backend's key callback: presses to latch (app/key_latch.hpp). The backend's shutdown puts the
-    // window's own callback back.
-    g_key_overlay = this;
-    g_backend_key_callback = glfwSetKeyCallback(window, on_key);
 
     ImGui_ImplVulkan_InitInfo init{};
     init.Instance = context.instance;
@@ -81,6 +77,10 @@ Overlay::Overlay(const gpu::Context& context, GLFWwindow* window, const Swapchai
     context.submit_and_wait(cb);
     ImGui_ImplVulkan_DestroyFontUploadObjects();
     rebuild(swapchain);
+    // Ahead of the backend's key callback: presses to latch (app/key_latch.hpp). Last, so that a constructor
+    // that throws leaves no callback pointing at it; the backend's shutdown puts the window's own back.
+    g_key_overlay = this;
+    g_backend_key_callback = glfwSetKeyCallback(window, on_key);
 }
 
 Overlay::~Overlay() {

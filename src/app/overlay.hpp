@@ -36,6 +36,8 @@ public:
 
     // Starts an ImGui frame; widgets may be issued until record().
     void new_frame();
+    // A frame without the panel: the keys pressed since the last one are not the panel's.
+    void skip_frame() { key_latch_.forget(); }
     // Ends the ImGui frame and records the panel into `image_index` (or into the layer), which must be in
     // COLOR_ATTACHMENT_OPTIMAL; it leaves it in the swapchain's present_layout().
     void record(VkCommandBuffer cb, uint32_t image_index);

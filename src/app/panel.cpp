@@ -16,7 +16,6 @@ namespace {
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
-void help(const char* text) { hover_help(text); }
 
 void figures_section(const PanelFigures& f, PanelRequests& requests) {
     ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
@@ -47,16 +46,16 @@ void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests)
     glm::vec3 light = scene.light;
     if (ImGui::SliderFloat3("light", &light.x, -1.0f, 1.0f, "%.2f", kClamp) && glm::length(light) > 1e-3f)
         scene.light = light;  // a zero direction would have no meaning; keep the last good one
-    help("Direction toward the light in view space: x right, y up, z toward you (paper §2.2).");
+    hover_help("Direction toward the light in view space: x right, y up, z toward you (paper §2.2).");
     ImGui::ColorEdit3("paper", &scene.paper.x);
     ImGui::ColorEdit3("ink", &scene.ink.x);
     if (ImGui::Button("frame all (F)")) requests.frame_all = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (S)")) requests.screenshot = true;
-    help(("PNG at window resolution, without the panel, into " + f.screenshot_dir).c_str());
+    hover_help("PNG at window resolution, without the panel, into " + f.screenshot_dir);
     ImGui::SameLine();
     if (ImGui::Button("save scene (Ctrl+S)")) requests.save_scene = true;
-    help(("Writes the current objects, parameters, camera, light and colours to " + f.scene_path).c_str());
+    hover_help("Writes the current objects, parameters, camera, light and colours to " + f.scene_path);
     ImGui::SameLine();
     if (ImGui::Button("hide (H)")) requests.hide = true;
 }
@@ -87,7 +86,7 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
         // The object's own ink, else the scene's (the colours above).
         bool own_ink = p.ink.has_value();
         if (ImGui::Checkbox("own ink", &own_ink)) p.ink = own_ink ? std::optional<glm::vec3>(scene_ink) : std::nullopt;
-        help("Draw this object's stipples, lines and toon shade in an ink of its own (a layer of that colour in "
+        hover_help("Draw this object's stipples, lines and toon shade in an ink of its own (a layer of that colour in "
              "vector output); off, the scene's ink.");
         if (p.ink) {
             ImGui::SameLine();
@@ -147,10 +146,12 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     if (size.y >= max_height - 0.5f) clamped_at = max_height;
     last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
-    if (!open && ImGui::IsWindowHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-        const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
-        unfold = drag.x * drag.x + drag.y * drag.y < 9.0f;
-    }
+    requests.open = open;
+    requests.display = {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y};
+    // Not on the arrow (an item, which toggles the fold itself a frame later), nor after a drag (even one that
+    // came back to where it began).
+    if (!open && ImGui::IsWindowHovered() && !ImGui::IsAnyItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
+        unfold = ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9.0f;
     if (open) {
         ImGui::PushItemWidth(-150.0f);  // room for the labels on the right
         figures_section(figures, requests);

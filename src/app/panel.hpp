@@ -45,6 +45,8 @@ struct PanelRequests {
     std::optional<size_t> remove;
     std::optional<ExportRequest> export_view;  // "export SVG/PDF" pressed
     glm::vec4 rect{0.0f};  // the panel's x, y, width, height in window pixels this frame
+    bool open = false;     // unfolded (folded, it is its title bar alone)
+    glm::vec2 display{0.0f};  // the window's size in the same pixels as `rect` (ImGui's display)
 };
 
 // `names`: one label per scene object (its model file). `export_state`: the export section's fields.

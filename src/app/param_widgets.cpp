@@ -64,7 +64,7 @@ WidgetResult draw_param_widget(const ParamSpec& spec, ObjectParams& params, doub
             break;
         }
     }
-    hover_help(std::string(spec.help) + "\n(" + param_range_text(spec) + ")");
+    if (ImGui::IsItemHovered()) hover_help(std::string(spec.help) + "\n(" + param_range_text(spec) + ")");
     // The table's range holds whatever the widget allowed (typed input, steps past the ends).
     if (spec.type == ParamType::Int || spec.type == ParamType::Float) value = std::clamp(value, lowest, highest);
     if (value != before) spec.set(params, value);

@@ -17,8 +17,8 @@ struct WidgetResult {
 // (the largest point size it draws), never raises it.
 WidgetResult draw_param_widget(const ParamSpec& spec, ObjectParams& params, double upper_limit);
 
-// The last item's help while it is hovered, wrapped to about 32 characters' width (ImGui places a tooltip
-// inside the window, but one line of a long help ran past its right edge and was cut).
+// The last item's help while it is hovered, wrapped at 32 ems (about 60 characters): ImGui places a tooltip
+// inside the window, but one line of a long help ran past its right edge and was cut.
 void hover_help(const std::string& text);
 
 }  // namespace stipple::app

@@ -155,8 +155,10 @@ void Viewer::message(const std::string& text, bool error) {
 
 void Viewer::save_scene() {
     try {
-        live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed());
+        const size_t clamped = live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed());
         message("scene saved: " + options_.scene_path);
+        if (clamped > 0)
+            message(std::to_string(clamped) + " object(s) play faster than a scene file's speed allows (1000): saved at 1000", true);
         // render follows a camera_path over every other camera: say where the view just saved goes.
         if (!live_.scene().camera_path.empty())
             message("its camera_path is kept, and render draws the path's frames; the view is saved as its camera, "
@@ -347,13 +349,14 @@ void Viewer::handle_input(const Input& input, float aspect) {
 }
 
 glm::vec2 Viewer::free_columns() const {
-    if (!panel_visible_) return {0.0f, 1.0f};
-    const VkExtent2D size = window_.framebuffer_size();
-    return columns_left_free(panel_rect_, glm::vec2(float(size.width), float(size.height)));
+    if (!panel_visible_ || !panel_open_) return {0.0f, 1.0f};
+    return columns_left_free(panel_rect_, panel_display_);
 }
 
 void Viewer::handle_requests(const PanelRequests& r, float aspect) {
     panel_rect_ = r.rect;
+    panel_open_ = r.open;
+    panel_display_ = r.display;
     if (r.screenshot) screenshot_.request();
     if (r.save_scene) save_scene();
     if (r.frame_all) frame_all(camera_, live_.bounds(), aspect, free_columns());

@@ -97,6 +97,8 @@ private:
     bool paused_ = false;
     PanelFigures figures_;
     glm::vec4 panel_rect_{0.0f};
+    bool panel_open_ = false;         // unfolded, as last drawn
+    glm::vec2 panel_display_{0.0f};   // the window's size in the panel rectangle's pixels
     Timeline timeline_;
     glm::vec4 timeline_rect_{0.0f};
     std::optional<Clock::time_point> last_frame_;  // when the timeline last moved on

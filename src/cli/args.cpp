@@ -110,9 +110,13 @@ glm::vec3 Args::colour(const std::string& name, glm::vec3 fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
     const std::string& text = it->second;
-    // Without commas it is hex digits, with or without the '#' (which a shell may need quoted).
+    // Without commas it is hex digits, with or without the '#' (which a shell may need quoted), but decimal
+    // digits alone need it: `--ink 100` read as #110000 would be a dark red nobody asked for.
     if (text.find(',') == std::string::npos) {
-        const std::string digits = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+        const bool hash = !text.empty() && text[0] == '#';
+        const std::string digits = hash ? text.substr(1) : text;
+        if (!hash && !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos)
+            fail("option " + name + ": '" + text + "' is not a colour: write #" + text + " for hex digits, or R,G,B each in 0..1");
         const bool hex = !digits.empty() && digits.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
         if (!hex || (digits.size() != 6 && digits.size() != 3))
             fail("option " + name + ": '" + text + "' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)");

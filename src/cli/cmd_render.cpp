@@ -260,7 +260,6 @@ int run_render(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
                      what.c_str());
     // Light ink for dark paper, on a page left unpainted (vector output without --fill-paper): white paper shows.
-    const auto luminance = [](glm::vec3 c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
     const bool light_ink = std::any_of(inks.begin(), inks.end(), [&](glm::vec3 ink) { return luminance(ink) > luminance(scene.paper) + 0.3f; });
     if (vector && !plot::is_csv_path(output) && !vector_options.fill_paper && light_ink)
         std::fprintf(stderr, "stipple: warning: %s: the ink is lighter than the paper, and %s leaves the page unpainted "

@@ -126,7 +126,8 @@ Vector and print output (render):
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
   progress bar shows on a terminal; the same command always writes the same files (but a PDF's creation
   date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch,
-  --distance, --light, --ink and --paper override the scene's camera, light and colours.
+  --distance, --light, --ink and --paper override the scene's camera, light and colours (an object's
+  own "ink" stays its own).
 
 View options (view also takes --yaw, --pitch, --distance, --light, --ink, --paper, --device and the
 stipple options):

@@ -92,7 +92,7 @@ struct PlotPlan {
     size_t small_dots = 0;  // dots under the pen's least mark, of which those drawn (as it) are in the layers
     Fit fit = Fit::Drawing;  // as asked; Frame where nothing was drawn
     DotStyle dot_style = DotStyle::Filled;
-    glm::vec3 ink{0.0f}, paper{1.0f};
+    glm::vec3 ink{0.0f}, paper{1.0f};  // the scene's (each layer draws in its object's ink, PlotLayer::ink)
     bool fill_paper = false;
     bool show_travel = false;
     glm::dvec2 home{0.0};  // where the pen starts

@@ -52,13 +52,12 @@ static_assert(offsetof(VisibleStipple, scale) == 16);
 static_assert(sizeof(DrawCommand) == 16);
 static_assert(offsetof(DrawCommand, first_vertex) == 8);
 
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 5 * 16);
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 4 * 16);
 static_assert(offsetof(FrameUniforms, view) == 64);
 static_assert(offsetof(FrameUniforms, light_view) == 128);
-static_assert(offsetof(FrameUniforms, ink_color) == 144);
-static_assert(offsetof(FrameUniforms, paper_color) == 160);
-static_assert(offsetof(FrameUniforms, viewport) == 176);
-static_assert(offsetof(FrameUniforms, projection) == 192);
+static_assert(offsetof(FrameUniforms, paper_color) == 144);
+static_assert(offsetof(FrameUniforms, viewport) == 160);
+static_assert(offsetof(FrameUniforms, projection) == 176);
 
 static_assert(sizeof(ObjectUniforms) == 3 * 64 + 8 * 16);
 static_assert(offsetof(ObjectUniforms, normal_view) == 64);

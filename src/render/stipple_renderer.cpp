@@ -216,7 +216,6 @@ void StippleRenderer::prepare(const FrameView& view) {
     frame_.view_proj = view.camera.proj * view.camera.view;
     frame_.view = view.camera.view;
     frame_.light_view = glm::vec4(glm::normalize(view.light_view), 0.0f);
-    frame_.ink_color = glm::vec4(view.ink_color, 1.0f);
     frame_.paper_color = glm::vec4(view.paper_color, 1.0f);
     frame_.viewport = glm::vec4(view.extent.width, view.extent.height, 1.0f / view.extent.width,
                                 1.0f / view.extent.height);

@@ -37,7 +37,7 @@ struct FrameView {
     CameraMatrices camera;
     VkExtent2D extent{1280, 1024};
     glm::vec3 light_view{-0.45f, 0.55f, 0.70f};  // toward the light, view space (x right, y up, z to viewer)
-    glm::vec3 ink_color{0.0f};
+    glm::vec3 ink_color{0.0f};  // of the objects without an ink of their own (ObjectParams::ink)
     glm::vec3 paper_color{1.0f};
     // Print: the image is drawn at this many times the resolution its stipples are chosen for. Densities
     // (§2.1-2.3) are computed as for an extent this much smaller, and stipples and lines are drawn this

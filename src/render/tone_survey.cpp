@@ -165,9 +165,7 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
     return tally;
 }
 
-namespace {
 double luminance(glm::vec3 rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
-}  // namespace
 
 bool ink_readable(glm::vec3 paper, glm::vec3 ink) { return std::abs(luminance(paper) - luminance(ink)) >= 0.05; }
 

@@ -64,6 +64,8 @@ struct InkFigures {
 // to read (ink_readable).
 InkFigures measure_ink(const RenderedFrame& frame, glm::vec3 paper = glm::vec3(1.0f), glm::vec3 ink = glm::vec3(0.0f));
 bool ink_readable(glm::vec3 paper, glm::vec3 ink);
+// Rec. 709 luminance of a linear-looking RGB in [0, 1]: the one measure_ink and every colour check use.
+double luminance(glm::vec3 rgb);
 
 // Ink the frame's drawn stipples of `object` would leave if none overlapped another: each dot's pixels
 // (the splat's square or disc) that a surface covers and that do not hide it, times its intensity.

@@ -77,9 +77,9 @@ SceneContent load_scene_models(const Scene& scene) {
         const DensityPath path = scene.objects[i].params.density_path;
         if (content.objects[i].motion && density_on_cpu(path))
             fail_in_scene(scene, i, "params.density_path",
-                          Error(std::string("the ") + density_path_name(path) + " density path cannot draw an animated model (" +
-                                scene.objects[i].model + ": it computes densities on the CPU from the rest pose): use "
-                                "vertex, indirect or splat"));
+                          Error(scene.objects[i].model + ": the " + density_path_name(path) +
+                                " density path cannot draw an animated model (it computes densities on the CPU from the "
+                                "rest pose): use vertex, indirect or splat"));
     }
     return content;
 }
