@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/png_io.hpp"
+#include "support/image_checks.hpp"
 #include "support/model_files.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
@@ -713,8 +714,7 @@ TEST(CliRender, InkAndPaperOptionsColourTheImage) {
             }
             if (glm::all(glm::lessThan(glm::abs(c - paper), glm::vec3(0.02f)))) continue;  // bare paper
             ++inked;
-            const float a = (c.x - paper.x) / (ink.x - paper.x);  // the red channel: the farthest from the paper
-            on_the_way += glm::all(glm::lessThan(glm::abs(c - (paper + a * (ink - paper))), glm::vec3(3.0f / 255.0f)));
+            on_the_way += test::on_the_way(c, paper, ink);
         }
         EXPECT_GT(background, 10000u) << scene;
         EXPECT_EQ(paper_background, background) << scene;

@@ -22,6 +22,7 @@
 #include "scene/scene_json.hpp"
 #include "support/anim_files.hpp"
 #include "support/gpu_test.hpp"
+#include "support/image_checks.hpp"
 #include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
@@ -321,18 +322,13 @@ struct InkHue {
 };
 InkHue ink_hue(const RenderedFrame& frame, int x0, int x1, glm::vec3 ink) {
     InkHue hue;
-    int most_ink_channel = 0;  // where the ink is farthest from the paper: the surest reading of how much ink
-    for (int k = 1; k < 3; ++k)
-        if (ink[k] < ink[most_ink_channel]) most_ink_channel = k;
     for (int y = 0; y < frame.color.height; ++y)
         for (int x = x0; x < x1; ++x) {
             const uint8_t* p = &frame.color.pixels[4 * (size_t(y) * frame.color.width + x)];
             const glm::vec3 c(p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f);
             if (glm::all(glm::greaterThan(c, glm::vec3(0.98f)))) continue;  // paper
             ++hue.inked;
-            const float a = (1.0f - c[most_ink_channel]) / (1.0f - ink[most_ink_channel]);
-            const glm::vec3 expected = glm::vec3(1.0f) + a * (ink - glm::vec3(1.0f));
-            hue.on_the_way += glm::all(glm::lessThan(glm::abs(c - expected), glm::vec3(3.0f / 255.0f)));
+            hue.on_the_way += test::on_the_way(c, glm::vec3(1.0f), ink);
         }
     return hue;
 }
