@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace stipple::app {
 
@@ -29,7 +30,7 @@ glm::vec4 outline_extent(const OrbitCamera& camera, const Sphere& sphere, float 
     glm::vec4 e(1e9f, -1e9f, 1e9f, -1e9f);
     constexpr int kSteps = 256;
     for (int k = 0; k < kSteps; ++k) {
-        const float phi = 2.0f * 3.14159265f * float(k) / float(kSteps);
+        const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / float(kSteps);
         const glm::vec3 d = cos_angle * u + sin_angle * (std::cos(phi) * a + std::sin(phi) * b);
         const float depth = glm::dot(d, forward);
         if (depth <= 1e-6f) return {-1e9f, 1e9f, -1e9f, 1e9f};  // the outline reaches behind the eye
@@ -79,10 +80,11 @@ void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect) 
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free) {
     const float share = std::clamp(free.y - free.x, 0.05f, 1.0f);  // a sliver left free frames in a twentieth
     camera.distance = framing_distance(bounds, aspect * share, camera.fov_y_deg);
-    // The free columns' middle, in normalised device x; the target moves the other way by as much at its depth.
+    // The free columns' middle, in normalised device x; the target moves the other way by as much at its depth
+    // (half the view's width there: the distance times tan_half_x).
     const float middle = free.x + free.y - 1.0f;
-    const float half_width = camera.distance * std::tan(glm::radians(camera.fov_y_deg) * 0.5f) * aspect;
-    camera.target = bounds.center - camera_right(camera) * (middle * half_width);
+    const float tan_half_x = std::tan(glm::radians(camera.fov_y_deg) * 0.5f) * aspect;
+    camera.target = bounds.center - camera_right(camera) * (middle * camera.distance * tan_half_x);
     // Off the axis the outline is wider than framing_distance assumes, and its middle off the centre's image:
     // a few corrections of the distance and the place (each extent scales nearly as 1/distance).
     for (int step = 0; step < 6; ++step) {
@@ -90,8 +92,7 @@ void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec
         const float fill = std::max((e.y - e.x) / (2.0f * share), (e.w - e.z) / 2.0f);
         if (!(fill > 0.0f && fill < 1e3f)) break;
         camera.distance *= fill;
-        const float half = camera.distance * std::tan(glm::radians(camera.fov_y_deg) * 0.5f) * aspect;
-        camera.target -= camera_right(camera) * ((middle - 0.5f * (e.x + e.y)) * half);
+        camera.target -= camera_right(camera) * ((middle - 0.5f * (e.x + e.y)) * camera.distance * tan_half_x);
     }
 }
 
