@@ -75,6 +75,54 @@ TEST(AppPanel, ANewErrorUnfoldsThePanel) {
     EXPECT_GT(panel_height(640, {"error: x.svg: cannot write"}, 3, 1), 150.0f);
 }
 
+// Whether a click at (x, y) presses "frame all (F)" in a 1280 x 1024 window, with `passes` GPU passes timed and
+// background work running or not (the mouse pressed in frame 3, released in frame 5).
+bool click_frames_all(float x, float y, size_t passes, bool working) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280.0f, 1024.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    Scene scene;
+    app::PanelFigures figures;
+    figures.extent = {1280, 1024};
+    for (size_t i = 0; i < passes; ++i) figures.stats.gpu_ms.emplace_back("pass" + std::to_string(i), 1.0 + double(i));
+    if (working) {
+        figures.work_label = "new stipples for stanford-bunny.obj";
+        figures.work_fraction = 0.4;
+        figures.work_queued = 2;
+    }
+    app::ExportPanelState export_state;
+    bool pressed = false;
+    for (int frame = 0; frame < 7; ++frame) {
+        io.MousePos = ImVec2(x, y);
+        io.MouseDown[0] = frame == 3 || frame == 4;
+        ImGui::NewFrame();
+        pressed |= app::draw_panel(scene, {}, figures, export_state).frame_all;
+        ImGui::Render();
+    }
+    ImGui::DestroyContext();
+    return pressed;
+}
+
+// The controls stay where they are when the GPU's passes change (turning lines on added two timing rows above
+// every control: a walkthrough's click aimed at the toon box landed on a label) or background work starts (its
+// progress bar and queue line pushed them down while new stipples were made, right after a slider's release).
+TEST(AppPanel, TheControlsStayPutWhenPassesOrWorkAppear) {
+    std::vector<float> on_button;  // heights at which a click presses "frame all" with three passes, no work
+    for (float y = 30.0f; y < 500.0f; y += 3.0f)
+        if (click_frames_all(40.0f, y, 3, false)) on_button.push_back(y);
+    ASSERT_FALSE(on_button.empty()) << "no click presses frame all";
+    std::printf("\"frame all\" under the mouse from y = %.0f to %.0f\n", double(on_button.front()), double(on_button.back()));
+    for (const float y : on_button) {
+        EXPECT_TRUE(click_frames_all(40.0f, y, 9, false)) << "nine passes timed: moved from y = " << y;
+        EXPECT_TRUE(click_frames_all(40.0f, y, 0, true)) << "work running: moved from y = " << y;
+    }
+}
+
 // D_max typed into its slider (focused, as Ctrl+click does), then Enter pressed and released between two frames, as
 // xdotool gives it and as a keystroke falls in a heavy scene at a few frames a second: Dear ImGui 1.86 reads
 // keys as states once a frame and never saw that Enter down, so the value was never committed (no new

@@ -17,14 +17,22 @@ constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
 
+// The figures at the top keep one layout whatever the frame does, so the controls below never move under the
+// mouse: the GPU's passes (more of them with lines or the toon shade on, fewer on another path) are listed at
+// the panel's foot, and the background work's progress bar has its row whether or not work runs (a walkthrough's
+// click aimed at the toon box landed on a label when turning lines on added two rows above it).
+double total_gpu_ms(const FrameStats& stats) {
+    double total = 0.0;
+    for (const auto& pass : stats.gpu_ms) total += pass.second;
+    return total;
+}
+
 void figures_section(const PanelFigures& f, PanelRequests& requests) {
-    ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
-    double gpu_total = 0.0;
-    for (const auto& [pass, ms] : f.stats.gpu_ms) {
-        ImGui::Text("  GPU %-10s %7.3f ms", pass.c_str(), ms);
-        gpu_total += ms;
-    }
-    if (!f.stats.gpu_ms.empty()) ImGui::Text("  GPU %-10s %7.3f ms", "total", gpu_total);
+    if (f.stats.gpu_ms.empty())
+        ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
+    else
+        ImGui::Text("%.1f fps   CPU %.2f ms/frame   GPU %.2f ms", f.fps, f.cpu_frame_ms, total_gpu_ms(f.stats));
+    hover_help("Each pass's GPU time is listed at the foot of the panel.");
     ImGui::Text("polygons            %llu", (unsigned long long)f.stats.triangles);
     ImGui::Text("candidate stipples  %llu", (unsigned long long)f.stats.candidate_stipples);
     if (f.stats.drawn_stipples >= 0)
@@ -32,14 +40,28 @@ void figures_section(const PanelFigures& f, PanelRequests& requests) {
     else
         ImGui::TextDisabled("drawn stipples      (not counted: --no-count-drawn)");
     ImGui::TextDisabled("%s, %ux%u, %s", f.device.c_str(), f.extent.width, f.extent.height, f.present_mode);
+    hover_help(f.device + ", " + std::to_string(f.extent.width) + "x" + std::to_string(f.extent.height) + ", " +
+               f.present_mode);  // the line is cut in a narrow panel
     if (!f.work_label.empty()) {  // the old stipples keep being drawn meanwhile
-        ImGui::ProgressBar(float(f.work_fraction), ImVec2(-1.0f, 0.0f), f.work_label.c_str());
-        if (f.work_queued > 0) ImGui::TextDisabled("%zu more queued", f.work_queued);
+        std::string label = f.work_label;
+        if (f.work_queued > 0) label += " (" + std::to_string(f.work_queued) + " more queued)";
+        ImGui::ProgressBar(float(f.work_fraction), ImVec2(-1.0f, 0.0f), label.c_str());
+    } else {
+        ImGui::AlignTextToFramePadding();  // the progress bar's height: the rows below stay where they are
+        ImGui::TextDisabled("stipples ready");
     }
     bool vsync = f.vsync;
     ImGui::BeginDisabled(!f.can_disable_vsync);
     if (ImGui::Checkbox("vsync (V)", &vsync)) requests.toggle_vsync = true;
     ImGui::EndDisabled();
+}
+
+void gpu_passes_section(const PanelFigures& f) {
+    if (f.stats.gpu_ms.empty()) return;
+    ImGui::Separator();
+    ImGui::TextDisabled("GPU time per pass");
+    for (const auto& [pass, ms] : f.stats.gpu_ms) ImGui::Text("  %-12s %7.3f ms", pass.c_str(), ms);
+    ImGui::Text("  %-12s %7.3f ms", "total", total_gpu_ms(f.stats));
 }
 
 void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests) {
@@ -169,6 +191,7 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
             for (size_t i = first; i < figures.messages.size(); ++i)
                 ImGui::TextWrapped("%s", figures.messages[i].c_str());
         }
+        gpu_passes_section(figures);
         ImGui::PopItemWidth();
     }
     ImGui::End();
