@@ -17,10 +17,11 @@ int main(int argc, char** argv) {
     }
     const std::string command = args[0];
     args.erase(args.begin());
-    // `stipple render --help`, or `stipple info MODEL --json --help`: the one usage text covers every command.
+    // `stipple render --help`, or `stipple info MODEL --json --help`: what that command takes.
     if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
-        stipple::cli::print_usage();
-        return 0;
+        if (stipple::cli::print_command_usage(command)) return 0;
+        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
+        return 2;
     }
     try {
         stipple::worker_count();  // a bad STIPPLE_THREADS fails here, not in whatever thread first asks

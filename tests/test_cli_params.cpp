@@ -3,8 +3,10 @@
 // rejected on the command line and in a scene file with the same range in the message; --help, the
 // README and `stipple params` list the table's text, not a retyped copy.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/args.hpp"
+#include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "io/png_io.hpp"
@@ -202,6 +205,53 @@ TEST(ParamTable, HelpAnywhereAfterTheCommandPrintsTheUsage) {
         EXPECT_EQ(r.exit_code, 0) << args.back() << ": " << r.err;
         EXPECT_NE(r.out.find("Usage:"), std::string::npos) << r.out;
     }
+}
+
+// Whether `help` names `option` as a word of its own (not "--frames" inside "--benchmark-frames").
+bool names_option(const std::string& help, const std::string& option) {
+    const auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; };
+    for (size_t at = help.find(option); at != std::string::npos; at = help.find(option, at + 1)) {
+        const bool starts = at == 0 || !word_char(help[at - 1]);
+        const bool ends = at + option.size() == help.size() || !word_char(help[at + option.size()]);
+        if (starts && ends) return true;
+    }
+    return false;
+}
+
+// `stipple COMMAND --help` prints what that command takes, every option its reader accepts and no other
+// command's sections (`view --help` printed all 280 lines, bench's and tone's included); `stipple --help`
+// prints every command's options.
+TEST(ParamTable, EachCommandsHelpListsEveryOptionItTakes) {
+    using cli::CommandOptions;
+    const std::vector<std::pair<std::string, CommandOptions>> commands = {
+        {"render", cli::render_command_options()}, {"view", cli::view_command_options()},
+        {"info", cli::info_command_options()},     {"bench", cli::bench_command_options()},
+        {"tone", cli::tone_command_options()},     {"parity", cli::parity_command_options()},
+        {"params", cli::params_command_options()}, {"cache", cli::cache_command_options()}};
+    const test::CommandResult all = test::run_stipple({"--help"});
+    ASSERT_EQ(all.exit_code, 0) << all.err;
+    const auto lines = [](const std::string& text) { return std::count(text.begin(), text.end(), '\n'); };
+    for (const auto& [command, accepted] : commands) {
+        const test::CommandResult help = test::run_stipple({command, "--help"});
+        ASSERT_EQ(help.exit_code, 0) << command << ": " << help.err;
+        EXPECT_NE(help.out.find("stipple " + command), std::string::npos) << help.out;
+        std::set<std::string> every = accepted.flags;
+        every.insert(accepted.options.begin(), accepted.options.end());
+        for (const std::string& option : every) {
+            EXPECT_TRUE(names_option(help.out, option)) << "stipple " << command << " --help does not list " << option;
+            EXPECT_TRUE(names_option(all.out, option)) << "stipple --help does not list " << command << "'s " << option;
+        }
+        EXPECT_LT(lines(help.out), lines(all.out) * 3 / 4) << command << " --help prints nearly everything";
+        std::printf("stipple %-6s --help: %3zu options, %3ld lines (stipple --help: %ld)\n", command.c_str(), every.size(),
+                    long(lines(help.out)), long(lines(all.out)));
+    }
+    // No other command's sections: view's help has no bench options, bench's no stipple options.
+    EXPECT_EQ(test::run_stipple({"view", "--help"}).out.find("Bench options"), std::string::npos);
+    EXPECT_EQ(test::run_stipple({"bench", "--help"}).out.find("Stipple options"), std::string::npos);
+    EXPECT_NE(test::run_stipple({"render", "--help"}).out.find("Vector and print output"), std::string::npos);
+    const test::CommandResult unknown = test::run_stipple({"draw", "--help"});
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_EQ(unknown.err, "stipple: unknown command 'draw' (try: stipple --help)\n");
 }
 
 TEST(ParamTable, TheExecutableRejectsAnOutOfRangeValueInOneLine) {

@@ -38,10 +38,15 @@ void fail_on_repeats(const std::string& option, const std::vector<std::string>& 
 
 }  // namespace
 
+CommandOptions bench_command_options() {
+    return {{"--quick", "--list-devices", "--animated-only"},
+            {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device", "--models-dir", "--cache-dir",
+             "--animated-triangles", "--compare", "--plot-dots", "--depth-cull", "--depth-raster", "--queued"}};
+}
+
 int run_bench(const std::vector<std::string>& argv) {
-    Args args(argv, {"--quick", "--list-devices", "--animated-only"},
-              {"--out", "--frames", "--warmup", "--models", "--paths", "--width", "--height", "--device",
-               "--models-dir", "--cache-dir", "--animated-triangles", "--compare", "--plot-dots", "--depth-cull", "--depth-raster", "--queued"});
+    const CommandOptions accepted = bench_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     if (args.flag("--list-devices")) {
         for (const std::string& line : gpu::Context::list_devices()) std::printf("%s\n", line.c_str());
         return 0;

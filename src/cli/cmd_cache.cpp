@@ -34,9 +34,11 @@ std::string local_time(std::filesystem::file_time_type time) {
 
 }  // namespace
 
+CommandOptions cache_command_options() { return {{"--list", "--clear"}, cache_options()}; }
+
 int run_cache(const std::vector<std::string>& argv) {
-    std::set<std::string> options = cache_options();
-    Args args(argv, {"--list", "--clear"}, options);
+    const CommandOptions accepted = cache_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     if (!args.positionals().empty()) fail("cache takes no MODEL (see stipple --help)");
     if (args.flag("--list") && args.flag("--clear")) fail("cache takes --list or --clear, not both");
     if (!args.flag("--list") && !args.flag("--clear")) fail("cache needs one of --list or --clear");

@@ -94,12 +94,16 @@ std::string animation_json(const ObjectData& object) {
 
 }  // namespace
 
+CommandOptions info_command_options() {
+    CommandOptions accepted{object_flags(), object_options()};
+    accepted.flags.insert("--json");
+    accepted.options.merge(cache_options());
+    return accepted;
+}
+
 int run_info(const std::vector<std::string>& argv) {
-    std::set<std::string> flags = object_flags();
-    flags.insert("--json");
-    std::set<std::string> options = object_options();
-    options.merge(cache_options());
-    Args args(argv, flags, options);
+    const CommandOptions accepted = info_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     apply_cache_options(args);
     args.expect_at_most_positionals(1, "info needs exactly one MODEL");
     if (args.positionals().size() != 1) fail("info needs exactly one MODEL (see stipple --help)");

@@ -8,8 +8,11 @@
 
 namespace stipple::cli {
 
+CommandOptions params_command_options() { return {{"--markdown"}, {}}; }
+
 int run_params(const std::vector<std::string>& argv) {
-    Args args(argv, {"--markdown"}, {});
+    const CommandOptions accepted = params_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     if (!args.positionals().empty()) fail("params takes no MODEL (it lists the per-object parameters)");
     std::fputs((args.flag("--markdown") ? param_markdown_table() : param_help_text()).c_str(), stdout);
     return 0;

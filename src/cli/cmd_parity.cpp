@@ -44,10 +44,15 @@ std::vector<DensityPath> parse_paths(const std::string& text) {
 
 }  // namespace
 
+CommandOptions parity_command_options() {
+    CommandOptions accepted{object_flags(), object_options()};
+    accepted.options.insert({"--devices", "--paths", "--yaws", "--width", "--height"});
+    return accepted;
+}
+
 int run_parity(const std::vector<std::string>& argv) {
-    std::set<std::string> options_set = object_options();
-    options_set.insert({"--devices", "--paths", "--yaws", "--width", "--height"});
-    Args args(argv, object_flags(), options_set);
+    const CommandOptions accepted = parity_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     if (args.has("--density-path")) fail("parity draws each path of --paths (default splat,vertex); --density-path does not apply");
     args.expect_at_most_positionals(1, "parity takes at most one MODEL");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];

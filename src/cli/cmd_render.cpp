@@ -139,17 +139,21 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
     return scene;
 }
 
+CommandOptions render_command_options() {
+    CommandOptions accepted{object_flags(), object_options()};
+    accepted.flags.insert({"--stats", "--list-devices", "--verbose"});
+    accepted.flags.merge(vector_flags());
+    accepted.options.merge(cache_options());
+    accepted.options.merge(vector_options());
+    accepted.options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
+                             "--ink", "--paper", "--device", "--frames", "--orbit", "--depth-cull", "--depth-raster", "--queued"});
+    accepted.options.merge(animation_options());
+    return accepted;
+}
+
 int run_render(const std::vector<std::string>& argv) {
-    std::set<std::string> flags = object_flags();
-    flags.insert({"--stats", "--list-devices", "--verbose"});
-    flags.merge(vector_flags());
-    std::set<std::string> options = object_options();
-    options.merge(cache_options());
-    options.merge(vector_options());
-    options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper",
-                    "--device", "--frames", "--orbit", "--depth-cull", "--depth-raster", "--queued"});
-    options.merge(animation_options());
-    Args args(argv, flags, options);
+    const CommandOptions accepted = render_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     apply_cache_options(args);
 
     if (args.flag("--list-devices")) {

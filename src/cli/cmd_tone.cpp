@@ -181,13 +181,17 @@ void print_regimes(const ToneSurvey& survey, const ToneSurveyOptions& options, f
 
 }  // namespace
 
+CommandOptions tone_command_options() {
+    CommandOptions accepted{object_flags(), object_options()};
+    accepted.flags.insert("--regimes");
+    accepted.options.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
+                             "--images", "--seeds"});
+    return accepted;
+}
+
 int run_tone(const std::vector<std::string>& argv) {
-    std::set<std::string> flags = object_flags();
-    flags.insert("--regimes");
-    std::set<std::string> options_set = object_options();
-    options_set.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
-                        "--images", "--seeds"});
-    Args args(argv, flags, options_set);
+    const CommandOptions accepted = tone_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     args.expect_at_most_positionals(1, "tone takes at most one MODEL");
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     if (args.flag("--extrinsic") || args.flag("--no-extrinsic"))

@@ -12,14 +12,19 @@
 
 namespace stipple::cli {
 
+CommandOptions view_command_options() {
+    CommandOptions accepted{object_flags(), object_options()};
+    accepted.flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
+    accepted.options.merge(cache_options());
+    accepted.options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper", "--device",
+                             "--screenshot-dir", "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log",
+                             "--animation", "--time", "--depth-cull", "--depth-raster"});
+    return accepted;
+}
+
 int run_view(const std::vector<std::string>& argv) {
-    std::set<std::string> flags = object_flags();
-    flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
-    std::set<std::string> options = object_options();
-    options.merge(cache_options());
-    options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper", "--device", "--screenshot-dir",
-                    "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log", "--animation", "--time", "--depth-cull", "--depth-raster"});
-    Args args(argv, flags, options);
+    const CommandOptions accepted = view_command_options();
+    Args args(argv, accepted.flags, accepted.options);
     apply_cache_options(args);
 
     app::ViewerOptions viewer;

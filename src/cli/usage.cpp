@@ -14,30 +14,18 @@ std::string default_model_path() {
     return std::string(STIPPLE_SOURCE_DIR) + "/assets/blobby.glb";
 }
 
-void print_usage() {
+namespace {
+
+void header() {
     std::printf(R"(stipple - illustrative stipple drawing of polygonal models
 (Lu, Taylor, Hartner, Ebert, Hansen: "Hardware-Accelerated Interactive Illustrative
 Stipple Drawing of Polygonal Objects", VMV 2002)
 
-Usage:
-  stipple render [MODEL | SCENE.json] [-o OUT.png] [options]
-                                  render one frame (or a numbered frame sequence) offscreen to PNG
-  stipple view [SCENE.json | MODEL ...] [options]
-                                  open a window: turn, move and tune the drawing interactively
-  stipple info MODEL [--json] [options]
-                                  load a model, generate its stipples, print figures
-  stipple bench [--quick] [options]
-                                  the paper's Table 1 on this machine: results.md, .json, chart.svg
-  stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
-                                  inside its footprint per distance, extrinsic enhancement on and off
-  stipple parity [MODEL] [options]
-                                  do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
-  stipple params [--markdown]     list the per-object parameters: options, ranges, defaults (with
-                                  --markdown the README's table, with each one's scene key)
-  stipple cache --list | --clear  what the stipple cache holds, or empty it
-  stipple --help                  this text
+)");
+}
 
-MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file (glTF quantized,
+void model_section() {
+    std::printf(R"(MODEL is a .obj, .ply (ASCII or binary, faces or tristrips), .gltf or .glb file (glTF quantized,
 compressed or instanced too: KHR_mesh_quantization, EXT_meshopt_compression, KHR_draco_mesh_compression,
 EXT_mesh_gpu_instancing), or a .stl file (binary or ASCII, as CAD and 3D-printing tools write). Without
 MODEL or scene, render and view draw the built-in default scene (assets/blobby.glb, a blobby metaball
@@ -45,19 +33,14 @@ surface made by tools/make_blobby). Several MODELs given to view are set side by
 first one's size. The stipple options below apply to MODELs; a SCENE.json sets them per object
 (combining the two is an error).
 
-Render options:
+)");
+}
+
+void render_section() {
+    std::printf(R"(Render options:
   -o, --output PATH       PNG to write (default: stipple.png; missing folders are made)
   --mask PATH.png         also write the coverage mask (white where a surface covers the pixel)
   --width N, --height N   image size in pixels (default 1280 x 1024)
-  --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)
-  --distance D            camera distance as a multiple of the framing distance (default 1 = framed;
-                          0.0001..10000)
-  --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
-                          viewer (default -0.45,0.55,0.7: upper left, in front)
-  --ink COLOUR, --paper COLOUR
-                          the colours of the stipples and lines, and of the paper: #rrggbb (#rgb)
-                          or R,G,B each in 0..1 (default #000000 on #ffffff); a scene file's
-                          objects may each have their own ink ("ink" below)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), the
                           mean ink inside the object (as tone measures it), and the GPU time of each pass
   --repeat N              after the image, time N more frames (no read-back) and print the median
@@ -89,7 +72,26 @@ Render options:
                           default 30): frame i shows --time + i/F; with an animated model --frames
                           alone renders the animation
 
-Vector and print output (render):
+)");
+}
+
+void camera_section() {
+    std::printf(R"(Camera, light and colours (render and view):
+  --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)
+  --distance D            camera distance as a multiple of the framing distance (default 1 = framed;
+                          0.0001..10000)
+  --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
+                          viewer (default -0.45,0.55,0.7: upper left, in front)
+  --ink COLOUR, --paper COLOUR
+                          the colours of the stipples and lines, and of the paper: #rrggbb (#rgb)
+                          or R,G,B each in 0..1 (default #000000 on #ffffff); a scene file's
+                          objects may each have their own ink ("ink" below)
+
+)");
+}
+
+void vector_section() {
+    std::printf(R"(Vector and print output (render):
   -o x.svg | x.pdf | x.csv
                           the stipples the frame draws (after density, hidden-stipple removal, toon
                           fade; not a toon object's edge-on grey, a fill on screen) as dots, and its
@@ -129,9 +131,14 @@ Vector and print output (render):
   --distance, --light, --ink and --paper override the scene's camera, light and colours (an object's
   own "ink" stays its own).
 
-View options (view also takes --yaw, --pitch, --distance, --light, --ink, --paper, --device and the
-stipple options):
+)");
+}
+
+void view_section() {
+    std::printf(R"(View options (and the camera, light and colours, and the stipple options):
   --width N, --height N   window size (default 1280 x 1024)
+  --device N              Vulkan device to use (default: the best; stipple render --list-devices
+                          shows them)
   --no-vsync              present without waiting for the display (MAILBOX or IMMEDIATE) from the start
   --present MODE          auto, swapchain or shm: how frames reach the window. shm hands them to the
                           X server through shared memory (MIT-SHM), where lavapipe's swapchain writes
@@ -140,14 +147,15 @@ stipple options):
                           device where the server allows it, else swapchain (default auto)
   --no-panel              start with the panel hidden
   --no-count-drawn        do not count drawn stipples on the GPU (saves an atomic per stipple)
-  --depth-cull MODE       auto, on or off, as for render (default auto)
+  --depth-cull MODE       auto, on or off, as for render (stipple render --help; default auto)
   --depth-raster MODE     auto, compute or fixed, as for render (default auto)
   --screenshot-dir DIR    where S writes screenshots, stipple-0001.png, ... (default: .)
   --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
                           stipple-scene.json)
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
-  --animation NAME|N, --time SECONDS   as for render: the animation MODELs play (the animated ones,
-                          beside static ones), the clock's start
+  --animation NAME|N      what the animated glTF MODELs play (beside static ones): an animation's
+                          name or index (default: each one's first); `stipple info MODEL` lists them
+  --time SECONDS          the scene clock at the start (default 0); animations loop
   --verbose               print the device and every swapchain (re)creation
   --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
@@ -165,14 +173,19 @@ stipple options):
   sets every per-object parameter (generation parameters take effect on release or Enter: new
   stipples are made in the background with a progress bar while the old ones are drawn, and a newer
   value cancels an older one; dropped models load in the background too), the light, paper and ink
-  colours, and shows fps, CPU frame time, GPU time per pass (the panel's own included) and stipple
-  counts, refreshed twice a second, times averaged over the half second. With an animated
+  colours, and shows at its top fps, CPU and GPU frame time and stipple counts, and at its foot the
+  GPU time of each pass (the panel's own included), refreshed twice a second, times averaged over the
+  half second. With an animated
   model a timeline window plays, pauses and scrubs the animation, sets its speed and loop, and
   chooses each object's animation. The window is drawn on demand: while an animation plays, a script
   or --benchmark-frames runs, and for a second after any input; otherwise the viewer sleeps (ten
   frames a second while new stipples are made, for the progress bar).
 
-Scene files (JSON; model paths relative to the file; unknown fields are errors):
+)");
+}
+
+void scene_section() {
+    std::printf(R"(Scene files (JSON; model paths relative to the file; unknown fields are errors):
   {"objects": [{"model": "blobby.glb",
                 "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s or [x,y,z]}
                              (or {"matrix": [16 numbers, column-major]}; a negative axis scale,
@@ -193,17 +206,26 @@ Scene files (JSON; model paths relative to the file; unknown fields are errors):
   Every field is optional except objects and their model (params above at their defaults). A param
   takes the range of its stipple option below; `stipple params --markdown` pairs each scene key with
   its option.
-
-Stipple options (render, view and info; a SCENE.json sets them per object instead):
 )");
+}
+
+void stipple_section() {
+    std::printf("Stipple options (render, view, info, tone and parity; a SCENE.json sets them per object instead):\n");
     std::fputs(param_help_text().c_str(), stdout);
-    std::printf(R"(
-Info options:
+    std::printf("\n");
+}
+
+void info_section() {
+    std::printf(R"(Info options:
   --json                  print the figures as JSON
   An animated glTF model also lists its animations (durations, channels), skins (joints) and morph
   targets, and its stretch headroom: the largest area any polygon reaches and the candidates that buys.
 
-Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
+)");
+}
+
+void cache_section() {
+    std::printf(R"(Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
 reopened with the same generation parameters skips generation (~4-5 bytes per stipple, checked
 when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
@@ -211,7 +233,11 @@ when read; a damaged entry is reported and regenerated)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
                           is written, the least recently used ones are removed beyond it
 
-Tone options (and the stipple options; without MODEL the default scene's model):
+)");
+}
+
+void tone_section() {
+    std::printf(R"(Tone options (and the stipple options; without MODEL the default scene's model):
   --distances 1,2,4,8,16  camera distances, multiples of the framing distance
   --views 30:10,...       YAW:PITCH pairs in degrees (default 30:10), one table row each
   --frames N              average each view over N frames at yaws spread over --arc DEG (default 1;
@@ -232,7 +258,11 @@ Tone options (and the stipple options; without MODEL the default scene's model):
   Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
   of the dots), a last line says so, with the dots and the spread.
 
-Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when
+)");
+}
+
+void parity_section() {
+    std::printf(R"(Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when
 the drawn counts differ by more than 0.1%% or the mean ink by more than 1%% in any view):
   --devices I,J           the two devices (default 0,1; stipple render --list-devices shows them;
                           0,0 compares a device with itself)
@@ -240,7 +270,11 @@ the drawn counts differ by more than 0.1%% or the mean ink by more than 1%% in a
   --yaws N                views all around the model at two elevations (default 8)
   --width N --height N    image size (default 1280 x 1024)
 
-Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
+)");
+}
+
+void bench_section() {
+    std::printf(R"(Bench options (one model per Table 1 row, derived from ../shared/models, else UV spheres):
   --quick                 horse and low-res dragon, vertex, cpu and splat paths, 5 timed frames, only
                           the paper's columns (without the contours, borders and creases columns)
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
@@ -262,7 +296,11 @@ Bench options (one model per Table 1 row, derived from ../shared/models, else UV
   --plot-dots N           the plot-order row's blue-noise dots (default 150000, --quick 15000 without
                           the bunny's view; 0: no row; with --models only when given)
 
-Environment:
+)");
+}
+
+void environment_section() {
+    std::printf(R"(Environment:
   STIPPLE_VALIDATION=1|0  force the Vulkan validation layer on or off (on in debug builds); any
                           validation message makes the command fail
   STIPPLE_SHADER_DIR      where the compiled shaders (*.spv) are (default: the build folder)
@@ -280,10 +318,104 @@ Environment:
   STIPPLE_MAX_WORKGROUPS=N  act as if a compute dispatch could have at most N workgroups along x: how
                           a model of millions of polygons is dispatched (in rows; lavapipe: 65535)
 
-Exit status: 0 on success, 1 on bad input, a bad option or a failed render (one line on stderr
-naming the file or option and the problem), 2 on an unknown command or Vulkan validation messages.
-`stipple COMMAND --help` prints this text.
 )");
+}
+
+void exit_section(bool one_command) {
+    std::printf(R"(Exit status: 0 on success, 1 on bad input, a bad option or a failed render (one line on stderr
+naming the file or option and the problem), 2 on an unknown command or Vulkan validation messages.
+)");
+    std::printf(one_command ? "`stipple --help` lists every command and all their options.\n"
+                            : "`stipple COMMAND --help` prints what that command takes.\n");
+}
+
+struct CommandHelp {
+    const char* name;
+    const char* entry;  // its lines of the command list
+    void (*sections[9])();  // in order, then nullptr
+};
+
+constexpr CommandHelp kCommands[] = {
+    {"render",
+     R"(  stipple render [MODEL | SCENE.json] [-o OUT.png] [options]
+                                  render one frame (or a numbered frame sequence) offscreen to PNG
+)",
+     {&model_section, &render_section, &camera_section, &vector_section, &scene_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+    {"view",
+     R"(  stipple view [SCENE.json | MODEL ...] [options]
+                                  open a window: turn, move and tune the drawing interactively
+)",
+     {&model_section, &view_section, &camera_section, &scene_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+    {"info",
+     R"(  stipple info MODEL [--json] [options]
+                                  load a model, generate its stipples, print figures
+)",
+     {&model_section, &info_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+    {"bench",
+     R"(  stipple bench [--quick] [options]
+                                  the paper's Table 1 on this machine: results.md, .json, chart.svg
+)",
+     {&bench_section, &environment_section, nullptr}},
+    {"tone",
+     R"(  stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
+                                  inside its footprint per distance, extrinsic enhancement on and off
+)",
+     {&model_section, &tone_section, &stipple_section, &environment_section, nullptr}},
+    {"parity",
+     R"(  stipple parity [MODEL] [options]
+                                  do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
+)",
+     {&model_section, &parity_section, &stipple_section, &environment_section, nullptr}},
+    {"params",
+     R"(  stipple params [--markdown]     list the per-object parameters: options, ranges, defaults (with
+                                  --markdown the README's table, with each one's scene key)
+)",
+     {nullptr}},
+    {"cache",
+     R"(  stipple cache --list | --clear  what the stipple cache holds, or empty it
+)",
+     {&cache_section, &environment_section, nullptr}},
+};
+
+void command_list() {
+    std::printf("Usage:\n");
+    for (const CommandHelp& command : kCommands) std::fputs(command.entry, stdout);
+    std::printf("  stipple --help                  this text\n\n");
+}
+
+}  // namespace
+
+void print_usage() {
+    header();
+    command_list();
+    model_section();
+    render_section();
+    camera_section();
+    vector_section();
+    view_section();
+    scene_section();
+    stipple_section();
+    info_section();
+    cache_section();
+    tone_section();
+    parity_section();
+    bench_section();
+    environment_section();
+    exit_section(false);
+}
+
+bool print_command_usage(const std::string& name) {
+    for (const CommandHelp& command : kCommands) {
+        if (name != command.name) continue;
+        header();
+        std::printf("Usage:\n");
+        std::fputs(command.entry, stdout);
+        std::printf("\n");
+        for (void (*const* section)() = command.sections; *section; ++section) (*section)();
+        exit_section(true);
+        return true;
+    }
+    return false;
 }
 
 }  // namespace stipple::cli
