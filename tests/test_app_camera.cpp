@@ -59,6 +59,38 @@ TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
     }
 }
 
+// The view a window opens with (a framed scene camera): beside the open panel, and at a --distance multiple the
+// scene's image that many times smaller, its centre still in the free columns' middle.
+TEST(AppCamera, TheWindowOpensWithTheSceneBesideThePanel) {
+    const Sphere sphere{glm::vec3(-1.0f, 4.0f, 0.5f), 0.8f};
+    const float aspect = 1280.0f / 1024.0f;
+    const glm::vec2 free(480.0f / 1280.0f, 1.0f);
+    const float middle = free.x + free.y - 1.0f;
+    float framed_height = 0.0f;
+    for (const float multiple : {1.0f, 2.0f, 4.0f}) {
+        OrbitCamera camera;
+        camera.yaw_deg = 30.0f;
+        camera.pitch_deg = 10.0f;
+        app::frame_at_open(camera, sphere, aspect, free, multiple);
+        EXPECT_FLOAT_EQ(camera.yaw_deg, 30.0f);
+        EXPECT_FLOAT_EQ(camera.pitch_deg, 10.0f);
+        const CameraMatrices m = camera_matrices(camera, aspect, sphere);
+        const glm::vec4 centre = m.proj * m.view * glm::vec4(sphere.center, 1.0f);
+        std::printf("x%.1f the framing distance: the centre at x %.3f (the free columns' middle %.3f)\n", double(multiple),
+                    double(centre.x / centre.w), double(middle));
+        EXPECT_NEAR(centre.x / centre.w, middle, 0.03f);
+        EXPECT_NEAR(centre.y / centre.w, 0.0f, 0.01f);
+        const Extent e = projected(camera, sphere, aspect);
+        if (multiple == 1.0f) {
+            framed_height = e.top - e.bottom;
+            EXPECT_GE(e.left, 2.0f * free.x - 1.0f - 0.01f) << "under the panel";
+            EXPECT_LE(e.right, 1.01f);
+        } else {
+            EXPECT_NEAR((e.top - e.bottom) / framed_height, 1.0f / multiple, 0.05f / multiple);
+        }
+    }
+}
+
 TEST(AppCamera, TheColumnsAnOpenPanelLeaves) {
     const glm::vec2 window(1280.0f, 1024.0f);
     // Open at the left (the default place), moved to the right, off the window, and over nearly all of it (a

@@ -96,6 +96,13 @@ void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec
     }
 }
 
+void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, float distance_multiple) {
+    frame_all(camera, bounds, aspect, free);
+    // Farther or nearer along the line through the centre's image: the offset of the target scales with the distance.
+    camera.target = bounds.center + (camera.target - bounds.center) * distance_multiple;
+    camera.distance *= distance_multiple;
+}
+
 glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window) {
     if (window.x <= 0.0f || window.y <= 0.0f) return {0.0f, 1.0f};
     const float left = std::clamp(rect.x / window.x, 0.0f, 1.0f), right = std::clamp((rect.x + rect.z) / window.x, 0.0f, 1.0f);

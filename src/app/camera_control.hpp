@@ -31,6 +31,11 @@ void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
 // target moves aside by as much as the scene's image must (the orbit then turns about that point).
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free = {0.0f, 1.0f});
 
+// The view a window opens with where the scene's camera is framed (a distance multiple, no target of its own):
+// frame_all in `free`, then `distance_multiple` times as far, the scene's centre still in the free columns'
+// middle (the window opened with a third of the scene under the panel).
+void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, float distance_multiple);
+
 // The wider run of the window's columns left and right of `rect` (the open panel's x, y, width, height in
 // pixels), as fractions of `window` (its width and height in those pixels); the whole window where the
 // panel covers none of it, or where what it leaves is under a quarter of the width (a narrow window).

@@ -166,7 +166,7 @@ void view_section() {
 
   Mouse: left drag orbits, right or middle drag pans, the wheel zooms. Drop model files onto the
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything
-  (beside the open panel),
+  (beside the open panel, as the window opens: --distance is then a multiple of that framing),
   H hides/shows the panel (folded to its title in a window under 1000 px wide: click to open it),
   S saves a screenshot (window resolution, without the panel), V toggles vsync, Space plays or
   pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
