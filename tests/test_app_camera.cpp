@@ -56,6 +56,18 @@ TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
         EXPECT_GT(std::max((e.right - e.left) / (right - left), (e.top - e.bottom) / 2.0f), 0.9f);
         // In the middle of them.
         EXPECT_NEAR(0.5f * (e.left + e.right), 0.5f * (left + right), 0.03f);
+        // Orbiting turns about the scene's centre, which stays where it is on screen, and the scene within the free
+        // columns (the target moved aside until 2026-12-06 swung the scene across the window as it turned).
+        for (const float yaw : {40.0f, -75.0f, 180.0f}) {
+            OrbitCamera turned = camera;
+            app::orbit_degrees(turned, yaw, 0.0f);
+            const CameraMatrices m = camera_matrices(turned, aspect, sphere);
+            const glm::vec4 centre = m.proj * m.view * glm::vec4(sphere.center, 1.0f);
+            EXPECT_NEAR(centre.x / centre.w, 0.5f * (left + right), 1e-4f) << "turned by " << yaw;
+            const Extent t = projected(turned, sphere, aspect);
+            EXPECT_GE(t.left, left - 0.01f) << "turned by " << yaw;
+            EXPECT_LE(t.right, right + 0.01f) << "turned by " << yaw;
+        }
     }
 }
 

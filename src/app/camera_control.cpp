@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace stipple::app {
 
@@ -11,33 +10,6 @@ namespace {
 glm::vec3 eye_offset(const OrbitCamera& camera) {
     float yaw = glm::radians(camera.yaw_deg), pitch = glm::radians(camera.pitch_deg);
     return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
-}
-
-// The sphere's outline on screen as `camera` sees it: its normalised device x and y extents (left, right,
-// bottom, top), from the cone of lines of sight that touch it. Seen off the axis a sphere's outline is an
-// ellipse, wider than on the axis (by 1/cos^2 of the angle, across).
-glm::vec4 outline_extent(const OrbitCamera& camera, const Sphere& sphere, float aspect) {
-    const glm::vec3 forward = -eye_offset(camera), right = camera_right(camera), up = camera_up(camera);
-    const glm::vec3 eye = camera.target - forward * camera.distance;
-    const glm::vec3 to_centre = sphere.center - eye;
-    const float distance = glm::length(to_centre);
-    const float tan_half_y = std::tan(glm::radians(camera.fov_y_deg) * 0.5f), tan_half_x = tan_half_y * aspect;
-    if (distance <= sphere.radius * 1.0001f) return {-1e9f, 1e9f, -1e9f, 1e9f};  // the eye inside: no outline
-    const glm::vec3 u = to_centre / distance;
-    const glm::vec3 a = glm::normalize(glm::abs(glm::dot(u, up)) < 0.9f ? glm::cross(u, up) : glm::cross(u, right));
-    const glm::vec3 b = glm::cross(u, a);
-    const float sin_angle = sphere.radius / distance, cos_angle = std::sqrt(1.0f - sin_angle * sin_angle);
-    glm::vec4 e(1e9f, -1e9f, 1e9f, -1e9f);
-    constexpr int kSteps = 256;
-    for (int k = 0; k < kSteps; ++k) {
-        const float phi = 2.0f * std::numbers::pi_v<float> * float(k) / float(kSteps);
-        const glm::vec3 d = cos_angle * u + sin_angle * (std::cos(phi) * a + std::sin(phi) * b);
-        const float depth = glm::dot(d, forward);
-        if (depth <= 1e-6f) return {-1e9f, 1e9f, -1e9f, 1e9f};  // the outline reaches behind the eye
-        const float x = glm::dot(d, right) / depth / tan_half_x, y = glm::dot(d, up) / depth / tan_half_y;
-        e = {std::min(e.x, x), std::max(e.y, x), std::min(e.z, y), std::max(e.w, y)};
-    }
-    return e;
 }
 
 }  // namespace
@@ -79,28 +51,16 @@ void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect) 
 
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free) {
     const float share = std::clamp(free.y - free.x, 0.05f, 1.0f);  // a sliver left free frames in a twentieth
+    // Looking at the centre, the sphere's outline is a circle about the image's middle: framed for the free
+    // columns' shape it spans their width or the window's height, and the lens shift moves it into them.
+    camera.target = bounds.center;
     camera.distance = framing_distance(bounds, aspect * share, camera.fov_y_deg);
-    // The free columns' middle, in normalised device x; the target moves the other way by as much at its depth
-    // (half the view's width there: the distance times tan_half_x).
-    const float middle = free.x + free.y - 1.0f;
-    const float tan_half_x = std::tan(glm::radians(camera.fov_y_deg) * 0.5f) * aspect;
-    camera.target = bounds.center - camera_right(camera) * (middle * camera.distance * tan_half_x);
-    // Off the axis the outline is wider than framing_distance assumes, and its middle off the centre's image:
-    // a few corrections of the distance and the place (each extent scales nearly as 1/distance).
-    for (int step = 0; step < 6; ++step) {
-        const glm::vec4 e = outline_extent(camera, bounds, aspect);
-        const float fill = std::max((e.y - e.x) / (2.0f * share), (e.w - e.z) / 2.0f);
-        if (!(fill > 0.0f && fill < 1e3f)) break;
-        camera.distance *= fill;
-        camera.target -= camera_right(camera) * ((middle - 0.5f * (e.x + e.y)) * camera.distance * tan_half_x);
-    }
+    camera.screen_shift_x = free.x + free.y - 1.0f;  // the free columns' middle in normalised device x
 }
 
 void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, float distance_multiple) {
     frame_all(camera, bounds, aspect, free);
-    // Farther or nearer along the line through the centre's image: the offset of the target scales with the distance.
-    camera.target = bounds.center + (camera.target - bounds.center) * distance_multiple;
-    camera.distance *= distance_multiple;
+    camera.distance *= distance_multiple;  // the centre's image stays in the free columns' middle
 }
 
 glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window) {

@@ -27,8 +27,8 @@ void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
 
 // Frames `bounds`, keeping the direction, so that it fills the window's columns `free` (fractions of its
 // width, from the left: [0, 1] the whole window) and sits in their middle: the viewer leaves out the columns
-// its open panel covers. With the whole window it looks at the centre of `bounds`; beside the panel the
-// target moves aside by as much as the scene's image must (the orbit then turns about that point).
+// its open panel covers. It looks at the centre of `bounds` (the orbit turns about it), and beside the panel
+// the image is moved into the free columns by the camera's lens shift.
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free = {0.0f, 1.0f});
 
 // The view a window opens with where the scene's camera is framed (a distance multiple, no target of its own):

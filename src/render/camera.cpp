@@ -37,6 +37,8 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     m.far_plane = center_distance + radius;
     m.near_plane = std::max(center_distance - radius, m.far_plane * 1e-4f);
     m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);
+    if (camera.screen_shift_x != 0.0f)  // clip x + shift * w: device x + shift
+        m.proj = glm::translate(glm::mat4(1.0f), glm::vec3(camera.screen_shift_x, 0.0f, 0.0f)) * m.proj;
     return m;
 }
 

@@ -12,6 +12,10 @@ struct OrbitCamera {
     float yaw_deg = 0.0f;   // around +Y; 0 looks down -Z from +Z
     float pitch_deg = 0.0f; // up is positive
     float fov_y_deg = 30.0f;
+    // Normalised device x by which the image moves, as a lens shifted sideways (the frustum sheared, the eye
+    // and its direction unchanged): the viewer centres the target in the columns its panel leaves free, so
+    // that orbiting still turns about the target and the scene stays where it is.
+    float screen_shift_x = 0.0f;
 };
 
 struct CameraMatrices {
