@@ -12,6 +12,11 @@
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        if (args.size() == 2 && args[0] == "help") {  // `stipple help view`, as `stipple view --help`
+            if (stipple::cli::print_command_usage(args[1])) return 0;
+            std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", args[1].c_str());
+            return 2;
+        }
         stipple::cli::print_usage();
         return args.empty() ? 1 : 0;
     }

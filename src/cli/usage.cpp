@@ -380,7 +380,8 @@ constexpr CommandHelp kCommands[] = {
 void command_list() {
     std::printf("Usage:\n");
     for (const CommandHelp& command : kCommands) std::fputs(command.entry, stdout);
-    std::printf("  stipple --help                  this text\n\n");
+    std::printf("  stipple --help                  this text (stipple COMMAND --help or stipple help COMMAND: one\n"
+                "                                  command's options)\n\n");
 }
 
 }  // namespace
