@@ -60,7 +60,7 @@ layout(set = 0, binding = kBindingGradientPolygons, std430) buffer GradientList 
 // multiple of its size, so its bits fill part of one word, or whole words. Called by every invocation
 // of the subgroup.
 void write_facing_bits(bool in_range, PolygonView p) {
-    uvec4 bits = subgroupBallot(in_range && polygon_faces_away(p.center, p.normal));
+    uvec4 bits = subgroupBallot(in_range && polygon_faces_away(p.center, p.normal, density_params(frame, object)));
     uint first = linear_invocation() - gl_SubgroupInvocationID;  // the subgroup's first polygon
     if (!subgroupElect()) return;
     uint words = (gl_SubgroupSize + 31u) / 32u;

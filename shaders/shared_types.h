@@ -372,8 +372,10 @@ struct FrameUniforms {
     vec4 light_view;     // xyz: unit direction toward the light, view space
     vec4 paper_color;    // rgb paper (background), a unused; the ink is each object's (ObjectUniforms::ink_color)
     vec4 viewport;       // width, height, 1/width, 1/height
-    vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2 / detail), for the
-                         // densities; y: near; z: far; w: detail scale (FrameView::detail_scale)
+    vec4 projection;     // x: pixels per world unit at unit distance (proj[1][1] * height / 2 / detail; in an
+                         // orthographic view at every depth), for the densities; y: near; z: 1 for an
+                         // orthographic view, else 0 (DensityParams::orthographic); w: detail scale
+                         // (FrameView::detail_scale)
 };
 
 struct ObjectUniforms {

@@ -88,12 +88,6 @@ STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_
     return clamp(user_width * projected_radius_px / kLineReferenceRadiusPx, 1.0f, user_width);
 }
 
-// §3.1 Whether a polygon faces away from the viewer (its stipples are culled unless two-sided; an edge
-// between one that does and one that does not is a contour): N.E <= 0 against the eye ray to its
-// centroid, the test polygon_density_terms uses. The density pass records it per polygon (one bit).
-STIPPLE_FN bool polygon_faces_away(vec3 view_center, vec3 view_normal) {
-    return dot(view_normal, -view_center) <= 0.0f;
-}
 
 // Which lines an edge of the mesh carries this frame, from whether the polygons on either side face
 // away (a border edge has no second polygon: `has_second` false) and the cosine of its dihedral angle.
@@ -239,7 +233,25 @@ struct DensityParams {
     float near_plane;          // view distance of the near plane: nearer points are never drawn
     float near_margin;         // how far a quantised centroid may lie from the true one, in view depth
     uint flags;                // kFlag* bits
+    float orthographic;        // 1: parallel lines of sight (FrameUniforms::projection.z), 0: perspective
 };
+
+// Beyond the paper, which draws in perspective: an orthographic view (technical and scientific illustration).
+// Every line of sight is parallel, so the eye ray is +z (toward the viewer) at every point, and a point's
+// size on screen does not depend on its depth: pixels_per_unit is then the scale at every depth, and the
+// distance that divides it is 1. The depth itself (the intrinsic enhancement, the near plane) stays the
+// view depth. With these two, every formula below reads the same in both projections.
+STIPPLE_FN vec3 toward_eye(vec3 x, DensityParams q) {
+    return q.orthographic != 0.0f ? vec3(0.0f, 0.0f, 1.0f) : -x;  // not normalised
+}
+STIPPLE_FN float scaling_distance(float depth, DensityParams q) {
+    return q.orthographic != 0.0f ? 1.0f : depth;
+}
+// The facing ratio N.E of unit normal `normal` at view-space point x (the eye ray normalised).
+STIPPLE_FN float facing_ratio(vec3 normal, vec3 x, DensityParams q) {
+    vec3 e = toward_eye(x, q);
+    return dot(normal, e) / max(length(e), 1e-20f);
+}
 
 // The inverse of octahedral_to_unit: the unit sphere onto the octahedron, the lower half folded out.
 STIPPLE_FN vec2 unit_to_octahedral(vec3 n) {
@@ -370,7 +382,15 @@ STIPPLE_FN DensityParams density_params(FrameUniforms f, ObjectUniforms o) {
     q.near_plane = f.projection.y;
     q.near_margin = o.box_size.w;
     q.flags = o.flags.x;
+    q.orthographic = f.projection.z;
     return q;
+}
+
+// §3.1 Whether a polygon faces away from the viewer (its stipples are culled unless two-sided; an edge
+// between one that does and one that does not is a contour): N.E <= 0 against the eye ray to its
+// centroid, the test polygon_density_terms uses. The density pass records it per polygon (one bit).
+STIPPLE_FN bool polygon_faces_away(vec3 view_center, vec3 view_normal, DensityParams q) {
+    return dot(view_normal, toward_eye(view_center, q)) <= 0.0f;
 }
 
 // One polygon's density this frame, before the selection draw: the density it draws if selected and
@@ -401,7 +421,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     float distance = -p.center.z;
     // Which side of its plane the eye is on: the same seen from any point of the plane, so known even where
     // the centroid lies behind the eye.
-    float side = dot(p.normal, -p.center);
+    float side = dot(p.normal, toward_eye(p.center, q));
     // Two-sided: a polygon facing away is seen from its inside (through an opening), so it takes the
     // outside's tone rule with its normal flipped (shading, orientation, toon fade).
     if ((q.flags & kFlagTwoSided) != 0u && side < 0.0f) {
@@ -409,7 +429,7 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
         side = -side;
     }
     if ((q.flags & kFlagBackfaceCull) != 0u && side <= 0.0f) return result;
-    float facing = side / length(p.center);
+    float facing = side / max(length(toward_eye(p.center, q)), 1e-20f);
 
     float density = p.due;
     if ((q.flags & kFlagShading) != 0u) density *= shading_fraction(p.normal, q.to_light, q.shading_exponent);
@@ -418,7 +438,8 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     // gradient pass takes them at its reference point (large_polygon_density). Of the extrinsic term only the
     // polygon's own scale is kept (one pow for both cases: lavapipe computes both under its mask).
     bool unplaced = distance < q.near_plane + q.near_margin;
-    float screen_scale = unplaced ? p.scale_ratio : p.scale_ratio * q.pixels_per_unit / (distance * q.reference_ppu);
+    float screen_scale =
+        unplaced ? p.scale_ratio : p.scale_ratio * q.pixels_per_unit / (scaling_distance(distance, q) * q.reference_ppu);
     float extrinsic = extrinsic_factor(screen_scale, q.pr);
     if (unplaced) {
         result.unplaced = (q.flags & kFlagExtrinsic) != 0u ? density * extrinsic : density;
@@ -455,7 +476,8 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     // stipple's share of the screen is 100 px^2) every polygon drew a faint grey dot, a haze where an
     // illustrator expects sparse black dots (a walkthrough, 2026-12-05). At the default D_max and pr the two
     // tests agree for any min_area, but where a polygon's rounded candidate count falls short of its area.
-    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation;
+    float scaling = scaling_distance(distance, q);
+    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (scaling * scaling) * orientation;
     result.screen_area = screen_area;
     bool holds_a_stipple = p.due * extrinsic * orientation >= q.min_area * kMinAreaDensity;
     if ((screen_area >= q.min_area && holds_a_stipple) || density <= 0.0f || density >= 1.0f) return result;
@@ -500,9 +522,10 @@ STIPPLE_FN vec3 point_term_parts(vec3 x, vec3 normal, DensityParams q) {
     // A point nearer than the near plane is never drawn; taken there, a corner behind the eye bounds the
     // density with a finite value.
     float distance = max(-x.z, max(q.near_plane, 1e-20f));
-    vec3 parts = vec3(1.0f, 1.0f, abs(dot(normal, -x)) / max(length(x), 1e-20f));
+    vec3 parts = vec3(1.0f, 1.0f, abs(facing_ratio(normal, x, q)));
     if ((q.flags & kFlagIntrinsic) != 0u) parts.x = intrinsic_factor(q.center_depth - distance, q.half_range, q.de);
-    if ((q.flags & kFlagExtrinsic) != 0u) parts.y = extrinsic_factor(q.pixels_per_unit / (distance * q.reference_ppu), q.pr);
+    if ((q.flags & kFlagExtrinsic) != 0u)
+        parts.y = extrinsic_factor(q.pixels_per_unit / (scaling_distance(distance, q) * q.reference_ppu), q.pr);
     return parts;
 }
 STIPPLE_FN float facing_terms(float facing, DensityParams q) {
@@ -544,7 +567,7 @@ STIPPLE_FN vec3 view_normal_of(vec3 a, vec3 b, vec3 c, DensityParams q) {
     vec3 n = cross(b - a, c - a);
     float len = length(n);
     n = len > 0.0f ? n / len : vec3(0.0f, 0.0f, 1.0f);
-    if ((q.flags & kFlagTwoSided) != 0u && dot(n, -(a + b + c)) < 0.0f) n = -n;
+    if ((q.flags & kFlagTwoSided) != 0u && dot(n, toward_eye(a + b + c, q)) < 0.0f) n = -n;
     return n;
 }
 
@@ -576,8 +599,9 @@ STIPPLE_FN float density_gradient_weight(vec3 a, vec3 b, vec3 c, DensityParams q
     if (distance <= 0.0f) return 0.0f;
     vec3 n = cross(b - a, c - a);
     float area = 0.5f * length(n);
-    float facing = area > 0.0f ? abs(dot(n, -centre)) / (2.0f * area * length(centre)) : 0.0f;
-    float screen_area = area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
+    float facing = area > 0.0f ? abs(facing_ratio(n / (2.0f * area), centre, q)) : 0.0f;
+    float scaling = scaling_distance(distance, q);
+    float screen_area = area * q.pixels_per_unit * q.pixels_per_unit / (scaling * scaling) * orientation_factor(facing);
     return clamp((screen_area - kGradientAreaStart) / (kGradientAreaFull - kGradientAreaStart), 0.0f, 1.0f);
 }
 
@@ -588,8 +612,9 @@ STIPPLE_FN bool may_carry_gradient(PolygonView p, DensityParams q, float density
     // A centroid nearer than the near plane: the density there is not the polygon's (PolygonDensity::unplaced).
     if (distance < q.near_plane + q.near_margin) return p.candidates > 0.0f && p.due > 0.0f;
     if (!(density > 0.0f)) return false;
-    float facing = abs(dot(p.normal, -p.center)) / length(p.center);
-    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (distance * distance) * orientation_factor(facing);
+    float facing = abs(facing_ratio(p.normal, p.center, q));
+    float scaling = scaling_distance(distance, q);
+    float screen_area = p.area * q.pixels_per_unit * q.pixels_per_unit / (scaling * scaling) * orientation_factor(facing);
     return 2.0f * screen_area > kGradientAreaStart;
 }
 // The same for a polygon whose terms are known: one drawn by probabilistic selection draws one whole stipple

@@ -16,7 +16,8 @@ void main() {
     // A polygon facing away is drawn only when it can be seen through an opening (its object is
     // two-sided or has borders): it is seen from its inside, so its normal is flipped.
     vec3 normal = gl_FrontFacing ? normalize(in_normal_view) : -normalize(in_normal_view);
-    vec3 to_eye = normalize(-in_position_view);
+    // Parallel lines of sight in an orthographic view (FrameUniforms::projection.z): the eye ray is +z.
+    vec3 to_eye = frame.projection.z != 0.0 ? vec3(0.0, 0.0, 1.0) : normalize(-in_position_view);
     float ink = toon_surface_ink(dot(normal, to_eye), object.shading.z);
     out_color = vec4(mix(frame.paper_color.rgb, object.ink_color.rgb, ink), 1.0);
 }

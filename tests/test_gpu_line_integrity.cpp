@@ -116,7 +116,7 @@ std::vector<bool> facing_away(const ObjectGpu& object) {
     std::vector<bool> away(object.geometry.triangle_count);
     for (size_t t = 0; t < away.size(); ++t) {
         auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
-        away[t] = formulas::polygon_faces_away(p.center, p.normal);
+        away[t] = formulas::polygon_faces_away(p.center, p.normal, formulas::DensityParams{});  // perspective
     }
     return away;
 }

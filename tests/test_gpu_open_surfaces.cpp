@@ -164,7 +164,7 @@ TEST_F(OpenSurfaces, TwoSidedStipplesTheInsideByTheOutsidesToneRule) {
         double inside_two = 0.0, inside_reference = 0.0;
         for (size_t t = 0; t < densities[0].size(); ++t) {
             auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
-            bool faces_away = formulas::polygon_faces_away(p.center, p.normal);
+            bool faces_away = formulas::polygon_faces_away(p.center, p.normal, formulas::DensityParams{});  // perspective
             float expected = faces_away ? densities[2][t] : densities[0][t];
             if (faces_away) ++away, inside_two += densities[1][t], inside_reference += densities[2][t];
             // The flipped normal is encoded apart (16-bit octahedral), so allow its rounding, and a

@@ -189,7 +189,7 @@ TEST_F(Silhouettes, LinesAreTheEdgesBetweenPolygonsFacingAwayAndTowardTheViewer)
     for (const auto& e : build_silhouette_edges(sphere.mesh.indices)) {
         auto away = [&](uint32_t t) {
             auto p = formulas::polygon_view(object.polygons.cpu[t], object.geometry.candidates(t), object.frame.uniforms);
-            return formulas::polygon_faces_away(p.center, p.normal);
+            return formulas::polygon_faces_away(p.center, p.normal, formulas::DensityParams{});  // perspective
         };
         const bool second = e.second_polygon != gpu::kNoPolygon;
         expected += formulas::raskar_cohen_edge(away(e.first_polygon), second, second && away(e.second_polygon));

@@ -145,6 +145,7 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     scene.camera_path = {scene.camera, SceneCamera{}};
     scene.camera_path[1].world_distance = 9.0f;
     scene.camera_path[1].target = glm::vec3(0.1f, 0.2f, 0.3f);
+    scene.camera_path[1].orthographic = true;
     scene.light = {0.3f, 0.8f, 0.5f};
     scene.paper = {1.0f, 0.95f, 0.9f};
     scene.ink = {0.1f, 0.05f, 0.0f};
@@ -160,6 +161,8 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     EXPECT_TRUE(std::filesystem::equivalent(loaded.model_path(0), scene.model_path(0)));
     EXPECT_EQ(scene_to_json(loaded, dir), scene_to_json(scene, dir)) << "every field survives the round trip";
     EXPECT_FALSE(loaded.objects[0].params.ink) << "an object without an ink of its own takes the scene's";
+    EXPECT_FALSE(loaded.camera_path.at(0).orthographic);
+    EXPECT_TRUE(loaded.camera_path.at(1).orthographic) << text;
     ASSERT_TRUE(loaded.objects[1].params.ink);
     EXPECT_EQ(*loaded.objects[1].params.ink, glm::vec3(0.2f, 0.4f, 0.9f));
 
@@ -853,6 +856,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "objects[1].ink", "0..1"},
         BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",
                  "camera.distance", "must be in"},
+        BadScene{"bad_projection", R"({"objects": [{"model": "sphere.obj"}], "camera": {"projection": "isometric"}})",
+                 "camera.projection", "must be \"perspective\" or \"orthographic\""},
         BadScene{"empty_objects", R"({"objects": []})", "objects", "no objects"},
         // JSON allows a repeated key but not which one counts: the parser kept the last silently.
         BadScene{"repeated_param", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": 20, "dmax": 0.1}}]})",

@@ -45,7 +45,7 @@ void pan(OrbitCamera& camera, glm::vec2 drag_pixels, float viewport_height) {
 }
 
 void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect) {
-    float framing = framing_distance(bounds, aspect, camera.fov_y_deg);
+    float framing = framing_distance(bounds, aspect, camera.fov_y_deg, camera.orthographic);
     camera.distance = std::clamp(camera.distance * std::pow(kZoomPerStep, steps), framing * 1e-3f, framing * 1e3f);
 }
 
@@ -54,7 +54,7 @@ void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec
     // Looking at the centre, the sphere's outline is a circle about the image's middle: framed for the free
     // columns' shape it spans their width or the window's height, and the lens shift moves it into them.
     camera.target = bounds.center;
-    camera.distance = framing_distance(bounds, aspect * share, camera.fov_y_deg);
+    camera.distance = framing_distance(bounds, aspect * share, camera.fov_y_deg, camera.orthographic);
     camera.screen_shift_x = free.x + free.y - 1.0f;  // the free columns' middle in normalised device x
 }
 

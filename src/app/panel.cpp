@@ -71,6 +71,10 @@ void scene_section(Scene& scene, const PanelFigures& f, PanelRequests& requests)
     hover_help("Direction toward the light in view space: x right, y up, z toward you (paper §2.2).");
     ImGui::ColorEdit3("paper", &scene.paper.x);
     ImGui::ColorEdit3("ink", &scene.ink.x);
+    bool orthographic = f.orthographic;
+    if (ImGui::Checkbox("orthographic (O)", &orthographic)) requests.toggle_projection = true;
+    hover_help("Parallel lines of sight, as technical and scientific illustrations are drawn, instead of perspective; "
+               "the scale at the target is kept. Ctrl+S saves it with the camera.");
     if (ImGui::Button("frame all (F)")) requests.frame_all = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (S)")) requests.screenshot = true;

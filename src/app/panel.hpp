@@ -24,6 +24,7 @@ struct PanelFigures {
     VkExtent2D extent{};
     const char* present_mode = "";
     bool vsync = true;
+    bool orthographic = false;  // the camera's projection
     bool can_disable_vsync = false;
     float max_point_size = 64.0f;
     std::string scene_path;       // where "save scene" writes
@@ -39,6 +40,7 @@ struct PanelRequests {
     bool screenshot = false;
     bool save_scene = false;
     bool frame_all = false;
+    bool toggle_projection = false;  // perspective <-> orthographic
     bool toggle_vsync = false;
     bool hide = false;
     std::vector<size_t> regenerate;  // objects whose generation parameters were committed

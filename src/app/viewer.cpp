@@ -337,6 +337,7 @@ void Viewer::handle_input(const Input& input, float aspect) {
             case KeyCommand::SaveScene: save_scene(); break;
             case KeyCommand::Quit: window_.request_close(); break;
             case KeyCommand::TogglePlay: timeline_.toggle_play(live_.scene(), live_.objects()); break;
+            case KeyCommand::ToggleProjection: camera_.orthographic = !camera_.orthographic; break;  // the target's scale kept
         }
     }
     for (const std::string& path : input.dropped) {
@@ -366,6 +367,7 @@ void Viewer::handle_requests(const PanelRequests& r, float aspect) {
     if (r.screenshot) screenshot_.request();
     if (r.save_scene) save_scene();
     if (r.frame_all) frame_all(camera_, live_.bounds(), aspect, free_columns());
+    if (r.toggle_projection) camera_.orthographic = !camera_.orthographic;
     if (r.toggle_vsync) {
         vsync_ = !vsync_;
         recreate_ = true;

@@ -118,6 +118,7 @@ void Viewer::frame() {
         present_mode_ = swapchain_.mode_name();
         figures_.present_mode = present_mode_.c_str();
         figures_.vsync = vsync_;
+        figures_.orthographic = camera_.orthographic;
         figures_.can_disable_vsync = swapchain_.can_disable_vsync();
         figures_.max_point_size = context_.features.max_point_size;
         figures_.scene_path = options_.scene_path;

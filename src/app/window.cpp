@@ -168,6 +168,7 @@ void Window::on_char(GLFWwindow* w, unsigned int c) {
         case 'v': case 'V': out.push_back(KeyCommand::ToggleVsync); break;
         case 'q': case 'Q': out.push_back(KeyCommand::Quit); break;
         case ' ': out.push_back(KeyCommand::TogglePlay); break;
+        case 'o': case 'O': out.push_back(KeyCommand::ToggleProjection); break;
         default: break;
     }
 }

@@ -15,7 +15,8 @@ namespace stipple::app {
 
 // Commands the keyboard gives (layout-aware where a character is involved: '+' is '+' anywhere).
 enum class KeyCommand { OrbitLeft, OrbitRight, OrbitUp, OrbitDown, ZoomIn, ZoomOut, FrameAll, TogglePanel,
-                        Screenshot, ToggleVsync, SaveScene, Quit, TogglePlay };
+                        Screenshot, ToggleVsync, SaveScene, Quit, TogglePlay,
+                        ToggleProjection };
 
 struct Input {
     glm::dvec2 orbit_drag{0.0};  // pixels dragged with the left button since the last frame

@@ -134,6 +134,10 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
         if (!light) fail("--light must not be the zero vector");
         scene.light = *light;
     }
+    if (args.flag("--orthographic")) {  // the projection, not the placement: a camera_path's keyframes too
+        scene.camera.orthographic = true;
+        for (SceneCamera& key : scene.camera_path) key.orthographic = true;
+    }
     scene.paper = args.colour("--paper", scene.paper);
     scene.ink = args.colour("--ink", scene.ink);
     return scene;
@@ -141,7 +145,7 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
 
 CommandOptions render_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
-    accepted.flags.insert({"--stats", "--list-devices", "--verbose"});
+    accepted.flags.insert({"--stats", "--list-devices", "--verbose", "--orthographic"});
     accepted.flags.merge(vector_flags());
     accepted.options.merge(cache_options());
     accepted.options.merge(vector_options());

@@ -183,7 +183,7 @@ void print_regimes(const ToneSurvey& survey, const ToneSurveyOptions& options, f
 
 CommandOptions tone_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
-    accepted.flags.insert("--regimes");
+    accepted.flags.insert({"--regimes", "--orthographic"});
     accepted.options.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
                              "--images", "--seeds"});
     return accepted;
@@ -216,6 +216,7 @@ int run_tone(const std::vector<std::string>& argv) {
     if (!(fov >= 0.5 && fov <= 120.0)) fail(printf_string("--fov = %g must be in [0.5, 120] degrees", fov));
     options.fov_y_deg = float(fov);
     options.regimes = args.flag("--regimes");
+    options.orthographic = args.flag("--orthographic");
     options.image_dir = args.get("--images", "");
     if (args.has("--images") && options.image_dir.empty()) fail("--images needs a folder");
     if (!options.image_dir.empty()) {
@@ -256,10 +257,11 @@ int run_tone(const std::vector<std::string>& argv) {
         // the candidates generated for stretch were drawn as rest density: 0.52 mean ink for the fox, 0.41).
         renderer.add_object(*object.mesh, *object.stipples, glm::mat4(1.0f), params, object.motion);
         if (k == 0)
-            std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, field of view %g deg, D_max %g, point size "
+            std::printf("%s: %zu triangles, %zu candidate stipples, %ux%u, %s %g deg, D_max %g, point size "
                         "%g, %d frame(s) per view over %g deg of yaw%s\n\n",
                         path.c_str(), object.mesh->triangle_count(), object.stipples->size(), options.extent.width,
-                        options.extent.height, options.fov_y_deg, params.generation.dmax, params.point_size,
+                        options.extent.height, options.orthographic ? "orthographic, the span of a field of view of" : "field of view",
+                        options.fov_y_deg, params.generation.dmax, params.point_size,
                         options.frames, options.arc_deg, several ? ", for each seed" : "");
         renderer.params(0).extrinsic = true;
         ons.push_back(survey_tone(context, renderer, 0, object.bounds, options, light,
@@ -272,8 +274,9 @@ int run_tone(const std::vector<std::string>& argv) {
     for (const ToneSample& sample : ons.front().samples)
         for (size_t v = 0; v < options.views.size(); ++v)
             if (!sample.covered(v))
-                std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel in view %g:%g (beyond the frame, or "
-                                     "the camera inside it): shown as -, left out of max/min\n",
+                std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel in view %g:%g (beyond the frame, "
+                                     "the camera inside it, or only the back of a one-sided surface in view, which "
+                                     "--two-sided draws): shown as -, left out of max/min\n",
                              sample.distance, options.views[v][0], options.views[v][1]);
     std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance)%s:\n\n",
                 several ? "; per seed, then each distance averaged over the seeds" : "");

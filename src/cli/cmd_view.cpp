@@ -14,7 +14,7 @@ namespace stipple::cli {
 
 CommandOptions view_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
-    accepted.flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
+    accepted.flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose", "--orthographic"});
     accepted.options.merge(cache_options());
     accepted.options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper", "--device",
                              "--screenshot-dir", "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log",

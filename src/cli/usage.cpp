@@ -82,6 +82,10 @@ void camera_section() {
                           0.0001..10000)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
                           viewer (default -0.45,0.55,0.7: upper left, in front)
+  --orthographic          parallel lines of sight (technical and scientific illustration) instead of
+                          perspective: the view spans at every depth what it spans at the target, so
+                          --distance sets the scale; the tone rules read the same (§2.3's distance is
+                          the scale on screen). A scene camera's "projection": "orthographic"
   --ink COLOUR, --paper COLOUR
                           the colours of the stipples and lines, and of the paper: #rrggbb (#rgb)
                           or R,G,B each in 0..1 (default #000000 on #ffffff); a scene file's
@@ -168,7 +172,8 @@ void view_section() {
   window to add them beside the others. Keys: arrows orbit, + and - zoom, F frames everything
   (beside the open panel, as the window opens: --distance is then a multiple of that framing),
   H hides/shows the panel (folded to its title in a window under 1000 px wide: click to open it),
-  S saves a screenshot (window resolution, without the panel), V toggles vsync, Space plays or
+  S saves a screenshot (window resolution, without the panel), V toggles vsync, O switches between
+  perspective and orthographic projection, Space plays or
   pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
   sets every per-object parameter (generation parameters take effect on release or Enter: new
   stipples are made in the background with a progress bar while the old ones are drawn, and a newer
@@ -200,7 +205,8 @@ void scene_section() {
                                layers in vector output; default: the scene's ink)
    }],
    "camera": {"yaw": 0, "pitch": 0, "distance": 1 (x the framing distance) or "world_distance": d,
-              "target": [x,y,z] (default: the centre of the scene), "fov_y": 30},
+              "target": [x,y,z] (default: the centre of the scene), "fov_y": 30,
+              "projection": "perspective" or "orthographic"},
    "camera_path": [camera, camera, ...],
    "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]}
   Every field is optional except objects and their model (params above at their defaults). A param
@@ -244,6 +250,8 @@ void tone_section() {
                           the arc defaults to 40 with frames; 360 goes all around the object)
   --fov DEG               vertical field of view (default 30); a narrow one keeps the same surface in
                           view at every distance (perspective shows a framed object's sides less)
+  --orthographic          parallel lines of sight: the same surface in view at every distance, only
+                          its scale changing (the distances then set the scale as render's does)
   --width N --height N    image size (default 1280 x 1024)  --light X,Y,Z  --device N
   --regimes               also print, per distance, the stipples each regime of the extrinsic
                           enhancement owes and draws, and the ink they leave on the screen
@@ -253,8 +261,8 @@ void tone_section() {
                           high enlarged to about that, at most 8 times) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
-  A distance at which the object covers no pixel (beyond the frame, or the camera inside it) shows
-  as - and is left out of max/min, with a warning.
+  A distance at which the object covers no pixel (beyond the frame, the camera inside it, or only the
+  back of a one-sided surface in view) shows as - and is left out of max/min, with a warning.
   Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
   of the dots), a last line says so, with the dots and the spread.
 

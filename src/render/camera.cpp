@@ -7,17 +7,19 @@
 
 namespace stipple {
 
-float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg) {
+float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg, bool orthographic) {
     float half_y = glm::radians(fov_y_deg) * 0.5f;
     float half_x = std::atan(std::tan(half_y) * aspect);
     float half = std::min(half_x, half_y);
-    return std::max(sphere.radius, 1e-30f) / std::sin(half);
+    // Seen in perspective the outline is the cone of lines of sight touching the sphere (sin); in parallel
+    // projection, its radius against the view's half span (tan).
+    return std::max(sphere.radius, 1e-30f) / (orthographic ? std::tan(half) : std::sin(half));
 }
 
 OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg) {
     OrbitCamera camera;
     camera.target = sphere.center;
-    camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg) * distance_multiple;
+    camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg, camera.orthographic) * distance_multiple;
     camera.yaw_deg = yaw_deg;
     camera.pitch_deg = pitch_deg;
     return camera;
@@ -28,15 +30,25 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     float pitch = glm::radians(camera.pitch_deg);
     glm::vec3 offset(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
     CameraMatrices m;
-    m.eye = camera.target + offset * camera.distance;
+    m.orthographic = camera.orthographic;
+    float radius = std::max(scene.radius, 1e-30f) * 1.02f;
+    // An orthographic eye stands outside the scene whatever the zoom (its distance sets the span, not the
+    // place): nothing of the scene then lies before the near plane.
+    const float eye_distance =
+        camera.orthographic ? std::max(camera.distance, glm::length(scene.center - camera.target) + 2.0f * radius) : camera.distance;
+    m.eye = camera.target + offset * eye_distance;
     glm::vec3 up = std::abs(std::cos(pitch)) < 1e-4f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
     m.view = glm::lookAt(m.eye, camera.target, up);
 
     float center_distance = glm::length(scene.center - m.eye);
-    float radius = std::max(scene.radius, 1e-30f) * 1.02f;
     m.far_plane = center_distance + radius;
     m.near_plane = std::max(center_distance - radius, m.far_plane * 1e-4f);
-    m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);
+    if (camera.orthographic) {
+        const float half_y = camera.distance * std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
+        m.proj = glm::ortho(-half_y * aspect, half_y * aspect, -half_y, half_y, m.near_plane, m.far_plane);
+    } else {
+        m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);
+    }
     if (camera.screen_shift_x != 0.0f)  // clip x + shift * w: device x + shift
         m.proj = glm::translate(glm::mat4(1.0f), glm::vec3(camera.screen_shift_x, 0.0f, 0.0f)) * m.proj;
     return m;

@@ -16,18 +16,24 @@ struct OrbitCamera {
     // and its direction unchanged): the viewer centres the target in the columns its panel leaves free, so
     // that orbiting still turns about the target and the scene stays where it is.
     float screen_shift_x = 0.0f;
+    // Parallel lines of sight (technical and scientific illustration): the view spans 2 distance tan(fov_y / 2)
+    // vertically at every depth, what the perspective view spans at the target's, so switching keeps the
+    // target's scale. The eye is only placed for clipping then, beyond the scene.
+    bool orthographic = false;
 };
 
 struct CameraMatrices {
     glm::mat4 view{1.0f};
     glm::mat4 proj{1.0f};
     glm::vec3 eye{0.0f};
+    bool orthographic = false;  // proj is an orthographic projection (OrbitCamera::orthographic)
     float near_plane = 0.01f;
     float far_plane = 100.0f;
 };
 
-// Distance at which the sphere just fits the view, vertically and horizontally.
-float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg);
+// Distance at which the sphere just fits the view, vertically and horizontally (in an orthographic view, the
+// distance whose span fits it).
+float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg, bool orthographic = false);
 
 // A camera framing `sphere`, at `distance_multiple` times the framing distance.
 OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg);

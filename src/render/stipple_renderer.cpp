@@ -221,7 +221,7 @@ void StippleRenderer::prepare(const FrameView& view) {
                                 1.0f / view.extent.height);
     // Pixels per unit at unit distance, for the densities: as at the extent the stipples are chosen for.
     frame_.projection = glm::vec4(view.camera.proj[1][1] * 0.5f * float(view.extent.height) / view.detail_scale,
-                                  view.camera.near_plane, view.camera.far_plane, view.detail_scale);
+                                  view.camera.near_plane, view.camera.orthographic ? 1.0f : 0.0f, view.detail_scale);
     std::memcpy(frame_uniforms_.mapped(), &frame_, sizeof(frame_));
     frame_uniforms_.flush();
 

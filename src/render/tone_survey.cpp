@@ -145,11 +145,11 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
         view.candidates = view.due = float(polygons[t].area * per_area);
         const formulas::PolygonDensity ideal = formulas::polygon_density_terms(view, params);
 
-        const bool faces_away = formulas::polygon_faces_away(view.center, view.normal);
+        const bool faces_away = formulas::polygon_faces_away(view.center, view.normal, params);
         ToneRegime regime = ToneRegime::Large;
         if (outside_view(t))
             regime = ToneRegime::Outside;
-        else if (faces_away)
+        else if (faces_away && (params.flags & gpu::kFlagTwoSided) == 0u)  // two-sided: seen from inside, it draws
             regime = ToneRegime::Culled;
         else if (ideal.owed > view.candidates)  // the model's regime, from the area (not the rounded count)
             regime = ToneRegime::Enlarged;
@@ -292,11 +292,12 @@ void add(RegimeTally& to, const RegimeTally& from) {
 // narrowed by crop / full height, so pixels per unit (and with them every per-frame term) are the full
 // image's.
 FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, float fov_y_deg, float distance, float yaw,
-                      float pitch, glm::vec3 light) {
+                      float pitch, glm::vec3 light, bool orthographic) {
     const float full_aspect = float(full.width) / float(full.height);
     OrbitCamera camera = frame_sphere(bounds, full_aspect, distance, yaw, pitch);
     camera.fov_y_deg = fov_y_deg;
-    camera.distance = framing_distance(bounds, full_aspect, fov_y_deg) * distance;
+    camera.orthographic = orthographic;  // its span narrows with the field of view as the perspective's does
+    camera.distance = framing_distance(bounds, full_aspect, fov_y_deg, orthographic) * distance;
     const float half = std::atan(std::tan(0.5f * glm::radians(fov_y_deg)) * float(crop.height) / float(full.height));
     camera.fov_y_deg = glm::degrees(2.0f * half);
     FrameView view;
@@ -361,7 +362,8 @@ ToneSurvey survey_tone(const gpu::Context& context, StippleRenderer& renderer, s
             for (int j = 0; j < frames; ++j) {
                 const float offset = options.arc_deg * ((float(j) + 0.5f) / float(frames) - 0.5f);
                 RenderedFrame frame = target.render(
-                    renderer, survey_view(bounds, options.extent, crop, options.fov_y_deg, distance, yaw + offset, pitch, light));
+                    renderer, survey_view(bounds, options.extent, crop, options.fov_y_deg, distance, yaw + offset, pitch, light,
+                                         options.orthographic));
                 if (options.regimes) {
                     const ToneTally one = tally_tone(renderer.object(object), renderer.frame_uniforms());
                     for (size_t r = 0; r < kToneRegimeCount; ++r) add(tally.regimes[r], one.regimes[r]);

@@ -90,6 +90,9 @@ struct ToneSurveyOptions {
     // more of the side away from the light, less of the depth range near the centre); a narrow field
     // of view keeps the same surface in view at every distance, so what changes is only the scale.
     float fov_y_deg = OrbitCamera{}.fov_y_deg;
+    // Parallel lines of sight instead (OrbitCamera::orthographic): the same surface in view at every distance
+    // whatever the field of view, so that only the scale changes.
+    bool orthographic = false;
     // When set, the first frame of each view and distance is written there as
     // tone-<yaw>_<pitch>-d<distance>-<on|off>.png (enlarged when the object is small).
     std::string image_dir;

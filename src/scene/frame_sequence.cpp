@@ -19,6 +19,7 @@ OrbitCamera lerp(const OrbitCamera& a, const OrbitCamera& b, float t) {
     c.yaw_deg = a.yaw_deg + (b.yaw_deg - a.yaw_deg) * t;
     c.pitch_deg = a.pitch_deg + (b.pitch_deg - a.pitch_deg) * t;
     c.fov_y_deg = a.fov_y_deg + (b.fov_y_deg - a.fov_y_deg) * t;
+    c.orthographic = t < 1.0f ? a.orthographic : b.orthographic;  // a change of projection cuts at the keyframe
     return c;
 }
 

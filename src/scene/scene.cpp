@@ -79,9 +79,10 @@ void arrange_side_by_side(Scene& scene, const std::vector<Sphere>& spheres) {
 OrbitCamera resolve_camera(const SceneCamera& camera, const Sphere& scene_bounds, float aspect) {
     OrbitCamera orbit;
     orbit.fov_y_deg = camera.fov_y_deg;
+    orbit.orthographic = camera.orthographic;
     orbit.target = camera.target.value_or(scene_bounds.center);
-    orbit.distance = camera.world_distance.value_or(framing_distance(scene_bounds, aspect, camera.fov_y_deg) *
-                                                    camera.distance);
+    orbit.distance = camera.world_distance.value_or(
+        framing_distance(scene_bounds, aspect, camera.fov_y_deg, camera.orthographic) * camera.distance);
     orbit.yaw_deg = camera.yaw_deg;
     orbit.pitch_deg = camera.pitch_deg;
     return orbit;
@@ -94,6 +95,7 @@ SceneCamera scene_camera_from(const OrbitCamera& camera) {
     c.world_distance = camera.distance;
     c.target = camera.target;
     c.fov_y_deg = camera.fov_y_deg;
+    c.orthographic = camera.orthographic;
     return c;
 }
 

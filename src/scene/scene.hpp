@@ -67,6 +67,7 @@ struct SceneCamera {
     std::optional<float> world_distance;      // explicit eye-to-target distance (replaces `distance`)
     std::optional<glm::vec3> target;          // default: the centre of the scene's bounds
     float fov_y_deg = 30.0f;
+    bool orthographic = false;                // "projection": "orthographic" (OrbitCamera::orthographic)
 };
 
 struct Scene {

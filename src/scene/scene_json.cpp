@@ -268,7 +268,7 @@ json animation_json(const AnimationChoice& a) {
 }
 
 SceneCamera read_camera(const json& j, const Reader& r, const std::string& where) {
-    r.expect_object(j, where, {"yaw", "pitch", "distance", "world_distance", "target", "fov_y"});
+    r.expect_object(j, where, {"yaw", "pitch", "distance", "world_distance", "target", "fov_y", "projection"});
     SceneCamera c;
     if (j.contains("yaw")) {
         c.yaw_deg = r.number(j["yaw"], Reader::field(where, "yaw"));
@@ -300,6 +300,12 @@ SceneCamera read_camera(const json& j, const Reader& r, const std::string& where
         c.fov_y_deg = r.number(j["fov_y"], Reader::field(where, "fov_y"));
         if (!(c.fov_y_deg >= 1.0f && c.fov_y_deg <= 150.0f)) r.error(Reader::field(where, "fov_y"), "must be in 1..150 degrees");
     }
+    if (j.contains("projection")) {
+        const json& p = j["projection"];
+        if (!p.is_string() || (p != "perspective" && p != "orthographic"))
+            r.error(Reader::field(where, "projection"), "must be \"perspective\" or \"orthographic\"");
+        c.orthographic = p == "orthographic";
+    }
     return c;
 }
 
@@ -311,6 +317,7 @@ json camera_json(const SceneCamera& c) {
         j["distance"] = number(c.distance);
     if (c.target) j["target"] = vec3_json(*c.target);
     j["fov_y"] = number(c.fov_y_deg);
+    if (c.orthographic) j["projection"] = "orthographic";
     return j;
 }
 

@@ -24,11 +24,14 @@ inline Prepared prepare(Mesh mesh, const ObjectParams& params, glm::mat4 model =
 
 // A camera framing `sphere` at `distance` times the framing distance.
 inline FrameView framed_view(const Sphere& sphere, VkExtent2D extent, float distance = 1.0f, float yaw = 20.0f,
-                             float pitch = 10.0f) {
+                             float pitch = 10.0f, bool orthographic = false) {
     float aspect = float(extent.width) / float(extent.height);
     FrameView view;
     view.extent = extent;
-    view.camera = camera_matrices(frame_sphere(sphere, aspect, distance, yaw, pitch), aspect, sphere);
+    OrbitCamera camera = frame_sphere(sphere, aspect, distance, yaw, pitch);
+    camera.orthographic = orthographic;
+    camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg, orthographic) * distance;
+    view.camera = camera_matrices(camera, aspect, sphere);
     return view;
 }
 
