@@ -11,8 +11,10 @@
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        if (args.size() == 2 && args[0] == "help") {  // `stipple help view`, as `stipple view --help`
+    const auto asks_help = [](const std::string& a) { return a == "--help" || a == "-h" || a == "help"; };
+    if (args.empty() || asks_help(args[0])) {
+        // `stipple help view` (or --help view, -h view), as `stipple view --help`; `help help` is everything.
+        if (args.size() >= 2 && !asks_help(args[1])) {
             if (stipple::cli::print_command_usage(args[1])) return 0;
             std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", args[1].c_str());
             return 2;

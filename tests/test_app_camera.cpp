@@ -38,16 +38,19 @@ TEST(AppCamera, FrameAllFitsTheSceneIntoTheColumnsThePanelLeaves) {
         float pitch;
     };
     for (const Case c : {Case{{0.0f, 1.0f}, -20.0f}, Case{{0.375f, 1.0f}, -20.0f}, Case{{0.0f, 0.6f}, -20.0f},
-                         Case{{0.375f, 1.0f}, 89.0f}, Case{{0.25f, 0.5f}, -89.0f}}) {
+                         Case{{0.375f, 1.0f}, 89.0f}, Case{{0.25f, 0.5f}, -89.0f}})
+    for (const bool orthographic : {false, true}) {
         const glm::vec2 free = c.free;
         OrbitCamera camera;
         camera.yaw_deg = 35.0f;
         camera.pitch_deg = c.pitch;
+        camera.orthographic = orthographic;
         app::frame_all(camera, sphere, aspect, free);
         const Extent e = projected(camera, sphere, aspect);
         const float left = 2.0f * free.x - 1.0f, right = 2.0f * free.y - 1.0f;
-        std::printf("pitch %.0f, free columns %.3f..%.3f: the sphere spans x %.3f..%.3f (room %.3f..%.3f), y %.3f..%.3f\n", c.pitch, free.x, free.y,
-                    e.left, e.right, left, right, e.bottom, e.top);
+        std::printf("%s, pitch %.0f, free columns %.3f..%.3f: the sphere spans x %.3f..%.3f (room %.3f..%.3f), y %.3f..%.3f\n",
+                    orthographic ? "orthographic" : "perspective", c.pitch, free.x, free.y, e.left, e.right, left, right,
+                    e.bottom, e.top);
         // Inside the free columns and the window's height, and filling one of the two (framing_distance).
         EXPECT_GE(e.left, left - 0.01f);
         EXPECT_LE(e.right, right + 0.01f);

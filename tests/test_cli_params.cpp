@@ -249,7 +249,11 @@ TEST(ParamTable, EachCommandsHelpListsEveryOptionItTakes) {
     EXPECT_EQ(test::run_stipple({"view", "--help"}).out.find("Bench options"), std::string::npos);
     EXPECT_EQ(test::run_stipple({"bench", "--help"}).out.find("Stipple options"), std::string::npos);
     EXPECT_NE(test::run_stipple({"render", "--help"}).out.find("Vector and print output"), std::string::npos);
-    EXPECT_EQ(test::run_stipple({"help", "tone"}).out, test::run_stipple({"tone", "--help"}).out);
+    const std::string tone = test::run_stipple({"tone", "--help"}).out;
+    for (const std::vector<std::string>& asked : {std::vector<std::string>{"help", "tone"}, {"--help", "tone"}, {"-h", "tone"},
+                                                  {"help", "tone", "--views"}})
+        EXPECT_EQ(test::run_stipple(asked).out, tone) << asked[0];
+    EXPECT_EQ(test::run_stipple({"help", "help"}).out, all.out);
     const test::CommandResult unknown = test::run_stipple({"draw", "--help"});
     EXPECT_EQ(unknown.exit_code, 2);
     EXPECT_EQ(unknown.err, "stipple: unknown command 'draw' (try: stipple --help)\n");

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/commands.hpp"
 #include "io/png_io.hpp"
 #include "mesh/primitives.hpp"
 #include "support/model_files.hpp"
@@ -147,6 +148,32 @@ TEST(Orthographic, TheToonRingFollowsTheOutline) {
     for (size_t r = 0; r + 4 < kRings; ++r) EXPECT_LT(dark[r], 0.02) << "facing the viewer: no toon ink, ring " << r;
     EXPECT_GT(dark[kRings - 1], 0.2) << "the outline's ring is inked";
     for (size_t r = kRings - 4; r < kRings; ++r) EXPECT_GE(dark[r], dark[r - 1]) << "the ramp darkens outward, ring " << r;
+}
+
+// --orthographic and --perspective override a scene file's camera; the viewer keeps the camera_path as written
+// (Ctrl+S saves it: `view --orthographic` made every keyframe orthographic), while render draws the path's
+// frames in the projection asked. Both at once are refused.
+TEST(Orthographic, TheCommandLineSetsTheSceneCameraAndLeavesThePath) {
+    const auto dir = test::temp_dir("orthographic-scene");
+    test::write_file(dir / "sphere.obj", test::obj_text(make_uv_sphere(500)));
+    const std::string scene = test::write_file(dir / "scene.json", R"({"objects": [{"model": "sphere.obj"}],
+        "camera": {"projection": "orthographic"}, "camera_path": [{"yaw": 0}, {"yaw": 90, "projection": "orthographic"}]})");
+    const auto read = [&](std::vector<std::string> argv) {
+        const cli::CommandOptions accepted = cli::view_command_options();
+        return cli::scene_from_command_line(cli::Args(argv, accepted.flags, accepted.options), "view");
+    };
+    const Scene as_written = read({scene});
+    EXPECT_TRUE(as_written.camera.orthographic);
+    const Scene perspective = read({scene, "--perspective"});
+    EXPECT_FALSE(perspective.camera.orthographic);
+    ASSERT_EQ(perspective.camera_path.size(), 2u);
+    EXPECT_FALSE(perspective.camera_path[0].orthographic);
+    EXPECT_TRUE(perspective.camera_path[1].orthographic) << "the path stays as written";
+    EXPECT_TRUE(read({scene, "--orthographic"}).camera.orthographic);
+    const test::CommandResult both = test::run_stipple({"render", scene, "--orthographic", "--perspective", "-o",
+                                                        (dir / "x.png").string()});
+    EXPECT_EQ(both.exit_code, 1);
+    EXPECT_EQ(both.err, "stipple: --orthographic and --perspective: give one of them\n");
 }
 
 }  // namespace

@@ -55,12 +55,20 @@ void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec
     // columns' shape it spans their width or the window's height, and the lens shift moves it into them.
     camera.target = bounds.center;
     camera.distance = framing_distance(bounds, aspect * share, camera.fov_y_deg, camera.orthographic);
-    camera.screen_shift_x = free.x + free.y - 1.0f;  // the free columns' middle in normalised device x
+    camera.lens_shift = lens_shift_into(free, aspect);
 }
 
-void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, float distance_multiple) {
+float lens_shift_into(glm::vec2 free, float aspect) {
+    return 0.5f * (free.x + free.y - 1.0f) * aspect;  // the free columns' middle (device x) in heights of the view
+}
+
+void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, std::optional<float> distance_multiple) {
+    if (!distance_multiple) {  // a placed camera: as given, its target moved into the free columns
+        camera.lens_shift = lens_shift_into(free, aspect);
+        return;
+    }
     frame_all(camera, bounds, aspect, free);
-    camera.distance *= distance_multiple;  // the centre's image stays in the free columns' middle
+    camera.distance *= *distance_multiple;  // the centre's image stays in the free columns' middle
 }
 
 glm::vec2 columns_left_free(glm::vec4 rect, glm::vec2 window) {

@@ -1,6 +1,8 @@
 #pragma once
 // Orbit, pan and zoom of the viewer's camera from mouse drags, wheel steps and keys.
 // Pure arithmetic on an OrbitCamera, so it can be reasoned about (and tested) without a window.
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include "mesh/mesh.hpp"
@@ -31,10 +33,15 @@ void zoom(OrbitCamera& camera, float steps, const Sphere& bounds, float aspect);
 // the image is moved into the free columns by the camera's lens shift.
 void frame_all(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free = {0.0f, 1.0f});
 
-// The view a window opens with where the scene's camera is framed (a distance multiple, no target of its own):
-// frame_all in `free`, then `distance_multiple` times as far, the scene's centre still in the free columns'
-// middle (the window opened with a third of the scene under the panel).
-void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free, float distance_multiple);
+// The view a window opens with, its panel open: a framed scene camera (a distance multiple, no target of its
+// own) is framed in `free` and then `distance_multiple` times as far, the scene's centre in the free columns'
+// middle (the window opened with a third of the scene under the panel); a placed camera (none: a target or a
+// world distance, as Ctrl+S saves) keeps its view, its target moved into the free columns' middle.
+void frame_at_open(OrbitCamera& camera, const Sphere& bounds, float aspect, glm::vec2 free,
+                   std::optional<float> distance_multiple);
+
+// The lens shift (OrbitCamera::lens_shift) that puts the view's middle in the middle of the columns `free`.
+float lens_shift_into(glm::vec2 free, float aspect);
 
 // The wider run of the window's columns left and right of `rect` (the open panel's x, y, width, height in
 // pixels), as fractions of `window` (its width and height in those pixels); the whole window where the

@@ -172,7 +172,7 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     if (size.y >= max_height - 0.5f) clamped_at = max_height;
     last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
-    requests.open = open;
+    requests.open = open && !ImGui::IsWindowCollapsed();  // a new window's first Begin is true while folded too
     requests.display = {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y};
     // Not on the arrow (an item, which toggles the fold itself a frame later), nor after a drag (even one that
     // came back to where it began).

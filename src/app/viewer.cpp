@@ -113,7 +113,7 @@ Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
     float aspect = size.height > 0 ? float(size.width) / float(size.height) : 1.25f;
     camera_ = resolve_camera(live_.scene().camera, live_.bounds(), aspect);
     const SceneCamera& asked = live_.scene().camera;
-    if (!asked.target && !asked.world_distance) frame_at_open_ = asked.distance;
+    if (!asked.target && !asked.world_distance) open_distance_multiple_ = asked.distance;
     timeline_.set_time(options.start_time);
     if (!live_.scene().camera_path.empty())
         message("the scene's camera_path is for render's frame sequences: the viewer shows its camera, and Ctrl+S keeps the path");
@@ -360,10 +360,8 @@ void Viewer::handle_requests(const PanelRequests& r, float aspect) {
     panel_rect_ = r.rect;
     panel_open_ = r.open;
     panel_display_ = r.display;
-    if (frame_at_open_) {  // the panel's place is known from its first frame on
-        if (r.open) frame_at_open(camera_, live_.bounds(), aspect, free_columns(), *frame_at_open_);
-        frame_at_open_.reset();
-    }
+    if (panel_frames_until_open_view_ > 0 && --panel_frames_until_open_view_ == 0 && r.open)
+        frame_at_open(camera_, live_.bounds(), aspect, free_columns(), open_distance_multiple_);
     if (r.screenshot) screenshot_.request();
     if (r.save_scene) save_scene();
     if (r.frame_all) frame_all(camera_, live_.bounds(), aspect, free_columns());

@@ -110,7 +110,7 @@ void Viewer::frame() {
     if (acquired == VK_SUBOPTIMAL_KHR) recreate_ = true;  // the image is ours and signalled: draw it, then recreate
 
     if (!panel_visible_) overlay_->skip_frame();
-    if (!panel_visible_) frame_at_open_.reset();  // hidden from the start: the scene's framing stands
+    if (!panel_visible_) panel_frames_until_open_view_ = 0;  // hidden from the start: the scene's view stands
     if (panel_visible_) {
         overlay_->new_frame();
         figures_.device = context_.device_name;

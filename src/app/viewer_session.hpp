@@ -98,9 +98,11 @@ private:
     PanelFigures figures_;
     glm::vec4 panel_rect_{0.0f};
     bool panel_open_ = false;         // unfolded, as last drawn
-    // The scene's camera is framed (no target or world distance of its own): the first frame that shows the
-    // panel open frames it beside the panel, this many times the framing distance (then it is reset).
-    std::optional<float> frame_at_open_;
+    // Until the panel has been drawn twice (its first frame's size and fold are not settled yet): then, if it
+    // is open, the view moves beside it (frame_at_open), framed at this many times the framing distance where the
+    // scene's camera is framed (no target or world distance of its own).
+    int panel_frames_until_open_view_ = 2;
+    std::optional<float> open_distance_multiple_;
     glm::vec2 panel_display_{0.0f};   // the window's size in the panel rectangle's pixels
     Timeline timeline_;
     glm::vec4 timeline_rect_{0.0f};

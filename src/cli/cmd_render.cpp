@@ -134,10 +134,9 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
         if (!light) fail("--light must not be the zero vector");
         scene.light = *light;
     }
-    if (args.flag("--orthographic")) {  // the projection, not the placement: a camera_path's keyframes too
-        scene.camera.orthographic = true;
-        for (SceneCamera& key : scene.camera_path) key.orthographic = true;
-    }
+    if (args.flag("--orthographic") && args.flag("--perspective")) fail("--orthographic and --perspective: give one of them");
+    if (args.flag("--orthographic")) scene.camera.orthographic = true;
+    if (args.flag("--perspective")) scene.camera.orthographic = false;
     scene.paper = args.colour("--paper", scene.paper);
     scene.ink = args.colour("--ink", scene.ink);
     return scene;
@@ -145,12 +144,14 @@ Scene scene_from_command_line(const Args& args, const std::string& what) {
 
 CommandOptions render_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
-    accepted.flags.insert({"--stats", "--list-devices", "--verbose", "--orthographic"});
+    accepted.flags.insert({"--stats", "--list-devices", "--verbose"});
+    accepted.flags.merge(camera_flags());
     accepted.flags.merge(vector_flags());
     accepted.options.merge(cache_options());
     accepted.options.merge(vector_options());
-    accepted.options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--yaw", "--pitch", "--distance", "--light",
-                             "--ink", "--paper", "--device", "--frames", "--orbit", "--depth-cull", "--depth-raster", "--queued"});
+    accepted.options.merge(camera_options());
+    accepted.options.insert({"--repeat", "-o", "--output", "--mask", "--width", "--height", "--device", "--frames", "--orbit",
+                             "--depth-cull", "--depth-raster", "--queued"});
     accepted.options.merge(animation_options());
     return accepted;
 }
@@ -248,6 +249,10 @@ int run_render(const std::vector<std::string>& argv) {
         orbit = float(deg);
     }
     Scene scene = scene_from_command_line(args, "render");
+    // The projection, not the placement: a camera_path's frames are drawn in the one asked too (the viewer shows
+    // the scene's camera and keeps the path as it was for Ctrl+S).
+    if (args.flag("--orthographic") || args.flag("--perspective"))
+        for (SceneCamera& key : scene.camera_path) key.orthographic = scene.camera.orthographic;
     const std::string what = scene.source.empty() ? scene.model_path(0) : scene.source;
     // D_max 0 everywhere with no line and no toon asked draws bare paper, whatever the output: said once here.
     const bool draws_nothing = std::all_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {

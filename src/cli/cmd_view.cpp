@@ -14,10 +14,11 @@ namespace stipple::cli {
 
 CommandOptions view_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
-    accepted.flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose", "--orthographic"});
+    accepted.flags.insert({"--no-vsync", "--no-panel", "--no-count-drawn", "--verbose"});
+    accepted.flags.merge(camera_flags());
     accepted.options.merge(cache_options());
-    accepted.options.insert({"--width", "--height", "--yaw", "--pitch", "--distance", "--light", "--ink", "--paper", "--device",
-                             "--screenshot-dir", "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log",
+    accepted.options.merge(camera_options());
+    accepted.options.insert({"--width", "--height", "--device", "--screenshot-dir", "--save-scene", "--benchmark-frames", "--present", "--script", "--frame-log",
                              "--animation", "--time", "--depth-cull", "--depth-raster"});
     return accepted;
 }

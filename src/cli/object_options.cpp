@@ -21,6 +21,9 @@ std::set<std::string> object_options() {
     return options;
 }
 
+std::set<std::string> camera_flags() { return {"--orthographic", "--perspective"}; }
+std::set<std::string> camera_options() { return {"--yaw", "--pitch", "--distance", "--light", "--ink", "--paper"}; }
+
 namespace {
 
 // Whether the command line gives the parameter of this scene key (as --x, --no-x or --x VALUE).

@@ -11,6 +11,10 @@ namespace stipple::cli {
 
 std::set<std::string> object_flags();    // the Bool parameters: --X and --no-X
 std::set<std::string> object_options();  // the others: --X VALUE
+// The camera, light and colours render and view take (their help's "Camera, light and colours" section):
+// flags (the projection) and options with a value.
+std::set<std::string> camera_flags();
+std::set<std::string> camera_options();
 ObjectParams read_object_params(const Args& args);  // validated
 
 // True when any object option or flag was given (they cannot be combined with a scene file).

@@ -1,3 +1,4 @@
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -86,6 +87,7 @@ void camera_section() {
                           perspective: the view spans at every depth what it spans at the target, so
                           --distance sets the scale; the tone rules read the same (§2.3's distance is
                           the scale on screen). A scene camera's "projection": "orthographic"
+  --perspective           perspective, for a scene file whose camera is orthographic
   --ink COLOUR, --paper COLOUR
                           the colours of the stipples and lines, and of the paper: #rrggbb (#rgb)
                           or R,G,B each in 0..1 (default #000000 on #ffffff); a scene file's
@@ -131,9 +133,9 @@ void vector_section() {
   With several frames, -o (and --mask) must hold a frame number, %%d or %%0Nd: -o frames/%%04d.png
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
   progress bar shows on a terminal; the same command always writes the same files (but a PDF's creation
-  date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch,
-  --distance, --light, --ink and --paper override the scene's camera, light and colours (an object's
-  own "ink" stays its own).
+  date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch, --distance,
+  --orthographic or --perspective, --light, --ink and --paper override the scene's camera, light and
+  colours (an object's own "ink" stays its own; the projection asked draws a camera_path's frames too).
 
 )");
 }
@@ -243,7 +245,8 @@ when read; a damaged entry is reported and regenerated)
 }
 
 void tone_section() {
-    std::printf(R"(Tone options (and the stipple options; without MODEL the default scene's model):
+    std::printf(R"(Tone options (and the stipple options but --extrinsic and --no-extrinsic, which tone turns on and off
+itself; without MODEL the default scene's model):
   --distances 1,2,4,8,16  camera distances, multiples of the framing distance
   --views 30:10,...       YAW:PITCH pairs in degrees (default 30:10), one table row each
   --frames N              average each view over N frames at yaws spread over --arc DEG (default 1;
@@ -270,8 +273,9 @@ void tone_section() {
 }
 
 void parity_section() {
-    std::printf(R"(Parity options (and the stipple options; without MODEL the default scene's model; exit status 1 when
-the drawn counts differ by more than 0.1%% or the mean ink by more than 1%% in any view):
+    std::printf(R"(Parity options (and the stipple options but --density-path, which --paths replaces; without MODEL the
+default scene's model; exit status 1 when the drawn counts differ by more than 0.1%% or the mean ink by
+more than 1%% in any view):
   --devices I,J           the two devices (default 0,1; stipple render --list-devices shows them;
                           0,0 compares a device with itself)
   --paths splat,vertex    the density paths to compare (default splat,vertex)
@@ -316,7 +320,7 @@ void environment_section() {
   STIPPLE_SHARED_MODELS   where bench finds the scans (default: the source folder's ../shared/models)
   STIPPLE_CACHE_DIR       bench's derived models go to $STIPPLE_CACHE_DIR/bench-models (default:
                           the build folder's bench-models); the stipple cache is
-                          $STIPPLE_CACHE_DIR/stipples (see --cache-dir)
+                          $STIPPLE_CACHE_DIR/stipples (render, view and info: see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
   STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory: how a
@@ -340,7 +344,7 @@ naming the file or option and the problem), 2 on an unknown command or Vulkan va
 struct CommandHelp {
     const char* name;
     const char* entry;  // its lines of the command list
-    void (*sections[9])();  // in order, then nullptr
+    std::array<void (*)(), 8> sections;  // in order; the unused ones null
 };
 
 constexpr CommandHelp kCommands[] = {
@@ -348,41 +352,41 @@ constexpr CommandHelp kCommands[] = {
      R"(  stipple render [MODEL | SCENE.json] [-o OUT.png] [options]
                                   render one frame (or a numbered frame sequence) offscreen to PNG
 )",
-     {&model_section, &render_section, &camera_section, &vector_section, &scene_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+     {&model_section, &render_section, &camera_section, &vector_section, &scene_section, &stipple_section, &cache_section, &environment_section}},
     {"view",
      R"(  stipple view [SCENE.json | MODEL ...] [options]
                                   open a window: turn, move and tune the drawing interactively
 )",
-     {&model_section, &view_section, &camera_section, &scene_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+     {&model_section, &view_section, &camera_section, &scene_section, &stipple_section, &cache_section, &environment_section}},
     {"info",
      R"(  stipple info MODEL [--json] [options]
                                   load a model, generate its stipples, print figures
 )",
-     {&model_section, &info_section, &stipple_section, &cache_section, &environment_section, nullptr}},
+     {&model_section, &info_section, &stipple_section, &cache_section, &environment_section}},
     {"bench",
      R"(  stipple bench [--quick] [options]
                                   the paper's Table 1 on this machine: results.md, .json, chart.svg
 )",
-     {&bench_section, &environment_section, nullptr}},
+     {&bench_section, &environment_section}},
     {"tone",
      R"(  stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
                                   inside its footprint per distance, extrinsic enhancement on and off
 )",
-     {&model_section, &tone_section, &stipple_section, &environment_section, nullptr}},
+     {&model_section, &tone_section, &stipple_section, &environment_section}},
     {"parity",
      R"(  stipple parity [MODEL] [options]
                                   do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
 )",
-     {&model_section, &parity_section, &stipple_section, &environment_section, nullptr}},
+     {&model_section, &parity_section, &stipple_section, &environment_section}},
     {"params",
      R"(  stipple params [--markdown]     list the per-object parameters: options, ranges, defaults (with
                                   --markdown the README's table, with each one's scene key)
 )",
-     {nullptr}},
+     {}},
     {"cache",
      R"(  stipple cache --list | --clear  what the stipple cache holds, or empty it
 )",
-     {&cache_section, &environment_section, nullptr}},
+     {&cache_section, &environment_section}},
 };
 
 void command_list() {
@@ -420,7 +424,8 @@ bool print_command_usage(const std::string& name) {
         std::printf("Usage:\n");
         std::fputs(command.entry, stdout);
         std::printf("\n");
-        for (void (*const* section)() = command.sections; *section; ++section) (*section)();
+        for (void (*section)() : command.sections)
+            if (section) section();
         exit_section(true);
         return true;
     }

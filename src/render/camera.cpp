@@ -16,8 +16,11 @@ float framing_distance(const Sphere& sphere, float aspect, float fov_y_deg, bool
     return std::max(sphere.radius, 1e-30f) / (orthographic ? std::tan(half) : std::sin(half));
 }
 
-OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg) {
+OrbitCamera frame_sphere(const Sphere& sphere, float aspect, float distance_multiple, float yaw_deg, float pitch_deg,
+                         float fov_y_deg, bool orthographic) {
     OrbitCamera camera;
+    camera.fov_y_deg = fov_y_deg;
+    camera.orthographic = orthographic;
     camera.target = sphere.center;
     camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg, camera.orthographic) * distance_multiple;
     camera.yaw_deg = yaw_deg;
@@ -32,10 +35,10 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     CameraMatrices m;
     m.orthographic = camera.orthographic;
     float radius = std::max(scene.radius, 1e-30f) * 1.02f;
-    // An orthographic eye stands outside the scene whatever the zoom (its distance sets the span, not the
-    // place): nothing of the scene then lies before the near plane.
+    // An orthographic eye stands just outside the scene whatever the zoom (its distance sets the span, not the
+    // place): nothing of the scene lies before the near plane, and depth keeps its precision at any zoom.
     const float eye_distance =
-        camera.orthographic ? std::max(camera.distance, glm::length(scene.center - camera.target) + 2.0f * radius) : camera.distance;
+        camera.orthographic ? glm::length(scene.center - camera.target) + 2.0f * radius : camera.distance;
     m.eye = camera.target + offset * eye_distance;
     glm::vec3 up = std::abs(std::cos(pitch)) < 1e-4f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
     m.view = glm::lookAt(m.eye, camera.target, up);
@@ -49,8 +52,8 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     } else {
         m.proj = glm::perspective(glm::radians(camera.fov_y_deg), aspect, m.near_plane, m.far_plane);
     }
-    if (camera.screen_shift_x != 0.0f)  // clip x + shift * w: device x + shift
-        m.proj = glm::translate(glm::mat4(1.0f), glm::vec3(camera.screen_shift_x, 0.0f, 0.0f)) * m.proj;
+    if (camera.lens_shift != 0.0f)  // clip x + shift * w: device x + shift (device units: 2 / aspect a height)
+        m.proj = glm::translate(glm::mat4(1.0f), glm::vec3(camera.lens_shift * 2.0f / aspect, 0.0f, 0.0f)) * m.proj;
     return m;
 }
 

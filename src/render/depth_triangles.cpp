@@ -28,7 +28,7 @@ float mean_front_triangle_px(const ObjectGpu& object, const gpu::ObjectUniforms&
     if (g.triangle_count == 0 || depth <= uniforms.intrinsic.y) return 0.0f;  // the eye within its sphere
     // Pixels per world unit at the centre's depth, in the image's own pixels (a tile's projection
     // scales back up to the full image, as FrameUniforms::projection does).
-    const float pixels_per_unit = view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (view.camera.orthographic ? 1.0f : depth);
+    const float pixels_per_unit = view.camera.proj[1][1] * 0.5f * float(view.extent.height) / scaling_depth(view.camera, depth);
     const float world_area = g.surface_area * uniforms.extrinsic.w;
     return 0.5f * world_area * pixels_per_unit * pixels_per_unit / float(g.triangle_count);
 }

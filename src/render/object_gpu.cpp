@@ -419,8 +419,7 @@ LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, fl
     glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
     // Not nearer than a ten-thousandth of the radius (the eye at the centre): a fixed 1e-6 was farther than the
     // whole camera distance of a model 1e-8 units across, and thinned its lines to half.
-    float distance = std::max(-center_view.z, std::max(radius_world * 1e-4f, 1e-30f));
-    if (view.camera.orthographic) distance = 1.0f;  // the projection's scale holds at every depth
+    float distance = scaling_depth(view.camera, std::max(-center_view.z, std::max(radius_world * 1e-4f, 1e-30f)));
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
     float projected_radius =
         radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);

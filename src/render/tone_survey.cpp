@@ -294,10 +294,8 @@ void add(RegimeTally& to, const RegimeTally& from) {
 FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, float fov_y_deg, float distance, float yaw,
                       float pitch, glm::vec3 light, bool orthographic) {
     const float full_aspect = float(full.width) / float(full.height);
-    OrbitCamera camera = frame_sphere(bounds, full_aspect, distance, yaw, pitch);
-    camera.fov_y_deg = fov_y_deg;
-    camera.orthographic = orthographic;  // its span narrows with the field of view as the perspective's does
-    camera.distance = framing_distance(bounds, full_aspect, fov_y_deg, orthographic) * distance;
+    // In parallel projection the span narrows with the field of view below as the perspective's does.
+    OrbitCamera camera = frame_sphere(bounds, full_aspect, distance, yaw, pitch, fov_y_deg, orthographic);
     const float half = std::atan(std::tan(0.5f * glm::radians(fov_y_deg)) * float(crop.height) / float(full.height));
     camera.fov_y_deg = glm::degrees(2.0f * half);
     FrameView view;

@@ -64,7 +64,8 @@ struct SceneCamera {
     float yaw_deg = 0.0f;
     float pitch_deg = 0.0f;
     float distance = 1.0f;                    // multiple of the framing distance
-    std::optional<float> world_distance;      // explicit eye-to-target distance (replaces `distance`)
+    std::optional<float> world_distance;      // explicit eye-to-target distance (replaces `distance`); in
+                                              // parallel projection the one whose span the view keeps
     std::optional<glm::vec3> target;          // default: the centre of the scene's bounds
     float fov_y_deg = 30.0f;
     bool orthographic = false;                // "projection": "orthographic" (OrbitCamera::orthographic)

@@ -28,10 +28,8 @@ inline FrameView framed_view(const Sphere& sphere, VkExtent2D extent, float dist
     float aspect = float(extent.width) / float(extent.height);
     FrameView view;
     view.extent = extent;
-    OrbitCamera camera = frame_sphere(sphere, aspect, distance, yaw, pitch);
-    camera.orthographic = orthographic;
-    camera.distance = framing_distance(sphere, aspect, camera.fov_y_deg, orthographic) * distance;
-    view.camera = camera_matrices(camera, aspect, sphere);
+    view.camera = camera_matrices(frame_sphere(sphere, aspect, distance, yaw, pitch, OrbitCamera{}.fov_y_deg, orthographic),
+                                  aspect, sphere);
     return view;
 }
 
