@@ -91,7 +91,9 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
     ObjectParams& p = object.params;
     ImGui::PushID(int(index));
     std::string label = std::to_string(index) + ": " + name;
-    if (ImGui::CollapsingHeader(label.c_str(), index == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+    const bool open = ImGui::CollapsingHeader(label.c_str(), index == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    hover_help(label);  // a long file name is cut at the panel's edge
+    if (open) {
         const char* section = nullptr;
         for (const ParamSpec& spec : param_table()) {
             if (spec.widget == ParamWidget::Hidden) continue;

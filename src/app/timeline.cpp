@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "anim/pose.hpp"
+#include "app/param_widgets.hpp"
 #include "scene/scene_content.hpp"
 
 namespace stipple::app {
@@ -93,7 +94,9 @@ glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, c
             AnimationChoice& choice = scene.objects[i].animation;
             const size_t current = size_t(std::max(resolve_animation(objects[i], choice), 0));
             const std::string label = std::to_string(i) + ": " + names.at(i);
-            if (ImGui::BeginCombo(label.c_str(), animation_label(model, current).c_str())) {
+            const bool choosing = ImGui::BeginCombo(label.c_str(), animation_label(model, current).c_str());
+            if (!choosing) hover_help(label);  // a long file name is cut at the window's edge
+            if (choosing) {
                 for (size_t a = 0; a < model.animations.size(); ++a) {
                     const bool selected = a == current;
                     if (ImGui::Selectable(animation_label(model, a).c_str(), selected)) {
