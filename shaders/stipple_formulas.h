@@ -88,7 +88,6 @@ STIPPLE_FN float silhouette_line_width(float user_width, float projected_radius_
     return clamp(user_width * projected_radius_px / kLineReferenceRadiusPx, 1.0f, user_width);
 }
 
-
 // Which lines an edge of the mesh carries this frame, from whether the polygons on either side face
 // away (a border edge has no second polygon: `has_second` false) and the cosine of its dihedral angle.
 // Raskar-Cohen (§3.1) draws the back faces' edges and lets the front faces' depth keep the silhouette;

@@ -12,12 +12,14 @@
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     const auto asks_help = [](const std::string& a) { return a == "--help" || a == "-h" || a == "help"; };
+    const auto unknown_command = [](const std::string& command) {
+        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
+        return 2;
+    };
     if (args.empty() || asks_help(args[0])) {
         // `stipple help view` (or --help view, -h view), as `stipple view --help`; `help help` is everything.
         if (args.size() >= 2 && !asks_help(args[1])) {
-            if (stipple::cli::print_command_usage(args[1])) return 0;
-            std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", args[1].c_str());
-            return 2;
+            return stipple::cli::print_command_usage(args[1]) ? 0 : unknown_command(args[1]);
         }
         stipple::cli::print_usage();
         return args.empty() ? 1 : 0;
@@ -26,9 +28,7 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
     // `stipple render --help`, or `stipple info MODEL --json --help`: what that command takes.
     if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
-        if (stipple::cli::print_command_usage(command)) return 0;
-        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
-        return 2;
+        return stipple::cli::print_command_usage(command) ? 0 : unknown_command(command);
     }
     try {
         stipple::worker_count();  // a bad STIPPLE_THREADS fails here, not in whatever thread first asks
@@ -40,8 +40,7 @@ int main(int argc, char** argv) {
         if (command == "cache") return stipple::cli::run_cache(args);
         if (command == "tone") return stipple::cli::run_tone(args);
         if (command == "parity") return stipple::cli::run_parity(args);
-        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
-        return 2;
+        return unknown_command(command);
     } catch (const stipple::Error& e) {
         std::fprintf(stderr, "stipple: %s\n", e.what());
         return 1;

@@ -16,17 +16,16 @@ namespace {
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
-
-// The figures at the top keep one layout whatever the frame does, so the controls below never move under the
-// mouse: the GPU's passes (more of them with lines or the toon shade on, fewer on another path) are listed at
-// the panel's foot, and the background work's progress bar has its row whether or not work runs (a walkthrough's
-// click aimed at the toon box landed on a label when turning lines on added two rows above it).
 double total_gpu_ms(const FrameStats& stats) {
     double total = 0.0;
     for (const auto& pass : stats.gpu_ms) total += pass.second;
     return total;
 }
 
+// The figures at the top keep one layout whatever the frame does, so the controls below never move under the
+// mouse: the GPU's passes (more of them with lines or the toon shade on, fewer on another path) are listed at
+// the panel's foot, and the background work's progress bar has its row whether or not work runs (a walkthrough's
+// click aimed at the toon box landed on a label when turning lines on added two rows above it).
 void figures_section(const PanelFigures& f, PanelRequests& requests) {
     if (f.stats.gpu_ms.empty())
         ImGui::Text("%.1f fps   CPU %.2f ms/frame", f.fps, f.cpu_frame_ms);
@@ -115,7 +114,7 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
         bool own_ink = p.ink.has_value();
         if (ImGui::Checkbox("own ink", &own_ink)) p.ink = own_ink ? std::optional<glm::vec3>(scene_ink) : std::nullopt;
         hover_help("Draw this object's stipples, lines and toon shade in an ink of its own (a layer of that colour in "
-             "vector output); off, the scene's ink.");
+                   "vector output); off, the scene's ink.");
         if (p.ink) {
             ImGui::SameLine();
             ImGui::ColorEdit3("object ink", &p.ink->x);

@@ -11,6 +11,7 @@
 #include "export/text_format.hpp"
 #include "app/viewer_session.hpp"
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "gpu/vk_check.hpp"
 #include "params/param_table.hpp"
 #include "render/offscreen.hpp"
@@ -160,7 +161,8 @@ void Viewer::save_scene() {
         const size_t clamped = live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed());
         message("scene saved: " + options_.scene_path);
         if (clamped > 0)
-            message(std::to_string(clamped) + " object(s) play faster than a scene file's speed allows (1000): saved at 1000", true);
+            message(printf_string("%zu object(s) play faster than a scene file's speed allows (%g): saved at %g", clamped,
+                                  kMaxAnimationSpeed, kMaxAnimationSpeed), true);
         // render follows a camera_path over every other camera: say where the view just saved goes.
         if (!live_.scene().camera_path.empty())
             message("its camera_path is kept, and render draws the path's frames; the view is saved as its camera, "

@@ -109,9 +109,10 @@ void Viewer::frame() {
     if (acquired == VK_TIMEOUT || acquired == VK_NOT_READY) return;
     if (acquired == VK_SUBOPTIMAL_KHR) recreate_ = true;  // the image is ours and signalled: draw it, then recreate
 
-    if (!panel_visible_) overlay_->skip_frame();
-    if (!panel_visible_) panel_frames_until_open_view_ = 0;  // hidden from the start: the scene's view stands
-    if (panel_visible_) {
+    if (!panel_visible_) {
+        overlay_->skip_frame();
+        panel_frames_until_open_view_ = 0;  // hidden from the start: the scene's view stands
+    } else {
         overlay_->new_frame();
         figures_.device = context_.device_name;
         figures_.extent = swapchain_.extent();
