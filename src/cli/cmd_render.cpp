@@ -15,6 +15,7 @@
 #include "cli/cache_options.hpp"
 #include "app/frame_export.hpp"
 #include "cli/commands.hpp"
+#include "cli/render_request.hpp"
 #include "cli/vector_options.hpp"
 #include "export/plot_file.hpp"
 #include "export/text_format.hpp"
@@ -59,13 +60,6 @@ void reject_object_options_with_scene(const Args& args, const std::string& scene
     if (!name.empty()) fail(name + " cannot be combined with a scene file (" + scene + "): set it per object in the file");
 }
 
-// The same file however it is named (relative, absolute, through a link).
-bool same_file(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    return std::filesystem::weakly_canonical(std::filesystem::absolute(a), ec) ==
-           std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec);
-}
-
 // Whether every pixel of the image is the same colour. A caller counts it bare paper (no dot, no line, no toon grey)
 // where the image shows the paper somewhere: a frame's pixels no surface covers, a print's margins; a tiled image
 // uniform all over is taken as paper too (one solid colour over every pixel of a large image is not a drawing).
@@ -76,21 +70,6 @@ bool is_blank(const Image& image) {
             return false;
     return true;
 }
-
-// A single frame reads -o as a pattern where it is one (%% a literal %, %d the frame number) and keeps it
-// as written where it is not (50%.png).
-std::string output_path(const std::string& pattern, size_t index, bool sequence) {
-    if (sequence) return frame_path(pattern, index);
-    try {
-        return frame_path(pattern, index);
-    } catch (const Error&) {  // not a pattern (50%.png): as written, but for %%, a literal % everywhere
-        return unescape_percent(pattern);
-    }
-}
-
-// A path as written, made absolute and normal: two patterns that name one file for different frames
-// (g%d.png and g1%d.png: frame 10 and mask 0) compare equal.
-std::string normal_path(const std::string& path) { return std::filesystem::absolute(path).lexically_normal().string(); }
 
 }  // namespace
 
@@ -166,118 +145,25 @@ int run_render(const std::vector<std::string>& argv) {
         return 0;
     }
     args.expect_at_most_positionals(1, "render takes at most one MODEL or SCENE.json");
-    if (args.has("-o") && args.has("--output"))
-        fail("-o " + args.get("-o", "") + " and --output " + args.get("--output", "") + " name the output twice: give one");
-    const std::string output = args.get("--output", args.get("-o", "stipple.png"));
-    // -o x.svg, x.pdf or x.csv: the frame's visible stipples and lines as vector output.
-    const bool vector = plot::is_plot_path(output);
-    // Named by its extension: a PNG written to x.jpg would be a file its name misdescribes.
-    if (!vector && !plot::is_png_path(output))
-        fail("-o " + output + ": the output is named by its extension: .png, or .svg, .pdf or .csv for vector output");
-    if (args.has("--mask")) {
-        const std::string mask = args.get("--mask", "");
-        if (!plot::is_png_path(mask)) fail("--mask " + mask + ": the coverage mask is a PNG (.png)");
-        // The same file however it is named (relative, absolute, through a link), and for frame sequences
-        // however the number is written (%d and %01d); the last frame is checked once the frames are known.
-        if (same_file(output_path(mask, 0, false), output_path(output, 0, false)))
-            fail("--mask " + mask + " is the image's own path (-o): give it another");
-    }
-    plot::ExportOptions vector_options = read_vector_options(args);
-    if (vector) plot::check_page_for_format(output, vector_options.page.width_mm, vector_options.page.height_mm);
-    // -o x.png with --dpi and --page: a print-resolution page, drawn in tiles. Vector output first: "--dpi needs
-    // --page" sent the user to add a page that was then refused for the format.
-    if (vector && args.has("--dpi")) fail("--dpi is for PNG output; vector output (" + output + ") has no resolution");
-    if (vector && args.has("--tile")) fail("--tile is for print-resolution PNG output; vector output (" + output + ") has no tiles");
-    std::optional<app::PrintOptions> print = read_print_options(args);
-    if (print) app::print_layout(*print);  // its page checks (size, margins, dpi) before any drawing
-    if (args.flag("--fill-paper") && plot::is_csv_path(output))
-        fail("--fill-paper paints the page of SVG or PDF output; a CSV (" + output + ") has no page");
-    // The option and what it sets, in the refusals below.
-    const auto what_it_sets = [](const std::string& name) {
-        return name + (name == "--pen-width" ? " sets the pen of SVG or PDF output's lines and dots" : " sets how SVG or PDF output draws its dots");
-    };
-    for (const char* name : {"--dot-style", "--pen-width"})
-        if (args.has(name) && plot::is_csv_path(output))
-            fail(what_it_sets(name) + "; a CSV (" + output + ") lists each dot's centre and ink radius");
-    if (args.flag("--show-travel") && !plot::is_svg_path(output))
-        fail("--show-travel draws the pen-up moves into an SVG: give -o x.svg (not " + output + ")");
-    if (!vector && !print && args.has("--fit"))
-        fail("--fit is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
-    if (!vector && !print) {
-        for (const char* name : {"--page", "--margin"})
-            if (args.has(name)) fail(std::string(name) + " is for vector output (-o x.svg, x.pdf or x.csv) or print images (--dpi)");
-        for (const char* name : {"--pen-width", "--dot-style"})
-            if (args.has(name)) fail(what_it_sets(name) + ": give -o x.svg or x.pdf");
-        if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a PNG has its paper");
-    }
-    if (print) {
-        // A print image draws the stipples and lines as the screen does, at the page's resolution.
-        for (const char* name : {"--pen-width", "--dot-style"})
-            if (args.has(name)) fail(what_it_sets(name) + "; a print image (--dpi) draws them as the screen does");
-        if (args.flag("--fill-paper")) fail("--fill-paper paints the page of vector output (-o x.svg or x.pdf); a print image has its paper");
-    }
-    if (print && (args.has("--repeat") || args.has("--mask")))
-        fail("--dpi renders a print image; --repeat and --mask are for screen images");
-    long long width = args.integer("--width", 1280), height = args.integer("--height", 1024);
-    if (width < 1 || width > 16384 || height < 1 || height > 16384)
-        fail("--width/--height must be between 1 and 16384 (got " + std::to_string(width) + "x" +
-             std::to_string(height) + ")");
-    // A print enlarges a screen frame of --height rows: --width gives it the shape of the screen image it should
-    // look like (the same composition as -o x.png or x.svg at that size); without it the frame takes the page's.
-    if (print && args.has("--width")) print->screen_width = uint32_t(width);
-    const bool print_of_page_shape = print && !print->screen_width;
-    long long device = device_index(args);
-    long long repeat = args.integer("--repeat", 0);
-    if (repeat < 0 || repeat > 100000) fail("--repeat = " + std::to_string(repeat) + " must be in 0..100000");
-    long long queued = args.integer("--queued", 0);  // 0: by the device (OffscreenTarget::default_queued_frames)
-    if (args.has("--queued") && (queued < 1 || queued > 1000)) fail("--queued = " + std::to_string(queued) + " must be in 1..1000");
-    if (args.has("--queued") && repeat == 0) fail("--queued queues the frames --repeat times: give --repeat N");
-    const std::string depth_cull_arg = args.get("--depth-cull", "auto");
-    const std::optional<DepthCull> depth_cull = parse_depth_cull(depth_cull_arg);
-    if (!depth_cull) fail("--depth-cull = " + depth_cull_arg + " must be auto, on or off");
-    const std::string depth_raster_arg = args.get("--depth-raster", "auto");
-    const std::optional<DepthRaster> depth_raster = parse_depth_raster(depth_raster_arg);
-    if (!depth_raster) fail("--depth-raster = " + depth_raster_arg + " must be auto, compute or fixed");
-    long long frames = args.integer("--frames", 0);
-    if (frames < 0 || frames > 100000 || (args.has("--frames") && frames < 1))
-        fail("--frames = " + std::to_string(frames) + " must be in 1..100000");
-    std::optional<float> orbit;
-    if (args.has("--orbit")) {
-        double deg = args.number("--orbit", 0.0);
-        if (std::abs(deg) > 36000.0) fail("--orbit = " + std::to_string(deg) + " must be in -36000..36000 degrees");
-        if (!args.has("--frames")) fail("--orbit needs --frames N (the number of frames of the orbit)");
-        orbit = float(deg);
-    }
+    const RenderRequest request = read_render_request(args);
+    const std::string& output = request.output;
+    const bool vector = request.vector;
+    plot::ExportOptions vector_options = request.vector_options;
+    std::optional<app::PrintOptions> print = request.print;
+    const long long width = request.width, height = request.height;
+    const bool print_of_page_shape = request.print_of_page_shape;
+    const long long frames = request.frames, repeat = request.repeat;
+    long long queued = request.queued;
+    const std::optional<float> orbit = request.orbit;
     Scene scene = scene_from_command_line(args, "render");
     // The projection, not the placement: a camera_path's frames are drawn in the one asked too (the viewer shows
     // the scene's camera and keeps the path as it was for Ctrl+S).
     if (args.flag("--orthographic") || args.flag("--perspective"))
         for (SceneCamera& key : scene.camera_path) key.orthographic = scene.camera.orthographic;
     const std::string what = scene.source.empty() ? scene.model_path(0) : scene.source;
-    // D_max 0 everywhere with no line and no toon asked draws bare paper, whatever the output: said once here.
-    const bool draws_nothing = std::all_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) {
-        const ObjectParams& p = o.params;
-        return p.generation.dmax == 0.0f && !p.silhouette_lines && !p.contours && !p.borders && !p.creases && !p.toon;
-    });
-    if (draws_nothing)
-        std::fprintf(stderr, "stipple: warning: %s: D_max is 0 (no stipples) and no line or toon is asked: nothing is drawn\n",
-                     what.c_str());
-    // A scene's paper and ink of one colour draw a plain image without a word otherwise (vector output paints no
-    // paper unless asked, and a CSV has no colour). Each object draws in its own ink where it has one.
-    std::vector<glm::vec3> inks;
-    for (const SceneObject& o : scene.objects) inks.push_back(o.params.ink.value_or(scene.ink));
-    const bool one_colour = std::all_of(inks.begin(), inks.end(), [&](glm::vec3 ink) {
-        return glm::all(glm::lessThan(glm::abs(scene.paper - ink), glm::vec3(0.02f)));
-    });
-    if ((!vector || vector_options.fill_paper) && one_colour)
-        std::fprintf(stderr, "stipple: warning: %s: the paper and the ink are the same colour: the drawing will not show\n",
-                     what.c_str());
-    // Light ink for dark paper, on a page left unpainted (vector output without --fill-paper): white paper shows.
-    const bool light_ink = std::any_of(inks.begin(), inks.end(), [&](glm::vec3 ink) { return luminance(ink) > luminance(scene.paper) + 0.3f; });
-    if (vector && !plot::is_csv_path(output) && !vector_options.fill_paper && light_ink)
-        std::fprintf(stderr, "stipple: warning: %s: the ink is lighter than the paper, and %s leaves the page unpainted "
-                             "(the sheet it is printed on shows): --fill-paper paints it\n",
-                     what.c_str(), output.c_str());
+    const SceneInks scene_inks = warn_about_scene_inks(scene, request, what);
+    const bool draws_nothing = scene_inks.draws_nothing, one_colour = scene_inks.one_colour;
+    const std::vector<glm::vec3>& inks = scene_inks.inks;
     // A scene's camera_path places every frame's camera: options that set the scene's camera, or turn it,
     // would be silently ignored.
     if (!scene.camera_path.empty()) {
@@ -314,39 +200,18 @@ int run_render(const std::vector<std::string>& argv) {
         vector_options.fit = plot::Fit::Frame;
         if (print) print->fit = plot::Fit::Frame;
     }
-    if (sequence && !has_frame_number(output))
-        fail("-o " + output + " has no frame number for " + std::to_string(cameras.size()) +
-             " frames: use a pattern such as frames/%04d.png");
-    if (sequence && args.has("--mask")) {
-        const std::string mask = args.get("--mask", "");
-        bool numbered = false;
-        try {
-            numbered = has_frame_number(mask);
-        } catch (const Error& e) {
-            fail(std::string("--mask: ") + e.what());  // named as --mask's pattern, not -o's
-        }
-        if (!numbered) fail("--mask " + mask + " has no frame number: use a pattern such as masks/%04d.png");
-        // No mask frame may name an image frame's file (g1%d.png's mask 0 is g%d.png's frame 10): compared as
-        // written, made absolute and normal, and the last frames through links too.
-        std::set<std::string> images;
-        for (size_t i = 0; i < cameras.size(); ++i) images.insert(normal_path(output_path(output, i, true)));
-        for (size_t i = 0; i < cameras.size(); ++i)
-            if (images.count(normal_path(output_path(mask, i, true))) ||
-                (i + 1 == cameras.size() && same_file(output_path(mask, i, true), output_path(output, i, true))))
-                fail("--mask " + mask + " names the file of an image of -o " + output + " for frame " + std::to_string(i) +
-                     " (" + output_path(mask, i, true) + "): give it another");
-    }
+    if (sequence) check_sequence_patterns(args, output, cameras.size());
     if (sequence && repeat > 0) fail("--repeat times one frame; it cannot be combined with a frame sequence");
 
     gpu::ContextOptions context_options;
-    context_options.device_index = int(device);
+    context_options.device_index = int(request.device);
     context_options.verbose = args.flag("--verbose");
     gpu::Context context(context_options);
     VkExtent2D extent{uint32_t(width), uint32_t(height)};
     RendererOptions renderer_options;
     renderer_options.count_drawn = args.flag("--stats");
-    renderer_options.depth_cull = *depth_cull;
-    renderer_options.depth_raster = *depth_raster;
+    renderer_options.depth_cull = request.depth_cull;
+    renderer_options.depth_raster = request.depth_raster;
     // Larger than one render target holds on this device (the splat's pixel words are one storage buffer):
     // the image is drawn in tiles, as a print is.
     const bool tiled = !print && !fits_one_target(context, extent);
@@ -516,11 +381,11 @@ int run_render(const std::vector<std::string>& argv) {
         if (print)
             std::printf("depth pass:         per tile of the print\n");
         else if (renderer.depth_words())
-            std::printf("depth pass:         by compute (--depth-raster %s)\n", depth_raster_name(*depth_raster));
+            std::printf("depth pass:         by compute (--depth-raster %s)\n", depth_raster_name(request.depth_raster));
         else
             std::printf("depth pass:         %llu triangles (%.1f%%; --depth-cull %s)%s\n", (unsigned long long)depth_triangles,
                         stats.triangles ? 100.0 * double(depth_triangles) / double(stats.triangles) : 0.0,
-                        depth_cull_name(*depth_cull), fixed_depth_reason(*depth_raster, context, scene).c_str());
+                        depth_cull_name(request.depth_cull), fixed_depth_reason(request.depth_raster, context, scene).c_str());
         std::printf("candidate stipples: %llu\n", (unsigned long long)stats.candidate_stipples);
         // Vector output's plot line counts the dots left after hidden-stipple removal: say which this is.
         std::printf("drawn stipples:     %lld%s\n", (long long)stats.drawn_stipples,
