@@ -32,7 +32,6 @@ layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms o
 layout(set = 0, binding = kBindingTriangleDraw, std430) buffer TriangleDraws { TriangleDraw draws[]; };
 // A polygon's constants as one texel: a software GPU gathers it at once, where it loads a storage
 // buffer's members one by one, lane by lane.
-layout(set = 0, binding = kBindingTriangleInfoTexels) uniform usamplerBuffer info_texels;
 layout(set = 0, binding = kBindingFullAreas, std430) readonly buffer FullAreas { float full_areas[]; };
 layout(set = 0, binding = kBindingDrawnPolygons, std430) buffer DrawnList {
     DrawnPolygons drawn;
@@ -165,6 +164,13 @@ void gradient_main() {
         draws[t].density = draw.density;
     }
     vec2 bounds = polygon_density_bounds(draw.density, a, b, c, q);
+    // Large on screen by the cheap test, yet flat (below kGradientAreaStart): drawn as the density pass draws a
+    // flat polygon, its last stipple solid or absent.
+    if (bounds.x == bounds.y) {
+        float flat_density = solid_dots_density(draw.density, candidates, polygon_selection(triangle_info(t)), q.flags);
+        draws[t].density = flat_density;
+        bounds = vec2(flat_density);
+    }
     draws[t].least = bounds.x;
     draws[t].most = bounds.y;
     // With kListVaryingApart the work items of a polygon whose density does vary go to their own list; the
@@ -192,8 +198,7 @@ void main() {
         first = texelFetch(triangle_draw_texels, int(t)).y;
         candidates = float(polygon_candidates(t, first, object.flags));
     }
-    uvec4 raw = texelFetch(info_texels, int(in_range ? t : 0u));
-    TriangleInfo info = TriangleInfo(raw.x, raw.y, raw.z, uintBitsToFloat(raw.w));
+    TriangleInfo info = triangle_info(in_range ? t : 0u);
     PolygonView p = polygon_view(info, candidates, object);
     // Compiled only into the variants for objects with lines (kSpecFacingBits); uniform, so every
     // invocation of a subgroup takes part in its ballot.
@@ -217,6 +222,9 @@ void main() {
     // the gradient pass writes the bounds of that density over it, and lists its work items after them.
     bool large = !outside && may_carry_gradient(terms, p, q, density);
     list_gradient(large, t);
+    // Drawn flat: its last stipple solid or absent (solid_dots_density); a large polygon's are decided where
+    // each lies (its gradient pass, and the shaders that draw it).
+    if (!large) density = solid_dots_density(density, candidates, p.selection, flags);
     draws[t].density = large ? large_polygon_stored_density(terms, density) : density;
     draws[t].least = density;
     draws[t].most = density;

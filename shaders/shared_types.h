@@ -186,6 +186,7 @@ STIPPLE_CONST uint kFlagCreases = 2048u;       // object-space lines: dihedral a
 STIPPLE_CONST uint kFlagStretch = 4096u;       // animated: a polygon's due count follows its current area
 STIPPLE_CONST uint kFlagCullOutsideView = 16384u;  // polygons wholly outside the view draw nothing (clip_outside_bits)
 STIPPLE_CONST uint kFlagDepthOneSided = 8192u;  // the depth pass culls the faces facing away (depth_triangles.comp)
+STIPPLE_CONST uint kFlagSolidDots = 32768u;    // a polygon's last stipple solid or absent by its threshold (solid_dot_intensity)
 
 // One candidate stipple as the vertex stage reads it (vertex binding 0): 8 bytes. Its place is kept
 // relative to its polygon, so it lies on the surface exactly (no quantisation off the depth pass's

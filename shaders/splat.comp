@@ -286,9 +286,11 @@ void main() {
     bool varies = kVaryingDensity && draw.least != draw.most;
     vec3 corner_a = vec3(0.0), corner_b = vec3(0.0), corner_c = vec3(0.0);
     DensityParams q = density_params(frame, object);
+    float threshold = 0.0;  // the polygon's own (solid_dot_intensity)
     if (varies) {
         view_corners(t, object.model_view, corner_a, corner_b, corner_c);
         q.flags = object.flags[t >> 31u];  // object.flags.x, where lavapipe cannot fold it (uniform_branch.h)
+        threshold = polygon_selection(triangle_info(t));
     }
     for (uint k = whole_end; k < end; ++k) {
         float here = density;
@@ -297,7 +299,9 @@ void main() {
             here = stipple_density_here(density, corner_a + uv.x * (corner_b - corner_a) + uv.y * (corner_c - corner_a),
                                         corner_a, corner_b, corner_c, q);
         }
-        float fraction = stipple_intensity(here, float(k));
+        // A flat polygon's density carries its last stipple's intensity already (solid_dots_density); where
+        // the density changes across the polygon, each stipple's is decided where it lies, by its threshold.
+        float fraction = varies ? drawn_intensity(here, float(k), threshold, q.flags) : stipple_intensity(here, float(k));
         if (fraction <= 0.0f) continue;  // where it lies, the density does not reach it
         float side_here = sizes_vary ? splat_dot_side(point_size, here, float(candidates)) : side;
         bool lost;

@@ -78,6 +78,10 @@ void main() {
     uint candidates = kFlatOnly ? 0u : polygon_candidates(triangle, draw.first_stipple, object.flags);
     float here = kFlatOnly ? draw.density : density_where_it_lies(draw, triangle, index, barycentric, candidates);
     float intensity = kFlatOnly && draw.least != draw.most ? 0.0f : stipple_intensity(here, index);
+    // A flat polygon's density carries its last stipple's intensity already (solid_dots_density); where the
+    // density changes across the polygon, each stipple's is decided where it lies, by the polygon's threshold.
+    if (!kFlatOnly && draw.least != draw.most)
+        intensity = drawn_intensity(here, index, polygon_selection(triangle_info(triangle)), object.flags[triangle >> 31u]);
     if (!in_chunk) intensity = 0.0f;
     out_intensity = intensity;
     if (intensity <= 0.0f) {

@@ -5,10 +5,17 @@
 #define TRIANGLE_DRAWS_H
 
 layout(set = 0, binding = kBindingTriangleDrawTexels) uniform usamplerBuffer triangle_draw_texels;
+layout(set = 0, binding = kBindingTriangleInfoTexels) uniform usamplerBuffer info_texels;
 
 TriangleDraw triangle_draw(uint triangle) {
     uvec4 texel = texelFetch(triangle_draw_texels, int(triangle));
     return TriangleDraw(uintBitsToFloat(texel.x), texel.y, uintBitsToFloat(texel.z), uintBitsToFloat(texel.w));
+}
+
+// Its constants (TriangleInfo), one gather.
+TriangleInfo triangle_info(uint triangle) {
+    uvec4 raw = texelFetch(info_texels, int(triangle));
+    return TriangleInfo(raw.x, raw.y, raw.z, uintBitsToFloat(raw.w));
 }
 
 // Its candidates: from its first stipple to the next polygon's (object.flags.y polygons,

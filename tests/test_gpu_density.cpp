@@ -69,6 +69,7 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
         params.shading = camera % 4 != 1;
         params.intrinsic = camera % 4 != 2;
         params.extrinsic = camera % 4 != 3;
+        params.faint_dots = camera % 2 == 0;  // every other camera the last stipples solid or absent
         float distance = std::exp(std::log(0.6f) + uniform(rng) * std::log(60.0f / 0.6f));
         // One camera near for certain, where polygons large on screen hold enough stipples to carry a gradient:
         // these polygons hold 0-12 candidates whatever their size, and since 2026-12-05 one that cannot hold
@@ -101,14 +102,23 @@ TEST_F(DensityPaths, ComputePassMatchesTheCpuDefinition) {
             }
             if (cpu[t] > 0.0f) ++drawn;
             if (cpu_bounds[t].x != cpu_bounds[t].y) ++with_gradient;
+            // Errors relative to the density, floored at a twentieth of a stipple (a 5% grey dot): the GPU's
+            // transcendental functions differ from the C library's in the last bits. With solid dots a flat
+            // polygon's last stipple is a ramp of its density's fraction, 1 / band steep (solid_dot_intensity):
+            // there the error is relative to the density before it, scaled by that steepness.
+            double scale = std::max(double(std::abs(cpu[t])), 0.05);
+            if (!params.faint_dots && cpu_bounds[t].x == cpu_bounds[t].y && cpu[t] > 0.0f) {
+                const float unfolded = formulas::selected_density(terms, formulas::polygon_selection(object.polygons.cpu[t]));
+                const float fraction = unfolded - std::floor(unfolded);
+                const float band = std::min(formulas::kSolidDotBand, 2.0f * std::min(fraction, 1.0f - fraction));
+                if (band > 0.0f) scale = std::max(double(unfolded), 0.05) * std::max(1.0, 1.0 / double(band));
+            }
             // The bounds of a large polygon's density, relative to the density as the density is (floored alike).
             const double bounds_error = glm::length(glm::dvec2(gpu_bounds[t]) - glm::dvec2(cpu_bounds[t]));
-            max_gradient_relative = std::max(max_gradient_relative, bounds_error / std::max(double(std::abs(cpu[t])), 0.05));
-            // Relative to the density, floored at a twentieth of a stipple (a 5% grey dot): the GPU's
-            // transcendental functions differ from the C library's in the last bits.
+            max_gradient_relative = std::max(max_gradient_relative, bounds_error / scale);
             double absolute = std::abs(double(gpu[t]) - cpu[t]);
             max_absolute = std::max(max_absolute, absolute);
-            max_relative = std::max(max_relative, absolute / std::max(double(std::abs(cpu[t])), 0.05));
+            max_relative = std::max(max_relative, absolute / scale);
         }
     }
     std::printf("compared %zu densities: %zu drawn, %zu in the selection regime, max relative error %.3g, "
@@ -228,10 +238,12 @@ TEST_F(DensityPaths, AnObjectHoldsOnlyTheBuffersOfThePathsItDrawsWith) {
 // pixels darker than mid-grey.
 struct FiveStipples {
     float density;
+    float threshold;  // the polygon's selection value (solid_dot_intensity)
     std::vector<int> centre, dark;
 };
 
-FiveStipples draw_five_stipples(gpu::Context& context, float point_size, DensityPath path, float light_deg) {
+FiveStipples draw_five_stipples(gpu::Context& context, float point_size, DensityPath path, float light_deg,
+                                bool faint_dots = true) {
     Mesh mesh;
     mesh.positions = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
     mesh.indices = {0, 1, 2};
@@ -246,6 +258,7 @@ FiveStipples draw_five_stipples(gpu::Context& context, float point_size, Density
     params.intrinsic = false;
     params.point_size = point_size;
     params.density_path = path;
+    params.faint_dots = faint_dots;
     StippleRenderer renderer(context, kColorFormat, context.depth_format);
     renderer.add_object(mesh, stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(context, {256, 256});
@@ -255,6 +268,7 @@ FiveStipples draw_five_stipples(gpu::Context& context, float point_size, Density
 
     FiveStipples result;
     result.density = renderer.read_densities(0)[0];
+    result.threshold = formulas::polygon_selection(renderer.object(0).polygons.cpu[0]);
     glm::mat4 view_proj = view.camera.proj * view.camera.view;
     for (const glm::vec3& p : stipples.positions) {
         glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
@@ -295,6 +309,77 @@ TEST_F(DensityPaths, LastStippleCarriesTheFractionalDensity) {
                 EXPECT_NEAR(double(drawn.dark[2]) / double(drawn.dark[0]), 0.5, 0.2);
             }
         }
+}
+
+// Solid dots (the default): the same triangle's third stipple, whose fraction f the light sets, is absent below
+// its polygon's threshold u and solid above it (beyond half the band), on every path and for both kinds of dot;
+// within the band it fades. Density 5 (1 - cos angle) with every term but shading off.
+TEST_F(DensityPaths, SolidDotsAreWholeOrAbsentByThePolygonsThreshold) {
+    const float u = draw_five_stipples(*context, 2.0f, DensityPath::Splat, 60.0f, false).threshold;
+    std::printf("the triangle's threshold %.4f\n", u);
+    const float half_band = 0.5f * formulas::kSolidDotBand;
+    size_t checked = 0;
+    for (const float fraction : {u - 3.0f * half_band, u + 3.0f * half_band, u}) {
+        if (!(fraction > 0.01f && fraction < 0.99f)) continue;
+        const float light_deg = glm::degrees(std::acos(1.0f - (2.0f + fraction) / 5.0f));
+        for (const float point_size : {2.0f, 5.0f})
+            for (const DensityPath path : {DensityPath::Splat, DensityPath::Vertex, DensityPath::Cpu}) {
+                SCOPED_TRACE(std::string(density_path_name(path)) + ", " + std::to_string(point_size) + " px, f " +
+                             std::to_string(fraction));
+                const FiveStipples drawn = draw_five_stipples(*context, point_size, path, light_deg, false);
+                EXPECT_EQ(drawn.centre[0], 0);
+                EXPECT_EQ(drawn.centre[1], 0);
+                EXPECT_EQ(drawn.centre[3], 255);
+                // (The polygon, large on screen, decides each stipple where it lies: the density read back is
+                // its own, 2 + f, and the image shows the rule.)
+                EXPECT_NEAR(drawn.density, 2.0f + fraction, 1e-4f);
+                if (fraction < u - half_band) {
+                    EXPECT_EQ(drawn.centre[2], 255) << "below its threshold the last stipple is not drawn";
+                } else if (fraction > u + half_band) {
+                    EXPECT_EQ(drawn.centre[2], 0) << "above its threshold it is whole";
+                    EXPECT_NEAR(double(drawn.dark[2]) / double(drawn.dark[0]), 1.0, 0.25) << "a dot of full size";
+                } else if (point_size < 2.5f) {  // at the threshold, halfway through its fade
+                    EXPECT_NEAR(drawn.centre[2], 128, 3);
+                } else {
+                    EXPECT_NEAR(double(drawn.dark[2]) / double(drawn.dark[0]), 0.5, 0.2);
+                }
+                ++checked;
+            }
+    }
+    EXPECT_GE(checked, 12u) << "the threshold leaves room on one side at least";
+}
+
+// The look solid dots are for: a fine mesh framed, whose polygons hold about a stipple each, is drawn in black
+// dots (the paper's faint last dots make most of its ink grey), with the same mean ink.
+TEST_F(DensityPaths, SolidDotsDrawAFineMeshInBlackDotsWithTheSameInk) {
+    ObjectParams params;
+    const Prepared sphere = test::prepare(make_uv_sphere(120000), params);
+    double grey_share[2] = {0.0, 0.0}, ink[2] = {0.0, 0.0};
+    for (const bool faint : {false, true}) {
+        params.faint_dots = faint;
+        StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+        renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), params);
+        OffscreenTarget target(*context, {512, 512});
+        const RenderedFrame frame = target.render(renderer, test::framed_view({glm::vec3(0.0f), 1.0f}, target.extent(), 0.9f));
+        size_t black = 0, grey = 0;
+        double sum = 0.0;
+        size_t covered = 0;
+        for (size_t i = 0; i < frame.depth.size(); ++i) {
+            if (frame.depth[i] >= 1.0f) continue;
+            ++covered;
+            const int l = luminance(frame.color, int(i % 512), int(i / 512));
+            sum += (255.0 - l) / 255.0;
+            black += l == 0;
+            grey += l > 0 && l < 255;
+        }
+        grey_share[faint] = double(grey) / double(std::max<size_t>(black + grey, 1));
+        ink[faint] = sum / double(std::max<size_t>(covered, 1));
+    }
+    std::printf("grey share of the inked pixels: solid dots %.3f, faint dots %.3f; mean ink %.4f, %.4f\n", grey_share[0],
+                grey_share[1], ink[0], ink[1]);
+    EXPECT_LT(grey_share[0], 0.1);  // 0.039 measured
+    EXPECT_GT(grey_share[1], 0.25);  // 0.341
+    EXPECT_NEAR(ink[0] / ink[1], 1.0, 0.03);
 }
 
 TEST_F(DensityPaths, SmallFractionsOfRoundDotsAreSmallBlackDots) {

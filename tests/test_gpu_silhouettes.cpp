@@ -307,9 +307,11 @@ TEST_F(Silhouettes, ToonRampDarkensTheRimAndFadesItsStipples) {
     EXPECT_GT(band, 5.0 * centre);
 
     // The stipples' decreasing ramp: with the enhancements that cap or select off, each polygon's density
-    // with toon over its density without is exactly toon_stipple_fade(N.E).
+    // with toon over its density without is exactly toon_stipple_fade(N.E) (the densities as the paper's §2.1
+    // leaves them: solid dots would carry each last stipple's intensity instead).
     params.extrinsic = false;
     params.intrinsic = false;
+    params.faint_dots = true;
     StippleRenderer renderer(*context, kColorFormat, context->depth_format);
     renderer.add_object(sphere.mesh, sphere.stipples, glm::mat4(1.0f), params);
     OffscreenTarget target(*context, {1280, 1024});

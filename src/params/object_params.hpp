@@ -58,6 +58,9 @@ struct ObjectParams {
     bool intrinsic = true;          // §2.3 intrinsic depth enhancement
     float de = 2.0f;                // intrinsic rate
     float point_size = 1.5f;        // stipple diameter in pixels
+    // §2.1's last stipple at its fraction's intensity (grey dots where polygons hold about one stipple); off,
+    // solid or absent by the polygon's own threshold, the same ink on average (solid_dot_intensity).
+    bool faint_dots = false;
     DensityPath density_path = DensityPath::Splat;  // the fastest correct path on lavapipe (stipple bench)
     // Lines, each kind its own switch (§3.1 and beyond the paper).
     bool silhouette_lines = false;    // §3.1 Raskar-Cohen: back-face edges as wide lines (image space)

@@ -90,6 +90,12 @@ const ParamSpec kTable[] = {
      "dots enlarged close up beyond 2.5 are discs of their area too)", ParamType::Float, 1.0, 64.0, false, {},
      ParamEffect::Frame, ParamWidget::Slider, false, [](const P& p) { return double(p.point_size); },
      [](P& p, double v) { p.point_size = float(v); }},
+    {"faint_dots", "faint-dots", "faint last dots", kDrawing,
+     "a polygon's last stipple drawn at its fractional intensity, as the paper's §2.1 (grey dots where polygons "
+     "hold about a stipple each: a fine mesh framed, lit surfaces); off, it is solid or absent by a threshold of "
+     "the polygon's own (its selection value of §2.3), the same ink on average, fading only over a tenth of "
+     "a stipple's density", ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.faint_dots); }, [](P& p, double v) { p.faint_dots = v != 0.0; }},
     {"density_path", "density-path", "density path", kDrawing,
      "where the density is computed and what draws the stipples: vertex (compute pass, the vertex shader "
      "culls: the paper's vertex program), cpu (CPU densities, only survivors submitted), indirect (compute "

@@ -51,7 +51,11 @@ void compute_densities_cpu(std::span<const gpu::TriangleInfo> triangles, std::sp
             densities[t] = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, densities[t]), a, b,
                                                            c, params);
             bounds[t] = formulas::polygon_density_bounds(densities[t], a, b, c, params);
+            if (bounds[t].x != bounds[t].y) continue;  // each stipple decided where it lies (drawn_intensity)
         }
+        // Drawn flat: its last stipple solid or absent (solid_dots_density).
+        densities[t] = formulas::solid_dots_density(densities[t], candidates, view.selection, params.flags);
+        bounds[t] = glm::vec2(densities[t]);
     }
 }
 

@@ -392,6 +392,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     if (print || draws_round_points(p.point_size)) flags |= gpu::kFlagRoundPoints;
     if (p.toon) flags |= gpu::kFlagToonFade;
     if (p.two_sided) flags |= gpu::kFlagTwoSided;
+    if (!p.faint_dots) flags |= gpu::kFlagSolidDots;
     if (object.animation) flags |= gpu::kFlagStretch;
     if (!depth_holds_back_faces(object)) flags |= gpu::kFlagDepthOneSided;
     if (view.cull_outside_view) flags |= gpu::kFlagCullOutsideView;

@@ -210,6 +210,10 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             density = formulas::large_polygon_density(formulas::large_polygon_stored_density(terms, density), a, b, c, params);
             bounds = formulas::polygon_density_bounds(density, a, b, c, params);
         }
+        if (bounds.x == bounds.y) {  // drawn flat: its last stipple solid or absent (solid_dots_density)
+            density = formulas::solid_dots_density(density, float(candidates), view.selection, params.flags);
+            bounds = glm::vec2(density);
+        }
         // Where the density changes across the polygon: at each stipple whose index it decides, and at every
         // stipple where the candidates cannot carry it (its dot's size), as the shaders take it.
         const bool sizes_vary = bounds.x != bounds.y && bounds.y > float(candidates);
@@ -223,7 +227,8 @@ void add_unshared_dot_ink(const ObjectGpu& object, const gpu::FrameUniforms& fra
             const float square_side = formulas::splat_dot_side(object.frame.uniforms.shading.y, here, float(candidates));
             const bool disc = formulas::drawn_dot_is_round(round, square_side);
             const float side = formulas::drawn_dot_extent(round, square_side);
-            const float intensity = formulas::stipple_intensity(here, float(k));
+            const float intensity = bounds.x != bounds.y ? formulas::drawn_intensity(here, float(k), view.selection, params.flags)
+                                                         : formulas::stipple_intensity(here, float(k));
             if (intensity <= 0.0f) continue;
             const glm::vec4 clip = model_view_proj * glm::vec4(position, 1.0f);
             if (clip.w <= 0.0f) continue;
