@@ -165,6 +165,12 @@ TEST(ExportPlan, DotStrokeGeometry) {
     const double r = 0.4, pen = 0.3, length = tick_length(r, pen);
     EXPECT_NEAR(pen * length + std::numbers::pi * pen * pen / 4.0, std::numbers::pi * r * r, 1e-12);
     EXPECT_DOUBLE_EQ(tick_length(0.1, 0.3), kMinTickMm);  // a dot smaller than the pen: the shortest tick
+    EXPECT_DOUBLE_EQ(tick_ink_short(r, pen), 0.0);
+    // A dot many pens wide: its tick no longer than twice its width (the ink-keeping one would be 13.4 mm for
+    // this 2.27 mm dot), and what it leaves out of the dot's ink said.
+    const double wide = 1.134;
+    EXPECT_DOUBLE_EQ(tick_length(wide, pen), kMaxTickDiameters * 2.0 * wide);
+    EXPECT_NEAR(tick_ink_short(wide, pen), std::numbers::pi * wide * wide - pen * 4.0 * wide - std::numbers::pi * pen * pen / 4.0, 1e-12);
     EXPECT_DOUBLE_EQ(circle_stroke_radius(0.4, 0.3), 0.25);
     EXPECT_DOUBLE_EQ(circle_stroke_radius(0.1, 0.3), 0.075);
     EXPECT_EQ(parse_dot_style("tick"), DotStyle::Tick);
@@ -214,6 +220,36 @@ TEST(ExportPlan, DotsUnderThePensLeastMarkAreDrawnAsItByChance) {
     EXPECT_NEAR(tick_length(least_mark_radius(DotStyle::Tick, 0.3), 0.3), kMinTickMm, 1e-12);
     options.dot_style = DotStyle::Filled;
     EXPECT_EQ(make_plot_plan(drawing, options).layers[0].dots.size(), 4800u);
+}
+
+// Dots many pens wide as ticks: each at its longest, twice its dot's width, and the ink left out said (a 13 mm
+// dash for a 2.3 mm dot read as hatching, until 2026-12-06).
+TEST(ExportPlan, WideDotsAsTicksAreCappedAndTheInkLeftOutIsSaid) {
+    Drawing drawing;
+    drawing.width_px = 100;
+    drawing.height_px = 100;
+    drawing.objects.push_back({"wide", 1.0f});
+    for (int i = 0; i < 10; ++i) drawing.dots.push_back({glm::vec2(10.0f * i + 5.0f, 50.0f), 1.0f, 1.0f, 0, uint32_t(i)});
+    ExportOptions options;
+    options.page = parse_page("100x100mm");
+    options.margin_mm = 0.0;
+    options.fit = Fit::Frame;
+    options.pen_width_mm = 0.3;
+    options.dot_style = DotStyle::Tick;
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    ASSERT_EQ(plan.layers.size(), 1u);
+    ASSERT_EQ(plan.layers[0].dots.size(), 10u);
+    const double r = plan.layers[0].dots[0].radius_mm;
+    ASSERT_GT(r, 0.3);
+    const std::array<glm::dvec2, 2> ends = dot_stroke_ends(plan.layers[0].dots[0], DotStyle::Tick, 0.3);
+    EXPECT_NEAR(glm::length(ends[1] - ends[0]), 4.0 * r, 1e-9) << "twice the dot's width";
+    const PlotStats stats = plot_stats(plan);
+    EXPECT_EQ(stats.capped_ticks, 10u);
+    const double kept = (0.3 * 4.0 * r + std::numbers::pi * 0.09 / 4.0) / (std::numbers::pi * r * r);
+    EXPECT_NEAR(stats.tick_ink_short, 1.0 - kept, 1e-9);
+    EXPECT_NE(format_stats(stats).find("10 ticks at their longest"), std::string::npos) << format_stats(stats);
+    options.dot_style = DotStyle::Filled;
+    EXPECT_EQ(plot_stats(make_plot_plan(drawing, options)).capped_ticks, 0u);
 }
 
 // The marks as the pen draws them stay inside the margins: a tick is as long as its dot's ink asks and a

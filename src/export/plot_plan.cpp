@@ -64,7 +64,13 @@ std::array<glm::dvec2, 2> dot_stroke_ends(const PlotDot& dot, DotStyle style, do
 double tick_length(double radius_mm, double pen_mm) {
     if (!(pen_mm > 0.0)) return kMinTickMm;
     const double ink = std::numbers::pi * (radius_mm * radius_mm - pen_mm * pen_mm / 4.0);
-    return std::max(ink / pen_mm, kMinTickMm);
+    return std::max(std::min(ink / pen_mm, kMaxTickDiameters * 2.0 * radius_mm), kMinTickMm);
+}
+
+double tick_ink_short(double radius_mm, double pen_mm) {
+    if (!(pen_mm > 0.0)) return 0.0;
+    const double drawn = pen_mm * tick_length(radius_mm, pen_mm) + std::numbers::pi * pen_mm * pen_mm / 4.0;
+    return std::max(std::numbers::pi * radius_mm * radius_mm - drawn, 0.0);
 }
 
 namespace {

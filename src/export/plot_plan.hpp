@@ -107,9 +107,14 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options);
 // Circle style: the centre-line radius, r - w/2 (the ink's outer edge at r), at least w/4.
 double circle_stroke_radius(double radius_mm, double pen_mm);
 // Tick style: the stroke length L with w*L + pi*w^2/4 = pi*r^2 (the dot's ink area), at least
-// kMinTickMm so that every driver lowers the pen.
+// kMinTickMm so that every driver lowers the pen, and at most kMaxTickDiameters times the dot's width 2r: a dot
+// many pens wide would otherwise be a long dash (a 2.3 mm dot and a 0.3 mm pen made a 13 mm stroke, and the
+// page read as hatching; a review, 2026-12-06). A capped tick inks less than its dot (tick_ink_short).
 double tick_length(double radius_mm, double pen_mm);
 constexpr double kMinTickMm = 0.02;
+constexpr double kMaxTickDiameters = 2.0;
+// The ink area a capped tick leaves out of its dot's (0 for a tick that carries it all).
+double tick_ink_short(double radius_mm, double pen_mm);
 // Where the pen goes down for a dot and where it lifts: a tick's two ends (horizontal, through the centre, in
 // the order PlotDot::reversed says), a filled disc's or circle's centre (the driver's own start on it).
 std::array<glm::dvec2, 2> dot_stroke_ends(const PlotDot& dot, DotStyle style, double pen_mm);

@@ -42,6 +42,7 @@ PlotStats plot_stats(const PlotPlan& plan) {
     stats.fit = plan.fit;
     stats.small_dots = plan.small_dots;
     glm::dvec2 pen = plan.home;
+    double dots_ink = 0.0, ink_short = 0.0;
     for (const PlotLayer& layer : plan.layers) {
         for (size_t i = 0; i < layer.dots.size(); ++i) {
             const std::array<glm::dvec2, 2> ends = dot_stroke_ends(layer.dots[i], plan.dot_style, layer.stroke_mm);
@@ -50,6 +51,13 @@ PlotStats plot_stats(const PlotPlan& plan) {
             if (i > 0) stats.dot_travel_mm += glm::length(layer.dots[i].mm - layer.dots[i - 1].mm);
             stats.pen_down_mm += dot_pen_down(layer.dots[i], plan.dot_style, layer.stroke_mm);
             pen = ends[1];
+            const double r = layer.dots[i].radius_mm;
+            dots_ink += std::numbers::pi * r * r;
+            if (plan.dot_style == DotStyle::Tick) {
+                const double short_by = tick_ink_short(r, layer.stroke_mm);
+                ink_short += short_by;
+                stats.capped_ticks += short_by > 0.0;
+            }
         }
         stats.dots += layer.dots.size();
         stats.dot_travel_bound_mm += dot_travel_bound(layer.dots);
@@ -62,6 +70,7 @@ PlotStats plot_stats(const PlotPlan& plan) {
         }
     }
     stats.pen_lifts = stats.dots + stats.polylines;
+    stats.tick_ink_short = dots_ink > 0.0 ? ink_short / dots_ink : 0.0;
     return stats;
 }
 
@@ -74,7 +83,11 @@ std::string format_stats(const PlotStats& stats) {
                                                   format_number(stats.dot_travel_bound_mm, 1) + " mm)"
             : stats.dot_travel_mm > 0.0     ? "travel between dots " + format_number(stats.dot_travel_mm, 1) + " mm (dots on each other)"
                                             : std::string("no travel between dots")) +
-           (stats.small_dots ? ", " + std::to_string(stats.small_dots) + " dots under the pen's least mark drawn as it by chance" : "");
+           (stats.small_dots ? ", " + std::to_string(stats.small_dots) + " dots under the pen's least mark drawn as it by chance" : "") +
+           (stats.capped_ticks ? ", " + std::to_string(stats.capped_ticks) + " ticks at their longest (twice their dot's width), " +
+                                     format_number(100.0 * stats.tick_ink_short, 1) +
+                                     "% of the dots' ink short: a wider --pen-width or --dot-style filled keeps it"
+                               : "");
 }
 
 }  // namespace stipple::plot

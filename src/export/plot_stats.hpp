@@ -20,6 +20,8 @@ struct PlotStats {
     Fit fit = Fit::Drawing;  // what was fitted to it
     size_t dots = 0, polylines = 0, pen_lifts = 0;
     size_t small_dots = 0;  // dots under the pen's least mark, drawn as it by chance (plot_plan.hpp); those drawn are in dots
+    size_t capped_ticks = 0;   // tick style: ticks at their longest (kMaxTickDiameters), inking less than their dots
+    double tick_ink_short = 0.0;  // their ink left out, as a share of all the dots' ink
     double pen_down_mm = 0.0, pen_up_mm = 0.0;
     double dot_travel_mm = 0.0;        // pen-up travel between dots of one layer
     double dot_travel_bound_mm = 0.0;  // its nearest-neighbour lower bound
