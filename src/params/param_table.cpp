@@ -139,7 +139,8 @@ const ParamSpec kTable[] = {
      [](P& p, double v) { p.toon_sharpness = float(v); }},
     {"contours", "contours", "contours", kLines,
      "object-space contour lines (beyond the paper): edges between a polygon facing the viewer and one "
-     "facing away, hidden parts removed, as wide as the silhouette lines",
+     "facing away, hidden parts removed, drawn at silhouette_width centred on the edge (a silhouette line of that "
+     "width shows only its part outside the front faces, about half)",
      ParamType::Bool, 0, 0, false, {}, ParamEffect::Frame, ParamWidget::Checkbox, false,
      [](const P& p) { return double(p.contours); }, [](P& p, double v) { p.contours = v != 0.0; }},
     {"borders", "borders", "borders", kLines,
