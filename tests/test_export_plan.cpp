@@ -110,6 +110,25 @@ TEST(ExportPlan, TheDrawingFillsThePageInsideItsMargins) {
     EXPECT_TRUE(blank.layers.empty());
 }
 
+// A stroke the screen draws no pixel of (no pixel centre within half its width, as line_pieces.frag keeps
+// them: an object far away whose contour is a speck) is left out; one that inks a pixel is kept however short.
+TEST(ExportPlan, AStrokeTheScreenDrawsNoPixelOfIsLeftOut) {
+    Drawing drawing;
+    drawing.width_px = 40;
+    drawing.height_px = 30;
+    drawing.objects.push_back({"speck", 1.0f});  // lines 1 px wide
+    drawing.segments.push_back({glm::vec2(10.0f, 10.0f), glm::vec2(10.2f, 10.0f), 0, LineKind::Contour});  // centre 0.58 away
+    ExportOptions options;
+    options.margin_mm = 0.0;
+    options.fit = Fit::Frame;
+    EXPECT_TRUE(make_plot_plan(drawing, options).layers.empty()) << "nothing on the screen, nothing on the page";
+    drawing.segments.push_back({glm::vec2(20.3f, 20.3f), glm::vec2(20.4f, 20.4f), 0, LineKind::Contour});  // 0.14 away
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    size_t lines = 0;
+    for (const PlotLayer& layer : plan.layers) lines += layer.lines.size();
+    EXPECT_EQ(lines, 1u) << "the stroke over a pixel's centre is kept";
+}
+
 // The page holds the frame: a dot centred beyond the image's edge is left out, and a line piece that
 // reaches past the edge (the GPU's runs may, by a few pixels) is cut at it; with no margin both ran off
 // the paper.

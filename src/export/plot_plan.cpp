@@ -198,6 +198,31 @@ float line_width_px(const Drawing& drawing, uint32_t object, LayerKind kind) {
     return std::max(0.0f, kind == LayerKind::Lines ? drawing.objects[object].line_width_px : drawing.objects[object].crease_width_px);
 }
 
+// Whether the screen inks a pixel of a stroke (in pixels) drawn `width_px` wide: a pixel centre within half the
+// width of it, as the line pieces' fragments keep them (shaders/line_pieces.frag). Only a stroke a few pixels
+// across can miss every centre: an object far away whose visible contour is a speck drew nothing on the screen
+// and a squiggle of a few millimetres in its SVG (a review, 2026-12-06: 1.7 mm, 0.46 px on the screen).
+bool stroke_inks_a_pixel(const Polyline& line, double width_px) {
+    if (line.points.empty()) return false;
+    glm::dvec2 lo = line.points.front(), hi = lo;
+    for (const glm::dvec2& p : line.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double half = 0.5 * width_px;
+    if (hi.x - lo.x > 4.0 || hi.y - lo.y > 4.0) return true;  // it crosses pixels' centres somewhere
+    const size_t n = line.points.size();
+    const size_t edges = line.closed ? n : std::max<size_t>(n - 1, 1);
+    for (double y = std::floor(lo.y - half); y <= hi.y + half; ++y)
+        for (double x = std::floor(lo.x - half); x <= hi.x + half; ++x) {
+            const glm::dvec2 centre(x + 0.5, y + 0.5);
+            for (size_t i = 0; i < edges; ++i) {
+                const glm::dvec2 a = line.points[i], b = line.points[std::min((i + 1) % n, n - 1)];
+                const glm::dvec2 ab = b - a;
+                const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(centre - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+                if (glm::length(centre - (a + t * ab)) <= half) return true;
+            }
+        }
+    return false;
+}
+
 // `kind`: Lines or Creases.
 PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, uint32_t object, LayerKind kind,
                      const PlotPlan& plan, const ExportOptions& options, glm::dvec2& pen) {
@@ -213,6 +238,7 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
     // tolerance for where the frame put each piece.
     const double fold_px = 0.5 * layer.stroke_mm / plan.layout.mm_per_px + options.merge.collinear_px;
     for (Polyline line : chain_edges(merge_segments(pieces, options.merge))) {
+        if (!stroke_inks_a_pixel(line, line_width_px(drawing, object, kind))) continue;  // nothing on the screen
         line = unfold(line, fold_px);
         for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
