@@ -4,7 +4,8 @@
 // (runs of at most kSplatChunk stipples of the polygons that draw this frame, listed by the density
 // pass or the CPU) takes the polygon's density (the density pass's, §2.1-2.3, or the CPU's), walks
 // its run of the drawn stipples (index < ceil(density) and its candidates, the last at the fractional
-// intensity, §2.1, or as a smaller dot where dots are round, fractional_round_dot; larger dots where the
+// intensity, §2.1, or solid or absent by its polygon's threshold with solid dots, solid_dot_intensity, or as a
+// smaller dot where dots are round, fractional_round_dot; larger dots where the
 // candidates cannot carry the density, stipple_scale), projects each, tests it against the
 // depth pass (hidden-stipple removal, §2.1; no surface = no ink) on every pixel the rasteriser's point
 // would cover (same square or disc), and inks it.
@@ -142,7 +143,7 @@ uint optical_depth_units(float intensity) {
     return uint(min(-log2(1.0 - intensity), kSplatMaxOpticalDepth) * kSplatOpticalDepthScale + 0.5);
 }
 
-// `fraction`: the stipple's intensity as the paper has it (stipple_intensity), which the visible list
+// `fraction`: the stipple's intensity (stipple_intensity, or drawn_intensity with solid dots), which the visible list
 // records for vector output; `intensity` and `side`: the dot drawn (a round fractional one is smaller and
 // of full ink, fractional_round_dot), a disc of diameter `side` where `round_dot` (round points, and square
 // ones enlarged into discs: enlarged_square_extent). Returns whether the dot lies astride the outline (some of its pixels

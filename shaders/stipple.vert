@@ -1,7 +1,9 @@
 #version 460
 // Draws candidate stipples; the per-polygon density decides which survive (§3.2): a stipple whose
 // index within its polygon is beyond the density is pushed beyond the far plane and clipped.
-// The last one gets the fractional part of the density as its intensity (§2.1).
+// The last one gets the fractional part of the density as its intensity (§2.1), or with solid dots (the
+// default) is whole or absent by its polygon's threshold (solid_dot_intensity: a flat polygon's density carries
+// it already, a polygon whose density changes across it decides each stipple here).
 // The kDrawnList variant draws the survivors' list instead (indirect and cpu paths, DrawCommand in
 // shared_types.h): vertex i is the candidate the list names, read from the stipple buffer; only those
 // that the density where they lie does not reach are culled. The vertex path draws every candidate but

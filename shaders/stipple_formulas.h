@@ -502,9 +502,11 @@ STIPPLE_FN PolygonDensity polygon_density_terms(PolygonView p, DensityParams q) 
     // for the ink on screen: a selected polygon draws exactly one whole stipple, p = density. Carrying
     // more (the paper's p when density > area / min_area) stacks several dots inside a polygon smaller
     // than a dot, where they overlap and read lighter than the same dots spread out; a fraction of one
-    // (a faint dot) is what polygons at least min_area large draw instead. A polygon owed a stipple or
-    // more is drawn as in regime (a). min_area thus decides where a fractional stipple gives way to a
-    // whole one drawn with that probability. The selection values are uniform for polygons of every
+    // is what polygons at least min_area large draw instead (with the paper's faint last dots a faint dot;
+    // with solid dots, the default, a whole one where the fraction passes the same selection value, so that
+    // the two regimes look alike: solid_dot_intensity). A polygon owed a stipple or more is drawn as in
+    // regime (a). min_area thus decides where a fractional stipple gives way to a whole one drawn with that
+    // probability. The selection values are uniform for polygons of every
     // size (src/stipple/selection_order.cpp), so the expected ink is the owed ink on any mesh.
     //
     // Beyond the paper's area test, the same test in stipples: min_area is given for the default D_max

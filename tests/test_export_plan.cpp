@@ -122,6 +122,10 @@ TEST(ExportPlan, AStrokeTheScreenDrawsNoPixelOfIsLeftOut) {
     options.margin_mm = 0.0;
     options.fit = Fit::Frame;
     EXPECT_TRUE(make_plot_plan(drawing, options).layers.empty()) << "nothing on the screen, nothing on the page";
+    // Fitted to the drawing, the page is not fitted around the speck: nothing is drawn, so the frame's page.
+    options.fit = Fit::Drawing;
+    EXPECT_EQ(make_plot_plan(drawing, options).fit, Fit::Frame);
+    options.fit = Fit::Frame;
     drawing.segments.push_back({glm::vec2(20.3f, 20.3f), glm::vec2(20.4f, 20.4f), 0, LineKind::Contour});  // 0.14 away
     const PlotPlan plan = make_plot_plan(drawing, options);
     size_t lines = 0;
@@ -185,6 +189,12 @@ TEST(ExportPlan, DotStrokeGeometry) {
     EXPECT_NEAR(pen * length + std::numbers::pi * pen * pen / 4.0, std::numbers::pi * r * r, 1e-12);
     EXPECT_DOUBLE_EQ(tick_length(0.1, 0.3), kMinTickMm);  // a dot smaller than the pen: the shortest tick
     EXPECT_DOUBLE_EQ(tick_ink_short(r, pen), 0.0);
+    // Short exactly when the length is capped, for every radius (the areas alone differ in their last bits).
+    for (double radius = 0.01; radius < 3.0; radius *= 1.01)
+        for (const double w : {0.05, 0.3, 0.8, 1.2})
+            EXPECT_EQ(tick_ink_short(radius, w) > 0.0,
+                      std::numbers::pi * (radius * radius - w * w / 4.0) / w > kMaxTickDiameters * 2.0 * radius)
+                << radius << " mm, pen " << w;
     // A dot many pens wide: its tick no longer than twice its width (the ink-keeping one would be 13.4 mm for
     // this 2.27 mm dot), and what it leaves out of the dot's ink said.
     const double wide = 1.134;

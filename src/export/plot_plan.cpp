@@ -68,7 +68,9 @@ double tick_length(double radius_mm, double pen_mm) {
 }
 
 double tick_ink_short(double radius_mm, double pen_mm) {
-    if (!(pen_mm > 0.0)) return 0.0;
+    // Decided by the lengths: the areas of a tick that carries all its ink differ from the dot's in the last bits.
+    const double ink = std::numbers::pi * (radius_mm * radius_mm - pen_mm * pen_mm / 4.0);
+    if (!(pen_mm > 0.0) || ink / pen_mm <= kMaxTickDiameters * 2.0 * radius_mm) return 0.0;
     const double drawn = pen_mm * tick_length(radius_mm, pen_mm) + std::numbers::pi * pen_mm * pen_mm / 4.0;
     return std::max(std::numbers::pi * radius_mm * radius_mm - drawn, 0.0);
 }
@@ -223,6 +225,28 @@ bool stroke_inks_a_pixel(const Polyline& line, double width_px) {
     return false;
 }
 
+// The pieces of the strokes the screen draws a pixel of: a speck's are left out before the page is fitted
+// around what is drawn (fitted around it, a page of specks alone was enlarged onto them and came out blank).
+// A piece is the speck's when both its ends lie in the speck's box, which is under 5 px across.
+std::vector<Piece> pieces_the_screen_draws(std::vector<Piece> pieces, const MergeOptions& merge, double width_px) {
+    std::vector<std::array<glm::dvec2, 2>> unseen;  // the boxes of the strokes left out
+    for (const Polyline& line : chain_edges(merge_segments(pieces, merge))) {
+        if (stroke_inks_a_pixel(line, width_px) || line.points.empty()) continue;
+        glm::dvec2 lo = line.points.front(), hi = lo;
+        for (const glm::dvec2& p : line.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        unseen.push_back({lo - 1e-6, hi + 1e-6});
+    }
+    if (unseen.empty()) return pieces;
+    auto inside = [](const glm::dvec2& p, const std::array<glm::dvec2, 2>& box) {
+        return glm::all(glm::greaterThanEqual(p, box[0])) && glm::all(glm::lessThanEqual(p, box[1]));
+    };
+    std::erase_if(pieces, [&](const Piece& piece) {
+        return std::any_of(unseen.begin(), unseen.end(),
+                           [&](const std::array<glm::dvec2, 2>& box) { return inside(piece[0], box) && inside(piece[1], box); });
+    });
+    return pieces;
+}
+
 // `kind`: Lines or Creases.
 PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, uint32_t object, LayerKind kind,
                      const PlotPlan& plan, const ExportOptions& options, glm::dvec2& pen) {
@@ -238,7 +262,6 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
     // tolerance for where the frame put each piece.
     const double fold_px = 0.5 * layer.stroke_mm / plan.layout.mm_per_px + options.merge.collinear_px;
     for (Polyline line : chain_edges(merge_segments(pieces, options.merge))) {
-        if (!stroke_inks_a_pixel(line, line_width_px(drawing, object, kind))) continue;  // nothing on the screen
         line = unfold(line, fold_px);
         for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
@@ -284,8 +307,10 @@ PlotPlan make_plot_plan(const Drawing& drawing, const ExportOptions& options) {
     }
     std::vector<std::vector<Piece>> line_pieces(objects), crease_pieces(objects);
     for (uint32_t object = 0; object < objects; ++object) {
-        line_pieces[object] = pieces_in_frame(drawing, segments_of[object]);
-        crease_pieces[object] = pieces_in_frame(drawing, creases_of[object]);
+        line_pieces[object] = pieces_the_screen_draws(pieces_in_frame(drawing, segments_of[object]), options.merge,
+                                                      line_width_px(drawing, object, LayerKind::Lines));
+        crease_pieces[object] = pieces_the_screen_draws(pieces_in_frame(drawing, creases_of[object]), options.merge,
+                                                        line_width_px(drawing, object, LayerKind::Creases));
     }
 
     const double dot_pen = options.pen_width_mm.value_or(kDefaultPenWidthMm);

@@ -141,7 +141,11 @@ ToneTally tally_tone(const ObjectGpu& object, const gpu::FrameUniforms& frame) {
         const float candidates = object.geometry.candidates(t);
         formulas::PolygonView view = shape.view(t, candidates);
         const formulas::PolygonDensity terms = formulas::polygon_density_terms(view, params);
-        const float drawn = formulas::polygon_density(view, params);
+        float drawn = formulas::polygon_density(view, params);
+        // Drawn flat, its last stipple solid or absent as the density pass folds it (solid_dots_density); a polygon
+        // large on screen decides each stipple where it lies, and its centroid's density stands for them here.
+        if (!formulas::may_carry_gradient(terms, view, params, drawn))
+            drawn = formulas::solid_dots_density(drawn, candidates, view.selection, params.flags);
         view.candidates = view.due = float(polygons[t].area * per_area);
         const formulas::PolygonDensity ideal = formulas::polygon_density_terms(view, params);
 

@@ -32,7 +32,7 @@ struct RegimeTally {
     double owed = 0.0;      // what the tone asks for: the polygon's area x stipples per area x every term
     double allowed = 0.0;   // the same from its integer candidate count (what the formulas start from)
     double expected = 0.0;  // expected to draw: probability x the density it draws when selected
-    double drawn = 0.0;     // drawn this frame (selection applied)
+    double drawn = 0.0;     // drawn this frame (selection applied, and a flat polygon's last stipple solid or absent)
 };
 
 struct ToneTally {
