@@ -367,7 +367,14 @@ TEST(AnimLoading, ProbeTellsAnimatedFilesBeforeLoading) {
     EXPECT_TRUE(gltf_declares_animations(write("one.gltf", R"({"asset": {"version": "2.0"}, "animations": [{}]})")));
     // Cannot tell: the full loader will say what is wrong.
     EXPECT_TRUE(gltf_declares_animations(write("broken.gltf", "{ not json")));
-    EXPECT_TRUE(gltf_declares_animations((dir / "missing.glb").string()));
+    // No file to read is refused as the loader refuses it, before anything is opened (check_model_file).
+    const std::string missing = (dir / "missing.glb").string();
+    try {
+        gltf_declares_animations(missing);
+        ADD_FAILURE() << "a missing file was probed";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), missing + ": no such file");
+    }
 
     // What sends a file without animations to the animated loader too: a rest pose that may differ from
     // the static loader's placement (a skin, morph weights other than zero).

@@ -145,6 +145,33 @@ INSTANTIATE_TEST_SUITE_P(
                                "header claims 2147483648 vertices, more than the file can hold"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// A FIFO or a link to /dev/zero given as a glTF model is refused before it is opened: the glTF probe (which
+// looks for animations before loading) waited for a FIFO's writer forever and read /dev/zero until memory
+// ran out. Under a timeout and a limit on memory, so that a return of either fails the test, not the machine.
+TEST(CliRender, AGltfModelThatIsNoRegularFileIsRefusedBeforeReading) {
+    auto dir = test::temp_dir("cli-not-regular");
+    std::vector<std::filesystem::path> models;
+    for (const char* name : {"fifo.glb", "fifo.gltf"}) {
+        models.push_back(dir / name);
+        ASSERT_EQ(::mkfifo(models.back().c_str(), 0600), 0) << std::strerror(errno);
+    }
+    for (const char* name : {"zero.glb", "zero.gltf"}) {
+        models.push_back(dir / name);
+        std::filesystem::create_symlink("/dev/zero", models.back());
+    }
+    for (const auto& model : models) {
+        for (const char* command : {"info", "render"}) {
+            std::vector<std::string> args{command, model.string()};
+            if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
+            const test::CommandResult r = run_stipple(args, "ulimit -v 8000000; timeout 20");
+            EXPECT_EQ(r.exit_code, 1) << command << " " << model << ": " << r.err;
+            EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+            EXPECT_NE(r.err.find(model.string() + ": is not a regular file"), std::string::npos) << r.err;
+        }
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
 // A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what
 // the object needs, what the device has and what to lower; no image; never an abort or a lost device.
 TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {

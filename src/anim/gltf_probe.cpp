@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesh/load_mesh.hpp"
+
 namespace stipple::anim {
 
 namespace {
@@ -15,8 +17,11 @@ namespace {
 constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr uint32_t kGlbJsonChunk = 0x4E4F534A;  // "JSON"
 
-// The file's JSON, or a discarded value when it cannot be read or parsed.
+// The file's JSON, or a discarded value when it cannot be read or parsed. What is no model file to read is
+// refused first, as the loader would: a FIFO given as a model waited here for a writer forever, and a link to
+// /dev/zero was read until memory ran out (found by testing, 2026-12-06).
 nlohmann::json read_json(const std::string& path) {
+    check_model_file(path);
     std::ifstream in(path, std::ios::binary);
     if (!in) return nlohmann::json(nlohmann::json::value_t::discarded);
     std::string json;

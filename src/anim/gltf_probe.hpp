@@ -6,8 +6,9 @@
 
 namespace stipple::anim {
 
-// True when the file's JSON has a non-empty "animations" array, or when it cannot tell (unreadable,
-// malformed: the full loader then reports the problem in its own words).
+// True when the file's JSON has a non-empty "animations" array, or when it cannot tell (malformed JSON:
+// the full loader then reports the problem in its own words). What is no model file to read (missing, a
+// FIFO, a device, empty) is refused as load_mesh refuses it (check_model_file).
 bool gltf_declares_animations(const std::string& path);
 
 // True when the file declares animations, skins, or morph weights other than zero (a mesh's default

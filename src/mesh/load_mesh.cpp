@@ -97,7 +97,8 @@ Mesh finish(Mesh mesh, const std::string& name, const LoadOptions& options) {
     return mesh;
 }
 
-// Checked here so that every format reports these the same way, before any parser sees them.
+}  // namespace
+
 void check_model_file(const std::string& path) {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -110,8 +111,6 @@ void check_model_file(const std::string& path) {
     if (ec) fail_file(path, "cannot read the file size: " + ec.message());
     if (size == 0) fail_file(path, "file is empty");
 }
-
-}  // namespace
 
 Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     check_model_file(path);

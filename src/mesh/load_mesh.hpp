@@ -25,6 +25,11 @@ struct LoadOptions {
     bool drop_collapsed_by_position = true;
 };
 
+// Refuses, in one line naming `path`, what is not a model file to read whole: missing, a directory, not a
+// regular file (a FIFO would wait for a writer forever, /dev/zero fill memory), or empty. Every reader of a
+// model file calls it before opening it, so that every format reports these the same way.
+void check_model_file(const std::string& path);
+
 // Loads .obj, .ply, .gltf, .glb or .stl (chosen by extension, case-insensitive), validates the result
 // (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part
 // alike and inside-out parts outward (orient_consistently; Mesh::winding says what changed), computes

@@ -19,13 +19,13 @@ std::string quote(const std::string& s) {
 
 }  // namespace
 
-CommandResult run_stipple(const std::vector<std::string>& args) {
+CommandResult run_stipple(const std::vector<std::string>& args, const std::string& shell_prefix) {
     static int counter = 0;
     std::filesystem::path dir = std::filesystem::temp_directory_path() / "stipple-cli-capture";
     std::filesystem::create_directories(dir);
     std::string stem = std::to_string(::getpid()) + "-" + std::to_string(counter++);
     std::filesystem::path out = dir / (stem + ".out"), err = dir / (stem + ".err");
-    std::string cmd = quote(STIPPLE_EXECUTABLE);
+    std::string cmd = (shell_prefix.empty() ? "" : shell_prefix + " ") + quote(STIPPLE_EXECUTABLE);
     for (const std::string& a : args) cmd += " " + quote(a);
     cmd += " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
     int status = std::system(cmd.c_str());

@@ -13,8 +13,10 @@ struct CommandResult {
     std::string err;
 };
 
-// Arguments are quoted for the shell; runs `<build>/stipple args...`.
-CommandResult run_stipple(const std::vector<std::string>& args);
+// Arguments are quoted for the shell; runs `<build>/stipple args...`. `shell_prefix`, when given, is
+// shell text put before the command as it stands: "timeout 60" (a command that would hang fails the test
+// instead, with status 124), "ulimit -v 2000000;" (memory a command may map).
+CommandResult run_stipple(const std::vector<std::string>& args, const std::string& shell_prefix = "");
 
 // An environment variable set for the guard's life (the commands run meanwhile see it), then restored to what
 // it was before, or unset if it was not set.
