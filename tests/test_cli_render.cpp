@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/memory.hpp"
 #include "io/png_io.hpp"
 #include "support/image_checks.hpp"
 #include "support/model_files.hpp"
@@ -170,6 +171,61 @@ TEST(CliRender, AGltfModelThatIsNoRegularFileIsRefusedBeforeReading) {
         }
     }
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// A sparse file of `size` bytes (it takes no disk), for the size checks.
+std::filesystem::path sparse_file(const std::filesystem::path& path, uint64_t size) {
+    write_file(path, "");
+    std::filesystem::resize_file(path, size);
+    return path;
+}
+
+// A model file too large to load is refused by its size before it is read, in one line naming it, its size
+// and the limit: a glTF file of 4 GiB or more (its lengths are 32-bit), and any model file over half the
+// machine's memory (a 5 GB .glb grew to 7 GB, a 50 GB .obj ran out of memory saying only that). Under a limit
+// on memory, so that a read of one fails the test instead of filling the machine.
+TEST(CliRender, AModelFileTooLargeToLoadIsRefusedByItsSize) {
+    auto dir = test::temp_dir("cli-too-large");
+    const uint64_t half_memory = physical_memory_bytes() / 2;
+    ASSERT_GT(half_memory, 0u);
+    const std::string beyond_memory = ", more than a model file may be on this machine: " + byte_size(half_memory) + ", half its ";
+    const std::pair<const char*, std::string> cases[] = {
+        {"big.glb", "a glTF file of 4 GiB or more is not supported"},
+        {"big.gltf", "a glTF file of 4 GiB or more is not supported"},
+        {"big.obj", beyond_memory}, {"big.ply", beyond_memory}, {"big.stl", beyond_memory}};
+    for (const auto& [name, expect] : cases) {
+        const bool gltf = expect == cases[0].second;
+        const uint64_t size = gltf ? (uint64_t(1) << 32) : half_memory + 1;
+        const auto model = sparse_file(dir / name, size);
+        for (const char* command : {"info", "render"}) {
+            std::vector<std::string> args{command, model.string()};
+            if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
+            const test::CommandResult r = run_stipple(args, "ulimit -v 4000000; timeout 60");
+            EXPECT_EQ(r.exit_code, 1) << command << " " << name << ": " << r.err;
+            EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+            EXPECT_NE(r.err.find(model.string() + ": is " + byte_size(size)), std::string::npos) << r.err;
+            EXPECT_NE(r.err.find(expect), std::string::npos) << r.err;
+        }
+        std::filesystem::remove(model);
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// Memory that runs out while a model loads (here a limit on what the command may map, below a 3 GiB file that
+// the size check lets through: the one allocation of its size fails, nothing is read) names the file and its
+// size, where main said only "stipple: out of memory".
+TEST(CliRender, RunningOutOfMemoryWhileLoadingNamesTheFile) {
+    const uint64_t size = uint64_t(3) << 30;
+    if (physical_memory_bytes() / 2 < size) GTEST_SKIP() << "a 3 GiB model is refused by its size on this machine";
+    auto dir = test::temp_dir("cli-out-of-memory");
+    for (const char* name : {"big.obj", "big.gltf"}) {
+        const auto model = sparse_file(dir / name, size);
+        const test::CommandResult r = run_stipple({"info", model.string()}, "ulimit -v 2000000; timeout 60");
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find(model.string() + ": out of memory reading it (3.0 GiB)"), std::string::npos) << r.err;
+        std::filesystem::remove(model);
+    }
 }
 
 // A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what

@@ -4,11 +4,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "mesh/load_mesh.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple::anim {
 
@@ -36,11 +36,10 @@ nlohmann::json read_json(const std::string& path) {
         json.resize(header[3]);
         if (!in.read(json.data(), std::streamsize(json.size()))) return nlohmann::json(nlohmann::json::value_t::discarded);
     } else {
-        in.clear();
-        in.seekg(0);
-        std::stringstream text;
-        text << in.rdbuf();
-        json = text.str();
+        // In one allocation of the file's size, as the loader reads it: a stream's growing copies held a large
+        // file about three times over.
+        in.close();
+        json = read_file(path);
     }
     return nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
 }

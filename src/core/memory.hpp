@@ -1,5 +1,11 @@
 #pragma once
-// Returning freed memory to the system in the middle of a long computation.
+// Returning freed memory to the system in the middle of a long computation; what the machine has, for
+// refusing in one line what could never fit instead of running out half way.
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -18,6 +24,21 @@ inline void release_free_memory() {
 #if defined(__GLIBC__)
     malloc_trim(0);
 #endif
+}
+
+// The machine's physical memory in bytes, or 0 where the system does not say.
+inline uint64_t physical_memory_bytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
+}
+
+// A size for a message: "3.0 GiB", "12.5 MiB", "830 bytes".
+inline std::string byte_size(uint64_t bytes) {
+    char text[40];
+    if (bytes >= (uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(uint64_t(1) << 30));
+    else if (bytes >= (uint64_t(1) << 20)) std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(uint64_t(1) << 20));
+    else std::snprintf(text, sizeof text, "%llu bytes", (unsigned long long)bytes);
+    return text;
 }
 
 }  // namespace stipple

@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <new>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "mesh/loader_util.hpp"
 #include "mesh/mesh_ops.hpp"
 #include "mesh/orientation.hpp"
@@ -97,6 +100,20 @@ Mesh finish(Mesh mesh, const std::string& name, const LoadOptions& options) {
     return mesh;
 }
 
+// A model file is read whole, and the mesh made from it takes as much again or more (a binary PLY's about
+// ten times its size): a file over half the machine's memory cannot load, and is refused by its size before
+// it is read (a 50 GB OBJ ran out of memory, saying neither which file nor why). A glTF file cannot be
+// 4 GiB or more (its lengths are 32-bit), and is refused before it is read too.
+void check_model_size(const std::string& path, uint64_t size) {
+    const std::string ext = lower_extension(path);
+    if ((ext == ".gltf" || ext == ".glb") && size > UINT32_MAX)
+        fail_file(path, "is " + byte_size(size) + ": a glTF file of 4 GiB or more is not supported");
+    const uint64_t memory = physical_memory_bytes();
+    if (memory > 0 && size > memory / 2)
+        fail_file(path, "is " + byte_size(size) + ", more than a model file may be on this machine: " + byte_size(memory / 2) +
+                            ", half its " + byte_size(memory) + " of memory (the file is read whole, and its mesh takes as much again)");
+}
+
 }  // namespace
 
 void check_model_file(const std::string& path) {
@@ -110,20 +127,35 @@ void check_model_file(const std::string& path) {
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) fail_file(path, "cannot read the file size: " + ec.message());
     if (size == 0) fail_file(path, "file is empty");
+    check_model_size(path, size);
+}
+
+void fail_out_of_memory(const std::string& path) {
+    std::error_code ec;
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    fail_file(path, "out of memory reading it" + (ec ? std::string() : " (" + byte_size(size) + ")"));
 }
 
 Mesh load_mesh(const std::string& path, const LoadOptions& options) {
     check_model_file(path);
     const Format format = format_of(path);
-    const std::string bytes = read_file(path);
-    const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
-    return finish(parse(format, path, bytes, &base_dir, options), path, options);
+    try {
+        const std::string bytes = read_file(path);
+        const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
+        return finish(parse(format, path, bytes, &base_dir, options), path, options);
+    } catch (const std::bad_alloc&) {
+        fail_out_of_memory(path);
+    }
 }
 
 Mesh load_gltf_mesh(const std::string& path, const LoadOptions& options, tinygltf::Model& document) {
     check_model_file(path);
-    const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
-    return load_gltf_mesh_from_bytes(path, read_file(path), &base_dir, options, document);
+    try {
+        const std::filesystem::path base_dir = std::filesystem::path(path).parent_path();
+        return load_gltf_mesh_from_bytes(path, read_file(path), &base_dir, options, document);
+    } catch (const std::bad_alloc&) {
+        fail_out_of_memory(path);
+    }
 }
 
 Mesh load_gltf_mesh_from_bytes(const std::string& name, std::string_view bytes, const std::filesystem::path* base_dir,

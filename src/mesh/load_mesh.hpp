@@ -26,9 +26,15 @@ struct LoadOptions {
 };
 
 // Refuses, in one line naming `path`, what is not a model file to read whole: missing, a directory, not a
-// regular file (a FIFO would wait for a writer forever, /dev/zero fill memory), or empty. Every reader of a
-// model file calls it before opening it, so that every format reports these the same way.
+// regular file (a FIFO would wait for a writer forever, /dev/zero fill memory), empty, a glTF file of 4 GiB
+// or more, or any file larger than half the machine's physical memory (it is read whole, and its mesh takes
+// as much again). Every reader of a model file calls it before opening it, so that every format reports
+// these the same way.
 void check_model_file(const std::string& path);
+
+// A std::bad_alloc while loading the model at `path`, in one line: "<path>: out of memory reading it
+// (3.0 GiB)", the file's size (main's "stipple: out of memory" named neither the file nor the cause).
+[[noreturn]] void fail_out_of_memory(const std::string& path);
 
 // Loads .obj, .ply, .gltf, .glb or .stl (chosen by extension, case-insensitive), validates the result
 // (validate_mesh), drops repeated triangles (drop_duplicate_triangles), winds the triangles of each part

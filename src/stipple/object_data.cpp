@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <new>
 
 #include "anim/animated_model.hpp"
 #include "anim/gltf_probe.hpp"
@@ -25,16 +26,8 @@ bool is_gltf(const std::string& path) {
 // The smallest sphere around a box: an animated model's bounds hold every pose, not one.
 Sphere box_sphere(const Bounds& box) { return Sphere{box.center(), 0.5f * glm::length(box.max - box.min)}; }
 
-}  // namespace
-
-std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds) {
-    const auto start = Clock::now();
-    auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
-    if (seconds) *seconds = seconds_since(start);
-    return mesh;
-}
-
-ObjectData load_model_data(const std::string& path) {
+// load_model_data, without naming the file when memory runs out.
+ObjectData read_model(const std::string& path) {
     ObjectData object;
     const auto start = Clock::now();
     if (is_gltf(path) && anim::gltf_declares_deformation(path)) {
@@ -62,6 +55,23 @@ ObjectData load_model_data(const std::string& path) {
     object.bounds.center += origin, object.box.min += origin, object.box.max += origin;
     object.load_seconds = seconds_since(start);
     return object;
+}
+
+}  // namespace
+
+std::shared_ptr<const Mesh> load_drawing_mesh(const std::string& path, double* seconds) {
+    const auto start = Clock::now();
+    auto mesh = std::make_shared<const Mesh>(load_mesh_for_drawing(path));
+    if (seconds) *seconds = seconds_since(start);
+    return mesh;
+}
+
+ObjectData load_model_data(const std::string& path) {
+    try {
+        return read_model(path);
+    } catch (const std::bad_alloc&) {
+        fail_out_of_memory(path);  // the probe's and the animated loader's reading too
+    }
 }
 
 ObjectData reflected_object(const ObjectData& model) {
