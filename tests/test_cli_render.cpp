@@ -17,6 +17,7 @@
 
 #include "core/memory.hpp"
 #include "io/png_io.hpp"
+#include "stipple/object_data.hpp"
 #include "support/image_checks.hpp"
 #include "support/model_files.hpp"
 #include "support/run_command.hpp"
@@ -78,6 +79,31 @@ TEST(CliRender, InfoPrintsFiguresAsJson) {
         EXPECT_EQ(info["stipples_per_second"].is_null(), info["from_cache"].get<bool>()) << result.out;
         EXPECT_EQ(info["from_cache"].get<bool>(), run == 1) << "the cache folder is the test's own";
     }
+}
+
+// info checks the stipples it plans against the machine's memory before generating them, as render and
+// tone check them against the device's: 2000 stacked quads at --dmax 16 with a budget of 2e9 stipples grew
+// past 7 GB. Under a limit on memory, so that a generation started fails the test, not the machine.
+TEST(CliRender, InfoRefusesStipplesBeyondMemoryBeforeGenerating) {
+    const uint64_t most = physical_memory_bytes() / kGenerationBytesPerStipple;
+    if (most >= 2'000'000'000) GTEST_SKIP() << "this machine could generate the largest budget --max-stipples takes";
+    std::string stack;
+    for (int i = 0; i < 2000; ++i) {
+        const std::string z = std::to_string(i * 1e-4);
+        for (const char* corner : {"-1 -1 ", "1 -1 ", "1 1 ", "-1 1 "}) stack += std::string("v ") + corner + z + "\n";
+        stack += "f " + std::to_string(4 * i + 1) + " " + std::to_string(4 * i + 2) + " " + std::to_string(4 * i + 3) + " " +
+                 std::to_string(4 * i + 4) + "\n";
+    }
+    const auto model = test::temp_dir("cli-info-memory") / "stack.obj";
+    write_file(model, stack);
+    const test::CommandResult r = run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "2000000000"},
+                                              "ulimit -v 4000000; timeout 60");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(model.string() + ": 2000000000 stipples planned, whose generation needs about 74.5 GiB"),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("(at most " + std::to_string(most) + " stipples): lower --dmax or --max-stipples"), std::string::npos)
+        << r.err;
 }
 
 struct BadInput {

@@ -8,6 +8,7 @@
 #include "anim/animated_model.hpp"
 #include "anim/gltf_probe.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/printf_string.hpp"
 #include "core/timing.hpp"
 #include "mesh/load_mesh.hpp"
@@ -119,8 +120,20 @@ uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& 
     return planned_stipple_count(*model.mesh, generation, stretch_headroom(model));
 }
 
+void check_generation_fits_memory(const std::string& path, const ObjectData& model, const GenerationParams& generation) {
+    const uint64_t memory = physical_memory_bytes();
+    const uint64_t most = memory / kGenerationBytesPerStipple;
+    const uint64_t count = planned_stipple_count(model, generation);
+    if (memory == 0 || count <= most) return;
+    fail_file(path, std::to_string(count) + " stipples planned, whose generation needs about " +
+                        byte_size(count * kGenerationBytesPerStipple) + " (" + std::to_string(kGenerationBytesPerStipple) +
+                        " bytes a stipple), more than this machine's " + byte_size(memory) + " of memory holds (at most " +
+                        std::to_string(most) + " stipples): lower --dmax or --max-stipples");
+}
+
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
     ObjectData object = load_model_data(path);
+    check_generation_fits_memory(path, object, generation);
     object.stipples = make_stipples(object, generation, source);
     return object;
 }

@@ -54,7 +54,17 @@ std::shared_ptr<const StippleSet> make_stipples(const ObjectData& model, const G
 // How many stipples make_stipples makes for this model (planned_stipple_count, with its headroom).
 uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& generation);
 
-// Both: loads the model at `path` and makes its stipples.
+// Generation's peak memory a stipple, the mesh and the program counted: 39.2-40.4 bytes for the 8M-stipple
+// dragon (docs/performance.md, "Memory").
+inline constexpr uint64_t kGenerationBytesPerStipple = 40;
+
+// Refuses, in one line naming `path`, the count and the limit, a model whose planned stipples
+// (planned_stipple_count) could not be generated in the machine's physical memory: before generating,
+// where a command has no device to check them against first (info; render, tone and the viewer check
+// the device's memory, check_model_fits). `info stack.obj --max-stipples 2000000000` grew past 7 GB.
+void check_generation_fits_memory(const std::string& path, const ObjectData& model, const GenerationParams& generation);
+
+// Both: loads the model at `path`, checks its planned stipples fit in memory and makes them.
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation,
                             StippleSource source = StippleSource::Cache);
 
