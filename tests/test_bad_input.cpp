@@ -130,6 +130,19 @@ const GltfCase kGltfCases[] = {
      "nodes[0].translation: expected 3 numbers, got 2"},
     {"string_in_matrix", [](json& d) { d["nodes"][1]["matrix"] = {1, 0, 0, "x", 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; },
      "nodes[1].matrix[3]: expected a finite number, got a string"},
+    // A node's transform as glTF requires it (each was drawn without a word).
+    {"matrix_fourth_row",
+     [](json& d) {
+         d["nodes"][1].erase("rotation");
+         d["nodes"][1]["matrix"] = {1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // column-major: 0.5 in the fourth row
+     },
+     "nodes[1].matrix: its fourth row (elements 3, 7, 11, 15) is (0.5, 0, 0, 1); glTF requires (0, 0, 0, 1)"},
+    {"matrix_and_trs", [](json& d) { d["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; },
+     "nodes[0]: has both a matrix and translation; glTF allows a matrix or translation, rotation and scale, not both"},
+    {"zero_rotation", [](json& d) { d["nodes"][1]["rotation"] = {0, 0, 0, 0}; },
+     "nodes[1].rotation: (0, 0, 0, 0) has length 0; glTF requires a unit quaternion"},
+    {"long_rotation", [](json& d) { d["nodes"][1]["rotation"] = {0, 0, 0, 2}; },
+     "nodes[1].rotation: (0, 0, 0, 2) has length 2; glTF requires a unit quaternion"},
     {"bad_mode", [](json& d) { d["meshes"][0]["primitives"][0]["mode"] = 9; },
      "meshes[0].primitives[0].mode: expected a primitive mode from 0 to 6, got 9"},
     {"missing_default_scene", [](json& d) { d["scene"] = 5; }, "scene: scene 5 does not exist (the file has 1 of them)"},
@@ -195,6 +208,18 @@ TEST(GltfFields, ValidDocumentAndIgnorableRequiredExtensionLoad) {
     const Mesh m = stipple::load_mesh(write_file(dir / "model.gltf", doc.dump()));
     EXPECT_EQ(m.triangle_count(), 1u);
     EXPECT_EQ(m.positions[1], glm::vec3(2, 0, 0));  // node 0 moves the triangle by +1 in x
+}
+
+// A rotation rounded as exporters round it, and a matrix whose fourth row is (0, 0, 0, 1) to within
+// rounding, load.
+TEST(GltfFields, RoundedTransformsLoad) {
+    const auto dir = temp_dir("bad_gltf_rounded");
+    json doc = valid_gltf();
+    doc["nodes"][1]["rotation"] = {0, 0, 0.7071, 0.7071};
+    doc["nodes"][0].erase("translation");
+    doc["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1e-5, 1, 0, 0, 1.0001};
+    const Mesh m = stipple::load_mesh(write_file(dir / "model.gltf", doc.dump()));
+    EXPECT_EQ(m.triangle_count(), 1u);
 }
 
 TEST(GltfFields, DeepNestingIsRefused) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/printf_string.hpp"
 #include "mesh/glb_container.hpp"
 #include "mesh/gltf_extensions.hpp"
 #include "mesh/gltf_meshopt.hpp"
@@ -458,9 +459,40 @@ private:
         optional_numbers(n, where, "rotation", 4);
         optional_numbers(n, where, "scale", 3);
         optional_numbers(n, where, "weights", 0);
+        node_transform(n, where);
         if (const json* extensions = find(n, "extensions"); extensions && extensions->is_object())
             if (const json* instancing = find(*extensions, "EXT_mesh_gpu_instancing"))
                 gpu_instancing(*instancing, at(at(where, "extensions"), "EXT_mesh_gpu_instancing"), n);
+    }
+
+    // What glTF requires of a node's transform, refused here as the same faults are elsewhere (an inverse bind
+    // matrix's fourth row, a rotation key of no length); each was drawn without a word: a fourth row other than
+    // (0, 0, 0, 1) was ignored, a matrix beside translation, rotation or scale won over them, and a rotation
+    // of no length was taken for no rotation. Checked loosely, as exporters round.
+    void node_transform(const json& n, const std::string& where) const {
+        const json* matrix = find(n, "matrix");
+        std::string trs;
+        for (const char* key : {"translation", "rotation", "scale"})
+            if (find(n, key)) trs += (trs.empty() ? "" : ", ") + std::string(key);
+        if (matrix && !trs.empty())
+            bad(where, "has both a matrix and " + trs + "; glTF allows a matrix or translation, rotation and scale, not both");
+        if (matrix) affine_matrix(*matrix, at(where, "matrix"));
+        if (const json* rotation = find(n, "rotation")) unit_quaternion(*rotation, at(where, "rotation"));
+    }
+    // Column-major: the fourth row is elements 3, 7, 11 and 15.
+    void affine_matrix(const json& m, const std::string& where) const {
+        const auto off = [&](size_t i, double want) { return !(std::abs(m[i].get<double>() - want) <= 1e-3); };
+        if (off(3, 0.0) || off(7, 0.0) || off(11, 0.0) || off(15, 1.0))
+            bad(where, "its fourth row (elements 3, 7, 11, 15) is (" + got(m[3]) + ", " + got(m[7]) + ", " + got(m[11]) + ", " +
+                           got(m[15]) + "); glTF requires (0, 0, 0, 1)");
+    }
+    void unit_quaternion(const json& q, const std::string& where) const {
+        double squares = 0.0;
+        for (const json& c : q) squares += c.get<double>() * c.get<double>();
+        const double length = std::sqrt(squares);
+        if (!(std::abs(length - 1.0) <= 1e-2))
+            bad(where, "(" + got(q[0]) + ", " + got(q[1]) + ", " + got(q[2]) + ", " + got(q[3]) + ") has length " +
+                           printf_string("%g", length) + "; glTF requires a unit quaternion");
     }
 
     // EXT_mesh_gpu_instancing on a node: its attributes name accessors (gltf_instancing.cpp reads them),
