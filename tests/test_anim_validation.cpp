@@ -52,6 +52,22 @@ TEST(AnimValidation, DecreasingKeyTimes) {
     expect_error(box, "times", "animations[0].samplers[1].input: key 2 (time 1) comes before key 1 (time 2); times must increase");
 }
 
+// glTF's key times strictly increase from 0 or later: a repeated time passed, and times all below 0 gave
+// the animation a negative duration, standing still at its last key.
+TEST(AnimValidation, RepeatedAndNegativeKeyTimes) {
+    GltfBuilder repeated = rigs::node_animated_box();
+    repeated.doc["animations"][0]["samplers"][1]["input"] = repeated.add_floats({0, 1, 1}, "SCALAR");
+    expect_error(repeated, "repeated_times",
+                 "animations[0].samplers[1].input: key 2 (time 1) is at the time of key 1 (time 1); times must increase");
+
+    GltfBuilder negative = rigs::node_animated_box();
+    const int accessor = negative.add_floats({-5, -3, -1}, "SCALAR");
+    negative.doc["animations"][0]["samplers"][1]["input"] = accessor;
+    expect_error(negative, "negative_times",
+                 "animations[0].samplers[1].input: key 0 of accessor " + std::to_string(accessor) +
+                     " is at time -5; glTF's key times start at 0 or later");
+}
+
 TEST(AnimValidation, JointIndexBeyondTheSkin) {
     GltfBuilder cylinder = rigs::bending_cylinder();
     std::vector<uint16_t> joints;

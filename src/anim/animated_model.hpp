@@ -69,7 +69,7 @@ enum class ChannelPath { Translation, Rotation, Scale, Weights };
 // CUBICSPLINE: in-tangent, value, out-tangent). Rotations are x, y, z, w as in glTF.
 struct Sampler {
     Interpolation interpolation = Interpolation::Linear;
-    std::vector<float> times;  // non-decreasing
+    std::vector<float> times;  // strictly increasing, from 0 or later
     std::vector<float> values;
     uint32_t components = 0;   // 3 (translation, scale), 4 (rotation) or the morph target count
 };
@@ -136,7 +136,7 @@ struct AnimatedModel {
 };
 
 // Loads a .gltf or .glb with everything that animates it. Bad input (including bad animation data:
-// mismatched sampler counts, decreasing key times, joints beyond their skin, weights summing to zero,
+// mismatched sampler counts, key times below 0 or not increasing, joints beyond their skin, weights summing to zero,
 // accessors of the wrong type) throws stipple::Error, one line naming the file and the field.
 AnimatedModel load_animated_model(const std::string& path, const LoadOptions& options = {});
 

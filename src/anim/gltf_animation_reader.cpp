@@ -99,13 +99,24 @@ private:
         else fail_file(path_, field + ".interpolation: unknown interpolation '" + in.interpolation + "'");
         sampler.times = accessors_.floats(in.input, TINYGLTF_TYPE_SCALAR, {}, field + ".input");
         if (sampler.times.empty()) fail_file(path_, field + ".input: has no keys");
-        for (size_t k = 1; k < sampler.times.size(); ++k)
-            if (sampler.times[k] < sampler.times[k - 1])
-                fail_file(path_, field + ".input: key " + std::to_string(k) + " (time " + format(sampler.times[k]) +
-                                     ") comes before key " + std::to_string(k - 1) + " (time " + format(sampler.times[k - 1]) +
-                                     "); times must increase");
+        check_times(sampler.times, field + ".input", in.input);
         if (sampler.interpolation == Interpolation::CubicSpline && sampler.times.size() < 2)
             fail_file(path_, field + ": CUBICSPLINE needs at least 2 keys");
+    }
+
+    // glTF's key times start at 0 or later and strictly increase. Times all below 0 gave the animation a
+    // negative duration, and it stood still at its last key without a word; a repeated time passed.
+    void check_times(const std::vector<float>& times, const std::string& field, int accessor) const {
+        if (times[0] < 0.0f)
+            fail_file(path_, field + ": key 0 of accessor " + std::to_string(accessor) + " is at time " + format(times[0]) +
+                                 "; glTF's key times start at 0 or later");
+        for (size_t k = 1; k < times.size(); ++k) {
+            const std::string key = "key " + std::to_string(k) + " (time " + format(times[k]) + ")";
+            const std::string before = "key " + std::to_string(k - 1) + " (time " + format(times[k - 1]) + ")";
+            if (times[k] < times[k - 1]) fail_file(path_, field + ": " + key + " comes before " + before + "; times must increase");
+            if (times[k] == times[k - 1])
+                fail_file(path_, field + ": " + key + " is at the time of " + before + "; times must increase");
+        }
     }
 
     void read_values(const tinygltf::AnimationSampler& in, const std::string& field, ChannelPath path,
