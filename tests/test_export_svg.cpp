@@ -144,6 +144,26 @@ TEST(ExportSvg, DotStylesForPlotters) {
     EXPECT_EQ(count_children(layers[0], "circle"), 12u);
 }
 
+// A pen finer than the 0.001 mm that coordinates are written to keeps its width: 0.0004 mm was written
+// stroke-width="0", and every circle vanished.
+TEST(ExportSvg, AThinPenKeepsItsWidth) {
+    Drawing drawing = grid_drawing(4, 3);
+    ExportOptions options;
+    options.dot_style = DotStyle::Circle;
+    for (const auto& [pen, written] : {std::pair<double, const char*>{0.0004, "0.0004"}, {0.0456, "0.0456"},
+                                       {1.234e-5, "1.23e-05"}, {0.3, "0.3"}}) {
+        options.pen_width_mm = pen;
+        const std::string text = svg_document(make_plot_plan(drawing, options));
+        tinyxml2::XMLDocument doc;
+        ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS);
+        const auto layers = layers_of(doc.RootElement());
+        ASSERT_EQ(layers.size(), 2u);
+        EXPECT_STREQ(layers[0]->Attribute("stroke-width"), written) << pen;  // the circles
+        EXPECT_STREQ(layers[1]->Attribute("stroke-width"), written) << pen;  // the lines
+        EXPECT_DOUBLE_EQ(layers[0]->DoubleAttribute("stroke-width"), std::stod(written));
+    }
+}
+
 TEST(ExportSvg, AtMost48BytesPerDot) {
     Drawing drawing;
     drawing.width_px = 1280;

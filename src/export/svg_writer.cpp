@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/printf_string.hpp"
 #include "export/text_format.hpp"
 
 namespace stipple::plot {
@@ -22,8 +23,14 @@ void append_layer_open(std::string& out, const PlotLayer& layer, const std::stri
     out += ">\n";
 }
 
+// A stroke's width to 0.001 mm, and to three significant digits below 0.1 mm: a 0.0004 mm pen written to
+// 0.001 mm was stroke-width="0", and every circle and tick vanished. SVG reads "1e-05" as a number too.
+std::string stroke_width(double mm) {
+    return mm >= 0.1 ? format_number(mm, 3) : printf_string("%.3g", mm);
+}
+
 std::string stroke_style(const std::string& ink, double width_mm) {
-    return "fill=\"none\" stroke=\"" + ink + "\" stroke-width=\"" + format_number(width_mm, 3) +
+    return "fill=\"none\" stroke=\"" + ink + "\" stroke-width=\"" + stroke_width(width_mm) +
            "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
 }
 
