@@ -90,7 +90,7 @@ TEST(AnimEvaluation, AnimationsChosenByNameOrIndex) {
         find_animation(model, "Jump");
         ADD_FAILURE() << "an unknown animation was accepted";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("no animation 'Jump' (it has 0 'Bend', 1 'Lift')"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no animation 'Jump' (its animations: 0 'Bend', 1 'Lift')"), std::string::npos) << e.what();
     }
 }
 

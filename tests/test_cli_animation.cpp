@@ -222,6 +222,8 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
     const fs::path scenes = test::temp_dir("cli_anim_bad_scenes");
     write_text(scenes / "unknown.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": "Jump"}}]})");
     write_text(scenes / "speed.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"speed": "fast"}}]})");
+    write_text(scenes / "negative.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": -1}}]})");
+    write_text(scenes / "fraction.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": 0.5}}]})");
     write_text(scenes / "field.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"clip": "Bend"}}]})");
     write_text(scenes / "cpu.json", R"({"objects": [{"model": ")" + model + R"(", "params": {"density_path": "cpu"}}]})");
 
@@ -235,7 +237,7 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         std::string expect;
     };
     const Case cases[] = {
-        {{"render", model, "-o", out, "--animation", "Jump"}, "no animation 'Jump' (it has 0 'Bend', 1 'Lift')"},
+        {{"render", model, "-o", out, "--animation", "Jump"}, "no animation 'Jump' (its animations: 0 'Bend', 1 'Lift')"},
         {{"render", model, "-o", out, "--animation", "7"}, "no animation '7'"},
         {{"render", model, "-o", out, "--time", "nan"}, "--time"},
         {{"render", model, "-o", out, "--time", "1e9"}, "--time"},
@@ -248,6 +250,11 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", "-o", out, "--animation", "Walk"}, "has no animation to play"},
         {{"render", (scenes / "unknown.json").string(), "-o", out}, "objects[0].animation.name: "},
         {{"render", (scenes / "speed.json").string(), "-o", out}, "objects[0].animation.speed: expected a number"},
+        // A number said "got number", as if a number were wrong.
+        {{"render", (scenes / "negative.json").string(), "-o", out},
+         "objects[0].animation.name: an animation index is a whole number of 0 or more, got -1"},
+        {{"render", (scenes / "fraction.json").string(), "-o", out},
+         "objects[0].animation.name: an animation index is a whole number of 0 or more, got 0.5"},
         {{"render", (scenes / "field.json").string(), "-o", out}, "objects[0].animation.clip: unknown field"},
         // Said where the scene names the path.
         {{"render", (scenes / "cpu.json").string(), "-o", out},

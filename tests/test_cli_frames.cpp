@@ -140,6 +140,9 @@ TEST(CliFrames, SequencesThatCannotBeAreRejectedClearly) {
         {{"render", "-o", (dir / "%s.png").string(), "--frames", "2", "--orbit", "90"}, "%0Nd"},
         {{"render", "-o", (dir / "%d_%d.png").string(), "--frames", "2", "--orbit", "90"}, "more than one"},
         {{"render", "-o", (dir / "%d.png").string(), "--frames", "0", "--orbit", "90"}, "--frames"},
+        // As typed (it was 1000000000000000019884624838656.000000).
+        {{"render", "-o", (dir / "%d.png").string(), "--frames", "2", "--orbit", "1e30"},
+         "--orbit = 1e30 must be in -36000..36000 degrees"},
         {{"render", "-o", (dir / "%d.png").string(), "--frames", "3", "--orbit", "90", "--repeat", "2"}, "--repeat"},
         // printf's %Nd pads with spaces, which no file name wants: %0Nd pads with zeros.
         {{"render", "-o", (dir / "%10d.png").string(), "--frames", "2", "--orbit", "90"}, "%0Nd"},

@@ -16,11 +16,12 @@ int find_animation(const AnimatedModel& model, const std::string& name_or_index)
                         std::all_of(name_or_index.begin(), name_or_index.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (digits && static_cast<size_t>(std::stoul(name_or_index)) < model.animations.size())
         return static_cast<int>(std::stoul(name_or_index));
+    // Each by its index and name, after "its animations:" ("it has 0 'A'" read as "it has no animation").
     std::string known;
     for (size_t i = 0; i < model.animations.size(); ++i)
         known += (i ? ", " : "") + std::to_string(i) + " '" + model.animations[i].name + "'";
     fail_file(model.source, "no animation '" + name_or_index + "' (" +
-                                (known.empty() ? std::string("the model has no animations") : "it has " + known) + ")");
+                                (known.empty() ? std::string("the model has no animations") : "its animations: " + known) + ")");
 }
 
 double animation_time(const Animation& animation, double seconds, bool loop) {

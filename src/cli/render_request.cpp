@@ -115,7 +115,8 @@ RenderRequest read_render_request(const Args& args) {
     std::optional<float> orbit;
     if (args.has("--orbit")) {
         double deg = args.number("--orbit", 0.0);
-        if (std::abs(deg) > 36000.0) fail("--orbit = " + std::to_string(deg) + " must be in -36000..36000 degrees");
+        // As typed, as --yaw says it: std::to_string wrote 1e30 in 40 digits.
+        if (std::abs(deg) > 36000.0) fail("--orbit = " + args.get("--orbit", "") + " must be in -36000..36000 degrees");
         if (!args.has("--frames")) fail("--orbit needs --frames N (the number of frames of the orbit)");
         orbit = float(deg);
     }

@@ -242,6 +242,8 @@ AnimationChoice read_animation(const json& j, const Reader& r, const std::string
             a.name = std::to_string(name.get<uint64_t>());
         else if (name.is_string() && !name.get<std::string>().empty())
             a.name = name.get<std::string>();
+        else if (name.is_number())  // -1 or 0.5 said "got number", as if a number were wrong
+            r.error(w, "an animation index is a whole number of 0 or more, got " + name.dump());
         else
             r.error(w, std::string("expected an animation name or index, got ") +
                            (name.is_string() ? "an empty string" : name.type_name()));
