@@ -20,7 +20,10 @@ struct Drawn {
 };
 
 Drawn draw(const std::string& scene, const std::string& name) {
-    const auto dir = test::temp_dir("asset-scenes");
+    // A folder of its own: temp_dir empties it, and the two tests run side by side (ctest -j2), so a shared one
+    // could lose the other's image while it drew (Figure3ScalesKeepTheirTone failed once in a whole-suite run,
+    // likely so; alone it passes).
+    const auto dir = test::temp_dir("asset-scenes-" + name);
     const std::string out = (dir / (name + ".png")).string(), mask = (dir / (name + "-mask.png")).string();
     const test::CommandResult r = test::run_stipple(
         {"render", test::source_path("assets/scenes/" + scene), "--width", "480", "--height", "240", "-o", out, "--mask", mask});
