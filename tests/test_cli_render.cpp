@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/huge_pages.hpp"
 #include "core/memory.hpp"
 #include "io/png_io.hpp"
 #include "stipple/object_data.hpp"
@@ -29,6 +30,14 @@ namespace {
 using test::run_stipple;
 
 size_t count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
+
+// A shell prefix for a command that should refuse its input before using much memory or time: a memory limit
+// (ulimit -v, KiB) that catches it if it does not, and a timeout. Not the memory limit under a sanitizer, whose
+// shadow memory reserves more address space than any such limit leaves (the binary would not start).
+std::string guarded(const char* kilobytes, int seconds) {
+    const std::string timeout = "timeout " + std::to_string(seconds);
+    return kHugePageNew ? "ulimit -v " + std::string(kilobytes) + "; " + timeout : timeout;
+}
 
 // The count `render --stats` prints; -1 without one.
 long drawn_stipples(const test::CommandResult& r) {
@@ -97,7 +106,7 @@ TEST(CliRender, InfoRefusesStipplesBeyondMemoryBeforeGenerating) {
     const auto model = test::temp_dir("cli-info-memory") / "stack.obj";
     write_file(model, stack);
     const test::CommandResult r = run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "2000000000"},
-                                              "ulimit -v 4000000; timeout 60");
+                                              guarded("4000000", 60));
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(count_lines(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(model.string() + ": 2000000000 stipples planned, whose generation needs about 74.5 GiB"),
@@ -190,7 +199,7 @@ TEST(CliRender, AGltfModelThatIsNoRegularFileIsRefusedBeforeReading) {
         for (const char* command : {"info", "render"}) {
             std::vector<std::string> args{command, model.string()};
             if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
-            const test::CommandResult r = run_stipple(args, "ulimit -v 8000000; timeout 20");
+            const test::CommandResult r = run_stipple(args, guarded("8000000", 20));
             EXPECT_EQ(r.exit_code, 1) << command << " " << model << ": " << r.err;
             EXPECT_EQ(count_lines(r.err), 1u) << r.err;
             EXPECT_NE(r.err.find(model.string() + ": is not a regular file"), std::string::npos) << r.err;
@@ -226,7 +235,7 @@ TEST(CliRender, AModelFileTooLargeToLoadIsRefusedByItsSize) {
         for (const char* command : {"info", "render"}) {
             std::vector<std::string> args{command, model.string()};
             if (std::string(command) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
-            const test::CommandResult r = run_stipple(args, "ulimit -v 4000000; timeout 60");
+            const test::CommandResult r = run_stipple(args, guarded("4000000", 60));
             EXPECT_EQ(r.exit_code, 1) << command << " " << name << ": " << r.err;
             EXPECT_EQ(count_lines(r.err), 1u) << r.err;
             EXPECT_NE(r.err.find(model.string() + ": is " + byte_size(size)), std::string::npos) << r.err;
@@ -243,6 +252,7 @@ TEST(CliRender, AModelFileTooLargeToLoadIsRefusedByItsSize) {
 TEST(CliRender, RunningOutOfMemoryWhileLoadingNamesTheFile) {
     const uint64_t size = uint64_t(3) << 30;
     if (physical_memory_bytes() / 2 < size) GTEST_SKIP() << "a 3 GiB model is refused by its size on this machine";
+    if (!kHugePageNew) GTEST_SKIP() << "a sanitizer's shadow memory needs more address space than ulimit -v leaves";
     auto dir = test::temp_dir("cli-out-of-memory");
     for (const char* name : {"big.obj", "big.gltf"}) {
         const auto model = sparse_file(dir / name, size);
@@ -252,6 +262,25 @@ TEST(CliRender, RunningOutOfMemoryWhileLoadingNamesTheFile) {
         EXPECT_NE(r.err.find(model.string() + ": out of memory reading it (3.0 GiB)"), std::string::npos) << r.err;
         std::filesystem::remove(model);
     }
+}
+
+// Memory that runs out while generating (here under a 2 GB limit, for 60M stipples, which the machine's memory
+// would hold) names the model and the stipples planned in one line; it said a bare "stipple: out of memory".
+TEST(CliRender, RunningOutOfMemoryWhileGeneratingNamesTheModel) {
+    if (physical_memory_bytes() / 40 < 60'000'000) GTEST_SKIP() << "60M stipples are refused before generating on this machine";
+    if (!kHugePageNew) GTEST_SKIP() << "a sanitizer's shadow memory needs more address space than ulimit -v leaves";
+    const auto model = test::temp_dir("cli-out-of-memory-generating") / "stack.obj";
+    {
+        std::ofstream out(model);
+        for (int i = 0; i < 200; ++i) out << "v -1 -1 " << i * 1e-3 << "\nv 1 -1 " << i * 1e-3 << "\nv 1 1 " << i * 1e-3 << "\nv -1 1 " << i * 1e-3 << "\n";
+        for (int i = 0; i < 200; ++i) out << "f " << 4 * i + 1 << " " << 4 * i + 2 << " " << 4 * i + 3 << " " << 4 * i + 4 << "\n";
+    }
+    test::ScopedEnv no_cache("STIPPLE_NO_CACHE", "1");
+    const test::CommandResult r =
+        run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "60000000"}, "ulimit -v 2000000; timeout 120");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(model.string() + ": out of memory generating its 60000000 stipples"), std::string::npos) << r.err;
 }
 
 // A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what

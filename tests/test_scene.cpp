@@ -190,6 +190,21 @@ TEST(Scene, AModelNameThatIsNotUtf8IsAOneLineError) {
     EXPECT_NE(scene_to_json(scene, test::temp_dir("scene_latin1")).find("caf\xc3\xa9.obj"), std::string::npos);
 }
 
+// A scene file of many MiB is refused by its size, before it is read (a sparse file: no disk, no memory).
+TEST(Scene, AHugeSceneFileIsRefusedByItsSize) {
+    const auto file = test::temp_dir("scene-huge") / "huge.json";
+    { std::ofstream(file) << "{}"; }
+    std::filesystem::resize_file(file, uint64_t(1) << 30);
+    std::string message;
+    try {
+        load_scene(file.string());
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find(file.string() + ": is 1.0 GiB: a scene file is at most 64.0 MiB"), std::string::npos) << message;
+    std::filesystem::remove(file);
+}
+
 TEST(Scene, EnumsAndFlagsSurviveTheTextRoundTrip) {
     auto dir = test::temp_dir("scene-text");
     Scene scene = parse_scene(R"({"objects": [{"model": "a.obj", "params": {"silhouette": "toon", "shading": false,

@@ -100,7 +100,7 @@ void make_scene_stipples(const Scene& scene, SceneContent& content) {
         auto set = stipples.find(key);
         if (set == stipples.end()) {
             const auto start = Clock::now();
-            set = stipples.emplace(key, make_stipples(object, generation)).first;
+            set = stipples.emplace(key, make_model_stipples(scene.model_path(i), object, generation)).first;
             content.generation_seconds += seconds_since(start);
         }
         object.stipples = set->second;

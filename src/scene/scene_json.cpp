@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "core/utf8.hpp"
 #include "core/printf_string.hpp"
 #include "mesh/loader_util.hpp"
@@ -474,12 +475,19 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     return scene;
 }
 
+// Far beyond any scene written by hand or by the viewer (a camera path of 10,000 keys is about 2 MiB).
+constexpr uintmax_t kMaxSceneFileBytes = uintmax_t(64) << 20;
+
 Scene load_scene(const std::string& path) {
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
     if (std::filesystem::is_directory(status)) fail_file(path, "is a directory, not a scene file");
     // Not opened otherwise: a FIFO would wait for a writer forever.
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) fail_file(path, "is not a regular file");
+    // A scene is a few KiB of JSON that names its models: one of many MiB is not a scene, and is not read whole.
+    if (const uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneFileBytes)
+        fail_file(path, "is " + byte_size(size) + ": a scene file is at most " + byte_size(kMaxSceneFileBytes) +
+                            " (it names its models; it does not hold them)");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail_file(path, "cannot open the scene file (missing or unreadable)");
     std::stringstream text;

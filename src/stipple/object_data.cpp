@@ -131,10 +131,20 @@ void check_generation_fits_memory(const std::string& path, const ObjectData& mod
                         std::to_string(most) + " stipples): lower --dmax or --max-stipples");
 }
 
+std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
+                                                      const GenerationParams& generation, StippleSource source) {
+    try {
+        return make_stipples(model, generation, source);
+    } catch (const std::bad_alloc&) {
+        fail_file(path, "out of memory generating its " + std::to_string(planned_stipple_count(model, generation)) +
+                            " stipples: lower --dmax or --max-stipples");
+    }
+}
+
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
     ObjectData object = load_model_data(path);
     check_generation_fits_memory(path, object, generation);
-    object.stipples = make_stipples(object, generation, source);
+    object.stipples = make_model_stipples(path, object, generation, source);
     return object;
 }
 

@@ -64,6 +64,12 @@ inline constexpr uint64_t kGenerationBytesPerStipple = 40;
 // the device's memory, check_model_fits). `info stack.obj --max-stipples 2000000000` grew past 7 GB.
 void check_generation_fits_memory(const std::string& path, const ObjectData& model, const GenerationParams& generation);
 
+// make_stipples for the model loaded from `path`: memory that runs out while generating names the file and
+// the stipples planned in one line (a bare "stipple: out of memory" until 2026-12-06).
+std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
+                                                      const GenerationParams& generation,
+                                                      StippleSource source = StippleSource::Cache);
+
 // Both: loads the model at `path`, checks its planned stipples fit in memory and makes them.
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation,
                             StippleSource source = StippleSource::Cache);
