@@ -64,6 +64,40 @@ size_t repeated_edges(const std::vector<Polyline>& lines) {
     return repeats;
 }
 
+// Strokes whose ends touch (closer than the pen's width) are one stroke before they are ordered, whichever ends
+// meet: end to start, end to end, start to start; a stroke apart stays apart, a closed one is never welded, and
+// a chain is never closed on itself (the last stroke's free end near the first's is left a gap).
+TEST(ExportPolylines, StrokesWhoseEndsTouchAreWeldedIntoOne) {
+    const double pen = 0.3;
+    std::vector<Polyline> lines = {
+        {{{0, 0}, {10, 0}}, false},           // a
+        {{{10.02, 0}, {20, 0}}, false},       // b: starts where a ends
+        {{{30, 0}, {20.01, 0.01}}, false},    // c: ends where b ends
+        {{{-0.02, 0}, {-10, 5}}, false},      // d: starts where a starts
+        {{{50, 50}, {60, 50}}, false},        // e: apart
+        {{{0, 0.1}, {1, 1}, {0, 1}}, true},   // f: closed, beside a's start
+    };
+    weld_touching_strokes(lines, pen);
+    ASSERT_EQ(lines.size(), 3u);
+    size_t open_points = 0, closed = 0;
+    double longest = 0.0;
+    for (const Polyline& line : lines) {
+        closed += line.closed;
+        if (!line.closed) open_points += line.points.size();
+        if (!line.closed && line.points.size() > 2) longest = polyline_length(line);
+    }
+    EXPECT_EQ(closed, 1u);
+    EXPECT_EQ(open_points, 10u) << "d, a, b, c in one (8 points) and e (2)";
+    EXPECT_NEAR(longest, std::hypot(10.0, 5.0) + 30.0 + 0.02 + 0.02 + 0.01 * std::sqrt(2.0), 0.05);
+
+    // A ring of strokes end to end: welded into one open stroke, not closed.
+    std::vector<Polyline> ring = {{{{0, 0}, {10, 0}}, false}, {{{10, 0.01}, {10, 10}}, false}, {{{10.01, 10}, {0, 0.01}}, false}};
+    weld_touching_strokes(ring, pen);
+    ASSERT_EQ(ring.size(), 1u);
+    EXPECT_FALSE(ring[0].closed);
+    EXPECT_EQ(ring[0].points.size(), 6u);
+}
+
 TEST(ExportPolylines, MessySquareBecomesOneClosedPolyline) {
     const std::vector<glm::dvec2> square{{100, 100}, {200, 100}, {200, 200}, {100, 200}};
     const LineGraph graph = merge_segments(messy_outline(square, 5, 0.0, 1));

@@ -267,6 +267,7 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
     }
     if (options.plotter_order) {
+        weld_touching_strokes(layer.lines, layer.stroke_mm);
         order_polylines(layer.lines, pen);
         // Where a contour's visible pieces meet with a gap narrower than the pen, one stroke: the pen was
         // lifted and set down again within its own width (the bunny's contours at 800 x 640: 106 of 179
