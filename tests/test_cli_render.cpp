@@ -35,7 +35,8 @@ size_t count_lines(const std::string& s) { return std::count(s.begin(), s.end(),
 // (ulimit -v, KiB) that catches it if it does not, and a timeout. Not the memory limit under a sanitizer, whose
 // shadow memory reserves more address space than any such limit leaves (the binary would not start).
 std::string guarded(const char* kilobytes, int seconds) {
-    const std::string timeout = "timeout " + std::to_string(seconds);
+    // Two threads: each thread's stack is address space too, and a machine of many cores would spend the limit on them.
+    const std::string timeout = "STIPPLE_THREADS=2 timeout " + std::to_string(seconds);
     return kHugePageNew ? "ulimit -v " + std::string(kilobytes) + "; " + timeout : timeout;
 }
 
@@ -256,7 +257,7 @@ TEST(CliRender, RunningOutOfMemoryWhileLoadingNamesTheFile) {
     auto dir = test::temp_dir("cli-out-of-memory");
     for (const char* name : {"big.obj", "big.gltf"}) {
         const auto model = sparse_file(dir / name, size);
-        const test::CommandResult r = run_stipple({"info", model.string()}, "ulimit -v 2000000; timeout 60");
+        const test::CommandResult r = run_stipple({"info", model.string()}, guarded("2000000", 60));
         EXPECT_EQ(r.exit_code, 1) << r.err;
         EXPECT_EQ(count_lines(r.err), 1u) << r.err;
         EXPECT_NE(r.err.find(model.string() + ": out of memory reading it (3.0 GiB)"), std::string::npos) << r.err;
@@ -277,7 +278,7 @@ TEST(CliRender, RunningOutOfMemoryWhileGeneratingNamesTheModel) {
     }
     test::ScopedEnv no_cache("STIPPLE_NO_CACHE", "1");
     const test::CommandResult r =
-        run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "60000000"}, "ulimit -v 2000000; timeout 120");
+        run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "60000000"}, guarded("2000000", 120));
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(count_lines(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(model.string() + ": out of memory generating its 60000000 stipples"), std::string::npos) << r.err;

@@ -250,7 +250,7 @@ int run_tone(const std::vector<std::string>& argv) {
     for (size_t k = 0; k < seeds.size(); ++k) {
         params.generation.seed = seeds[k];
         ObjectData object = model;
-        object.stipples = make_stipples(model, params.generation);
+        object.stipples = make_model_stipples(path, model, params.generation);
         require_candidates(path, object.stipples->size(), params.generation.dmax, "measure");
         StippleRenderer renderer(context, kColorFormat, context.depth_format);
         // An animated model as render draws it by default, its first animation at 0 s (without its motion

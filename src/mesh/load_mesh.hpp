@@ -28,8 +28,9 @@ struct LoadOptions {
 // Refuses, in one line naming `path`, what is not a model file to read whole: missing, a directory, not a
 // regular file (a FIFO would wait for a writer forever, /dev/zero fill memory), empty, a glTF file of 4 GiB
 // or more, or any file larger than half the machine's physical memory (it is read whole, and its mesh takes
-// as much again). Every reader of a model file calls it before opening it, so that every format reports
-// these the same way.
+// as much again). load_mesh, load_gltf_mesh and the glTF probe call it before opening a file, so that every
+// format reports these the same way (the per-format readers below do not). A glTF's external buffers are not
+// counted in its size (their byteLength is read as declared).
 void check_model_file(const std::string& path);
 
 // A std::bad_alloc while loading the model at `path`, in one line: "<path>: out of memory reading it

@@ -133,11 +133,13 @@ void check_generation_fits_memory(const std::string& path, const ObjectData& mod
 
 std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
                                                       const GenerationParams& generation, StippleSource source) {
+    // Counted before, not in the handler: for a mesh outside the unit frame the count copies the mesh, which
+    // memory that just ran out may not hold.
+    const uint64_t planned = planned_stipple_count(model, generation);
     try {
         return make_stipples(model, generation, source);
     } catch (const std::bad_alloc&) {
-        fail_file(path, "out of memory generating its " + std::to_string(planned_stipple_count(model, generation)) +
-                            " stipples: lower --dmax or --max-stipples");
+        fail_file(path, "out of memory generating its " + std::to_string(planned) + " stipples: lower --dmax or --max-stipples");
     }
 }
 
