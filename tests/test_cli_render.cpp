@@ -116,6 +116,49 @@ TEST(CliRender, InfoRefusesStipplesBeyondMemoryBeforeGenerating) {
         << r.err;
 }
 
+// render and tone check the planned stipples against the host's memory too, not only the device's (the
+// tighter limit on lavapipe, not on a GPU of large buffers), here made 512 MiB with STIPPLE_HOST_MEMORY_LIMIT:
+// 15M stipples would need about 572 MiB to generate, and the device holds them (lavapipe's 128-MiB buffers
+// hold 16.7M). A value that is no size is
+// refused, so that a typo does not silently test nothing.
+TEST(CliRender, RenderAndToneRefuseStipplesBeyondTheHostsMemory) {
+    std::string stack;
+    for (int i = 0; i < 2000; ++i) {
+        const std::string z = std::to_string(i * 1e-4);
+        for (const char* corner : {"-1 -1 ", "1 -1 ", "1 1 ", "-1 1 "}) stack += std::string("v ") + corner + z + "\n";
+        stack += "f " + std::to_string(4 * i + 1) + " " + std::to_string(4 * i + 2) + " " + std::to_string(4 * i + 3) + " " +
+                 std::to_string(4 * i + 4) + "\n";
+    }
+    const auto dir = test::temp_dir("cli-host-memory");
+    const auto model = dir / "stack.obj";
+    write_file(model, stack);
+    test::ScopedEnv no_cache("STIPPLE_NO_CACHE", "1");
+    const std::vector<std::string> budget = {"--dmax", "16", "--max-stipples", "15000000"};
+    for (const std::string command : {"render", "tone"}) {
+        std::vector<std::string> args = {command, model.string()};
+        args.insert(args.end(), budget.begin(), budget.end());
+        if (command == "render") args.insert(args.end(), {"-o", (dir / "never.png").string(), "--width", "64", "--height", "64"});
+        const test::CommandResult r = [&] {
+            test::ScopedEnv limit("STIPPLE_HOST_MEMORY_LIMIT", "512M");
+            return run_stipple(args, guarded("8000000", 120));
+        }();
+        EXPECT_EQ(r.exit_code, 1) << command << ": " << r.err;
+        // One line, beside render's note that the budget caps D_max 16.
+        const size_t notes = r.err.find("stipple: note: " + model.string() + ": D_max 16 is capped") != std::string::npos;
+        EXPECT_EQ(count_lines(r.err), 1u + notes) << command << ": " << r.err;
+        EXPECT_NE(r.err.find(model.string() + ": 15000000 stipples planned, whose generation needs about 572.2 MiB"),
+                  std::string::npos) << command << ": " << r.err;
+        EXPECT_NE(r.err.find("more than this machine's 512.0 MiB of memory holds (at most 13421772 stipples)"), std::string::npos)
+            << command << ": " << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "never.png"));
+    test::ScopedEnv typo("STIPPLE_HOST_MEMORY_LIMIT", "1 GB");
+    const test::CommandResult r = run_stipple({"info", model.string()}, guarded("4000000", 60));
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find("STIPPLE_HOST_MEMORY_LIMIT=1 GB is not a size such as 2G"), std::string::npos) << r.err;
+}
+
 struct BadInput {
     const char* name;
     const char* file;      // written into a temp dir ("" = not written)
@@ -245,6 +288,28 @@ TEST(CliRender, AModelFileTooLargeToLoadIsRefusedByItsSize) {
         std::filesystem::remove(model);
     }
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// A .gltf's external buffers count toward the same limit (half the machine's memory, here made 1 GiB with
+// STIPPLE_HOST_MEMORY_LIMIT): a 600-MiB .bin beside a 1-kB .gltf was read whole and, where memory ran out,
+// reported with the .gltf's size. Refused before it is read, naming the buffer.
+TEST(CliRender, AGltfsExternalBuffersCountTowardItsSize) {
+    auto dir = test::temp_dir("cli-large-buffer");
+    const uint64_t length = uint64_t(600) << 20;
+    sparse_file(dir / "big.bin", length);
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "buffers": [{"uri": "big.bin", "byteLength": )" + std::to_string(length) + R"(}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [0, 0, 0]}]})";
+    write_file(dir / "big.gltf", gltf);
+    test::ScopedEnv limit("STIPPLE_HOST_MEMORY_LIMIT", "1G");
+    const test::CommandResult r = run_stipple({"info", (dir / "big.gltf").string()}, guarded("4000000", 60));
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find((dir / "big.gltf").string() + ": buffers[0].uri: 'big.bin' takes its external buffers to 600.0 MiB, "
+                         "more than a model's files may be on this machine: 512.0 MiB, half its 1.0 GiB of memory"),
+              std::string::npos) << r.err;
 }
 
 // Memory that runs out while a model loads (here a limit on what the command may map, below a 3 GiB file that

@@ -116,7 +116,9 @@ FinishedWork BackgroundWork::execute(const Job& job) {
     work.data = job.kind == FinishedWork::Kind::Loaded ? load_model_data(job.path) : job.model;
     // A count this device cannot hold is refused before the stipples are made (minutes at a high D_max).
     check_model_fits(context_, work.data, job.params.generation);
-    work.data.stipples = make_stipples(work.data, job.params.generation);
+    // Named by its file in what it refuses (the host's memory, memory that runs out).
+    const std::string& path = job.path.empty() && work.data.mesh ? work.data.mesh->source : job.path;
+    work.data.stipples = make_model_stipples(path, work.data, job.params.generation);
     work.upload = std::make_unique<ObjectUpload>(
         prepare_object_upload(context_, *work.data.mesh, *work.data.stipples, job.params.generation.seed,
                               work.data.motion));

@@ -111,7 +111,7 @@ bool LiveScene::regenerate_if_changed(size_t object) {
     if (!generation_changed(object)) return false;
     const GenerationParams wanted = scene_.objects.at(object).params.generation;
     check_model_fits(renderer_.context(), data_[object], wanted);
-    auto stipples = make_stipples(data_[object], wanted);
+    auto stipples = make_model_stipples(data_[object].mesh->source, data_[object], wanted);
     apply_stipples(ids_[object], wanted, stipples,
                    prepare_object_upload(renderer_.context(), *data_[object].mesh, *stipples, wanted.seed,
                                          data_[object].motion));
@@ -123,7 +123,7 @@ void LiveScene::add_model(const std::string& path) {
     const ObjectParams params = params_for_new_object();
     ObjectData data = load_model_data(path);
     check_model_fits(renderer_.context(), data, params.generation);
-    data.stipples = make_stipples(data, params.generation);
+    data.stipples = make_model_stipples(path, data, params.generation);
     const ObjectUpload upload =
         prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed, data.motion);
     add_loaded(path, std::move(data), upload, params);

@@ -325,6 +325,9 @@ void environment_section() {
   STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory: how a
                           smaller GPU refuses an object or scene too big for it, tried on a big one
+  STIPPLE_HOST_MEMORY_LIMIT=SIZE  act as if this machine had at most SIZE (e.g. 2G) of memory (it
+                          also reads a control group's limit): how a smaller machine refuses a model
+                          file or stipples it could not hold
   STIPPLE_MAX_STORAGE_BUFFER=SIZE  act as if the device's largest storage buffer were SIZE: render
                           draws an image whose pixel words do not fit one in tiles (lavapipe: 128M)
   STIPPLE_MAX_WORKGROUPS=N  act as if a compute dispatch could have at most N workgroups along x: how

@@ -1,8 +1,6 @@
 #pragma once
 // Returning freed memory to the system in the middle of a long computation; what the machine has, for
 // refusing in one line what could never fit instead of running out half way.
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -26,11 +24,12 @@ inline void release_free_memory() {
 #endif
 }
 
-// The machine's physical memory in bytes, or 0 where the system does not say.
-inline uint64_t physical_memory_bytes() {
-    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
-}
+// The memory this process may use, in bytes: the machine's physical memory, or less where a control group
+// (cgroup v2 memory.max, v1 memory.limit_in_bytes) limits it (a container on a large host reported the host's,
+// and a model it could never load was read until the kernel killed it), or STIPPLE_HOST_MEMORY_LIMIT (e.g.
+// 2G: how a smaller machine refuses a model, tried on a big one; a value that is not a size fails). 0 where
+// the system says nothing.
+uint64_t physical_memory_bytes();
 
 // A size for a message: "3.0 GiB", "12.5 MiB", "830 bytes".
 inline std::string byte_size(uint64_t bytes) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "mesh/gltf_draco.hpp"
 #include "mesh/gltf_meshopt.hpp"
 #include "mesh/glb_container.hpp"
@@ -100,6 +101,11 @@ bool take_external_buffers(const std::string& model, nlohmann::json& doc, const 
     const auto list = doc.find("buffers");
     if (list == doc.end() || !list->is_array()) return false;
     bool changed = false;
+    // The files are read whole, and the mesh made from them takes as much again: together they may be at most
+    // half the machine's memory, as a model file may (check_model_size; the .gltf's own size said nothing of
+    // its buffers, and a huge one ran out of memory reported with the .gltf's size).
+    const uint64_t memory = physical_memory_bytes();
+    uint64_t external = 0;
     for (size_t i = 0; i < list->size(); ++i) {
         nlohmann::json& buffer = (*list)[i];
         const auto uri = buffer.find("uri");
@@ -107,6 +113,11 @@ bool take_external_buffers(const std::string& model, nlohmann::json& doc, const 
         const std::string text = uri->get<std::string>();
         if (text.rfind("data:", 0) == 0) continue;
         const uint64_t length = buffer.at("byteLength").get<uint64_t>();
+        external += length;
+        if (memory > 0 && external > memory / 2)
+            fail_file(model, "buffers[" + std::to_string(i) + "].uri: " + quoted_excerpt(text, 64) + " takes its external buffers to " +
+                                 byte_size(external) + ", more than a model's files may be on this machine: " + byte_size(memory / 2) +
+                                 ", half its " + byte_size(memory) + " of memory");
         const std::string name = served_name(i);
         buffers.by_name[name] =
             read_buffer_file(model, "buffers[" + std::to_string(i) + "]", text, external_buffer_path(base_dir, text), length);

@@ -120,10 +120,11 @@ uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& 
     return planned_stipple_count(*model.mesh, generation, stretch_headroom(model));
 }
 
-void check_generation_fits_memory(const std::string& path, const ObjectData& model, const GenerationParams& generation) {
+namespace {
+
+void check_generation_fits_memory(const std::string& path, uint64_t count) {
     const uint64_t memory = physical_memory_bytes();
     const uint64_t most = memory / kGenerationBytesPerStipple;
-    const uint64_t count = planned_stipple_count(model, generation);
     if (memory == 0 || count <= most) return;
     fail_file(path, std::to_string(count) + " stipples planned, whose generation needs about " +
                         byte_size(count * kGenerationBytesPerStipple) + " (" + std::to_string(kGenerationBytesPerStipple) +
@@ -131,11 +132,14 @@ void check_generation_fits_memory(const std::string& path, const ObjectData& mod
                         std::to_string(most) + " stipples): lower --dmax or --max-stipples");
 }
 
+}  // namespace
+
 std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
                                                       const GenerationParams& generation, StippleSource source) {
     // Counted before, not in the handler: for a mesh outside the unit frame the count copies the mesh, which
     // memory that just ran out may not hold.
     const uint64_t planned = planned_stipple_count(model, generation);
+    check_generation_fits_memory(path, planned);
     try {
         return make_stipples(model, generation, source);
     } catch (const std::bad_alloc&) {
@@ -145,7 +149,6 @@ std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, c
 
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation, StippleSource source) {
     ObjectData object = load_model_data(path);
-    check_generation_fits_memory(path, object, generation);
     object.stipples = make_model_stipples(path, object, generation, source);
     return object;
 }

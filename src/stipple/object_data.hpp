@@ -58,19 +58,18 @@ uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& 
 // dragon (docs/performance.md, "Memory").
 inline constexpr uint64_t kGenerationBytesPerStipple = 40;
 
-// Refuses, in one line naming `path`, the count and the limit, a model whose planned stipples
-// (planned_stipple_count) could not be generated in the machine's physical memory: before generating,
-// where a command has no device to check them against first (info; render, tone and the viewer check
-// the device's memory, check_model_fits). `info stack.obj --max-stipples 2000000000` grew past 7 GB.
-void check_generation_fits_memory(const std::string& path, const ObjectData& model, const GenerationParams& generation);
-
-// make_stipples for the model loaded from `path`: memory that runs out while generating names the file and
-// the stipples planned in one line (a bare "stipple: out of memory" until 2026-12-06).
+// make_stipples for the model loaded from `path`, refused first, in one line naming `path`, the count and the
+// limit, where its planned stipples (planned_stipple_count) could not be generated in the machine's physical
+// memory (`info stack.obj --max-stipples 2000000000` grew past 7 GB; render, tone and the viewer checked only
+// the device's memory until 2026-12-06, which on a GPU of large buffers is not the tighter limit); memory
+// that runs out while generating names the file and the stipples planned in one line too (a bare
+// "stipple: out of memory" until 2026-12-06). The check comes before the stipple cache is read, so a cached
+// set is refused where generating it would be.
 std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
                                                       const GenerationParams& generation,
                                                       StippleSource source = StippleSource::Cache);
 
-// Both: loads the model at `path`, checks its planned stipples fit in memory and makes them.
+// Both: loads the model at `path` and makes its stipples (make_model_stipples).
 ObjectData load_object_data(const std::string& path, const GenerationParams& generation,
                             StippleSource source = StippleSource::Cache);
 
