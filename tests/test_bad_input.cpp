@@ -195,6 +195,21 @@ const GltfCase kGltfCases[] = {
      "bufferViews[2]: byteOffset 44 + byteLength 4096 reaches past the end of buffer 0 (52 bytes)"},
     {"buffer_beyond_data", [](json& d) { d["buffers"][0]["byteLength"] = 1099511627776; },
      "buffers[0].byteLength: 1099511627776 bytes, but its data: URI holds only 54"},
+    // Data that is not base64 was reported as a short buffer, or with tinygltf's message quoting the whole URI.
+    {"data_uri_not_base64",
+     [](json& d) {
+         std::string uri = d["buffers"][0]["uri"];
+         uri[uri.find(',') + 5] = '@';
+         d["buffers"][0]["uri"] = uri;
+     },
+     "buffers[0].uri: its data: URI is not base64 ('@' at character 5 of the data)"},
+    // glTF reads an accessor in whole components: one 2 bytes into a float was read as other data.
+    {"misaligned_accessor",
+     [](json& d) {
+         d["bufferViews"][0]["byteLength"] = 44;
+         d["accessors"][0]["byteOffset"] = 2;
+     },
+     "accessors[0].byteOffset: 2 is not a multiple of its component's 4 bytes"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Gltf, GltfFields, ::testing::ValuesIn(kGltfCases),
@@ -234,6 +249,23 @@ TEST(GltfFields, DeepNestingIsRefused) {
 TEST(GltfFields, InvalidJsonIsNamed) {
     const auto dir = temp_dir("bad_gltf_json");
     expect_error(write_file(dir / "cut.gltf", valid_gltf().dump().substr(0, 40)), "not valid JSON: ");
+    // Cut inside a data: URI of 100 kB: what it last read is quoted in its first characters, not whole (a
+    // line of 1,000 characters, most of them base64).
+    json doc = valid_gltf();
+    doc["buffers"][0]["uri"] = doc["buffers"][0]["uri"].get<std::string>() + std::string(100000, 'A');
+    const std::string text = doc.dump();
+    const std::string message = load_error(write_file(dir / "cut_uri.gltf", text.substr(0, text.find("AAAAAAAAAA") + 50000)));
+    EXPECT_NE(message.find("not valid JSON: "), std::string::npos) << message;
+    EXPECT_NE(message.find("; last read: '\"data:application/octet-stream;base64,"), std::string::npos) << message;
+    EXPECT_LE(message.size(), 400u) << message;
+}
+
+// A .glb cut within its 12-byte header was said not to start with 'glTF', which it does.
+TEST(GltfFields, GlbCutWithinItsHeaderIsSaidSo) {
+    const auto dir = temp_dir("bad_glb_header");
+    ByteWriter w;
+    w.put<uint32_t>(0x46546C67).put<uint32_t>(2);
+    expect_error(write_file(dir / "cut.glb", w.bytes() + "ab"), "GLB header: the file ends after 10 bytes, within its 12-byte header");
 }
 
 // ---------------------------------------------------------------- glTF 1.0

@@ -17,7 +17,9 @@ uint32_t little_endian_u32(std::string_view bytes, size_t at) {
 }  // namespace
 
 GlbChunks split_glb(const std::string& name, std::string_view bytes) {
-    if (bytes.size() < 12 || bytes.substr(0, 4) != "glTF") fail_file(name, "not a binary glTF file (it does not start with 'glTF')");
+    if (bytes.substr(0, 4) != "glTF") fail_file(name, "not a binary glTF file (it does not start with 'glTF')");
+    if (bytes.size() < 12)
+        fail_file(name, "GLB header: the file ends after " + std::to_string(bytes.size()) + " bytes, within its 12-byte header");
     const uint32_t version = little_endian_u32(bytes, 4), length = little_endian_u32(bytes, 8);
     if (version == 1) fail_file(name, "glTF 1.0 is not supported (convert to glTF 2.0)");
     if (version != 2) fail_file(name, "GLB header: version " + std::to_string(version) + " is not supported (only 2)");

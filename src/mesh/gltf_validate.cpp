@@ -273,6 +273,12 @@ private:
                 bad(at(where, "uri"), "a buffer's data: URI must be application/octet-stream or application/gltf-buffer in "
                                       "base64, got " + shown(type));
             holder = "its data: URI";
+            // tinygltf's own message for another character quotes the whole URI, and a length check before it
+            // read as a short buffer.
+            const size_t bad_char = u.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=", comma + 1);
+            if (bad_char != std::string::npos)
+                bad(at(where, "uri"), "its data: URI is not base64 (" + shown(u.substr(bad_char, 1)) + " at character " +
+                                          std::to_string(bad_char - comma) + " of the data)");
             const uint64_t payload = u.size() - comma - 1;
             return payload / 4 * 3 + (payload % 4 ? 3 : 0);
         }
@@ -385,6 +391,9 @@ private:
         const std::string& type = a["type"].get_ref<const std::string&>();
         const uint64_t components = type == "SCALAR" ? 1 : type[0] == 'V' ? type[3] - '0' : (type[3] - '0') * (type[3] - '0');
         const uint64_t offset = optional_count(a, where, "byteOffset");
+        // glTF asks it (and a view's stride) in whole components: data read from elsewhere is garbage.
+        if (offset % type_size != 0)
+            bad(at(where, "byteOffset"), std::to_string(offset) + " is not a multiple of its component's " + std::to_string(type_size) + " bytes");
         if (const json* normalized = find(a, "normalized"); normalized && !normalized->is_boolean())
             bad(at(where, "normalized"), "expected true or false, got " + got(*normalized));
         optional_numbers(a, where, "min", 0);
@@ -568,7 +577,10 @@ json validate_gltf(const std::string& name, std::string_view bytes, bool binary,
         std::string what = e.what();
         if (const size_t bracket = what.find("] "); what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
             what.erase(0, bracket + 2);
-        fail_file(name, "not valid JSON: " + one_line(what));
+        // What it last read can be a data: URI of megabytes: its first characters say where.
+        if (const size_t read = what.find("; last read: "); read != std::string::npos)
+            what = what.substr(0, read) + "; last read: " + excerpt(what.substr(read + 13), 60);
+        fail_file(name, "not valid JSON: " + excerpt(one_line(what), 240));
     }
     if (!doc.is_object()) fail_file(name, "expected a JSON object at the top level, got " + got(doc));
     Checker(name, doc, binary ? &glb : nullptr, base_dir).run();
