@@ -9,6 +9,7 @@
 #include "app/key_latch.hpp"
 #include "app/panel.hpp"
 #include "app/param_widgets.hpp"
+#include "app/window_place.hpp"
 #include "params/param_table.hpp"
 
 namespace {
@@ -184,6 +185,108 @@ TEST(AppPanel, TheKeyLatchHoldsEachQuickPressForOneFrame) {
     latch.forget();  // the panel hidden for that frame
     frame();
     EXPECT_EQ(seen, "10100");
+}
+
+// D_max's field with 0.3 typed in it, then Ctrl+A pressed and released between two frames (Ctrl, A, A up, Ctrl up, as
+// xdotool key ctrl+a gives them), then 2.5 typed and Enter: the latch held both keys down for a frame, but the
+// backend had set Ctrl up at its release, so Dear ImGui saw a bare A, nothing was selected, and the typed
+// characters joined the old text (0.32 committed). Returns the value committed.
+float select_all_and_type(bool modifiers_from_keys) {
+    constexpr int kEnter = 257, kA = 65, kCtrl = 341;  // GLFW_KEY_ENTER, GLFW_KEY_A, GLFW_KEY_LEFT_CONTROL
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(800.0f, 600.0f);
+    io.DeltaTime = 1.0f / 60.0f;
+    io.KeyMap[ImGuiKey_Enter] = kEnter;
+    io.KeyMap[ImGuiKey_A] = kA;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    const ParamSpec& dmax = *find_param("dmax");
+    ObjectParams params;
+    params.generation.dmax = 0.21f;
+    app::KeyLatch latch;
+    // The backend's key callback: the key's state, then the modifiers from the states, as it sets them.
+    auto event = [&](int key, bool down) {
+        io.KeysDown[key] = down;
+        if (down) latch.pressed(key);
+        io.KeyCtrl = io.KeysDown[kCtrl];
+    };
+    for (int frame = 0; frame < 9; ++frame) {
+        if (frame == 2)  // the field's text selected on focus: typed over, the cursor after it
+            for (const char c : std::string("0.3")) io.AddInputCharacter(c);
+        if (frame == 3) {
+            event(kCtrl, true), event(kA, true), event(kA, false), event(kCtrl, false);
+        }
+        if (frame == 5)
+            for (const char c : std::string("2.5")) io.AddInputCharacter(c);
+        if (frame == 6) event(kEnter, true), event(kEnter, false);
+        latch.apply(io.KeysDown, IM_ARRAYSIZE(io.KeysDown), [](int) { return false; });
+        if (modifiers_from_keys) app::KeyLatch::set_modifiers(io.KeysDown, io.KeyCtrl, io.KeyShift, io.KeyAlt, io.KeySuper);
+        ImGui::NewFrame();
+        ImGui::Begin("panel");
+        if (frame == 0) ImGui::SetKeyboardFocusHere();  // the slider becomes a text field
+        app::draw_param_widget(dmax, params, dmax.max);
+        ImGui::End();
+        ImGui::Render();
+    }
+    ImGui::DestroyContext();
+    return params.generation.dmax;
+}
+
+TEST(AppPanel, AQuickCtrlABetweenTwoFramesSelectsTheField) {
+    const float lost = select_all_and_type(false);
+    EXPECT_NE(lost, 2.5f) << "without the modifiers from the latched keys Dear ImGui misses the Ctrl: the test no longer shows it";
+    const float typed = select_all_and_type(true);
+    EXPECT_FLOAT_EQ(typed, 2.5f);
+    std::printf("0.3 typed in the field, Ctrl+A between frames, 2.5 typed: without the modifiers D_max %.3g, with them %.3g\n",
+                double(lost), double(typed));
+}
+
+// The timeline's window at its place in a 1280 x 1024 viewer, the viewer shrunk to 200 x 150 (Dear ImGui moves
+// the window into it) and grown back; then moved by the user at that size. Returns the window's place after the
+// growth, and after the move.
+std::pair<ImVec2, ImVec2> shrink_and_grow(bool kept) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    app::WindowPlace place;
+    ImVec2 pos, moved;
+    const ImVec2 sizes[] = {{1280, 1024}, {1280, 1024}, {200, 150}, {200, 150}, {200, 150}, {1280, 1024}, {1280, 1024},
+                            {1280, 1024}, {1280, 1024}};
+    for (int frame = 0; frame < 9; ++frame) {
+        io.DisplaySize = sizes[frame];
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(490, 850), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(440, 120), ImGuiCond_FirstUseEver);
+        if (frame == 7) ImGui::SetNextWindowPos(ImVec2(300, 400), ImGuiCond_Always);  // as a drag by the user moves it
+        if (kept) place.before_begin(io.DisplaySize);
+        ImGui::Begin("timeline");
+        if (kept) place.after_begin(io.DisplaySize);
+        if (frame == 6) pos = ImGui::GetWindowPos();
+        if (frame == 8) moved = ImGui::GetWindowPos();
+        ImGui::End();
+        ImGui::Render();
+    }
+    ImGui::DestroyContext();
+    return {pos, moved};
+}
+
+TEST(AppPanel, AWindowReturnsToItsPlaceWhenTheViewerGrowsAgain) {
+    const auto [lost, lost_moved] = shrink_and_grow(false);
+    EXPECT_TRUE(lost.x != 490.0f || lost.y != 850.0f) << "Dear ImGui no longer leaves it where the shrink put it: the test shows nothing";
+    const auto [back, moved] = shrink_and_grow(true);
+    EXPECT_FLOAT_EQ(back.x, 490.0f);
+    EXPECT_FLOAT_EQ(back.y, 850.0f);
+    EXPECT_FLOAT_EQ(moved.x, 300.0f);  // the user's own move stays
+    EXPECT_FLOAT_EQ(moved.y, 400.0f);
+    std::printf("timeline at (490, 850), the viewer shrunk and grown: without the kept place at (%.0f, %.0f), with it (%.0f, %.0f)\n",
+                double(lost.x), double(lost.y), double(back.x), double(back.y));
 }
 
 TEST(AppPanel, AnEnterBetweenTwoFramesCommitsTheTypedValue) {

@@ -1,5 +1,7 @@
 #include "app/key_latch.hpp"
 
+#include <GLFW/glfw3.h>
+
 #include <algorithm>
 
 namespace stipple::app {
@@ -23,6 +25,13 @@ void KeyLatch::apply(bool* keys_down, int count, const std::function<bool(int)>&
     }
     held_ = std::move(held);
     pressed_ = std::move(carried);
+}
+
+void KeyLatch::set_modifiers(const bool* keys_down, bool& ctrl, bool& shift, bool& alt, bool& super) {
+    ctrl = keys_down[GLFW_KEY_LEFT_CONTROL] || keys_down[GLFW_KEY_RIGHT_CONTROL];
+    shift = keys_down[GLFW_KEY_LEFT_SHIFT] || keys_down[GLFW_KEY_RIGHT_SHIFT];
+    alt = keys_down[GLFW_KEY_LEFT_ALT] || keys_down[GLFW_KEY_RIGHT_ALT];
+    super = keys_down[GLFW_KEY_LEFT_SUPER] || keys_down[GLFW_KEY_RIGHT_SUPER];
 }
 
 }  // namespace stipple::app

@@ -20,6 +20,11 @@ public:
     // longer down is held down for this frame (one latched last frame and pressed again: up for this frame,
     // down for the next, so that the second press is a press of its own).
     void apply(bool* keys_down, int count, const std::function<bool(int)>& down_now);
+    // After apply: Ctrl, Shift, Alt and Super as the keys' states now say (`keys_down`, GLFW's key codes), as the
+    // backend sets them on each key event. A quick Ctrl+A (both pressed and released between two frames) had
+    // both keys held by apply but the backend's Ctrl already released: Dear ImGui saw a bare A, did not select
+    // the field's text, and what was typed next was added to it (a tester's 2.5 read 2).
+    static void set_modifiers(const bool* keys_down, bool& ctrl, bool& shift, bool& alt, bool& super);
     // Forgets the presses since the last apply: frames without the panel (hidden), whose keys are not its.
     void forget() { pressed_.clear(); }
 

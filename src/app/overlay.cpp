@@ -121,6 +121,7 @@ void Overlay::new_frame() {
     ImGui_ImplGlfw_NewFrame();
     ImGuiIO& io = ImGui::GetIO();
     key_latch_.apply(io.KeysDown, IM_ARRAYSIZE(io.KeysDown), [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS; });
+    KeyLatch::set_modifiers(io.KeysDown, io.KeyCtrl, io.KeyShift, io.KeyAlt, io.KeySuper);
     // The panel is drawn into the frame, which a window larger than the device can draw is clamped to
     // (swapchain.cpp): its viewport must not be the window's.
     if (extent_.width > 0 && extent_.height > 0 && io.DisplayFramebufferScale.x > 0.0f && io.DisplayFramebufferScale.y > 0.0f) {

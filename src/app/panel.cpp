@@ -1,4 +1,5 @@
 #include "app/panel.hpp"
+#include "app/window_place.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -168,7 +169,10 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     unfold = false;
     char title[64];
     std::snprintf(title, sizeof title, "stipple  %.1f fps###stipple", figures.fps);  // ### keeps one window
+    static WindowPlace place;
+    place.before_begin(ImGui::GetIO().DisplaySize);
     bool open = ImGui::Begin(title);
+    place.after_begin(ImGui::GetIO().DisplaySize);
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (size.y >= max_height - 0.5f) clamped_at = max_height;
     last_width = size.x;

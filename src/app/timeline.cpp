@@ -65,7 +65,9 @@ glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, c
     const float x = std::clamp(window_size.x - 450.0f, 10.0f, 490.0f);
     ImGui::SetNextWindowPos(ImVec2(x, std::max(10.0f, window_size.y - 170.0f)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
+    place_.before_begin(ImGui::GetIO().DisplaySize);
     const bool open = ImGui::Begin("timeline");
+    place_.after_begin(ImGui::GetIO().DisplaySize);
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (open) {
         ImGui::PushItemWidth(-120.0f);

@@ -3,6 +3,7 @@
 // own small window: play/pause (also Space), scrub, speed, loop, and each animated object's animation.
 // Drawn only when the scene has an animated object; the renderer deforms on the GPU, so playing costs
 // the frame rate only the deformation pass.
+#include "app/window_place.hpp"
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ public:
                    glm::vec2 window_size);
 
 private:
+    WindowPlace place_;  // its window's place, kept across a shrink of the viewer's window
     double time_ = 0.0;
     bool playing_ = true;
     float speed_ = 1.0f;  // scene seconds per wall second
