@@ -412,6 +412,24 @@ TEST(CliExport, ABlankPageIsSaid) {
     EXPECT_NE(bare.err.find("stipple: warning: " + png + ": nothing is drawn (no dot, no line)"), std::string::npos) << bare.err;
     const test::CommandResult inked = test::run_stipple({"render", "--width", "200", "--height", "160", "-o", png});
     EXPECT_EQ(inked.err.find("nothing is drawn"), std::string::npos) << inked.err;
+    // A frame that one line inks all over is drawn (2 x 2 pixels of outline were said blank); a frame that faces
+    // which only hide cover in paper is blank (seen from inside a box open on one side, under contours, whose
+    // open side makes the faces facing away hide: said drawn, since the surface covered every pixel).
+    const test::CommandResult tiny =
+        test::run_stipple({"render", "--width", "2", "--height", "2", "--silhouette-lines", "--silhouette-width", "8", "-o", png});
+    ASSERT_EQ(tiny.exit_code, 0) << tiny.err;
+    EXPECT_EQ(tiny.err.find("nothing is drawn"), std::string::npos) << tiny.err;
+    const std::string box = (dir / "open_box.obj").string();
+    {
+        std::ofstream obj(box);
+        obj << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+               "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\n";  // no +x face
+    }
+    const test::CommandResult inside = test::run_stipple(
+        {"render", box, "--distance", "0.05", "--contours", "--width", "64", "--height", "64", "-o", png, "--stats"});
+    ASSERT_EQ(inside.exit_code, 0) << inside.err;
+    EXPECT_NE(inside.out.find("covered pixels:     4096"), std::string::npos) << inside.out;
+    EXPECT_NE(inside.err.find("stipple: warning: " + png + ": nothing is drawn (no dot, no line)"), std::string::npos) << inside.err;
 }
 
 // What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger

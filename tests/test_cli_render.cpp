@@ -663,6 +663,11 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"tone", "--images", ""}, "--images needs a folder"},
         {{"tone", "--images", "/etc/passwd"}, "--images /etc/passwd is not a folder"},
         {{"render", "--dmax", "1e-300"}, "--dmax = 1e-300 is out of range"},
+        // Beyond a double too (it read as 0 and was taken); 0 offered only where the range has it; an integer's
+        // fraction shown as given (single precision rounded it away: "4294967296 is not an integer").
+        {{"render", "--dmax", "1e-400"}, "--dmax = 1e-400 is out of range: it must be >= 0 and <= 16 (single precision holds it as 0: give 0, or at least 1e-38)"},
+        {{"render", "--de", "1e-46"}, "--de = 1e-46 is out of range: it must be > 0 and <= 16 (single precision holds it as 0: give at least 1e-38)"},
+        {{"render", "--seed", "4294967295.5"}, "--seed = 4294967295.5 is not an integer"},
         {{"render", "--light", "1e300,0,0"}, "has a number beyond single precision"},
         {{"render", "-o", "x.svg", "--page", "5x5mm"}, "smaller than 10 mm a side"},
         {{"render", "-o", "x.png", "--page", "A4", "--dpi", "300", "--dot-style", "circle"},

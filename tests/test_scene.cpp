@@ -849,6 +849,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "objects[1].params.dmax", "out of range"},
         BadScene{"negative_integer", R"({"objects": [{"model": "sphere.obj", "params": {"seed": -3}}]})",
                  "objects[0].params.seed", "out of range"},
+        // Refused as --dmax refuses it (it was read as a float, 0, and drew nothing).
+        BadScene{"underflowing_float", R"({"objects": [{"model": "sphere.obj", "params": {"dmax": 1e-46}}]})",
+                 "objects[0].params.dmax", "1e-46 is out of range: it must be >= 0 and <= 16 (single precision holds it as 0: give 0, or at least 1e-38)"},
         BadScene{"bad_enum", R"({"objects": [{"model": "sphere.obj", "params": {"density_path": "gpu"}}]})",
                  "objects[0].params.density_path", "'gpu' is not one of vertex, cpu"},
         BadScene{"bad_scale", R"({"objects": [{"model": "sphere.obj", "transform": {"scale": -1}}]})",

@@ -71,6 +71,14 @@ bool is_blank(const Image& image) {
     return true;
 }
 
+// Whether the image's first pixel is the paper's colour, as the colour target stores it (8-bit, rounded).
+bool shows_paper(const Image& image, const glm::vec3& paper) {
+    if (image.pixels.empty() || image.channels < 3) return true;
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(int(image.pixels[size_t(c)]) - int(std::lround(std::clamp(paper[c], 0.0f, 1.0f) * 255.0f))) > 1) return false;
+    return true;
+}
+
 }  // namespace
 
 Scene scene_from_command_line(const Args& args, const std::string& what) {
@@ -328,8 +336,10 @@ int run_render(const std::vector<std::string>& argv) {
             }
         } else {
             write_png(output_path(output, i, sequence), frame.color);
-            // A frame that a surface covers everywhere may be uniform ink: only one that shows the paper is blank.
-            empty_pages += is_blank(frame.color) && std::find(frame.depth.begin(), frame.depth.end(), 1.0f) != frame.depth.end();
+            // Blank where its one colour is the paper's: a surface may cover the frame in uniform ink (toon), a line
+            // a tiny frame (2x2 drew black and was said empty), and faces that only hide (the inside of a model with
+            // holes, seen from within, under object-space lines) may cover it in paper (said drawn until 2026-12-06).
+            empty_pages += is_blank(frame.color) && shows_paper(frame.color, scene.paper);
         }
         if (args.has("--mask")) write_png(output_path(args.get("--mask", ""), i, sequence), frame.coverage_mask());
         bar.update(double(i + 1) / double(cameras.size()));

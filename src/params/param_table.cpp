@@ -226,6 +226,23 @@ std::string format_param_value(const ParamSpec& spec, double value) {
     return shortest(value, spec.type);
 }
 
+namespace {
+
+// For a value too small for single precision, which would be 0: 0 only where the range has it.
+std::string underflow_hint(const ParamSpec& spec) {
+    const bool zero_allowed = spec.min_open ? 0.0 > spec.min : 0.0 >= spec.min;
+    return zero_allowed ? " (single precision holds it as 0: give 0, or at least 1e-38)"
+                        : " (single precision holds it as 0: give at least 1e-38)";
+}
+
+// Whether decimal text names a nonzero number (a digit 1-9 before any exponent): "1e-400", which a double
+// holds as 0, is not 0.
+bool names_nonzero(const std::string& text) {
+    return text.substr(0, text.find_first_of("eE")).find_first_of("123456789") != std::string::npos;
+}
+
+}  // namespace
+
 std::optional<std::string> param_value_problem(const ParamSpec& spec, double value) {
     switch (spec.type) {
         case ParamType::Bool: return std::nullopt;
@@ -233,7 +250,11 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
             if (value >= 0.0 && value < double(spec.choices.size()) && value == std::floor(value)) return std::nullopt;
             return "not one of " + choices_text(spec);
         case ParamType::Int:
-            if (std::isfinite(value) && value != std::floor(value)) return shortest(value, ParamType::Float) + " is not an integer";
+            // In double's shortest form: single precision rounded 4294967295.5 to "4294967296 is not an integer".
+            if (std::isfinite(value) && value != std::floor(value)) {
+                char text[32];
+                return std::string(text, std::to_chars(text, text + sizeof(text), value).ptr) + " is not an integer";
+            }
             break;
         case ParamType::Float: break;
     }
@@ -255,8 +276,7 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
         char text[32];
         shown.assign(text, std::to_chars(text, text + sizeof(text), value).ptr);
     }
-    return shown + " is out of range: it must be " + param_range_text(spec) +
-           (underflows ? " (single precision holds it as 0: give 0, or at least 1e-38)" : "");
+    return shown + " is out of range: it must be " + param_range_text(spec) + (underflows ? underflow_hint(spec) : "");
 }
 
 double parse_param_text(const ParamSpec& spec, const std::string& text) {
@@ -269,6 +289,8 @@ double parse_param_text(const ParamSpec& spec, const std::string& text) {
     if (spec.type == ParamType::Bool) fail(where + " takes no value");
     const std::optional<double> value = parse_decimal(text);
     if (!value) fail(where + ": '" + text + "' is not a finite number");
+    if (spec.type == ParamType::Float && *value == 0.0 && names_nonzero(text))
+        fail(where + " = " + text + " is out of range: it must be " + param_range_text(spec) + underflow_hint(spec));
     if (auto problem = param_value_problem(spec, *value)) fail(where + " = " + *problem);
     return *value;
 }

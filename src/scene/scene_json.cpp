@@ -66,7 +66,11 @@ public:
         }
     }
 
-    float number(const json& j, const std::string& where) const {
+    float number(const json& j, const std::string& where) const { return float(real(j, where)); }
+
+    // The number as the file gives it, within single precision's range, not yet rounded to it: a parameter's
+    // range check tells a value that rounds to 0 from 0 (1e-46 was taken for D_max 0, which --dmax refuses).
+    double real(const json& j, const std::string& where) const {
         if (!j.is_number()) error(where, std::string("expected a number, got ") + j.type_name());
         double v = j.get<double>();
         // JSON has no infinity or NaN: what fails here is finite but beyond a float (as the command line says it).
@@ -75,7 +79,7 @@ public:
             std::snprintf(text, sizeof text, "%g", v);
             error(where, std::string(text) + " is beyond single precision (3.4e+38)");
         }
-        return float(v);
+        return v;
     }
 
     uint64_t unsigned_integer(const json& j, const std::string& where) const {
@@ -139,7 +143,7 @@ double read_param_value(const ParamSpec& spec, const json& j, const Reader& r, c
             if (!j.is_number()) r.error(where, std::string("expected an integer, got ") + j.type_name());
             value = j.get<double>();
             break;
-        case ParamType::Float: value = r.number(j, where); break;
+        case ParamType::Float: value = r.real(j, where); break;
     }
     if (auto problem = param_value_problem(spec, value)) r.error(where, *problem);
     return value;
