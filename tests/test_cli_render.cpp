@@ -307,7 +307,7 @@ TEST(CliRender, AGltfsExternalBuffersCountTowardItsSize) {
     const test::CommandResult r = run_stipple({"info", (dir / "big.gltf").string()}, guarded("4000000", 60));
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(count_lines(r.err), 1u) << r.err;
-    EXPECT_NE(r.err.find((dir / "big.gltf").string() + ": buffers[0].uri: 'big.bin' takes its external buffers to 600.0 MiB, "
+    EXPECT_NE(r.err.find((dir / "big.gltf").string() + ": buffers[0].uri: 'big.bin' takes the model's files to 600.0 MiB, "
                          "more than a model's files may be on this machine: 512.0 MiB, half its 1.0 GiB of memory"),
               std::string::npos) << r.err;
 }

@@ -97,7 +97,7 @@ std::vector<unsigned char> read_buffer_file(const std::string& model, const std:
 
 // Takes every external buffer out of `doc` into `buffers`; true when the document changed.
 bool take_external_buffers(const std::string& model, nlohmann::json& doc, const std::filesystem::path& base_dir,
-                           ExternalBuffers& buffers) {
+                           ExternalBuffers& buffers, uint64_t document_bytes) {
     const auto list = doc.find("buffers");
     if (list == doc.end() || !list->is_array()) return false;
     bool changed = false;
@@ -105,7 +105,7 @@ bool take_external_buffers(const std::string& model, nlohmann::json& doc, const 
     // half the machine's memory, as a model file may (check_model_size; the .gltf's own size said nothing of
     // its buffers, and a huge one ran out of memory reported with the .gltf's size).
     const uint64_t memory = physical_memory_bytes();
-    uint64_t external = 0;
+    uint64_t external = document_bytes;  // the .gltf or .glb itself (its data: URIs, its BIN chunk) counts too
     for (size_t i = 0; i < list->size(); ++i) {
         nlohmann::json& buffer = (*list)[i];
         const auto uri = buffer.find("uri");
@@ -115,7 +115,7 @@ bool take_external_buffers(const std::string& model, nlohmann::json& doc, const 
         const uint64_t length = buffer.at("byteLength").get<uint64_t>();
         external += length;
         if (memory > 0 && external > memory / 2)
-            fail_file(model, "buffers[" + std::to_string(i) + "].uri: " + quoted_excerpt(text, 64) + " takes its external buffers to " +
+            fail_file(model, "buffers[" + std::to_string(i) + "].uri: " + quoted_excerpt(text, 64) + " takes the model's files to " +
                                  byte_size(external) + ", more than a model's files may be on this machine: " + byte_size(memory / 2) +
                                  ", half its " + byte_size(memory) + " of memory");
         const std::string name = served_name(i);
@@ -152,7 +152,7 @@ tinygltf::Model read_gltf_model(const std::string& path, std::string_view bytes,
         for (const nlohmann::json& image : *images) images_named = images_named || (image.is_object() && image.contains("uri"));
     const bool images_dropped = images_named && doc.erase("images") > 0;
     ExternalBuffers external;
-    const bool buffers_taken = base_dir && take_external_buffers(path, doc, *base_dir, external);
+    const bool buffers_taken = base_dir && take_external_buffers(path, doc, *base_dir, external, bytes.size());
     std::string rewritten;
     if (!meshopt.placeholders.empty() || draco_stand_ins || images_dropped || buffers_taken) {
         rewritten = binary ? join_glb(doc.dump(), split_glb(path, bytes).bin) : doc.dump();

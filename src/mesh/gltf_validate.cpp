@@ -275,7 +275,10 @@ private:
             holder = "its data: URI";
             // tinygltf's own message for another character quotes the whole URI, and a length check before it
             // read as a short buffer.
-            const size_t bad_char = u.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=", comma + 1);
+            // Trailing whitespace is let through, as tinygltf decodes up to it.
+            const size_t data_end = u.find_last_not_of(" \t\r\n") + 1;
+            size_t bad_char = u.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=", comma + 1);
+            if (bad_char >= data_end) bad_char = std::string::npos;
             if (bad_char != std::string::npos)
                 bad(at(where, "uri"), "its data: URI is not base64 (" + shown(u.substr(bad_char, 1)) + " at character " +
                                           std::to_string(bad_char - comma) + " of the data)");

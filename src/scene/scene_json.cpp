@@ -69,7 +69,8 @@ public:
     float number(const json& j, const std::string& where) const { return float(real(j, where)); }
 
     // The number as the file gives it, within single precision's range, not yet rounded to it: a parameter's
-    // range check tells a value that rounds to 0 from 0 (1e-46 was taken for D_max 0, which --dmax refuses).
+    // range check tells a value that rounds to 0 from 0 (1e-46 was taken for D_max 0, which --dmax refuses). A
+    // literal beyond a double (1e-400) still reads as 0: the parser keeps no text of its numbers.
     double real(const json& j, const std::string& where) const {
         if (!j.is_number()) error(where, std::string("expected a number, got ") + j.type_name());
         double v = j.get<double>();
