@@ -8,6 +8,8 @@
 
 layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 
+layout(constant_id = kSpecLineCaps) const bool kLineCaps = false;
+
 layout(location = 0) out vec4 out_color;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
@@ -17,6 +19,7 @@ layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms o
 layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
 
 void main() {
+    if (kLineCaps && length(gl_PointCoord - 0.5) > 0.5) discard;  // a round cap
     // Row-major from the top row, as gl_FragCoord counts with the depth pass's flipped viewport.
     uint word = texelFetch(scene_depth_texels, int(uint(gl_FragCoord.y) * uint(frame.viewport.x) + uint(gl_FragCoord.x))).x;
     bool behind = kDepthUnorm24 ? uint(gl_FragCoord.z * 16777215.0 + 0.5) > (word & 0xFFFFFFu)

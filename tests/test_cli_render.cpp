@@ -555,6 +555,36 @@ std::array<double, 4> ink_by_quarter(const Image& image) {
     return inked;
 }
 
+// Wide Raskar-Cohen lines drawn in tiles join as in one frame: their round caps are points, which a tile drops
+// where their centre lies in the next one, so the tiles overlap by half the line's width (78 pixels of a 48-px
+// outline were missing along a seam).
+TEST(CliRender, WideOutlinesJoinAcrossTiles) {
+    const auto dir = test::temp_dir("cli-tiled-outline");
+    const std::string tiled = (dir / "tiled.png").string(), whole = (dir / "whole.png").string();
+    const std::vector<std::string> common = {"render", "--width", "2000", "--height", "1500", "--dmax", "0", "--silhouette-lines",
+                                             "--silhouette-width", "48", "--no-thinning", "--distance", "1.3"};
+    std::vector<std::string> a = common, b = common;
+    a.insert(a.end(), {"-o", whole});
+    b.insert(b.end(), {"-o", tiled});
+    const test::CommandResult one = run_stipple(a);
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const test::CommandResult many = [&] {
+        test::ScopedEnv small_buffers("STIPPLE_MAX_STORAGE_BUFFER", "6M");  // tiles of 1254 px, as above
+        return run_stipple(b);
+    }();
+    ASSERT_EQ(many.exit_code, 0) << many.err;
+    const Image x = read_png(whole), y = read_png(tiled);
+    ASSERT_EQ(x.pixels.size(), y.pixels.size());
+    size_t differing = 0, inked = 0;
+    for (size_t i = 0; i < x.pixels.size(); i += 4) {
+        differing += std::abs(int(x.pixels[i]) - int(y.pixels[i])) > 2;
+        inked += x.pixels[i] < 128;
+    }
+    std::printf("48-px outline: %zu of %zu inked pixels differ between one frame and tiles\n", differing, inked);
+    EXPECT_GT(inked, 50000u);
+    EXPECT_LE(differing, 16u);  // 6 measured; 42 when the tiles overlapped by the dots' reach alone
+}
+
 // An image whose pixel words do not fit the device's largest storage buffer (the splat's, here made so with
 // STIPPLE_MAX_STORAGE_BUFFER; lavapipe's is 128 MiB, 5792x5792 pixels) is drawn in tiles, as a print is:
 // the same drawing as one frame, without a validation message; what needs one frame says so in one line.

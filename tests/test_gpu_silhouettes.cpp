@@ -40,8 +40,10 @@ struct Frame {
 
 Frame render(gpu::Context& context, const Prepared& object, ObjectParams params, float distance,
              std::vector<std::pair<std::string, double>>* passes = nullptr,
-             glm::vec3 light = FrameView{}.light_view) {
-    StippleRenderer renderer(context, kColorFormat, context.depth_format);
+             glm::vec3 light = FrameView{}.light_view, DepthRaster depth_raster = DepthRaster::Auto) {
+    RendererOptions options;
+    options.depth_raster = depth_raster;
+    StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
     renderer.add_object(object.mesh, object.stipples, object.model, params);
     OffscreenTarget target(context, {1280, 1024});
     Frame f;
@@ -134,6 +136,57 @@ TEST_F(Silhouettes, LinesInkTheOutline) {
         // The stipples alone ink about three quarters of the outline's pixels (a half to two thirds before the
         // orientation term was read as N_z, 2026-12-06, which keeps the tone up to the outline).
         EXPECT_LT(without, 0.8 * with);
+    }
+}
+
+// Wide Raskar-Cohen lines are a solid band: each edge's wide line is a rectangle, and over a mesh's short edges
+// at 16-64 px their ends left cracks and a comb-like outer edge (a tester); round caps at the edges' ends close
+// them. The paper outside the outline, up to 3/4 of the half width out, is all inked, with the depth pass as
+// compute (the lines tested against its words) and fixed-function (against the depth image) alike.
+TEST_F(Silhouettes, WideLinesAreASolidBand) {
+    if (!context->features.large_points || context->features.max_line_width < 48.0f)
+        GTEST_SKIP() << "this device draws no lines or points 48 px wide";
+    ObjectParams params;
+    params.generation.dmax = 0.0f;  // the lines alone
+    params.silhouette_lines = true;
+    params.silhouette_thinning = false;
+    params.silhouette_width = 48.0f;
+    Prepared sphere = test::prepare(make_icosphere(5), params);
+    bool is_bunny = false;
+    Prepared bunny = bunny_or_sphere(params, &is_bunny);
+    for (const auto& [object, raster] : {std::pair{&sphere, DepthRaster::Compute}, std::pair{&bunny, DepthRaster::Compute},
+                                         std::pair{&sphere, DepthRaster::Fixed}, std::pair{&bunny, DepthRaster::Fixed}}) {
+        const std::string name = std::string(object == &sphere ? "sphere" : (is_bunny ? "bunny" : "sphere (no bunny)")) +
+                                 (raster == DepthRaster::Compute ? ", depth by compute" : ", fixed-function depth");
+        const Frame f = render(*context, *object, params, 1.6f, nullptr, FrameView{}.light_view, raster);
+        // Steps (4-connected) from each uncovered pixel to the nearest covered one.
+        std::vector<int> out(size_t(f.width) * f.height, -1);
+        std::deque<std::pair<int, int>> queue;
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x)
+                if (f.covered(x, y)) out[size_t(y) * f.width + x] = 0, queue.emplace_back(x, y);
+        while (!queue.empty()) {
+            auto [x, y] = queue.front();
+            queue.pop_front();
+            const int step[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+            for (auto& s : step) {
+                const int u = x + s[0], v = y + s[1];
+                if (u < 0 || v < 0 || u >= f.width || v >= f.height || out[size_t(v) * f.width + u] >= 0) continue;
+                out[size_t(v) * f.width + u] = out[size_t(y) * f.width + x] + 1, queue.emplace_back(u, v);
+            }
+        }
+        size_t band = 0, inked = 0;
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x) {
+                const int d = out[size_t(y) * f.width + x];
+                if (d < 1 || d > 18) continue;  // the half width is 24 px (steps overstate a diagonal's distance)
+                ++band;
+                inked += f.inked(x, y);
+            }
+        std::printf("%s: lines 48 px wide: %zu of %zu paper pixels within 18 px of the outline inked (%.3f%%)\n", name.c_str(), inked,
+                    band, 100.0 * double(inked) / double(std::max<size_t>(band, 1)));
+        ASSERT_GT(band, 10000u);
+        EXPECT_GE(double(inked), 0.999 * double(band));
     }
 }
 

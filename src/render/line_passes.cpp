@@ -41,6 +41,14 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     lines_on_words.depth_test = false;
     lines_on_words.specialization = {{{gpu::kSpecDepthUnorm24, depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u}}};
     silhouette_words_pipeline_ = gpu::create_graphics_pipeline(context_, lines_on_words, layouts_.splat_pipeline);
+    // Their round caps: the same edges' ends as points of the line's width (kSpecLineCaps).
+    for (auto [desc, caps, layout] : {std::tuple{lines, &silhouette_caps_pipeline_, layouts_.pipeline},
+                                      std::tuple{lines_on_words, &silhouette_words_caps_pipeline_, layouts_.splat_pipeline}}) {
+        desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+        desc.dynamic_line_width = false;
+        desc.specialization.constants.push_back({gpu::kSpecLineCaps, 1u});
+        *caps = gpu::create_graphics_pipeline(context_, desc, layout);
+    }
 
     gpu::GraphicsPipelineDesc pieces;
     pieces.vertex_shader = "line_pieces.vert";
@@ -124,6 +132,11 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
             vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
             vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), 0, VK_INDEX_TYPE_UINT32);
             vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
+            if (object->frame.line_width > gpu::kLineCapsAbovePx && context_.features.large_points) {
+                bound = depth_by_compute_ ? silhouette_words_caps_pipeline_ : silhouette_caps_pipeline_;
+                vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+                vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
+            }
         }
         if (draws_object_space_lines(object->params)) {
             if (bound != line_pieces_pipeline_) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, line_pieces_pipeline_);

@@ -50,7 +50,8 @@ void StippleRenderer::release() {
                          gradient_pipelines_[3],
                          facing_pipeline_,
                          drawn_stipples_pipeline_, toon_pipeline_,
-                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_,
+                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_, silhouette_caps_pipeline_,
+                         silhouette_words_caps_pipeline_,
                          line_edges_pipeline_, line_walk_pipeline_, line_pieces_pipeline_, depth_triangles_pipeline_,
                          depth_raster_pipelines_[0], depth_raster_pipelines_[1], depth_coverage_pipeline_})
         if (p) vkDestroyPipeline(context_.device, p, nullptr);

@@ -243,6 +243,8 @@ private:
     VkPipeline facing_pipeline_ = VK_NULL_HANDLE;      // facing bits alone (objects with CPU densities and lines)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
     VkPipeline silhouette_words_pipeline_ = VK_NULL_HANDLE;  // the same tested against the depth words
+    VkPipeline silhouette_caps_pipeline_ = VK_NULL_HANDLE;        // their round caps, as points (kSpecLineCaps)
+    VkPipeline silhouette_words_caps_pipeline_ = VK_NULL_HANDLE;  // the same against the depth words
     VkPipeline line_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines from the edge table
     VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
     VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
