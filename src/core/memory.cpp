@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <string>
 
 #include "core/decimal.hpp"
 #include "core/error.hpp"
@@ -24,13 +25,41 @@ std::optional<uint64_t> cgroup_limit(const char* path) {
 
 }  // namespace
 
+std::optional<uint64_t> control_group_memory_limit(const std::string& proc_self_cgroup, const std::string& cgroup_root) {
+    std::ifstream in(proc_self_cgroup);
+    std::optional<uint64_t> least;
+    auto consider = [&](std::string dir, const char* file) {
+        while (true) {
+            if (const std::optional<uint64_t> limit = cgroup_limit((dir + "/" + file).c_str()); limit && *limit > 0)
+                least = least ? std::min(*least, *limit) : *limit;
+            const size_t slash = dir.find_last_of('/');
+            if (slash == std::string::npos || slash < cgroup_root.size()) break;
+            dir.erase(slash);
+        }
+    };
+    std::string line;
+    while (std::getline(in, line)) {
+        const size_t first = line.find(':'), second = first == std::string::npos ? first : line.find(':', first + 1);
+        if (second == std::string::npos) continue;
+        const std::string controllers = line.substr(first + 1, second - first - 1);
+        std::string path = line.substr(second + 1);
+        while (!path.empty() && path.back() == '/') path.pop_back();
+        if (path.find("/..") != std::string::npos) continue;
+        if (line.compare(0, first, "0") == 0 && controllers.empty()) {
+            consider(cgroup_root + path, "memory.max");
+            consider(cgroup_root + "/unified" + path, "memory.max");
+        } else if (("," + controllers + ",").find(",memory,") != std::string::npos) {
+            consider(cgroup_root + "/memory" + path, "memory.limit_in_bytes");
+        }
+    }
+    return least;
+}
+
 uint64_t physical_memory_bytes() {
     const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
     uint64_t memory = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
     auto lower_to = [&](uint64_t limit) { memory = memory == 0 ? limit : std::min(memory, limit); };
-    // cgroup v1 reports "no limit" as a number near 2^63, which the minimum leaves out.
-    for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
-        if (const std::optional<uint64_t> limit = cgroup_limit(path); limit && *limit > 0) lower_to(*limit);
+    if (const std::optional<uint64_t> limit = control_group_memory_limit("/proc/self/cgroup", "/sys/fs/cgroup")) lower_to(*limit);
     if (const char* text = std::getenv("STIPPLE_HOST_MEMORY_LIMIT"); text && *text) {
         const std::optional<uint64_t> limit = parse_byte_size(text);
         // A test setting: a typo must not silently test nothing.

@@ -3,6 +3,7 @@
 // refusing in one line what could never fit instead of running out half way.
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -30,6 +31,14 @@ inline void release_free_memory() {
 // 2G: how a smaller machine refuses a model, tried on a big one; a value that is not a size fails). 0 where
 // the system says nothing.
 uint64_t physical_memory_bytes();
+
+// The smallest memory limit of a process's control groups and their ancestors, as `proc_self_cgroup` (the format
+// of /proc/self/cgroup) lists them under `cgroup_root` (/sys/fs/cgroup): a cgroup v2 line "0::/path" names
+// root/path (or root/unified/path on a hybrid host) and its memory.max; a v1 line whose controllers include memory
+// names root/memory/path and its memory.limit_in_bytes. Each level up to the root counts: without a cgroup
+// namespace (systemd units, batch schedulers, some containers) the root's files are the host's, not the process's,
+// and were all that was read (a review). "max", and v1's "no limit" (about 2^63), are none. Nothing: no limit.
+std::optional<uint64_t> control_group_memory_limit(const std::string& proc_self_cgroup, const std::string& cgroup_root);
 
 // A size for a message: "3.0 GiB", "12.5 MiB", "830 bytes".
 inline std::string byte_size(uint64_t bytes) {
