@@ -4,8 +4,6 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 
-layout(constant_id = kSpecLineCaps) const bool kLineCaps = false;
-
 layout(location = 0) in vec3 in_position;
 
 layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms frame; };
@@ -13,5 +11,4 @@ layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms o
 
 void main() {
     gl_Position = object.model_view_proj * vec4(in_position, 1.0);
-    if (kLineCaps) gl_PointSize = object.lines.x;
 }

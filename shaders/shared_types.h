@@ -71,11 +71,11 @@ STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons wi
 STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
-// depth.vert, silhouette.frag, silhouette_words.frag: the Raskar-Cohen lines' round caps, points of the line's width
-// at the ends of its edges (wide lines are rectangles: over a fine mesh's short edges at 16-64 px they left
-// cracks and a comb-like outer edge); drawn where the lines are wider than kLineCapsAbovePx. Each costs about the
-// width squared in pixels at every end of a contour edge, hidden ones too (docs/performance.md): below 12 px the
-// cracks hardly show and the caps would triple the line pass of a fine mesh.
+// silhouette.frag, silhouette_words.frag: the Raskar-Cohen lines' round caps, points of the line's width at an end
+// of each edge (silhouette_caps.vert; wide lines are rectangles: over a fine mesh's short edges at 16-64 px they
+// left cracks and a comb-like outer edge); drawn where the lines are wider than kLineCapsAbovePx. Each costs about
+// the width squared in pixels, hidden ones too (docs/paper-reading.md): below 12 px the cracks hardly show and the
+// caps would double the line pass of a fine mesh.
 STIPPLE_CONST uint kSpecLineCaps = 8;
 STIPPLE_CONST float kLineCapsAbovePx = 12.0f;
 // splat.comp: round dots (kFlagRoundPoints), and print detail's whole dots (FrameView::detail_scale > 1).

@@ -41,12 +41,16 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     lines_on_words.depth_test = false;
     lines_on_words.specialization = {{{gpu::kSpecDepthUnorm24, depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u}}};
     silhouette_words_pipeline_ = gpu::create_graphics_pipeline(context_, lines_on_words, layouts_.splat_pipeline);
-    // Their round caps: the same edges' ends as points of the line's width (kSpecLineCaps).
+    // Their round caps: an end of each edge as a point of the line's width (silhouette_caps.vert, kSpecLineCaps).
     for (auto [desc, caps, layout] : {std::tuple{lines, &silhouette_caps_pipeline_, layouts_.pipeline},
                                       std::tuple{lines_on_words, &silhouette_words_caps_pipeline_, layouts_.splat_pipeline}}) {
+        desc.vertex_shader = "silhouette_caps.vert";
+        desc.vertex_bindings.clear();  // the ends are read from the index list and the mesh's texels
+        desc.vertex_attributes.clear();
         desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
         desc.dynamic_line_width = false;
         desc.specialization.constants.push_back({gpu::kSpecLineCaps, 1u});
+        desc.specialization.constants.push_back({gpu::kSpecMeshVec3Texels, mesh_vec3_texels() ? 1u : 0u});
         *caps = gpu::create_graphics_pipeline(context_, desc, layout);
     }
 
@@ -135,7 +139,9 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
             if (object->frame.line_width > gpu::kLineCapsAbovePx && context_.features.large_points) {
                 bound = depth_by_compute_ ? silhouette_words_caps_pipeline_ : silhouette_caps_pipeline_;
                 vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
-                vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
+                // The list's header as a draw of as many vertices as it holds indices, from its first
+                // (VkDrawIndirectCommand's four words are the indexed command's first four).
+                vkCmdDrawIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(VkDrawIndirectCommand));
             }
         }
         if (draws_object_space_lines(object->params)) {
