@@ -308,6 +308,10 @@ TEST_F(GpuAnimation, TheViewersSavedSceneHoldsThePoseShown) {
     EXPECT_NEAR(faster.objects[0].animation.speed, 2.5, 1e-6);
     EXPECT_NEAR(faster.objects[1].animation.speed, 5.0, 1e-6);
     EXPECT_NEAR(faster.objects[1].animation.start, 1.25, 1e-9) << "the pose shown, from the speed it was shown at";
+    EXPECT_FALSE(faster.paused);
+    // Saved while paused, the file says so, and the viewer opens it paused (it reopened playing, a tester).
+    live.save(path, OrbitCamera{}, 0.5, 1.0, true);
+    EXPECT_TRUE(load_scene(path).paused);
 }
 
 TEST_F(GpuAnimation, TheViewerUndoesACpuPathForAnAnimatedObject) {

@@ -149,6 +149,7 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     scene.light = {0.3f, 0.8f, 0.5f};
     scene.paper = {1.0f, 0.95f, 0.9f};
     scene.ink = {0.1f, 0.05f, 0.0f};
+    scene.paused = true;
 
     // Saved one folder down: the model path must be rewritten relative to the new file.
     std::string file = (dir / "saved" / "scene.json").string();
@@ -161,6 +162,7 @@ TEST_F(SceneObjects, SavedSceneLoadsBackToTheSameImage) {
     EXPECT_TRUE(std::filesystem::equivalent(loaded.model_path(0), scene.model_path(0)));
     EXPECT_EQ(scene_to_json(loaded, dir), scene_to_json(scene, dir)) << "every field survives the round trip";
     EXPECT_FALSE(loaded.objects[0].params.ink) << "an object without an ink of its own takes the scene's";
+    EXPECT_TRUE(loaded.paused) << text;
     EXPECT_FALSE(loaded.camera_path.at(0).orthographic);
     EXPECT_TRUE(loaded.camera_path.at(1).orthographic) << text;
     ASSERT_TRUE(loaded.objects[1].params.ink);
@@ -870,6 +872,7 @@ INSTANTIATE_TEST_SUITE_P(
                  [1e20,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})",
                  "objects[0].transform.matrix", "column 0 scales its axis by 1e+20"},
         BadScene{"bad_colour", R"({"objects": [{"model": "sphere.obj"}], "paper": [1, 2, 0]})", "paper", "0..1"},
+        BadScene{"paused_not_a_boolean", R"({"objects": [{"model": "sphere.obj"}], "paused": "yes"})", "paused", "expected true or false"},
         BadScene{"bad_object_ink", R"({"objects": [{"model": "sphere.obj"}, {"model": "sphere.obj", "ink": [0, 0, 1.5]}]})",
                  "objects[1].ink", "0..1"},
         BadScene{"bad_camera", R"({"objects": [{"model": "sphere.obj"}], "camera": {"distance": 0}})",

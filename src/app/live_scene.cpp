@@ -138,9 +138,12 @@ void LiveScene::remove(size_t object) {
     ids_.erase(ids_.begin() + std::ptrdiff_t(object));
 }
 
-size_t LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds, double playback_speed) const {
+size_t LiveScene::save(const std::string& path, const OrbitCamera& camera, double scene_seconds, double playback_speed,
+                       bool paused) const {
     size_t clamped = 0;
     Scene saved = scene_;
+    // Said only where something moves: a still scene has no timeline to pause.
+    saved.paused = paused && std::any_of(data_.begin(), data_.end(), [](const ObjectData& d) { return bool(d.motion); });
     saved.camera = scene_camera_from(camera);
     // Parameters as generated: a slider not yet released has not changed the picture.
     for (size_t i = 0; i < saved.objects.size(); ++i) saved.objects[i].params.generation = generated_with_[i].generation;

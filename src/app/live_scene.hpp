@@ -57,7 +57,9 @@ public:
     // (its animation time then, wrapped or held), so that render draws the saved file as the window shows it;
     // `playback_speed` (the timeline's scene seconds per wall second) multiplies each object's speed. Returns
     // how many objects' speeds that took beyond a scene file's range, saved at its end (kMaxAnimationSpeed).
-    size_t save(const std::string& path, const OrbitCamera& camera, double scene_seconds = 0.0, double playback_speed = 1.0) const;
+    // `paused`: the timeline is paused, and the file says so where something moves (Scene::paused).
+    size_t save(const std::string& path, const OrbitCamera& camera, double scene_seconds = 0.0, double playback_speed = 1.0,
+                bool paused = false) const;
 
 private:
     Scene scene_;

@@ -22,6 +22,7 @@ public:
     // Play or pause; playing from the end of an animation that does not loop starts it again.
     void toggle_play(const Scene& scene, const std::vector<ObjectData>& objects);
     void set_time(double seconds) { time_ = seconds; }
+    void set_playing(bool playing) { playing_ = playing; }
 
     // Moves the clock on by `wall_seconds` of real time (when playing). Without loop the clock stops at
     // the end of the longest animation (`length`), with it the animations wrap themselves.

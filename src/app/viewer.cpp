@@ -116,6 +116,7 @@ Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
     const SceneCamera& asked = live_.scene().camera;
     if (!asked.target && !asked.world_distance) open_distance_multiple_ = asked.distance;
     timeline_.set_time(options.start_time);
+    timeline_.set_playing(!live_.scene().paused);  // a scene saved while paused opens paused
     if (!live_.scene().camera_path.empty())
         message("the scene's camera_path is for render's frame sequences: the viewer shows its camera, and Ctrl+S keeps the path");
 }
@@ -158,7 +159,7 @@ void Viewer::message(const std::string& text, bool error) {
 
 void Viewer::save_scene() {
     try {
-        const size_t clamped = live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed());
+        const size_t clamped = live_.save(options_.scene_path, camera_, timeline_.time(), timeline_.speed(), !timeline_.playing());
         message("scene saved: " + options_.scene_path);
         if (clamped > 0)
             message(printf_string("%zu object(s) play faster than a scene file's speed allows (%g): saved at %g", clamped,

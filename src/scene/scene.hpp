@@ -78,6 +78,9 @@ struct Scene {
     glm::vec3 light{-0.45f, 0.55f, 0.70f};  // toward the light, view space (as FrameView::light_view)
     glm::vec3 paper{1.0f};
     glm::vec3 ink{0.0f};
+    // The viewer opens it with its animations paused (a scene saved while paused reopened playing, a tester);
+    // render draws the saved pose either way.
+    bool paused = false;
     std::filesystem::path base_dir;  // relative model paths are resolved against it
     std::string source;              // the file it came from ("" when built from models)
 

@@ -441,7 +441,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
             if (c == '\n' || c == '\r') c = ' ';
         r.error("", "not valid JSON: " + message);
     }
-    r.expect_object(root, "", {"objects", "camera", "camera_path", "light", "paper", "ink"});
+    r.expect_object(root, "", {"objects", "camera", "camera_path", "light", "paper", "ink", "paused"});
     Scene scene;
     scene.source = source;
     scene.base_dir = base_dir;
@@ -477,6 +477,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     }
     if (root.contains("paper")) scene.paper = r.color(root["paper"], "paper");
     if (root.contains("ink")) scene.ink = r.color(root["ink"], "ink");
+    if (root.contains("paused")) scene.paused = r.boolean(root["paused"], "paused");
     return scene;
 }
 
@@ -549,6 +550,7 @@ std::string scene_to_json(const Scene& scene, const std::filesystem::path& save_
     root["light"] = vec3_json(scene.light);
     root["paper"] = vec3_json(scene.paper);
     root["ink"] = vec3_json(scene.ink);
+    if (scene.paused) root["paused"] = true;
     std::string text;
     write_pretty(root, 0, text);
     return text + "\n";
