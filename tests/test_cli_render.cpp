@@ -556,7 +556,7 @@ std::array<double, 4> ink_by_quarter(const Image& image) {
 }
 
 // Wide Raskar-Cohen lines drawn in tiles join as in one frame: their round caps are points, which a tile drops
-// where their centre lies in the next one, so the tiles overlap by half the line's width (78 pixels of a 48-px
+// where their centre lies in the next one, so the tiles overlap by half the line's width (42 pixels of a 48-px
 // outline were missing along a seam).
 TEST(CliRender, WideOutlinesJoinAcrossTiles) {
     const auto dir = test::temp_dir("cli-tiled-outline");

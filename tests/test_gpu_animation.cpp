@@ -309,9 +309,22 @@ TEST_F(GpuAnimation, TheViewersSavedSceneHoldsThePoseShown) {
     EXPECT_NEAR(faster.objects[1].animation.speed, 5.0, 1e-6);
     EXPECT_NEAR(faster.objects[1].animation.start, 1.25, 1e-9) << "the pose shown, from the speed it was shown at";
     EXPECT_FALSE(faster.paused);
-    // Saved while paused, the file says so, and the viewer opens it paused (it reopened playing, a tester).
+    // Saved while paused, the file says so, which the viewer opens paused (it reopened playing, a tester).
     live.save(path, OrbitCamera{}, 0.5, 1.0, true);
     EXPECT_TRUE(load_scene(path).paused);
+    // A scene where nothing moves has no timeline to pause: the file does not say it.
+    const std::string triangle = test::output_path("gpu_anim_still_triangle.obj").string();
+    {
+        std::ofstream obj(triangle);
+        obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    }
+    Scene still;
+    still.objects.push_back({triangle, {}, {}});
+    still.objects[0].params.generation.dmax = 0.02f;
+    auto still_renderer = renderer();
+    app::LiveScene still_live(still, load_scene_content(still), *still_renderer);
+    still_live.save(path, OrbitCamera{}, 0.5, 1.0, true);
+    EXPECT_FALSE(load_scene(path).paused);
 }
 
 TEST_F(GpuAnimation, TheViewerUndoesACpuPathForAnAnimatedObject) {

@@ -141,7 +141,8 @@ TEST_F(Silhouettes, LinesInkTheOutline) {
 
 // Wide Raskar-Cohen lines are a solid band: each edge's wide line is a rectangle, and over a mesh's short edges
 // at 16-64 px their ends left cracks and a comb-like outer edge (a tester); round caps at the edges' ends close
-// them. The paper outside the outline, up to 3/4 of the half width out, is all inked, with the depth pass as
+// them. The paper outside the outline, up to 7/8 of the half width out, is all inked, on fine and coarse meshes
+// (whose long edges cap both ends: with the first end alone a third of their joints kept a notch), with the depth pass as
 // compute (the lines tested against its words) and fixed-function (against the depth image) alike.
 TEST_F(Silhouettes, WideLinesAreASolidBand) {
     if (!context->features.large_points || context->features.max_line_width < 48.0f)
@@ -152,12 +153,17 @@ TEST_F(Silhouettes, WideLinesAreASolidBand) {
     params.silhouette_thinning = false;
     params.silhouette_width = 48.0f;
     Prepared sphere = test::prepare(make_icosphere(5), params);
+    Prepared coarse = test::prepare(make_icosphere(1), params);  // 80 faces: edges longer than the width
     bool is_bunny = false;
     Prepared bunny = bunny_or_sphere(params, &is_bunny);
     for (const auto& [object, raster] : {std::pair{&sphere, DepthRaster::Compute}, std::pair{&bunny, DepthRaster::Compute},
-                                         std::pair{&sphere, DepthRaster::Fixed}, std::pair{&bunny, DepthRaster::Fixed}}) {
-        const std::string name = std::string(object == &sphere ? "sphere" : (is_bunny ? "bunny" : "sphere (no bunny)")) +
-                                 (raster == DepthRaster::Compute ? ", depth by compute" : ", fixed-function depth");
+                                         std::pair{&coarse, DepthRaster::Compute}, std::pair{&sphere, DepthRaster::Fixed},
+                                         std::pair{&bunny, DepthRaster::Fixed}, std::pair{&coarse, DepthRaster::Fixed}}) {
+        const std::string name = std::string(object == &sphere   ? "sphere"
+                                             : object == &coarse ? "80-face sphere"
+                                             : is_bunny          ? "bunny"
+                                                                 : "sphere (no bunny)") +
+                                 (raster == DepthRaster::Compute ? ", depth by compute (where the device allows)" : ", fixed-function depth");
         const Frame f = render(*context, *object, params, 1.6f, nullptr, FrameView{}.light_view, raster);
         // Steps (4-connected) from each uncovered pixel to the nearest covered one.
         std::vector<int> out(size_t(f.width) * f.height, -1);
@@ -179,14 +185,14 @@ TEST_F(Silhouettes, WideLinesAreASolidBand) {
         for (int y = 0; y < f.height; ++y)
             for (int x = 0; x < f.width; ++x) {
                 const int d = out[size_t(y) * f.width + x];
-                if (d < 1 || d > 18) continue;  // the half width is 24 px (steps overstate a diagonal's distance)
+                if (d < 1 || d > 21) continue;  // the half width is 24 px (steps overstate a diagonal's distance)
                 ++band;
                 inked += f.inked(x, y);
             }
-        std::printf("%s: lines 48 px wide: %zu of %zu paper pixels within 18 px of the outline inked (%.3f%%)\n", name.c_str(), inked,
+        std::printf("%s: lines 48 px wide: %zu of %zu paper pixels within 21 px of the outline inked (%.3f%%)\n", name.c_str(), inked,
                     band, 100.0 * double(inked) / double(std::max<size_t>(band, 1)));
         ASSERT_GT(band, 10000u);
-        EXPECT_GE(double(inked), 0.999 * double(band));
+        EXPECT_GE(double(inked), 0.998 * double(band));
     }
 }
 

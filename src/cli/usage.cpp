@@ -211,7 +211,8 @@ void scene_section() {
               "projection": "perspective" or "orthographic"},
    "camera_path": [camera, camera, ...],
    "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b],
-   "paused": false (true: the viewer opens it with its animations paused, as Ctrl+S saves it then)}
+   "paused": false (true: the viewer opens it with its animations paused, as Ctrl+S saves a paused
+             timeline; render ignores it)}
   Every field is optional except objects and their model (params above at their defaults). A param
   takes the range of its stipple option below; `stipple params --markdown` pairs each scene key with
   its option.

@@ -3,6 +3,8 @@
 // and the vertex input layout expect.
 #include <cstddef>
 
+#include <vulkan/vulkan.h>
+
 #include "shared_types.h"
 
 namespace stipple::gpu {
@@ -32,6 +34,12 @@ static_assert(sizeof(RasterTriangles) == kIndexListHeaderBytes);  // shares the 
 static_assert(offsetof(RasterTriangles, count) == 12);
 static_assert(offsetof(IndexList, first_instance) == 16);
 static_assert(kIndexListFirstIndex * sizeof(uint32_t) == sizeof(IndexList));  // indices right after it
+// The Raskar-Cohen caps read the silhouette list's header as a VkDrawIndirectCommand (line_passes.cpp): index_count
+// as vertexCount, first_index as firstVertex, vertex_offset (always 0) as firstInstance.
+static_assert(offsetof(IndexList, index_count) == offsetof(VkDrawIndirectCommand, vertexCount));
+static_assert(offsetof(IndexList, instance_count) == offsetof(VkDrawIndirectCommand, instanceCount));
+static_assert(offsetof(IndexList, first_index) == offsetof(VkDrawIndirectCommand, firstVertex));
+static_assert(offsetof(IndexList, vertex_offset) == offsetof(VkDrawIndirectCommand, firstInstance));
 
 static_assert(sizeof(LineCandidates) == 16);
 static_assert(offsetof(LineCandidates, count) == 12);

@@ -49,12 +49,12 @@ uint32_t dot_reach(StippleRenderer& renderer, const FrameView& view) {
     for (size_t i = 0; i < renderer.object_count(); ++i)
         side = std::max(side, 2.0f * stipple_ink_radius(renderer.params(i).point_size) * view.detail_scale *
                                   formulas::kMaxStippleScale);  // enlarged where the candidates cannot carry the density
-    // The round caps of wide Raskar-Cohen lines are points too, dropped where their centre lies beyond the target
-    // (a 48-px outline lost 78 pixels along a seam); their width bounds the thinned one.
+    // Raskar-Cohen lines: their round caps are points, dropped where their centre lies beyond the target (a 48-px
+    // outline of the default scene lost 42 pixels along a seam), and a segment wholly beyond it is clipped before it
+    // is widened; their width bounds the thinned one.
     for (size_t i = 0; i < renderer.object_count(); ++i) {
         const ObjectParams& params = renderer.params(i);
-        const float width = params.silhouette_width * std::max(1.0f, view.detail_scale);
-        if (params.silhouette_lines && width > gpu::kLineCapsAbovePx) side = std::max(side, width);
+        if (params.silhouette_lines) side = std::max(side, params.silhouette_width * std::max(1.0f, view.detail_scale));
     }
     return uint32_t(std::ceil(0.5f * side)) + 2;
 }

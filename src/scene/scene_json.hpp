@@ -1,6 +1,7 @@
 #pragma once
 // Scene files: JSON, read strictly (an unknown field is an error, so a typo never silently falls
-// back to a default) and written back in full, so a saved scene renders the same image.
+// back to a default) and written back in full (but "paused", written only when true), so a saved scene renders
+// the same image.
 //
 // {
 //   "objects": [{"model": "blobby.glb",
@@ -10,7 +11,8 @@
 //                "ink": [r,g,b] (the object's own ink; default: the scene's)}],
 //   "camera": {"yaw": 20, "pitch": 10, "distance": 1.0, "target": [x,y,z], "world_distance": d, "fov_y": 30},
 //   "camera_path": [camera, camera, ...],
-//   "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b]
+//   "light": [x,y,z], "paper": [r,g,b], "ink": [r,g,b],
+//   "paused": true (the viewer opens it with its animations paused; render ignores it)
 // }
 //
 // Every error is one line: "<file>: <field, e.g. objects[1].params.dmax>: <problem>".
