@@ -49,7 +49,7 @@ const Regression kRegressions[] = {
     {"glb_json_chunk_longer_than_the_file.glb", "GLB header: length 4294967280 is more than the file's 22 bytes"},
     // A field name with a backspace ("o\bj_y") was quoted raw, breaking the one-line message.
     {"scene_control_character_in_field_name.json",
-     "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink)"},
+     "o?j_y: unknown field (expected one of: objects, camera, camera_path, light, paper, ink, paused)"},
     // An instanced mesh 6e-4 across (EXT_mesh_gpu_instancing scales of 6e-4 and 3e-6) placed 3 units out: the
     // animated loader's check that its vertices are the static mesh's allowed 1e-5 of the mesh's size, less than
     // the float rounding at 3 units, and called the file's own vertices an internal error (fuzz_anim, 2026-12-06).
