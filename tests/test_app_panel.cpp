@@ -16,19 +16,26 @@ namespace {
 
 using namespace stipple;
 
+// A Dear ImGui context without a window or a renderer: a display of `size` at 60 frames a second, its font atlas
+// built (never uploaded).
+ImGuiIO& start_headless_imgui(ImVec2 size = ImVec2(800.0f, 600.0f)) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = size;
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    return io;
+}
+
 // The panel's height after a few frames of a `width` x 512 window (ImGui fits its height to the content
 // over the first frames), `messages` given from frame `message_frame` on, `errors` of them errors.
 // `click_at`: the mouse pressed there in frame 3, moved by `drag` while held in frame 4, released in frame 5.
 float panel_height(uint32_t width, const std::vector<std::string>& messages = {}, int message_frame = 0, uint64_t errors = 0,
                    ImVec2 click_at = ImVec2(-1.0f, -1.0f), ImVec2 drag = ImVec2(0.0f, 0.0f)) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(float(width), 512.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // a font atlas, never uploaded
+    ImGuiIO& io = start_headless_imgui(ImVec2(float(width), 512.0f));
     Scene scene;
     app::PanelFigures figures;
     figures.extent = {width, 512};
@@ -79,14 +86,7 @@ TEST(AppPanel, ANewErrorUnfoldsThePanel) {
 // Whether a click at (x, y) presses "frame all (F)" in a 1280 x 1024 window, with `passes` GPU passes timed and
 // background work running or not (the mouse pressed in frame 3, released in frame 5).
 bool click_frames_all(float x, float y, size_t passes, bool working) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280.0f, 1024.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    ImGuiIO& io = start_headless_imgui(ImVec2(1280.0f, 1024.0f));
     Scene scene;
     app::PanelFigures figures;
     figures.extent = {1280, 1024};
@@ -131,15 +131,8 @@ TEST(AppPanel, TheControlsStayPutWhenPassesOrWorkAppear) {
 // committed, and the value the parameter holds.
 std::pair<bool, float> type_and_enter(bool latched) {
     constexpr int kEnter = 257;  // GLFW_KEY_ENTER, the backend's key code (io.KeyMap)
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800.0f, 600.0f);
-    io.DeltaTime = 1.0f / 60.0f;
+    ImGuiIO& io = start_headless_imgui();
     io.KeyMap[ImGuiKey_Enter] = kEnter;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     const ParamSpec& dmax = *find_param("dmax");
     ObjectParams params;
     app::KeyLatch latch;
@@ -193,16 +186,9 @@ TEST(AppPanel, TheKeyLatchHoldsEachQuickPressForOneFrame) {
 // characters joined the old text (0.32 committed). Returns the value committed.
 float select_all_and_type(bool modifiers_from_keys) {
     constexpr int kEnter = 257, kA = 65, kCtrl = 341;  // GLFW_KEY_ENTER, GLFW_KEY_A, GLFW_KEY_LEFT_CONTROL
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800.0f, 600.0f);
-    io.DeltaTime = 1.0f / 60.0f;
+    ImGuiIO& io = start_headless_imgui();
     io.KeyMap[ImGuiKey_Enter] = kEnter;
     io.KeyMap[ImGuiKey_A] = kA;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     const ParamSpec& dmax = *find_param("dmax");
     ObjectParams params;
     params.generation.dmax = 0.21f;
@@ -248,13 +234,7 @@ TEST(AppPanel, AQuickCtrlABetweenTwoFramesSelectsTheField) {
 // the window into it) and grown back; then moved by the user at that size. Returns the window's place after the
 // growth, and after the move.
 std::pair<ImVec2, ImVec2> shrink_and_grow(bool kept) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    ImGuiIO& io = start_headless_imgui();
     app::WindowPlace place;
     ImVec2 pos, moved;
     const ImVec2 sizes[] = {{1280, 1024}, {1280, 1024}, {200, 150}, {200, 150}, {200, 150}, {1280, 1024}, {1280, 1024},

@@ -91,19 +91,26 @@ TEST(CliRender, InfoPrintsFiguresAsJson) {
     }
 }
 
+// An OBJ of `quads` squares of side 2 stacked 1e-4 apart: a large area in a small model, whose planned
+// stipples at a high D_max and budget exceed what a machine can generate.
+std::string stacked_quads_obj(int quads) {
+    std::string stack;
+    for (int i = 0; i < quads; ++i) {
+        const std::string z = std::to_string(i * 1e-4);
+        for (const char* corner : {"-1 -1 ", "1 -1 ", "1 1 ", "-1 1 "}) stack += std::string("v ") + corner + z + "\n";
+        stack += "f " + std::to_string(4 * i + 1) + " " + std::to_string(4 * i + 2) + " " + std::to_string(4 * i + 3) + " " +
+                 std::to_string(4 * i + 4) + "\n";
+    }
+    return stack;
+}
+
 // info checks the stipples it plans against the machine's memory before generating them, as render and
 // tone check them against the device's: 2000 stacked quads at --dmax 16 with a budget of 2e9 stipples grew
 // past 7 GB. Under a limit on memory, so that a generation started fails the test, not the machine.
 TEST(CliRender, InfoRefusesStipplesBeyondMemoryBeforeGenerating) {
     const uint64_t most = physical_memory_bytes() / kGenerationBytesPerStipple;
     if (most >= 2'000'000'000) GTEST_SKIP() << "this machine could generate the largest budget --max-stipples takes";
-    std::string stack;
-    for (int i = 0; i < 2000; ++i) {
-        const std::string z = std::to_string(i * 1e-4);
-        for (const char* corner : {"-1 -1 ", "1 -1 ", "1 1 ", "-1 1 "}) stack += std::string("v ") + corner + z + "\n";
-        stack += "f " + std::to_string(4 * i + 1) + " " + std::to_string(4 * i + 2) + " " + std::to_string(4 * i + 3) + " " +
-                 std::to_string(4 * i + 4) + "\n";
-    }
+    const std::string stack = stacked_quads_obj(2000);
     const auto model = test::temp_dir("cli-info-memory") / "stack.obj";
     write_file(model, stack);
     const test::CommandResult r = run_stipple({"info", model.string(), "--dmax", "16", "--max-stipples", "2000000000"},
@@ -119,16 +126,9 @@ TEST(CliRender, InfoRefusesStipplesBeyondMemoryBeforeGenerating) {
 // render and tone check the planned stipples against the host's memory too, not only the device's (the
 // tighter limit on lavapipe, not on a GPU of large buffers), here made 512 MiB with STIPPLE_HOST_MEMORY_LIMIT:
 // 15M stipples would need about 572 MiB to generate, and the device holds them (lavapipe's 128-MiB buffers
-// hold 16.7M). A value that is no size is
-// refused, so that a typo does not silently test nothing.
+// hold 16.7M). A value that is no size is refused, so that a typo does not silently test nothing.
 TEST(CliRender, RenderAndToneRefuseStipplesBeyondTheHostsMemory) {
-    std::string stack;
-    for (int i = 0; i < 2000; ++i) {
-        const std::string z = std::to_string(i * 1e-4);
-        for (const char* corner : {"-1 -1 ", "1 -1 ", "1 1 ", "-1 1 "}) stack += std::string("v ") + corner + z + "\n";
-        stack += "f " + std::to_string(4 * i + 1) + " " + std::to_string(4 * i + 2) + " " + std::to_string(4 * i + 3) + " " +
-                 std::to_string(4 * i + 4) + "\n";
-    }
+    const std::string stack = stacked_quads_obj(2000);
     const auto dir = test::temp_dir("cli-host-memory");
     const auto model = dir / "stack.obj";
     write_file(model, stack);
