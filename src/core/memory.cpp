@@ -28,13 +28,14 @@ std::optional<uint64_t> cgroup_limit(const char* path) {
 std::optional<uint64_t> control_group_memory_limit(const std::string& proc_self_cgroup, const std::string& cgroup_root) {
     std::ifstream in(proc_self_cgroup);
     std::optional<uint64_t> least;
-    auto consider = [&](std::string dir, const char* file) {
+    // The group at `path` in the hierarchy mounted at `hierarchy`, and each of its ancestors up to that root.
+    auto consider = [&](const std::string& hierarchy, std::string path, const char* file) {
         while (true) {
-            if (const std::optional<uint64_t> limit = cgroup_limit((dir + "/" + file).c_str()); limit && *limit > 0)
+            if (const std::optional<uint64_t> limit = cgroup_limit((hierarchy + path + "/" + file).c_str()); limit && *limit > 0)
                 least = least ? std::min(*least, *limit) : *limit;
-            const size_t slash = dir.find_last_of('/');
-            if (slash == std::string::npos || slash < cgroup_root.size()) break;
-            dir.erase(slash);
+            if (path.empty()) break;
+            const size_t slash = path.find_last_of('/');
+            path.erase(slash == std::string::npos ? 0 : slash);  // a path not starting at "/" ends at the root too
         }
     };
     std::string line;
@@ -46,10 +47,10 @@ std::optional<uint64_t> control_group_memory_limit(const std::string& proc_self_
         while (!path.empty() && path.back() == '/') path.pop_back();
         if (path.find("/..") != std::string::npos) continue;
         if (line.compare(0, first, "0") == 0 && controllers.empty()) {
-            consider(cgroup_root + path, "memory.max");
-            consider(cgroup_root + "/unified" + path, "memory.max");
+            consider(cgroup_root, path, "memory.max");
+            consider(cgroup_root + "/unified", path, "memory.max");
         } else if (("," + controllers + ",").find(",memory,") != std::string::npos) {
-            consider(cgroup_root + "/memory" + path, "memory.limit_in_bytes");
+            consider(cgroup_root + "/memory", path, "memory.limit_in_bytes");
         }
     }
     return least;
