@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,6 +19,7 @@
 #include "stipple/progressive_order.hpp"
 #include "stipple/quality.hpp"
 #include "stipple/relax.hpp"
+#include "stipple/stipple_classes.hpp"
 #include "stipple/stipple_set.hpp"
 
 namespace stipple {
@@ -108,6 +110,25 @@ TEST(Generation, DistributionQualityFullAndPrefix) {
         expected += size_t(std::clamp(std::ceil(0.25 * set.count(t) - 0.5), 0.0, double(set.count(t))));
     EXPECT_EQ(quarter.size(), expected);
     EXPECT_GT(quarter.size(), set.size() / 6);
+
+    // With the coarse class (stipple_classes.hpp): the quarter as even as issue 18 asks, the whole set kept.
+    params.coarse_class = true;
+    const StippleSet classes = generate_stipples(mesh, params);
+    const double classes_full = normalized_nn_distance(classes.positions, area);
+    const double classes_quarter = normalized_nn_distance(prefix_at_fraction(classes, 0.25), area);
+    const double classes_eighth = normalized_nn_distance(prefix_at_fraction(classes, 0.125), area);
+    const double classes_half = normalized_nn_distance(prefix_at_fraction(classes, 0.5), area);
+    std::printf("with the coarse class, in %.3f s = %.0f stipples/s: delta-bar full %.3f, prefix f=0.25 %.3f, f=0.125 %.3f, "
+                "f=0.5 %.3f (without: %.3f, %.3f)\n",
+                classes.generation_seconds, classes.size() / classes.generation_seconds, classes_full, classes_quarter,
+                classes_eighth, classes_half, normalized_nn_distance(prefix_at_fraction(set, 0.125), area),
+                normalized_nn_distance(prefix_at_fraction(set, 0.5), area));
+    EXPECT_EQ(classes.size(), set.size());
+    EXPECT_GE(classes_full, 0.85);     // 0.855 measured
+    EXPECT_GE(classes_quarter, 0.80);  // 0.809 (0.700 without)
+    EXPECT_GE(classes_eighth, 0.67);   // 0.691 (0.626 without)
+    EXPECT_GE(classes_half, 0.68);     // 0.696 (0.701 without)
+    EXPECT_EQ(prefix_at_fraction(classes, 0.25).size(), quarter.size());
 }
 
 TEST(Generation, RelaxationImprovesSpread) {
@@ -144,6 +165,18 @@ TEST(Generation, Deterministic) {
     set_worker_count(0);
     EXPECT_TRUE(same_positions(a, serial));
     EXPECT_TRUE(same_positions(a, three));
+    // And with the coarse class, whose own relaxation and restart run in chunks too.
+    params.coarse_class = true;
+    const StippleSet classes = generate_stipples(mesh, params);
+    set_worker_count(1);
+    const StippleSet classes_serial = generate_stipples(mesh, params);
+    set_worker_count(3);
+    const StippleSet classes_three = generate_stipples(mesh, params);
+    set_worker_count(0);
+    EXPECT_FALSE(same_positions(a, classes));
+    EXPECT_TRUE(same_positions(classes, classes_serial));
+    EXPECT_TRUE(same_positions(classes, classes_three));
+    params.coarse_class = false;
     // Also where large triangles are ordered in pieces (two triangles of ~20k stipples each).
     GenerationParams quad_params;
     quad_params.dmax = 0.05f;
@@ -186,42 +219,86 @@ TEST(Generation, ProgressiveOrderIsTheGreedyOfItsDefinition) {
         first[t + 1] = first[t] + count;
     }
     const double spacing = 0.15;  // 12 spacings exceed the sphere: one slab
-    std::vector<glm::vec3> ordered = positions;
-    progressive_order(ordered, first, spacing, 1);
+    for (const bool classes : {false, true}) {
+        std::vector<glm::vec3> ordered = positions;
+        progressive_order(ordered, first, spacing, 1, {}, classes);
 
-    // Reference: slots by (tau, triangle); each takes the first remaining stipple (in a list kept by
-    // swapping the chosen one to the front) with the largest min(s(tau)^2, squared distance to every
-    // stipple placed so far).
-    struct Slot {
-        double tau;
-        uint32_t triangle, k;
-    };
-    std::vector<Slot> slots;
-    for (uint32_t t = 0; t < triangles; ++t)
-        for (uint32_t k = 0; k < first[t + 1] - first[t]; ++k) slots.push_back({(k + 0.5) / (first[t + 1] - first[t]), t, k});
-    std::stable_sort(slots.begin(), slots.end(), [](const Slot& x, const Slot& y) {
-        return x.tau < y.tau || (x.tau == y.tau && x.triangle < y.triangle);
-    });
-    std::vector<glm::vec3> reference = positions, placed;
-    for (const Slot& slot : slots) {
-        const uint32_t base = first[slot.triangle] + slot.k, end = first[slot.triangle + 1];
-        const float s = static_cast<float>(std::min(1.5 / std::sqrt(slot.tau), 12.0) * spacing);
-        uint32_t chosen = base;
-        float best = -1.0f;
-        for (uint32_t i = base; i < end; ++i) {
-            float d2 = s * s;
-            for (const glm::vec3& q : placed) {
-                const float dx = reference[i].x - q.x, dy = reference[i].y - q.y, dz = reference[i].z - q.z;
-                d2 = std::min(d2, (dx * dx + dy * dy) + dz * dz);
+        // Reference: slots by (tau, triangle); each takes the first remaining stipple (in a list kept by
+        // swapping the chosen one to the front) with the largest min(s(tau)^2, squared distance to every
+        // stipple placed so far); with coarse classes, among the triangle's coarse class (its first
+        // coarse_count(N) stipples, as given) for the first coarse_count(N) slots and among the others after.
+        struct Slot {
+            double tau;
+            uint32_t triangle, k;
+        };
+        std::vector<Slot> slots;
+        for (uint32_t t = 0; t < triangles; ++t)
+            for (uint32_t k = 0; k < first[t + 1] - first[t]; ++k) slots.push_back({(k + 0.5) / (first[t + 1] - first[t]), t, k});
+        std::stable_sort(slots.begin(), slots.end(), [](const Slot& x, const Slot& y) {
+            return x.tau < y.tau || (x.tau == y.tau && x.triangle < y.triangle);
+        });
+        std::vector<glm::vec3> reference = positions, placed;
+        for (const Slot& slot : slots) {
+            const uint32_t count = first[slot.triangle + 1] - first[slot.triangle], coarse = classes ? coarse_count(count) : 0;
+            const uint32_t base = first[slot.triangle] + slot.k;
+            const uint32_t end = slot.k < coarse ? first[slot.triangle] + coarse : first[slot.triangle + 1];
+            const float s = static_cast<float>(std::min(1.5 / std::sqrt(slot.tau), 12.0) * spacing);
+            uint32_t chosen = base;
+            float best = -1.0f;
+            for (uint32_t i = base; i < end; ++i) {
+                float d2 = s * s;
+                for (const glm::vec3& q : placed) {
+                    const float dx = reference[i].x - q.x, dy = reference[i].y - q.y, dz = reference[i].z - q.z;
+                    d2 = std::min(d2, (dx * dx + dy * dy) + dz * dz);
+                }
+                if (d2 > best) best = d2, chosen = i;
             }
-            if (d2 > best) best = d2, chosen = i;
+            std::swap(reference[base], reference[chosen]);
+            placed.push_back(reference[base]);
         }
-        std::swap(reference[base], reference[chosen]);
-        placed.push_back(reference[base]);
+        size_t differ = 0;
+        for (size_t i = 0; i < positions.size(); ++i) differ += std::memcmp(&ordered[i], &reference[i], sizeof(glm::vec3)) != 0;
+        EXPECT_EQ(differ, 0u) << "of " << positions.size() << " stipples" << (classes ? ", with coarse classes" : "");
     }
-    size_t differ = 0;
-    for (size_t i = 0; i < positions.size(); ++i) differ += std::memcmp(&ordered[i], &reference[i], sizeof(glm::vec3)) != 0;
-    EXPECT_EQ(differ, 0u) << "of " << positions.size() << " stipples";
+}
+
+// Triangles too long for a slab are ordered in pieces and merged (progressive_order.cpp): the merge keeps
+// each triangle's coarse class first, as a whole triangle's ordering does. Slivers of 60 stipples (a coarse
+// class of 15) a thousand spacings long, cut into about ten pieces.
+TEST(Generation, ASliversCoarseClassComesFirstAfterItsPiecesMerge) {
+    const double spacing = 0.01;
+    const uint32_t per_triangle = 60;
+    const float length = float(1000.0 * spacing);
+    const float width = float(2.0 * per_triangle * (std::sqrt(3.0) / 2.0) * spacing * spacing / length);
+    Mesh mesh;
+    mesh.positions = {{0.0f, 0.0f, 0.0f}, {length, 0.0f, 0.0f}, {0.0f, width, 0.0f},
+                      {0.0f, 0.0f, 0.5f}, {length, 0.0f, 0.5f}, {0.0f, width, 0.5f}};
+    mesh.indices = {0, 1, 2, 3, 4, 5};
+    std::vector<uint32_t> first = {0, per_triangle, 2 * per_triangle};
+    std::vector<glm::vec3> positions;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (size_t t = 0; t < 2; ++t) {
+        const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+                        c = mesh.positions[mesh.indices[3 * t + 2]];
+        for (uint32_t k = 0; k < per_triangle; ++k) {
+            const float r = std::sqrt(u(rng)), v = u(rng);
+            positions.push_back((1 - r) * a + r * (1 - v) * b + r * v * c);
+        }
+    }
+    std::vector<glm::vec3> ordered = positions;
+    progressive_order(ordered, first, spacing, 3, {}, true);
+    const uint32_t coarse = coarse_count(per_triangle);
+    ASSERT_EQ(coarse, 15u);
+    auto less = [](const glm::vec3& p, const glm::vec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); };
+    for (size_t t = 0; t < 2; ++t) {
+        std::vector<glm::vec3> given(positions.begin() + first[t], positions.begin() + first[t] + coarse);
+        std::vector<glm::vec3> got(ordered.begin() + first[t], ordered.begin() + first[t] + coarse);
+        std::sort(given.begin(), given.end(), less), std::sort(got.begin(), got.end(), less);
+        size_t differ = 0;
+        for (size_t i = 0; i < coarse; ++i) differ += std::memcmp(&given[i], &got[i], sizeof(glm::vec3)) != 0;
+        EXPECT_EQ(differ, 0u) << "triangle " << t << ": of its " << coarse << " first stipples";
+    }
 }
 
 TEST(Generation, ZeroAreaTrianglesGetNoStipples) {

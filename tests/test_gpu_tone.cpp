@@ -37,12 +37,14 @@ struct ToneCase {
     // that bound), their mean is the tone and one seed's figure mostly its sampling noise.
     int seeds = 1;
     bool orthographic = false;  // parallel lines of sight (the same surface at every distance, only the scale changes)
+    bool coarse_class = false;  // the quarter generated as a class of its own (stipple_classes.hpp)
 };
 
 void PrintTo(const ToneCase& c, std::ostream* os) {
     *os << c.model << " " << c.width << "x" << c.height;
     if (c.dmax > 0.0f) *os << " D_max " << c.dmax;
     if (c.orthographic) *os << " orthographic";
+    if (c.coarse_class) *os << " coarse class";
 }
 
 // Every GPU test of this file shares one fixture name, so a failure names its suite.
@@ -117,6 +119,7 @@ TEST_P(ToneAcrossScale, HoldsOverASixteenfoldRangeOfSize) {
     const ToneCase c = GetParam();
     ObjectParams params;
     if (c.dmax > 0.0f) params.generation.dmax = c.dmax;
+    params.generation.coarse_class = c.coarse_class;
     std::vector<ToneSurvey> seed_surveys;
     ToneSurvey off;
     for (int seed = 1; seed <= c.seeds; ++seed) {
@@ -207,7 +210,12 @@ INSTANTIATE_TEST_SUITE_P(
                       // but 6% of the ink is then lost at every size to the dots' own surface): most
                       // likely surfaces just behind its many occluding parts, a band of constant pixel
                       // width whose share grows as the object shrinks.
-                      ToneCase{"ogre.obj", 1280, 1024, 1.05}),
+                      ToneCase{"ogre.obj", 1280, 1024, 1.05},
+                      // With the coarse class (off by default), whose prefixes are spread otherwise below and
+                      // at a quarter: the scanned models of few stipples a polygon, where it takes effect.
+                      ToneCase{"stanford-bunny.obj", 1280, 1024, 1.05, 0.0f, 1, false, true},
+                      ToneCase{"igea.ply", 1280, 1024, 1.05, 0.0f, 1, false, true},
+                      ToneCase{"horse.ply", 1280, 1024, 1.05, 0.0f, 1, false, true}),
     [](const ::testing::TestParamInfo<ToneCase>& info) {
         std::string name = info.param.model;
         name = name.substr(0, name.find('.'));
@@ -223,6 +231,7 @@ INSTANTIATE_TEST_SUITE_P(
             name += std::to_string(int(std::lround(info.param.dmax * 100.0f)));
         }
         if (info.param.orthographic) name += "_orthographic";
+        if (info.param.coarse_class) name += "_coarse_class";
         return name;
     });
 

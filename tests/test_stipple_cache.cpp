@@ -311,7 +311,8 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
     // Small triangles; two large ones; long slivers cut in pieces (make_grid(1)'s are not, at this density);
     // slivers dense enough for slabs along them, which leave them whole, laid along an axis and along none
     // (cache format 15); boxes not turned, whose selection values are made uniform per facing (16); a fine
-    // sphere at a low density, most of whose triangles hold no candidate and are ranked after all others (17).
+    // sphere at a low density, most of whose triangles hold no candidate and are ranked after all others (17);
+    // a sphere of small triangles and the slivers again with the coarse class (19).
     Mesh tilted = make_cad_cylinder(256);
     const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(1.0f, 0.0f, 0.6f))));
     for (glm::vec3& p : tilted.positions) p = turn * p;
@@ -320,6 +321,7 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
         Mesh mesh;
         float dmax;
         uint64_t max_stipples = GenerationParams{}.max_stipples;
+        bool coarse_class = false;
     };
     const Case meshes[] = {{make_icosphere(2), 0.01f},
                            {make_grid(1), 0.01f},
@@ -327,10 +329,17 @@ TEST(StippleCache, GenerationChangesComeWithANewCacheVersion) {
                            {make_cad_cylinder(256), 0.05f},
                            {tilted, 0.05f},
                            {test::make_box_cloud(2000, 0.02f), 0.25f, 4 * 12 * 2000},
-                           {make_icosphere(5), 0.001f}};
-    for (const auto& [mesh, dmax, max_stipples] : meshes) {
+                           {make_icosphere(5), 0.001f},
+                           {make_icosphere(4), 0.02f, GenerationParams{}.max_stipples, true},
+                           {make_cad_cylinder(256), 0.002f, GenerationParams{}.max_stipples, true}};
+    for (const auto& [mesh, dmax, max_stipples, coarse_class] : meshes) {
+        // Without the class, generation has made the same stipples since cache format 18.
+        if (coarse_class && !params.coarse_class) {
+            EXPECT_EQ(fingerprint, 0x70fb05d5c2ee5abcull) << "generation without the coarse class changed";
+        }
         params.dmax = dmax;
         params.max_stipples = max_stipples;
+        params.coarse_class = coarse_class;
         const StippleSet set = generate_stipples(mesh, params);
         ASSERT_GT(set.size(), 1000u);
         for (const glm::vec3& p : set.positions) {

@@ -44,7 +44,10 @@ struct GenerationParams {
     // min(D_max, Object_max / total reference area), so the budget lowers the density evenly.
     uint64_t max_stipples = 8'000'000;
     uint64_t seed = 1;
-    int relax_iterations = 5;  // whole-surface relaxation toward a Poisson-disc distribution
+    int relax_iterations = 5;  // whole-surface relaxation toward a Poisson-disc distribution (stipple/relax.hpp)
+    // The stipples kept at a quarter of the density relaxed and ordered as a class of their own
+    // (stipple/stipple_classes.hpp): evener far views and mid-tones, slower generation.
+    bool coarse_class = false;
     bool progress = false;     // not a parameter: print a progress bar on stderr (only on a terminal)
 };
 

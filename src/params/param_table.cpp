@@ -54,6 +54,14 @@ const ParamSpec kTable[] = {
      ParamEffect::Regenerate, ParamWidget::Slider, false,
      [](const P& p) { return double(p.generation.relax_iterations); },
      [](P& p, double v) { p.generation.relax_iterations = int(v); }},
+    {"coarse_class", "coarse-class", "quarter as a class", kGeneration,
+     "the stipples a polygon keeps at a quarter of its density (far views, mid-tones) relaxed among themselves "
+     "first, then held while the others are relaxed around them, then 2 more steps for all, and ordered first "
+     "(polygons of up to 64 stipples): that quarter spreads nearly as evenly as the whole set (delta-bar 0.81 "
+     "instead of 0.70; the whole set's 0.855), for generation 15-45% slower (more where polygons hold few "
+     "stipples)",
+     ParamType::Bool, 0, 0, false, {}, ParamEffect::Regenerate, ParamWidget::Checkbox, false,
+     [](const P& p) { return double(p.generation.coarse_class); }, [](P& p, double v) { p.generation.coarse_class = v != 0.0; }},
 
     {"shading", "shading", "shading", kShading,
      "§2.2 shading by (N.L)^n: fewer stipples toward the light (off: the light takes none away; the distance, "

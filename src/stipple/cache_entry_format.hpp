@@ -33,11 +33,12 @@ inline constexpr uint64_t kMagic = 0x5350495453454C50ull;  // "PLESTIPS"
 // the selection's sites offered to its ranking in order of arrival weighted by the candidate count, the
 // triangles without a candidate ranked after all others (the stipples unchanged); 18: the triangles without a
 // candidate, which never draw, given the last selection value rather than ranked and calibrated (the other
-// triangles' values and the stipples unchanged)
-inline constexpr uint32_t kVersion = 18;
+// triangles' values and the stipples unchanged); 19: the coarse_class parameter (stipple_classes.hpp), whose
+// stipples the fingerprint covers too (without it, the stipples unchanged)
+inline constexpr uint32_t kVersion = 19;
 // What generation makes for kVersion, fingerprinted by tests/test_stipple_cache.cpp
 // (GenerationChangesComeWithANewCacheVersion): it fails when generation changes without a new kVersion.
-inline constexpr uint64_t kGenerationFingerprint = 0x70fb05d5c2ee5abc;
+inline constexpr uint64_t kGenerationFingerprint = 0x5bfef1a6a13005c3;
 inline constexpr char kExtension[] = ".stipples";
 
 struct Header {

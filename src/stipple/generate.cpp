@@ -57,6 +57,7 @@
 #include "core/progress.hpp"
 #include "stipple/progressive_order.hpp"
 #include "stipple/relax.hpp"
+#include "stipple/stipple_classes.hpp"
 #include "stipple/stipple_set.hpp"
 
 namespace stipple {
@@ -68,6 +69,14 @@ constexpr size_t kPointChunk = 16384;
 // Jitter of the stratified positions, in units of the R2 sequence's spacing in its unit square (1/sqrt(N)):
 // breaks its lattice orientation (see the top of this file).
 constexpr double kJitter = 0.5;
+// The coarse class's own iterations (stipple_classes.hpp): as many as the whole set's (relax_stipples adds
+// kFreeIterations to them with the class). With the default 5 + 2, the quarter's delta-bar after 5 and 7
+// of its own: 0.799 and 0.809 on the 100k-triangle sphere of 400k stipples (tests/test_generation.cpp). Started from the triangles' centroids instead of the sequence's
+// hashed offsets it reached 0.812 in 5, but the many copies of a part then placed their first stipples
+// alike, and the polygon selection, which ranks the triangles by them, came to follow the faces' facing
+// below what its calibration detects (SelectionValues.UniformForEveryFacingOfRepeatedParts: up to 4
+// standard errors, 0.528 of a facing's faces below p = 0.5).
+int coarse_iterations(int relax_iterations) { return relax_iterations + kFreeIterations; }
 
 // The name errors start with: the file the mesh came from, or its generator's name.
 std::string source_name(const Mesh& mesh) { return mesh.source.empty() ? std::string("mesh") : mesh.source; }
@@ -124,38 +133,130 @@ double total_area_in_order(const Mesh& mesh) {
     return sum;
 }
 
-// Stratified positions (see the top of this file): point k of triangle t is the k-th point of the R2
-// sequence offset by hash(seed, t) and jittered by hash(seed, t, k), folded onto the triangle. A function of the counts and the seed
-// alone, so that the relaxation can have its input again (relax.hpp).
-std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed) {
-    const size_t triangles = first.size() - 1;
-    std::vector<glm::vec3> positions(first[triangles]);
-    const uint64_t seed_key = mix64(seed ^ 0x53544950504C4531ull);
-    // In chunks of stipples, not of triangles: a model of a few large triangles uses every core too.
-    parallel_for_chunks(positions.size(), kPointChunk, [&](size_t, size_t begin, size_t end) {
-        size_t t = size_t(std::upper_bound(first.begin(), first.end(), uint32_t(begin)) - first.begin()) - 1;
-        for (size_t i = begin; i < end; ++t) {
-            while (first[t + 1] <= i) ++t;  // past empty triangles
-            const uint64_t bits = mix64(seed_key ^ mix64(uint64_t(t) << 32));
-            const double o1 = double(bits >> 40) * 0x1p-24, o2 = double(bits & 0xFFFFFF) * 0x1p-24;
-            // Each point jittered by up to a quarter of the sequence's spacing, 1/sqrt(N), either way (see the
-            // top of this file).
-            const double amount = kJitter / std::sqrt(double(first[t + 1] - first[t]));
-            const glm::dvec3 a(mesh.positions[mesh.indices[3 * t]]);
-            const glm::dvec3 b(mesh.positions[mesh.indices[3 * t + 1]]);
-            const glm::dvec3 c(mesh.positions[mesh.indices[3 * t + 2]]);
-            for (; i < std::min<size_t>(end, first[t + 1]); ++i) {
-                const uint64_t k = i - first[t];
-                const uint64_t jitter = mix64(bits ^ mix64(k + 0x4A49545445520000ull));
-                double u1 = o1 + double(k) * 0.7548776662466927 + amount * (double(jitter >> 40) * 0x1p-24 - 0.5);
-                double u2 = o2 + double(k) * 0.5698402909980532 + amount * (double(jitter & 0xFFFFFF) * 0x1p-24 - 0.5);
-                u1 -= std::floor(u1), u2 -= std::floor(u2);
-                if (u1 + u2 > 1.0) u1 = 1.0 - u1, u2 = 1.0 - u2;
-                positions[i] = glm::vec3(a + u1 * (b - a) + u2 * (c - a));
-            }
+// The coarse class after its own relaxation (stipple_classes.hpp): triangle t's coarse stipples are
+// positions[first[t], first[t + 1]).
+struct RelaxedCoarseClass {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> first;  // by triangle, size triangles + 1
+};
+
+// Point k of triangle t's stratified sequence (see the top of this file): the k-th point of the R2 sequence
+// offset by hash(seed, t) and jittered by hash(seed, t, k), folded onto the triangle. With `coarse`, the
+// triangle's coarse stipples are where their relaxation left them, and the sequence is offset so that its
+// point 0 falls on the first of them: the others keep the sequence's spacing from it. (Offset by the hash
+// instead, they lay anywhere about the moved point, and the whole set's relaxation around the fixed class
+// needed about two iterations more for the same delta-bar.)
+class Stratification {
+public:
+    Stratification(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed, const RelaxedCoarseClass* coarse)
+        : mesh_(mesh), first_(first), seed_key_(mix64(seed ^ 0x53544950504C4531ull)), coarse_(coarse) {}
+
+    // Triangle t's sequence: call point(k) for its points.
+    struct Triangle {
+        glm::dvec3 a{0.0}, b{0.0}, c{0.0};
+        uint64_t bits = 0;
+        double o1 = 0.0, o2 = 0.0, amount = 0.0;
+        const glm::vec3* coarse = nullptr;  // its relaxed coarse stipples, coarse_count of them
+        uint32_t coarse_count = 0;
+
+        glm::vec3 point(uint64_t k) const {
+            if (k < coarse_count) return coarse[k];
+            const uint64_t jitter = mix64(bits ^ mix64(k + 0x4A49545445520000ull));
+            double u1 = o1 + double(k) * 0.7548776662466927 + amount * (double(jitter >> 40) * 0x1p-24 - 0.5);
+            double u2 = o2 + double(k) * 0.5698402909980532 + amount * (double(jitter & 0xFFFFFF) * 0x1p-24 - 0.5);
+            u1 -= std::floor(u1), u2 -= std::floor(u2);
+            if (u1 + u2 > 1.0) u1 = 1.0 - u1, u2 = 1.0 - u2;
+            return glm::vec3(a + u1 * (b - a) + u2 * (c - a));
         }
-    });
-    return positions;
+    };
+
+    Triangle triangle(size_t t) const {
+        Triangle tri;
+        tri.bits = mix64(seed_key_ ^ mix64(uint64_t(t) << 32));
+        tri.o1 = double(tri.bits >> 40) * 0x1p-24, tri.o2 = double(tri.bits & 0xFFFFFF) * 0x1p-24;
+        const uint32_t count = first_[t + 1] - first_[t];
+        // Each point jittered by up to a quarter of the sequence's spacing, 1/sqrt(N), either way (see the
+        // top of this file).
+        tri.amount = kJitter / std::sqrt(double(count));
+        tri.a = glm::dvec3(mesh_.positions[mesh_.indices[3 * t]]);
+        tri.b = glm::dvec3(mesh_.positions[mesh_.indices[3 * t + 1]]);
+        tri.c = glm::dvec3(mesh_.positions[mesh_.indices[3 * t + 2]]);
+        if (!coarse_) return tri;
+        tri.coarse_count = coarse_->first[t + 1] - coarse_->first[t];
+        if (tri.coarse_count == 0) return tri;
+        tri.coarse = coarse_->positions.data() + coarse_->first[t];
+        // The first coarse stipple's (u, v) on the triangle: the sequence's offset.
+        const glm::dvec3 ab = tri.b - tri.a, ac = tri.c - tri.a, ap = glm::dvec3(tri.coarse[0]) - tri.a;
+        const double d00 = glm::dot(ab, ab), d01 = glm::dot(ab, ac), d11 = glm::dot(ac, ac);
+        const double d20 = glm::dot(ap, ab), d21 = glm::dot(ap, ac), det = d00 * d11 - d01 * d01;
+        if (det > 0.0) {
+            tri.o1 = std::clamp((d11 * d20 - d01 * d21) / det, 0.0, 1.0);
+            tri.o2 = std::clamp((d00 * d21 - d01 * d20) / det, 0.0, 1.0);
+        }
+        return tri;
+    }
+
+    // Every point, by stipple index. A function of the counts, the seed and the coarse class alone, so that
+    // the relaxation can have its input again (relax.hpp).
+    std::vector<glm::vec3> all() const {
+        std::vector<glm::vec3> positions(first_.back());
+        // In chunks of stipples, not of triangles: a model of a few large triangles uses every core too.
+        parallel_for_chunks(positions.size(), kPointChunk, [&](size_t, size_t begin, size_t end) {
+            size_t t = size_t(std::upper_bound(first_.begin(), first_.end(), uint32_t(begin)) - first_.begin()) - 1;
+            for (size_t i = begin; i < end; ++t) {
+                while (first_[t + 1] <= i) ++t;  // past empty triangles
+                const Triangle tri = triangle(t);
+                for (; i < std::min<size_t>(end, first_[t + 1]); ++i) positions[i] = tri.point(i - first_[t]);
+            }
+        });
+        return positions;
+    }
+
+private:
+    const Mesh& mesh_;
+    std::span<const uint32_t> first_;
+    uint64_t seed_key_;
+    const RelaxedCoarseClass* coarse_;
+};
+
+std::vector<glm::vec3> stratified_positions(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed) {
+    return Stratification(mesh, first, seed, nullptr).all();
+}
+
+// The coarse class of the stratified positions, relaxed as a set of its own at its own spacing.
+RelaxedCoarseClass relax_coarse_class(const Mesh& mesh, std::span<const uint32_t> first, uint64_t seed, double spacing,
+                                      int iterations, const std::function<void(double)>& progress) {
+    const size_t triangles = first.size() - 1;
+    RelaxedCoarseClass coarse;
+    coarse.first.resize(triangles + 1);
+    coarse.first[0] = 0;
+    for (size_t t = 0; t < triangles; ++t) coarse.first[t + 1] = coarse.first[t] + coarse_count(first[t + 1] - first[t]);
+    const size_t n = coarse.first[triangles];
+    if (n == 0) return coarse;
+    const Stratification stratification(mesh, first, seed, nullptr);
+    auto subset = [&] {  // the coarse stipples of the stratified positions
+        std::vector<glm::vec3> out(n);
+        parallel_for_chunks(triangles, kTriangleChunk, [&](size_t, size_t begin, size_t end) {
+            for (size_t t = begin; t < end; ++t) {
+                if (coarse.first[t + 1] == coarse.first[t]) continue;
+                const Stratification::Triangle sequence = stratification.triangle(t);
+                for (uint32_t k = 0; k < coarse.first[t + 1] - coarse.first[t]; ++k) out[coarse.first[t] + k] = sequence.point(k);
+            }
+        });
+        return out;
+    };
+    coarse.positions = subset();
+    // Its share of the stipples where it lies: triangles of 1 or 2 stipples have none, and a mesh may be
+    // mostly such triangles in places (a scan's fine parts beside large flat ones).
+    uint64_t around = 0;
+    for (size_t t = 0; t < triangles; ++t)
+        if (coarse.first[t + 1] > coarse.first[t]) around += first[t + 1] - first[t];
+    const double class_spacing = spacing / std::sqrt(double(n) / double(around));
+    std::vector<uint32_t> triangle_of(n);
+    for (size_t t = 0; t < triangles; ++t)
+        std::fill(triangle_of.begin() + coarse.first[t], triangle_of.begin() + coarse.first[t + 1], uint32_t(t));
+    relax_stipples(mesh, std::move(triangle_of), coarse.positions, class_spacing, iterations, subset, progress);
+    return coarse;
 }
 
 // The D_max generation uses for a surface of `area` (Object_max may cap the asked one), and the reference view's
@@ -288,17 +389,48 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
         });
     };
     fill_triangles();
-
+    // With the coarse class (stipple_classes.hpp): each triangle's first stipples of the stratified sequence,
+    // whose prefixes are spread over the triangle already, relaxed first as a set of its own. A relaxation
+    // feature: without relaxation the flag changes nothing.
+    const int relax_its = params.relax_iterations;
+    const bool classes = params.coarse_class && relax_its > 0;
+    RelaxedCoarseClass coarse;
+    if (classes) {
+        coarse = relax_coarse_class(mesh, set.first, params.seed, set.poisson_radius, coarse_iterations(relax_its),
+                                    [&](double f) { bar.update(0.05 + 0.15 * f); });
+        parallel_for_chunks(triangles, kTriangleChunk, [&](size_t, size_t begin, size_t end) {
+            for (size_t t = begin; t < end; ++t)
+                for (uint32_t i = set.first[t]; i < set.first[t] + coarse_count(set.count(t)); ++i) set.triangle[i] |= kCoarseClass;
+        });
+    }
     set.positions = stratified_positions(mesh, set.first, params.seed);
-    bar.update(0.05);
+    const double relaxed_from = classes ? 0.20 : 0.05;
+    bar.update(relaxed_from);
 
     // The relaxation takes the triangles, and the order does without them (4 bytes a stipple less at
-    // the peaks of both): they are filled again from the counts after.
-    relax_stipples(mesh, std::move(set.triangle), set.positions, set.poisson_radius, params.relax_iterations,
+    // the peaks of both): they are filled again from the counts after. With the class, it sorts the
+    // stratified positions and starts each stipple from its place in the sequence around the relaxed class:
+    // the stratified positions again give it their order at the end, and the class (3 bytes a stipple, 4 a
+    // triangle) is freed before the iterations instead of kept through their peak for it.
+    auto start_around_coarse = [&](std::span<glm::vec3> pos, std::span<const uint32_t> original, std::span<const uint32_t> triangle) {
+        const Stratification around(mesh, set.first, params.seed, &coarse);
+        parallel_for_chunks(pos.size(), kPointChunk, [&](size_t, size_t begin, size_t end) {
+            size_t last = SIZE_MAX;
+            Stratification::Triangle sequence{};
+            for (size_t slot = begin; slot < end; ++slot) {
+                const size_t t = triangle[slot] & ~kCoarseClass;
+                if (t != last) sequence = around.triangle(t), last = t;
+                pos[slot] = sequence.point(original[slot] - set.first[t]);
+            }
+        });
+        coarse = RelaxedCoarseClass();
+    };
+    relax_stipples(mesh, std::move(set.triangle), set.positions, set.poisson_radius, relax_its,
                    [&] { return stratified_positions(mesh, set.first, params.seed); },
-                   [&](double f) { bar.update(0.05 + 0.65 * f); });  // about the shares of the time
+                   [&](double f) { bar.update(relaxed_from + (0.70 - relaxed_from) * f); },  // about the shares of the time
+                   classes, classes ? RelaxStart(start_around_coarse) : RelaxStart());
     progressive_order(set.positions, set.first, set.poisson_radius, params.seed,
-                      [&](double f) { bar.update(0.70 + 0.30 * f); });
+                      [&](double f) { bar.update(0.70 + 0.30 * f); }, classes);
     fill_triangles();
     bar.finish();
 

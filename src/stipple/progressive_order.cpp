@@ -5,12 +5,14 @@
 #include <limits>
 #include <memory>
 
+#include "core/error.hpp"
 #include "core/hash.hpp"
 #include "core/memory.hpp"
 #include "core/parallel.hpp"
 #include "stipple/point_grid.hpp"
 #include "stipple/push_grid.hpp"
 #include "stipple/slab_direction.hpp"
+#include "stipple/stipple_classes.hpp"
 
 // How the greedy runs on two cores and stays deterministic.
 //
@@ -60,13 +62,19 @@ constexpr double kPushCell = 6.0;
 struct Unit {
     uint32_t begin, end;  // its stipples: positions_[begin, end)
     uint32_t triangle;
-    uint32_t piece;       // 0: the whole triangle; else 1 + the slab of this piece
+    uint16_t piece;       // 0: the whole triangle; else 1 + the slab of this piece (at most kSlabs + 1 slabs)
+    // Its stipples of the coarse class (stipple_classes.hpp; at most 16), which come first: slots k < coarse
+    // choose among them, the later slots among the others.
+    uint16_t coarse;
 };
+static_assert(sizeof(Unit) == 16, "a unit a triangle: kept at 16 bytes where triangles hold a stipple or two");
+static_assert(coarse_count(kCoarseClassMaxStipples) <= UINT16_MAX);
 
 class Orderer {
 public:
-    Orderer(std::vector<glm::vec3>& positions, std::span<const uint32_t> first, double spacing, uint64_t seed)
-        : positions_(positions), first_(first), spacing_(spacing), seed_(seed) {}
+    Orderer(std::vector<glm::vec3>& positions, std::span<const uint32_t> first, double spacing, uint64_t seed,
+            bool coarse_classes)
+        : positions_(positions), first_(first), spacing_(spacing), seed_(seed), coarse_classes_(coarse_classes) {}
 
     void run(const std::function<void(double)>& progress);
 
@@ -104,6 +112,7 @@ private:
     std::span<const uint32_t> first_;
     double spacing_;
     uint64_t seed_;
+    bool coarse_classes_;
     glm::vec3 dir_{1.0f, 0.0f, 0.0f};  // across the slabs (make_units)
     float along(const glm::vec3& p) const { return glm::dot(p, dir_); }
     std::vector<Unit> units_;                        // by triangle, then piece
@@ -196,6 +205,7 @@ void Orderer::make_units() {
     // `wanted`, but for float rounding of split_extent.
     const double width = std::max(wanted, kSearchCap * spacing_ + 2.0 * max_extent);
     const size_t slabs = std::max<size_t>(1, static_cast<size_t>(std::ceil(choice.size / width)));
+    STIPPLE_CHECK(slabs < UINT16_MAX, "progressive_order: a slab index beyond a unit's piece field");
     auto slab_at = [&](double x) { return std::min(slabs - 1, static_cast<size_t>(std::max(0.0, (x - choice.lo) / width))); };
     slab_units_.assign(slabs, {});
     slab_lo_.assign(slabs, std::numeric_limits<float>::infinity());
@@ -208,18 +218,25 @@ void Orderer::make_units() {
             slab_hi_[slab] = std::max(slab_hi_[slab], along(positions_[i]));
         }
     };
-    std::vector<uint32_t> count;
+    std::vector<uint32_t> count, coarse;
     std::vector<glm::vec3> sorted;
     for (size_t t = 0; t < triangles; ++t) {
         const uint32_t b = first_[t], e = first_[t + 1];
         if (b == e) continue;
+        const uint32_t coarse_end = b + (coarse_classes_ ? coarse_count(e - b) : 0u);
         if (choice.extent[t] <= split_extent) {
-            add_unit({b, e, uint32_t(t), 0}, slab_at(choice.centre[t]));
+            add_unit({b, e, uint32_t(t), 0, uint16_t(coarse_end - b)}, slab_at(choice.centre[t]));
             continue;
         }
-        // Cut: the triangle's stipples grouped by slab (a stable counting sort), one unit each.
+        // Cut: the triangle's stipples grouped by slab (a stable counting sort: each piece's coarse
+        // stipples stay first), one unit each.
         count.assign(slabs + 1, 0);
-        for (uint32_t i = b; i < e; ++i) ++count[slab_at(along(positions_[i])) + 1];
+        coarse.assign(slabs, 0);
+        for (uint32_t i = b; i < e; ++i) {
+            const size_t slab = slab_at(along(positions_[i]));
+            ++count[slab + 1];
+            if (i < coarse_end) ++coarse[slab];
+        }
         for (size_t s = 1; s <= slabs; ++s) count[s] += count[s - 1];
         sorted.resize(e - b);
         std::vector<uint32_t> fill(count.begin(), count.end() - 1);
@@ -227,7 +244,8 @@ void Orderer::make_units() {
         std::copy(sorted.begin(), sorted.end(), positions_.begin() + b);
         const uint32_t first_unit = static_cast<uint32_t>(units_.size());
         for (size_t s = 0; s < slabs; ++s)
-            if (count[s + 1] > count[s]) add_unit({b + count[s], b + count[s + 1], uint32_t(t), uint32_t(s + 1)}, s);
+            if (count[s + 1] > count[s])
+                add_unit({b + count[s], b + count[s + 1], uint32_t(t), uint16_t(s + 1), uint16_t(coarse[s])}, s);
         split_.push_back({uint32_t(t), first_unit, static_cast<uint32_t>(units_.size())});
     }
 }
@@ -264,31 +282,39 @@ void Orderer::merge_pieces() {
         };
         auto later = [](const Next& a, const Next& b) { return a.tau != b.tau ? a.tau > b.tau : a.unit > b.unit; };
         std::vector<double> phase(pieces);
-        std::vector<Next> heap;
-        heap.reserve(pieces);
         const double start = double(mix64(seed_ ^ 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53;
         const double offset = start + double(split.triangle) * 0.6180339887498949;
         for (uint32_t u = split.first_unit; u < split.end_unit; ++u) {
-            const Unit& unit = units_[u];
             double rotated = radical_inverse(u - split.first_unit) + 0.5 / pieces + offset;
-            rotated -= std::floor(rotated);
-            phase[u - split.first_unit] = rotated;  // in [0, 1)
-            if (unit.end > unit.begin) heap.push_back({phase[u - split.first_unit] / (unit.end - unit.begin), u, 0});
+            phase[u - split.first_unit] = rotated - std::floor(rotated);  // in [0, 1)
         }
-        std::make_heap(heap.begin(), heap.end(), later);
         std::vector<glm::vec3> merged;
         merged.reserve(first_[split.triangle + 1] - first_[split.triangle]);
-        while (!heap.empty()) {
-            std::pop_heap(heap.begin(), heap.end(), later);
-            Next& next = heap.back();
-            const Unit& unit = units_[next.unit];
-            merged.push_back(positions_[unit.begin + next.k]);
-            const uint32_t count = unit.end - unit.begin;
-            if (++next.k < count) {
-                next.tau = (next.k + phase[next.unit - split.first_unit]) / count;
-                std::push_heap(heap.begin(), heap.end(), later);
-            } else {
-                heap.pop_back();
+        std::vector<Next> heap;
+        heap.reserve(pieces);
+        // The pieces' coarse stipples first, then the others, each merged alike: the triangle's first
+        // coarse_count(N) stipples are its coarse class, as a whole triangle's are.
+        for (const bool coarse : {true, false}) {
+            auto range = [&](const Unit& unit) {
+                return coarse ? std::pair{unit.begin, unit.begin + unit.coarse} : std::pair{unit.begin + unit.coarse, unit.end};
+            };
+            for (uint32_t u = split.first_unit; u < split.end_unit; ++u) {
+                const auto [b, e] = range(units_[u]);
+                if (e > b) heap.push_back({phase[u - split.first_unit] / (e - b), u, 0});
+            }
+            std::make_heap(heap.begin(), heap.end(), later);
+            while (!heap.empty()) {
+                std::pop_heap(heap.begin(), heap.end(), later);
+                Next& next = heap.back();
+                const auto [b, e] = range(units_[next.unit]);
+                merged.push_back(positions_[b + next.k]);
+                const uint32_t count = e - b;
+                if (++next.k < count) {
+                    next.tau = (next.k + phase[next.unit - split.first_unit]) / count;
+                    std::push_heap(heap.begin(), heap.end(), later);
+                } else {
+                    heap.pop_back();
+                }
             }
         }
         std::copy(merged.begin(), merged.end(), positions_.begin() + first_[split.triangle]);
@@ -398,7 +424,8 @@ void Orderer::finish_slab(size_t slab) {
 void Orderer::place(const Unit& unit, uint32_t k, double tau, SlabState& state) {
     PushGrid& grid = *state.grid;
     const uint32_t base = unit.begin + k;
-    const uint32_t remaining = unit.end - base;
+    // The coarse class first, among themselves (see Unit::coarse).
+    const uint32_t remaining = (k < unit.coarse ? unit.begin + unit.coarse : unit.end) - base;
     const float s = static_cast<float>(search_radius(tau));
     uint32_t chosen = 0;
     if (remaining > 1) {
@@ -438,9 +465,9 @@ void Orderer::place(const Unit& unit, uint32_t k, double tau, SlabState& state) 
 }  // namespace
 
 void progressive_order(std::vector<glm::vec3>& positions, std::span<const uint32_t> first, double spacing,
-                       uint64_t seed, const std::function<void(double)>& progress) {
+                       uint64_t seed, const std::function<void(double)>& progress, bool coarse_classes) {
     if (first.size() < 2 || positions.empty() || !(spacing > 0.0)) return;
-    Orderer(positions, first, spacing, seed).run(progress);
+    Orderer(positions, first, spacing, seed, coarse_classes).run(progress);
 }
 
 }  // namespace stipple

@@ -22,7 +22,10 @@ namespace stipple {
 // deterministically, and for the triangles too large for a slab, which are ordered in pieces (each
 // piece a unit with its own (k + 0.5) / N times) and merged.
 // `spacing` is the hexagonal spacing of the full set. Deterministic for any thread count.
+// With `coarse_classes`, each triangle's first coarse_count(N) stipples as given are its coarse class
+// (stipple_classes.hpp): its first coarse_count(N) slots are filled from them and the later slots from the
+// others.
 void progressive_order(std::vector<glm::vec3>& positions, std::span<const uint32_t> first, double spacing,
-                       uint64_t seed, const std::function<void(double)>& progress = {});
+                       uint64_t seed, const std::function<void(double)>& progress = {}, bool coarse_classes = false);
 
 }  // namespace stipple

@@ -25,9 +25,28 @@ namespace stipple {
 // returns `positions` as they were given (the caller's generation is deterministic and cheap): the
 // input's spatial order is sorted again at the end to put the stipples back in their order, instead
 // of keeping an index of 4 bytes a stipple through the iterations.
+//
+// Multi-class relaxation (Wei, "Multi-class blue noise sampling", 2010): a stipple whose triangle_of entry
+// carries kCoarseClass belongs to the coarse class, the stipples a triangle keeps at a quarter of its
+// density (stipple_classes.hpp), which the caller has relaxed as a set of its own already. With
+// `coarse_fixed`, it stays where it is while the others are relaxed around it for `iterations`, then all
+// are relaxed kFreeIterations more (the class at a smaller step): a view that draws a quarter of the
+// stipples then sees a set nearly as even as the whole. (Relaxed together, each class stipple also pushed
+// by the others at their own spacing, the classes fought: docs/paper-reading.md, §2.1.)
+// `start`, when set, moves the stipples to where the iterations begin, once they are in the relaxation's
+// spatial order: pos[slot] is stipple original[slot], of triangle triangle[slot] & ~kCoarseClass.
+// `positions`, as given, only set that order (input_again must return them, not the moved ones).
+using RelaxStart = std::function<void(std::span<glm::vec3> pos, std::span<const uint32_t> original,
+                                      std::span<const uint32_t> triangle)>;
 void relax_stipples(const Mesh& mesh, std::vector<uint32_t>&& triangle_of, std::vector<glm::vec3>& positions,
                     double spacing, int iterations, const std::function<std::vector<glm::vec3>()>& input_again,
-                    const std::function<void(double)>& progress = {});
+                    const std::function<void(double)>& progress = {}, bool coarse_fixed = false,
+                    const RelaxStart& start = {});
+
+// The flag on a triangle index that puts a stipple in the coarse class (triangle indices stay below it).
+inline constexpr uint32_t kCoarseClass = 0x80000000u;
+// The iterations after `iterations` with the coarse class fixed (see relax.cpp for the figures).
+inline constexpr int kFreeIterations = 2;
 
 // The point of triangle (a, b, c) closest to p, moved inside by a hair (barycentric coordinates
 // at least 1e-5), so that a clamped stipple never lies on an edge shared with another triangle.
