@@ -157,25 +157,21 @@ TEST(Generation, Deterministic) {
     const StippleSet b = generate_stipples(mesh, params);
     EXPECT_TRUE(same_positions(a, b));
     EXPECT_EQ(a.first, b.first);
-    // Independent of the thread count.
-    set_worker_count(1);
-    const StippleSet serial = generate_stipples(mesh, params);
-    set_worker_count(3);
-    const StippleSet three = generate_stipples(mesh, params);
-    set_worker_count(0);
-    EXPECT_TRUE(same_positions(a, serial));
-    EXPECT_TRUE(same_positions(a, three));
-    // And with the coarse class, whose own relaxation and restart run in chunks too.
+    // Independent of the thread count, with the coarse class too (its own relaxation and restart run in
+    // chunks as well).
+    auto same_on_1_and_3_threads = [&](const StippleSet& reference) {
+        set_worker_count(1);
+        const StippleSet serial = generate_stipples(mesh, params);
+        set_worker_count(3);
+        const StippleSet three = generate_stipples(mesh, params);
+        set_worker_count(0);
+        return same_positions(reference, serial) && same_positions(reference, three);
+    };
+    EXPECT_TRUE(same_on_1_and_3_threads(a));
     params.coarse_class = true;
     const StippleSet classes = generate_stipples(mesh, params);
-    set_worker_count(1);
-    const StippleSet classes_serial = generate_stipples(mesh, params);
-    set_worker_count(3);
-    const StippleSet classes_three = generate_stipples(mesh, params);
-    set_worker_count(0);
     EXPECT_FALSE(same_positions(a, classes));
-    EXPECT_TRUE(same_positions(classes, classes_serial));
-    EXPECT_TRUE(same_positions(classes, classes_three));
+    EXPECT_TRUE(same_on_1_and_3_threads(classes)) << "with the coarse class";
     params.coarse_class = false;
     // Also where large triangles are ordered in pieces (two triangles of ~20k stipples each).
     GenerationParams quad_params;
