@@ -71,8 +71,8 @@ constexpr size_t kPointChunk = 16384;
 constexpr double kJitter = 0.5;
 // The coarse class's own iterations (stipple_classes.hpp): as many as the whole set's (relax_stipples adds
 // kFreeIterations to them with the class). With the default 5 + 2, the quarter's delta-bar after 5 and 7
-// of its own: 0.799 and 0.809 on the 100k-triangle sphere of 400k stipples (tests/test_generation.cpp). Started from the triangles' centroids instead of the sequence's
-// hashed offsets it reached 0.812 in 5, but the many copies of a part then placed their first stipples
+// of its own: 0.799 and 0.809 on the 100k-triangle sphere of 400k stipples (tests/test_generation.cpp).
+// Started from the triangles' centroids instead of the sequence's hashed offsets it reached 0.812 in 5, but the many copies of a part then placed their first stipples
 // alike, and the polygon selection, which ranks the triangles by them, came to follow the faces' facing
 // below what its calibration detects (SelectionValues.UniformForEveryFacingOfRepeatedParts: up to 4
 // standard errors, 0.528 of a facing's faces below p = 0.5).
@@ -400,7 +400,7 @@ StippleSet generate_stipples(const Mesh& mesh, const GenerationParams& params, s
                                     [&](double f) { bar.update(0.05 + 0.15 * f); });
         parallel_for_chunks(triangles, kTriangleChunk, [&](size_t, size_t begin, size_t end) {
             for (size_t t = begin; t < end; ++t)
-                for (uint32_t i = set.first[t]; i < set.first[t] + coarse_count(set.count(t)); ++i) set.triangle[i] |= kCoarseClass;
+                for (uint32_t k = 0; k < coarse.first[t + 1] - coarse.first[t]; ++k) set.triangle[set.first[t] + k] |= kCoarseClass;
         });
     }
     set.positions = stratified_positions(mesh, set.first, params.seed);
