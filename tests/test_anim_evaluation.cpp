@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "anim/pose.hpp"
 #include "anim/procedural_rigs.hpp"
+#include "anim/sampling.hpp"
 #include "support/anim_files.hpp"
 
 namespace stipple::anim {
@@ -200,6 +201,29 @@ void expect_keys(const std::string& interpolation, const std::vector<Expected>& 
 TEST(AnimEvaluation, StepHoldsEachKey) {
     expect_keys("STEP", {{0.5, {0, 0, 0}, 0}, {1.5, {0, 0, 0}, 0}, {3.0, {1, 2, 0}, 90}, {3.999, {1, 2, 0}, 90},
                          {5.5, {0, 0, 0}, 0}});
+}
+
+// A STEP animation sampled at its own key rate shows key k at frame k: the file's key times are floats, and
+// float(k / 24) lies above k / 24 for some k (1, 2, 4 and 8 of the first ten), where the key before was shown.
+TEST(AnimEvaluation, StepShowsEachKeyAtItsOwnTime) {
+    for (const int rate : {24, 25, 30, 60}) {
+        Sampler sampler;
+        sampler.interpolation = Interpolation::Step;
+        sampler.components = 3;
+        for (int k = 0; k < 100; ++k) {
+            sampler.times.push_back(float(double(k) / rate));
+            sampler.values.insert(sampler.values.end(), {float(k), 0.0f, 0.0f});
+        }
+        int wrong = 0;
+        for (int k = 0; k < 100; ++k) {
+            double out[3];
+            sample(sampler, double(k) / rate, false, out);
+            wrong += out[0] != double(k);
+            sample(sampler, (double(k) + 0.5) / rate, false, out);  // half way: still key k
+            wrong += out[0] != double(k);
+        }
+        EXPECT_EQ(wrong, 0) << rate << " keys a second";
+    }
 }
 
 TEST(AnimEvaluation, LinearInterpolatesAndSlerpsTheShortArc) {

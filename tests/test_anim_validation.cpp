@@ -140,6 +140,14 @@ TEST(AnimValidation, SkinsAndMorphWeightsThatDoNotFit) {
     joints.doc["skins"][0]["joints"] = {1, 99};
     expect_error(joints, "skin_joint", "skins[0].joints[1]: node 99 does not exist");
 
+    // Both were drawn without a word (glTF forbids them: which bind matrix, which channel would win?).
+    GltfBuilder twice = rigs::bending_cylinder();
+    twice.doc["skins"][0]["joints"] = {1, 1};
+    expect_error(twice, "skin_twice", "skins[0].joints[1]: node 1 is listed twice (glTF: a skin's joints are unique)");
+    GltfBuilder driven = rigs::node_animated_box();
+    driven.doc["animations"][0]["channels"].push_back(driven.doc["animations"][0]["channels"][0]);
+    expect_error(driven, "driven_twice", "animations[0].channels[3].target: node 1's translation is driven by an earlier channel");
+
     GltfBuilder matrices = rigs::bending_cylinder();
     std::vector<float> one(16, 0.0f);
     one[0] = one[5] = one[10] = one[15] = 1.0f;

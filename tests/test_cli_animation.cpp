@@ -217,13 +217,16 @@ TEST(CliAnimation, SceneFilesNameAnimationStartAndSpeed) {
 
 TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
     const std::string model = cylinder("cli_anim_bad");
+    // Into folders that do not exist yet: a refused request makes none (it made -o's folder before refusing).
     const fs::path dir = test::temp_dir("cli_anim_bad_out");
-    const std::string out = (dir / "x.png").string();
+    const std::string out = (dir / "not-made" / "x.png").string();
     const fs::path scenes = test::temp_dir("cli_anim_bad_scenes");
     write_text(scenes / "unknown.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": "Jump"}}]})");
     write_text(scenes / "speed.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"speed": "fast"}}]})");
     write_text(scenes / "negative.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": -1}}]})");
     write_text(scenes / "fraction.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": 0.5}}]})");
+    write_text(scenes / "huge.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": 1e19}}]})");
+    write_text(scenes / "huger.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"name": 1e20}}]})");
     write_text(scenes / "field.json", R"({"objects": [{"model": ")" + model + R"(", "animation": {"clip": "Bend"}}]})");
     write_text(scenes / "cpu.json", R"({"objects": [{"model": ")" + model + R"(", "params": {"density_path": "cpu"}}]})");
 
@@ -241,8 +244,8 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
         {{"render", model, "-o", out, "--animation", "7"}, "no animation '7'"},
         {{"render", model, "-o", out, "--time", "nan"}, "--time"},
         {{"render", model, "-o", out, "--time", "1e9"}, "--time"},
-        {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "0"}, "--fps"},
-        {{"render", model, "-o", (dir / "%d.png").string(), "--frames", "2", "--fps", "1e-308"}, "must be in 0.001..1000"},
+        {{"render", model, "-o", (dir / "frames" / "%d.png").string(), "--frames", "2", "--fps", "0"}, "--fps"},
+        {{"render", model, "-o", (dir / "frames" / "%d.png").string(), "--frames", "2", "--fps", "1e-308"}, "must be in 0.001..1000"},
         {{"render", model, "-o", out, "--fps", "30"}, "--fps needs --frames"},
         {{"render", model, "-o", out, "--density-path", "cpu"}, model + ": the cpu density path cannot draw an animated model (it"},
         {{"render", model, "-o", out, "--density-path", "cpu-splat"}, "cannot draw an animated model"},
@@ -255,6 +258,9 @@ TEST(CliAnimation, BadRequestsAreOneLineAndWriteNothing) {
          "objects[0].animation.name: an animation index is a whole number of 0 or more, got -1"},
         {{"render", (scenes / "fraction.json").string(), "-o", out},
          "objects[0].animation.name: an animation index is a whole number of 0 or more, got 0.5"},
+        // A whole number written as a float is an index like any other (it said "a whole number ..., got 1e+19").
+        {{"render", (scenes / "huge.json").string(), "-o", out}, "no animation '10000000000000000000'"},
+        {{"render", (scenes / "huger.json").string(), "-o", out}, "objects[0].animation.name: animation index 1e+20 is beyond any file's animations"},
         {{"render", (scenes / "field.json").string(), "-o", out}, "objects[0].animation.clip: unknown field"},
         // Said where the scene names the path.
         {{"render", (scenes / "cpu.json").string(), "-o", out},
@@ -353,6 +359,27 @@ TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     EXPECT_NE(r.out.find("skin 0 'arm': 2 joints"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("stretch headroom:    polygons reach up to"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("candidates generated for up to 3x"), std::string::npos) << r.out;
+
+    // A skin that no animation moves: said, with the rest pose it is drawn in (info said nothing of it).
+    anim::GltfBuilder still = anim::rigs::bending_cylinder();
+    still.doc.erase("animations");
+    auto s = run_stipple({"info", test::write_rig(still, "cli_anim_info_still", "still"), "--json"});
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+    const nlohmann::json still_info = nlohmann::json::parse(s.out);
+    EXPECT_EQ(still_info["skins"][0]["joints"], 2) << s.out;
+    EXPECT_TRUE(still_info["rest_pose_only"].get<bool>()) << s.out;
+    EXPECT_TRUE(still_info["animations"].empty()) << s.out;
+
+    // A channel of KHR_animation_pointer in a file that uses it without requiring it is skipped (it was refused
+    // for its path); the file's other animation still moves it.
+    anim::GltfBuilder pointer = anim::rigs::bending_cylinder();
+    pointer.doc["extensionsUsed"] = {"KHR_animation_pointer"};
+    pointer.doc["animations"][0]["channels"].push_back(
+        {{"sampler", 0},
+         {"target", {{"path", "pointer"}, {"extensions", {{"KHR_animation_pointer", {{"pointer", "/materials/0/alphaCutoff"}}}}}}}});
+    auto p = run_stipple({"info", test::write_rig(pointer, "cli_anim_info_pointer", "pointer")});
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_NE(p.out.find("animation 0 'Bend': 2.000 s, 1 channel (LINEAR)"), std::string::npos) << p.out;
 
     const std::string fox = test::shared_model("fox.glb");
     if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";

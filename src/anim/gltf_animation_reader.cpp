@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
+#include <utility>
 
 #include "anim/gltf_reading.hpp"
 #include "core/error.hpp"
@@ -43,6 +45,7 @@ private:
         animation.name = in.name;
         animation.samplers.resize(in.samplers.size());
         std::vector<int> sampler_use(in.samplers.size(), -1);  // the ChannelPath a sampler was read for
+        std::set<std::pair<int, int>> driven;                   // (node, ChannelPath) of the channels read
         for (size_t s = 0; s < in.samplers.size(); ++s)
             read_times(in.samplers[s], field + indexed(".samplers", s), animation.samplers[s]);
         for (size_t c = 0; c < in.channels.size(); ++c) {
@@ -85,6 +88,11 @@ private:
                                      " also drives a property whose values it cannot hold (" + read_as(sampler_use[s], sampler.components) +
                                      " and " + read_as(reading, components) + ")");
             }
+            // glTF: one channel per node and property (which of two would win is not said).
+            if (!driven.insert({channel.target_node, static_cast<int>(path)}).second)
+                fail_file(path_, channel_field + ".target: node " + std::to_string(channel.target_node) + "'s " +
+                                         channel.target_path + " is driven by an earlier channel of this animation too "
+                                         "(one channel per node and property)");
             animation.channels.push_back(Channel{static_cast<uint32_t>(s), channel.target_node, path});
         }
         for (const Channel& channel : animation.channels)

@@ -132,6 +132,10 @@ private:
             for (int joint : in.joints) {
                 if (joint < 0 || static_cast<size_t>(joint) >= model_.nodes.size())
                     fail_file(path_, field + ".joints: node " + std::to_string(joint) + " does not exist");
+                // glTF: a skin's joints are unique (a vertex naming either copy could mean either bind matrix).
+                if (std::find(skin.joints.begin(), skin.joints.end(), joint) != skin.joints.end())
+                    fail_file(path_, field + indexed(".joints", skin.joints.size()) + ": node " + std::to_string(joint) +
+                                         " is listed twice (glTF: a skin's joints are unique)");
                 skin.joints.push_back(joint);
             }
             skin.inverse_bind.assign(skin.joints.size(), glm::mat4(1.0f));

@@ -52,6 +52,13 @@ void sample(const Sampler& sampler, double time, bool is_rotation, double* out) 
         for (size_t i = 0; i < c; ++i) out[i] = values[k * stride + value_at + i];
         if (is_rotation) normalize4(out);
     };
+    // Key times are single precision, as the file stores them; the time asked is a double (1/24 s from a frame
+    // count). One that rounds to a key's time is that key's: float(k / 24) lies above k / 24 for some k, and a
+    // STEP animation sampled at its own key rate showed the key before (frames 1, 2, 4 and 8 of 10 keys at
+    // 24 per second).
+    if (const float rounded = static_cast<float>(time); double(rounded) != time &&
+        std::binary_search(times.begin(), times.end(), rounded))
+        time = rounded;
     if (time <= times.front()) return copy_key(0);
     if (time >= times.back()) return copy_key(times.size() - 1);
     // times[k] <= time < times[k + 1], so the interval has a positive length.

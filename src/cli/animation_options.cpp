@@ -28,7 +28,7 @@ AnimationClock read_animation_clock(const Args& args, bool animated, bool camera
     AnimationClock clock;
     for (const char* option : {"--time", "--fps"})
         if (args.has(option) && !animated)
-            fail(std::string(option) + " needs an animated model (a glTF file with animations): nothing in this scene moves");
+            fail(std::string(option) + " needs an animated model (a glTF file with animations that move it): nothing in this scene moves");
     if (args.has("--time")) {
         clock.time = args.number("--time", 0.0);
         if (std::abs(clock.time) > 1e6) fail("--time = " + args.get("--time", "") + " must be in -1e6..1e6 seconds");

@@ -65,8 +65,9 @@ std::string describe_winding(const WindingRepair& w) {
 // The animation fields of --json (an empty "animations" list for a static model).
 std::string animation_json(const ObjectData& object) {
     std::string out = "\"animations\": [";
-    if (!object.motion) return out + "]";
-    const anim::AnimationDescription d = anim::describe_animation(*object.motion.model);
+    const bool still = !object.motion && !anim::describe_lines(object.still).empty();
+    if (!object.motion && !still) return out + "]";
+    const anim::AnimationDescription d = still ? object.still : anim::describe_animation(*object.motion.model);
     for (size_t i = 0; i < d.animations.size(); ++i)
         out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.animations[i].name) +
                ", \"duration\": " + std::to_string(d.animations[i].duration) +
@@ -82,6 +83,7 @@ std::string animation_json(const ObjectData& object) {
             out += (k ? ", " : "") + json_string(d.morphs[i].target_names[k]);
         out += "]}";
     }
+    if (still) return out + "], \"rest_pose_only\": true";  // nothing moves it: no stretch to measure
     const anim::StretchHeadroom& h = *object.motion.headroom;
     char stretch[256];
     std::snprintf(stretch, sizeof stretch,
@@ -164,6 +166,10 @@ int run_info(const std::vector<std::string>& argv) {
             for (size_t i = 0; i < lines.size(); ++i) std::printf("%-21s%s\n", i ? "" : "motion:", lines[i].c_str());
             std::printf("stretch headroom:    %s\n",
                         anim::describe_headroom(*object.motion.headroom, mesh.triangle_count()).c_str());
+        } else if (const auto lines = anim::describe_lines(object.still); !lines.empty()) {
+            // Its skins and default morph weights shape the mesh drawn, which may differ from the stored one.
+            for (size_t i = 0; i < lines.size(); ++i) std::printf("%-21s%s\n", i ? "" : "motion:", lines[i].c_str());
+            std::printf("%-21s%s\n", "", "none moves it: drawn in its rest pose (skins and morph weights applied)");
         }
         std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
                     object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);

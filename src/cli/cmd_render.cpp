@@ -413,7 +413,9 @@ int run_render(const std::vector<std::string>& argv) {
             if (!o.motion) continue;
             const anim::Animation& a = o.motion.model->animations[size_t(resolve_animation(o, scene.objects[i].animation))];
             // The time into the animation the frame shows (looped or held), not the scene clock's.
-            std::printf("animation:          object %zu: '%s' (%.3f s) at %.3f s%s\n", i, a.name.c_str(), a.duration,
+            const size_t chosen = size_t(resolve_animation(o, scene.objects[i].animation));
+            const std::string named = a.name.empty() ? "animation " + std::to_string(chosen) : "'" + a.name + "'";  // as info names it
+            std::printf("animation:          object %zu: %s (%.3f s) at %.3f s%s\n", i, named.c_str(), a.duration,
                         anim::animation_time(a, scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
                                              scene.objects[i].animation.loop),
                         sequence ? " (last frame)" : "");

@@ -26,10 +26,16 @@ void check_output_writable(const std::string& option, const std::string& path) {
             fail(named + ": cannot write there: " + std::string(std::strerror(errno)));
         return;
     }
-    const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    // Missing folders are made when the file is written, not here: a request refused after this check (a bad
+    // animation name, a bad model) left an empty folder behind. The nearest folder that exists is tried instead.
+    const fs::path wanted = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    fs::path folder = wanted;
     std::error_code ec;
-    fs::create_directories(folder, ec);
-    if (ec) fail(named + ": cannot make its folder " + folder.string() + ": " + ec.message());
+    while (!fs::exists(folder, ec) && folder.has_parent_path() && folder.parent_path() != folder) folder = folder.parent_path();
+    if (!fs::exists(folder, ec)) folder = ".";
+    if (!fs::is_directory(folder, ec))
+        fail(named + ": cannot make its folder " + wanted.string() + ": " +
+             (folder == wanted ? std::string("not a folder") : folder.string() + " is not a folder"));
     // A file of a name of its own made and removed in the folder: the one test that holds for every reason a
     // file cannot be made there (root's included, to which access() answers yes on /proc), and that touches no
     // file another program may be writing at the output's own name.

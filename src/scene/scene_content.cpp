@@ -163,8 +163,12 @@ void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std:
 int resolve_animation(const ObjectData& model, const AnimationChoice& choice) {
     if (!model.motion) {
         if (choice.name.empty()) return anim::kRestPose;
+        const size_t still = model.still.animations.size();  // a glTF file's animations that move nothing it draws
         fail_file(model.mesh ? model.mesh->source : std::string("model"),
-                  "has no animation to play (animation '" + choice.name + "' was asked for)");
+                  "has no animation to play (animation '" + choice.name + "' was asked for" +
+                      (still == 0 ? std::string(")")
+                                  : std::string("; its ") + (still == 1 ? "animation moves" : std::to_string(still) + " animations move") +
+                                        " nothing it draws)"));
     }
     return choice.name.empty() ? 0 : anim::find_animation(*model.motion.model, choice.name);
 }

@@ -244,8 +244,13 @@ AnimationChoice read_animation(const json& j, const Reader& r, const std::string
     if (j.contains("name")) {
         const json& name = j["name"];
         const std::string w = Reader::field(where, "name");
+        const double index = name.is_number() ? name.get<double>() : -1.0;
         if (name.is_number_unsigned())
             a.name = std::to_string(name.get<uint64_t>());
+        else if (index >= 0.0 && index < 0x1p64 && index == std::floor(index))  // 2.0 or 1e19 is whole too
+            a.name = std::to_string(static_cast<uint64_t>(index));
+        else if (index >= 0x1p64 && std::isfinite(index))
+            r.error(w, "animation index " + name.dump() + " is beyond any file's animations");
         else if (name.is_string() && !name.get<std::string>().empty())
             a.name = name.get<std::string>();
         else if (name.is_number())  // -1 or 0.5 said "got number", as if a number were wrong

@@ -45,6 +45,7 @@ ObjectData read_model(const std::string& path) {
             object.bounds = box_sphere(object.motion.headroom->bounds);
             object.box = object.motion.headroom->bounds;
         } else {
+            object.still = anim::describe_animation(*model);
             object.mesh = std::make_shared<const Mesh>(std::move(model->rest));
         }
     } else {
@@ -78,7 +79,7 @@ ObjectData load_model_data(const std::string& path) {
 ObjectData reflected_object(const ObjectData& model) {
     STIPPLE_CHECK(model.mesh != nullptr, "a loaded model");
     if (model.motion)
-        fail_file(model.mesh->source, "is animated, and an animated model cannot be mirrored (its joints move the "
+        fail_file(model.mesh->source, "is animated, and an animated model cannot be mirrored (its animation moves the "
                                       "stored mesh): mirror it in its file");
     ObjectData reflected;
     reflected.mesh = std::make_shared<const Mesh>(reflected_through_origin(*model.mesh));

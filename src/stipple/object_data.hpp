@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "anim/describe.hpp"
 #include "anim/headroom.hpp"
 #include "mesh/mesh.hpp"
 #include "params/object_params.hpp"
@@ -27,6 +28,9 @@ struct ObjectData {
     Bounds box;     // the same points' box (scene framing under a matrix that scales axes unequally)
     std::shared_ptr<const StippleSet> stipples;
     anim::Motion motion;  // a glTF file with an animation: what moves it and its stretch headroom
+    // A glTF file with skins, morph targets or animations of which none moves it (no animation, or channels
+    // that drive nothing): what it holds, drawn in its rest pose (info says so); empty otherwise.
+    anim::AnimationDescription still;
     double load_seconds = 0.0;  // reading and preparing the mesh (and measuring an animation's stretch)
 };
 
