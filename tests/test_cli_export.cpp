@@ -453,6 +453,11 @@ TEST(CliExport, EachFormatSaysWhatItCannotHold) {
     EXPECT_EQ(std::count(pdf.err.begin(), pdf.err.end(), '\n'), 1) << pdf.err;
     EXPECT_FALSE(std::filesystem::exists(pdf_path));
     run_ok(with({"-o", (dir / "big.svg").string()}));
+    // A page of fractions of a millimetre is named as given (it said 101x151 for 100.9x150.7).
+    const test::CommandResult odd = test::run_stipple(
+        {"render", "--width", "200", "--height", "160", "--page", "100.9x150.7mm", "-o", (dir / "odd.svg").string()});
+    ASSERT_EQ(odd.exit_code, 0) << odd.err;
+    EXPECT_NE(odd.out.find("(100.9x150.7 mm page: "), std::string::npos) << odd.out;
 
     const test::CommandResult csv =
         test::run_stipple({"render", "--width", "200", "--height", "160", "--contours", "-o", (dir / "dots.csv").string()});

@@ -721,6 +721,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "--queued", "2"}, "--repeat"},
         {{"bench", "--depth-cull", "1"}, "--depth-cull"},
         {{"view", "--depth-cull", "often"}, "--depth-cull"},
+        // Taken as no benchmark, it left the window open under a script that waited for the figure.
+        {{"view", "--benchmark-frames", "0"}, "--benchmark-frames = 0 must be in 1..1000000"},
         {{"info"}, "MODEL"},
         {{"parity", "--devices", "0,99"}, "--devices"},
         {{"parity", "--devices", "0"}, "--devices"},

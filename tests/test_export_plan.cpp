@@ -126,11 +126,66 @@ TEST(ExportPlan, AStrokeTheScreenDrawsNoPixelOfIsLeftOut) {
     options.fit = Fit::Drawing;
     EXPECT_EQ(make_plot_plan(drawing, options).fit, Fit::Frame);
     options.fit = Fit::Frame;
+    // A speck of pieces that the merge joins (one 0.2 px beside another, merged into it) is left out whole: the
+    // merged piece's ends lay outside the stroke's box and were kept (the bunny at --distance 10000: a blank
+    // screen, two marks in its SVG).
+    Drawing merged = drawing;
+    merged.segments.push_back({glm::vec2(10.03f, 10.2f), glm::vec2(10.17f, 10.2f), 0, LineKind::Contour});
+    EXPECT_TRUE(make_plot_plan(merged, options).layers.empty()) << "the merged speck is left out too";
     drawing.segments.push_back({glm::vec2(20.3f, 20.3f), glm::vec2(20.4f, 20.4f), 0, LineKind::Contour});  // 0.14 away
     const PlotPlan plan = make_plot_plan(drawing, options);
     size_t lines = 0;
     for (const PlotLayer& layer : plan.layers) lines += layer.lines.size();
     EXPECT_EQ(lines, 1u) << "the stroke over a pixel's centre is kept";
+}
+
+// A contour zig-zagging back and forth within the screen's line (a noisy scan's rim seen edge-on) is one
+// stroke on the page even with a pen finer than that line: a 0.3 mm pen went back and forth over 2 mm of the
+// bunny's rim six times. A zig-zag wider than the screen's line is drawn as it is.
+TEST(ExportPlan, AZigZagWithinTheScreensLineIsOneStroke) {
+    for (const float spread : {1.5f, 20.0f}) {  // sideways, in pixels, against a line 4 px wide on the screen
+        Drawing drawing;
+        drawing.width_px = 200;
+        drawing.height_px = 100;
+        drawing.objects.push_back({"rim", 4.0f});
+        // 100 -> 140 -> 110 -> 150 -> 120 along x, each leg shifted sideways by `spread`.
+        const float xs[] = {100, 140, 110, 150, 120};
+        for (int i = 0; i + 1 < 5; ++i)
+            drawing.segments.push_back({glm::vec2(xs[i], 50.0f + (i % 2) * spread), glm::vec2(xs[i + 1], 50.0f + ((i + 1) % 2) * spread),
+                                        0, LineKind::Contour});
+        ExportOptions options;
+        options.margin_mm = 0.0;
+        options.fit = Fit::Frame;
+        options.pen_width_mm = 0.3;
+        const PlotPlan plan = make_plot_plan(drawing, options);
+        ASSERT_FALSE(plan.layers.empty());
+        double drawn_px = 0.0;
+        for (const PlotLayer& layer : plan.layers)
+            for (const Polyline& line : layer.lines) drawn_px += polyline_length(line) / plan.layout.mm_per_px;
+        if (spread < 2.0f)
+            EXPECT_LT(drawn_px, 60.0) << "one stroke over the 50 px the zig-zag covers, not its 150";
+        else
+            EXPECT_GT(drawn_px, 140.0) << "a zig-zag wider than the screen's line is drawn whole";
+    }
+}
+
+// A wide line's stroke keeps its shape: a contour turning back 4 px beside itself under a 12-px line was cut
+// to its first arm (the fold allowed was half the line's width), a bar with a knob where the screen drew a U.
+TEST(ExportPlan, AWideLinesTurnsAreKept) {
+    Drawing drawing;
+    drawing.width_px = 200;
+    drawing.height_px = 100;
+    drawing.objects.push_back({"u", 12.0f});
+    drawing.segments.push_back({glm::vec2(100.0f, 50.0f), glm::vec2(120.0f, 50.0f), 0, LineKind::Contour});
+    drawing.segments.push_back({glm::vec2(120.0f, 50.0f), glm::vec2(100.0f, 54.0f), 0, LineKind::Contour});
+    ExportOptions options;
+    options.margin_mm = 0.0;
+    options.fit = Fit::Frame;
+    const PlotPlan plan = make_plot_plan(drawing, options);
+    double drawn_px = 0.0;
+    for (const PlotLayer& layer : plan.layers)
+        for (const Polyline& line : layer.lines) drawn_px += polyline_length(line) / plan.layout.mm_per_px;
+    EXPECT_NEAR(drawn_px, 20.0 + std::hypot(20.0, 4.0), 0.5) << "both arms";
 }
 
 // The page holds the frame: a dot centred beyond the image's edge is left out, and a line piece that

@@ -539,6 +539,9 @@ TEST(BadInput, PlyHeaderAndDataDisagree) {
                       "PLY header line 7: element count '99999999999999999999' is beyond any file");
     expect_load_error(write_file(dir / "shifted.ply", vertex + face + "0 0 0\n1 0 0 7\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
                       "line 11: '7' is one value more than the header gives this element (one element a line)");
+    // One short: named at its own line (the next line's first value was read in its place, and that line named).
+    expect_load_error(write_file(dir / "short.ply", vertex + face + "0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+                      "line 10: holds fewer values than the header gives this element (one element a line)");
     // The same data, one element a line, loads; a leading '+' is a number as strtod reads it.
     const std::string one_face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const Mesh m = load_mesh(write_file(dir / "plus.ply", vertex + one_face + "+0 0 0\n+1 0 0\n0 +1e0 0\n3 +0 1 2\n"));

@@ -465,7 +465,7 @@ int run_render(const std::vector<std::string>& argv) {
         // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
         const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())
                                                             : printf_string(", %zu polylines", last_plot.polylines);
-        holds = plot::format_number(last_plot.page.width_mm, 0) + "x" + plot::format_number(last_plot.page.height_mm, 0) +
+        holds = plot::format_number(last_plot.page.width_mm, 2) + "x" + plot::format_number(last_plot.page.height_mm, 2) +  // 100.9 as given (it said 101)
                 printf_string(" mm page: %zu dots%s%s; %s at %lldx%lld", last_plot.dots, lines.c_str(), sequence ? " in the last frame" : "",
                               last_plot.fit == plot::Fit::Drawing ? "the drawing fitted to it, from the frame's view" : "the frame's view",
                               width, height);

@@ -275,8 +275,9 @@ int run_tone(const std::vector<std::string>& argv) {
         for (size_t v = 0; v < options.views.size(); ++v)
             if (!sample.covered(v))
                 std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel in view %g:%g (beyond the frame, "
-                                     "the camera inside it, or only the back of a one-sided surface in view, which "
-                                     "--two-sided draws): shown as -, left out of max/min\n",
+                                     "the camera inside it, thinner than a pixel there (between pixel centres), or "
+                                     "only the back of a one-sided surface in view, which --two-sided draws): shown "
+                                     "as -, left out of max/min\n",
                              sample.distance, options.views[v][0], options.views[v][1]);
     std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance)%s:\n\n",
                 several ? "; per seed, then each distance averaged over the seeds" : "");

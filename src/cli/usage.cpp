@@ -266,8 +266,9 @@ itself; without MODEL the default scene's model):
                           high enlarged to about that, at most 8 times) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
-  A distance at which the object covers no pixel (beyond the frame, the camera inside it, or only the
-  back of a one-sided surface in view) shows as - and is left out of max/min, with a warning.
+  A distance at which the object covers no pixel (beyond the frame, the camera inside it, thinner than
+  a pixel, or only the back of a one-sided surface in view) shows as - and is left out of max/min,
+  with a warning.
   Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
   of the dots), a last line says so, with the dots and the spread.
 

@@ -234,7 +234,11 @@ std::vector<Piece> pieces_the_screen_draws(std::vector<Piece> pieces, const Merg
         if (stroke_inks_a_pixel(line, width_px) || line.points.empty()) continue;
         glm::dvec2 lo = line.points.front(), hi = lo;
         for (const glm::dvec2& p : line.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-        unseen.push_back({lo - 1e-6, hi + 1e-6});
+        // Padded by what the merge may move a piece's end (its snap and collinear tolerances): a piece welded or
+        // merged into the stroke a little beyond its box was kept, and a speck the screen left blank came out as
+        // two marks in the SVG (the bunny at --distance 10000).
+        const double pad = merge.snap_px + merge.collinear_px + 1e-6;
+        unseen.push_back({lo - pad, hi + pad});
     }
     if (unseen.empty()) return pieces;
     auto inside = [](const glm::dvec2& p, const std::array<glm::dvec2, 2>& box) {
@@ -246,6 +250,9 @@ std::vector<Piece> pieces_the_screen_draws(std::vector<Piece> pieces, const Merg
     });
     return pieces;
 }
+
+// The farthest a stroke's fold may lie from the straight line that replaces it (unfold), in pixels of the frame.
+constexpr double kMostFoldPx = 1.5;
 
 // `kind`: Lines or Creases.
 PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, uint32_t object, LayerKind kind,
@@ -259,20 +266,28 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
     layer.stroke_mm = options.pen_width_mm.value_or(line_width_px(drawing, object, kind) * plan.layout.mm_per_px);
     // Welded and merged in pixels (the frame's precision), simplified in millimetres (the pen's).
     // A fold within the stroke's own width is drawn once (unfold): half the width, and the merge's
-    // tolerance for where the frame put each piece.
-    const double fold_px = 0.5 * layer.stroke_mm / plan.layout.mm_per_px + options.merge.collinear_px;
+    // tolerance for where the frame put each piece. The width is the screen's line where the pen is finer: a
+    // contour zig-zagging within the screen's band (a noisy scan's rim) is one stroke there, and a pen of
+    // 0.3 mm went back and forth over 2 mm of the bunny's six times (37 such folds on its page).
+    // At most kMostFoldPx from the stroke, though: a wide line's own width let its curves straighten (a contour's
+    // U a few pixels across under a 12-px line came out as a bar with a knob, its ink up to 6 px off the screen's).
+    const double band_px = std::max(layer.stroke_mm / plan.layout.mm_per_px, double(line_width_px(drawing, object, kind)));
+    const double fold_px = std::min(0.5 * band_px, kMostFoldPx) + options.merge.collinear_px;
     for (Polyline line : chain_edges(merge_segments(pieces, options.merge))) {
         line = unfold(line, fold_px);
         for (glm::dvec2& p : line.points) p = plan.layout.to_mm(p);
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
     }
     if (options.plotter_order) {
-        weld_touching_strokes(layer.lines, layer.stroke_mm);
+        // Folded where strokes meet within the same bound (a 12-px line's strokes welded and unfolded within half its
+        // width took its curves straight too).
+        const double fold_mm = std::min(0.5 * layer.stroke_mm, kMostFoldPx * plan.layout.mm_per_px);
+        weld_touching_strokes(layer.lines, layer.stroke_mm, fold_mm);
         order_polylines(layer.lines, pen);
         // Where a contour's visible pieces meet with a gap narrower than the pen, one stroke: the pen was
         // lifted and set down again within its own width (the bunny's contours at 800 x 640: 106 of 179
         // strokes began that close to where the last ended).
-        join_close_strokes(layer.lines, layer.stroke_mm);
+        join_close_strokes(layer.lines, layer.stroke_mm, fold_mm);
     } else if (!layer.lines.empty()) pen = layer.lines.back().closed ? layer.lines.back().points.front() : layer.lines.back().points.back();
     return layer;
 }

@@ -55,7 +55,7 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen) {
     lines = std::move(ordered);
 }
 
-void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm) {
+void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm) {
     if (!(gap_mm > 0.0)) return;
     // End 2l is open stroke l's first point, 2l + 1 its last; closed and empty strokes have none.
     const uint32_t count = static_cast<uint32_t>(lines.size());
@@ -137,11 +137,11 @@ void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm) {
     }
     // As join_close_strokes: folds within half the gap where the pieces met are drawn once.
     for (size_t i = 0; i < welded.size(); ++i)
-        if (was_welded[i]) welded[i] = unfold(welded[i], 0.5 * gap_mm);
+        if (was_welded[i]) welded[i] = unfold(welded[i], fold_mm >= 0.0 ? fold_mm : 0.5 * gap_mm);
     lines = std::move(welded);
 }
 
-void join_close_strokes(std::vector<Polyline>& lines, double gap_mm) {
+void join_close_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm) {
     std::vector<Polyline> joined;
     std::vector<uint8_t> was_joined;
     joined.reserve(lines.size());
@@ -163,7 +163,7 @@ void join_close_strokes(std::vector<Polyline>& lines, double gap_mm) {
     // begins along the zig-zag) make the joined stroke step back over its last stretch and on again: the pen
     // drew that stretch three times, a knob on paper. Folds within half the pen's width are drawn once.
     for (size_t i = 0; i < joined.size(); ++i)
-        if (was_joined[i]) joined[i] = unfold(joined[i], 0.5 * gap_mm);
+        if (was_joined[i]) joined[i] = unfold(joined[i], fold_mm >= 0.0 ? fold_mm : 0.5 * gap_mm);
     lines = std::move(joined);
 }
 

@@ -95,10 +95,11 @@ void validate_mesh(const Mesh& mesh) {
     const glm::dvec3 flo = glm::dvec3(lo) + mesh.origin, fhi = glm::dvec3(hi) + mesh.origin;
     const float offset = float(std::max({std::abs(flo.x), std::abs(flo.y), std::abs(flo.z), std::abs(fhi.x), std::abs(fhi.y), std::abs(fhi.z)}));
     if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
-        char text[200];
+        char text[256];
         std::snprintf(text, sizeof(text),
-                      "the model lies %g units from the origin, %g times its size: single precision keeps too few "
-                      "digits of its shape; move it near the origin", double(offset), double(offset / extent));
+                      "the model lies %g units from the origin, %g times its size (at most %g): the drawing places "
+                      "it in single precision, which keeps too few digits there; move it near the origin",
+                      double(offset), double(offset / extent), double(kMaxOffsetOverExtent));
         fail_file(source, text);
     }
     if (mesh.normals.size() != vertex_count)

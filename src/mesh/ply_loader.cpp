@@ -289,7 +289,10 @@ public:
         : path_(path), p_(begin), end_(end), line_(line) {}
 
     double real(Scalar) {
-        const std::string_view t = unsigned_plus(token());
+        // A vertex's values are on its own line: one short of the header's count read the next line's first value in
+        // its place, and the message named the next line ("is one value more").
+        const std::string_view t = unsigned_plus(token(started_));
+        started_ = true;
         double v = 0.0;
         const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
         if (ec == std::errc::result_out_of_range) bad(t, "is out of range");
@@ -312,6 +315,7 @@ public:
     // Each element is one line: a value left before the line's end means the header and the data disagree
     // (read on, every later element would shift by it and load as other numbers).
     void end_item() {
+        started_ = false;
         while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r')) ++p_;
         if (p_ == end_ || *p_ == '\n') return;
         const char* start = p_;
@@ -320,7 +324,12 @@ public:
     }
     void expect_items(uint64_t, Scalar) {}  // items are read one by one; the data end bounds them
     void skip(const Property& p) {
-        const int64_t n = p.is_list ? integer(p.count_type) : 1;
+        if (!p.is_list) {  // on the element's line, as real() reads
+            token(started_);
+            started_ = true;
+            return;
+        }
+        const int64_t n = integer(p.count_type);
         if (n < 0) fail_file(path_, "line " + std::to_string(line_) + ": a '" + p.name + "' list has a negative length");
         for (int64_t i = 0; i < n; ++i) token();
     }
@@ -332,8 +341,13 @@ private:
             t.remove_prefix(1);  // "+-5" stays refused
         return t;
     }
-    std::string_view token() {
-        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) line_ += *p_++ == '\n';
+    // `same_line`: the element's values so far are on this line, and this one must be too.
+    std::string_view token(bool same_line = false) {
+        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) {
+            if (*p_ == '\n' && same_line)
+                fail_file(path_, "line " + std::to_string(line_) + ": holds fewer values than the header gives this element (one element a line)");
+            line_ += *p_++ == '\n';
+        }
         if (p_ == end_) throw Truncated{};
         const char* start = p_;
         while (p_ < end_ && *p_ != ' ' && *p_ != '\t' && *p_ != '\r' && *p_ != '\n') ++p_;
@@ -347,6 +361,7 @@ private:
     const char* p_;
     const char* end_;
     size_t line_;
+    bool started_ = false;  // a value of the current element read (real())
 };
 
 struct Target {
