@@ -133,9 +133,10 @@ void print_sampling_note(const ToneSurvey& survey, const ToneSurveyOptions& opti
     const double spread = 1.0 / std::sqrt(std::max(fewest, 1.0));
     if (spread <= 0.025) return;
     std::printf("\nSampling: at d=%g a view's figure rests on about %.0f dots (its ink over point_size^2, summed over "
-                "its %d frame(s)), so sampling alone can move it by up to about +-%.1f%% (1/sqrt of the dots) between views, "
-                "frames and seeds. More frames (--frames, up to 64, with --arc 360), seeds (--seeds) or pixels "
-                "(--width, --height) steady it.\n",
+                "its %d frame(s)), so sampling alone can move it by about +-%.1f%% (1/sqrt of the dots) between views, "
+                "frames and seeds, and more where few polygons draw them (a polygon selected or not takes all its dots, "
+                "and every frame keeps the seed's choice: only --seeds averages that). More frames (--frames, up to "
+                "64, with --arc 360), seeds (--seeds) or pixels (--width, --height) steady it.\n",
                 at, fewest, options.frames, 100.0 * spread);
 }
 
