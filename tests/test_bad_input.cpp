@@ -159,7 +159,7 @@ const GltfCase kGltfCases[] = {
     {"channel_sampler_range", [](json& d) { d["animations"][0]["channels"][0]["sampler"] = 2; },
      "animations[0].channels[0].sampler: sampler 2 does not exist (the animation has 1)"},
     {"channel_path", [](json& d) { d["animations"][0]["channels"][0]["target"]["path"] = "position"; },
-     "animations[0].channels[0].target.path: expected one of translation, rotation, scale, weights, pointer, got 'position'"},
+     "animations[0].channels[0].target.path: expected one of translation, rotation, scale, weights, got 'position'"},
     {"sampler_input_string", [](json& d) { d["animations"][0]["samplers"][0]["input"] = "2"; },
      "animations[0].samplers[0].input: expected the index of an accessor, got a string"},
     {"interpolation", [](json& d) { d["animations"][0]["samplers"][0]["interpolation"] = "linear"; },

@@ -380,6 +380,11 @@ TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     auto p = run_stipple({"info", test::write_rig(pointer, "cli_anim_info_pointer", "pointer")});
     ASSERT_EQ(p.exit_code, 0) << p.err;
     EXPECT_NE(p.out.find("animation 0 'Bend': 2.000 s, 1 channel (LINEAR)"), std::string::npos) << p.out;
+    pointer.doc.erase("extensionsUsed");  // a path of an extension the file does not declare: refused
+    auto undeclared = run_stipple({"info", test::write_rig(pointer, "cli_anim_info_pointer_undeclared", "pointer")});
+    EXPECT_NE(undeclared.exit_code, 0);
+    EXPECT_NE(undeclared.err.find("animations[0].channels[1].target.path: expected one of translation, rotation, scale, weights, got 'pointer'"),
+              std::string::npos) << undeclared.err;
 
     const std::string fox = test::shared_model("fox.glb");
     if (fox.empty()) GTEST_SKIP() << "../shared/models/fox.glb not present";
@@ -389,6 +394,7 @@ TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     ASSERT_EQ(info["animations"].size(), 3u);
     EXPECT_EQ(info["animations"][2]["name"], "Run");
     EXPECT_EQ(info["skins"][0]["joints"], 24);
+    EXPECT_FALSE(info["rest_pose_only"].get<bool>()) << "the fox moves";
     EXPECT_GT(info["stretch"]["max_area_ratio"].get<double>(), 3.0) << "the Run stretches joints beyond the cap";
     EXPECT_GT(info["stretch"]["capped_polygons"].get<int>(), 0);
     const std::string cube = test::shared_model("AnimatedMorphCube.gltf");

@@ -778,6 +778,17 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), "not a png");
     EXPECT_FALSE(std::filesystem::exists(dir / "nowhere")) << "the check made the link's target";
     EXPECT_TRUE(std::filesystem::is_fifo(dir / "pipe.png"));
+
+    // Missing folders are made by the writer, not the check (a refused request left them behind), so the check
+    // says before the model is read what would stop the writer: a folder that is a link to nothing, or a file.
+    std::filesystem::create_directory_symlink(dir / "gone", dir / "dangling");
+    auto dangling = run_stipple({"render", missing, "-o", (dir / "dangling" / "sub" / "x.png").string()});
+    EXPECT_EQ(dangling.exit_code, 1);
+    EXPECT_NE(dangling.err.find("dangling is a link to nothing"), std::string::npos) << dangling.err;
+    auto under_file = run_stipple({"render", missing, "-o", (dir / "kept.png" / "sub" / "x.png").string()});
+    EXPECT_EQ(under_file.exit_code, 1);
+    EXPECT_NE(under_file.err.find("kept.png is not a folder"), std::string::npos) << under_file.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "gone"));
 }
 
 // --stats says how many triangles the depth pass drew: all of them with --depth-cull off, fewer with on

@@ -126,12 +126,20 @@ TEST(ExportPlan, AStrokeTheScreenDrawsNoPixelOfIsLeftOut) {
     options.fit = Fit::Drawing;
     EXPECT_EQ(make_plot_plan(drawing, options).fit, Fit::Frame);
     options.fit = Fit::Frame;
-    // A speck of pieces that the merge joins (one 0.2 px beside another, merged into it) is left out whole: the
-    // merged piece's ends lay outside the stroke's box and were kept (the bunny at --distance 10000: a blank
-    // screen, two marks in its SVG).
-    Drawing merged = drawing;
-    merged.segments.push_back({glm::vec2(10.03f, 10.2f), glm::vec2(10.17f, 10.2f), 0, LineKind::Contour});
-    EXPECT_TRUE(make_plot_plan(merged, options).layers.empty()) << "the merged speck is left out too";
+    // A speck's pieces that the merge welds or folds into a stroke a little beyond the stroke's own box are left
+    // out with it: they were kept, and the bunny at --distance 10000 drew a blank screen and two marks in its
+    // SVG. The first 1,100 of its contour's visible pieces that frame (640 x 512, about a thousandth of a pixel
+    // each, around the frame's centre), as the GPU's walk wrote them: with the boxes padded by 1e-6 px they left
+    // a stroke (with 900, none).
+    Drawing speck;
+    speck.width_px = 640;
+    speck.height_px = 512;
+    speck.objects.push_back({"bunny", 1.0f});
+    std::ifstream file(stipple::test::source_path("tests/data/speck_pieces.txt"));
+    for (float ax, ay, bx, by; file >> ax >> ay >> bx >> by;)
+        speck.segments.push_back({glm::vec2(ax, ay), glm::vec2(bx, by), 0, LineKind::Contour});
+    ASSERT_GT(speck.segments.size(), 1000u);
+    EXPECT_TRUE(make_plot_plan(speck, options).layers.empty()) << "the bunny's speck is left out whole";
     drawing.segments.push_back({glm::vec2(20.3f, 20.3f), glm::vec2(20.4f, 20.4f), 0, LineKind::Contour});  // 0.14 away
     const PlotPlan plan = make_plot_plan(drawing, options);
     size_t lines = 0;
@@ -139,11 +147,14 @@ TEST(ExportPlan, AStrokeTheScreenDrawsNoPixelOfIsLeftOut) {
     EXPECT_EQ(lines, 1u) << "the stroke over a pixel's centre is kept";
 }
 
-// A contour zig-zagging back and forth within the screen's line (a noisy scan's rim seen edge-on) is one
-// stroke on the page even with a pen finer than that line: a 0.3 mm pen went back and forth over 2 mm of the
-// bunny's rim six times. A zig-zag wider than the screen's line is drawn as it is.
+// A contour zig-zagging back and forth within half the screen's line, at most 1.5 px (a noisy scan's rim seen
+// edge-on), is one stroke on the page even with a pen finer than that line: a 0.3 mm pen went back and forth
+// over 2 mm of the bunny's rim six times. A zig-zag wider than that is drawn as it is, so that a wide line's
+// curves keep their shape (AWideLinesTurnsAreKept).
 TEST(ExportPlan, AZigZagWithinTheScreensLineIsOneStroke) {
-    for (const float spread : {1.5f, 20.0f}) {  // sideways, in pixels, against a line 4 px wide on the screen
+    // Sideways, in pixels, against a line 4 px wide on the screen: 10 px puts the turns 1.96 px from the straight
+    // line through them, within half the line (2 px) but beyond the 1.5 px bound.
+    for (const float spread : {1.5f, 10.0f, 20.0f}) {
         Drawing drawing;
         drawing.width_px = 200;
         drawing.height_px = 100;

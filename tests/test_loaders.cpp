@@ -542,6 +542,21 @@ TEST(BadInput, PlyHeaderAndDataDisagree) {
     // One short: named at its own line (the next line's first value was read in its place, and that line named).
     expect_load_error(write_file(dir / "short.ply", vertex + face + "0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
                       "line 10: holds fewer values than the header gives this element (one element a line)");
+    expect_load_error(write_file(dir / "short_face.ply", vertex + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n3 0 2 1\n"),
+                      "line 13: holds fewer values than the header gives this element (one element a line)");
+    // Still read: a value skipped before x, a list among a vertex's values, CRLF line ends, a strip wrapped over lines.
+    const Mesh odd = load_mesh(write_file(
+        dir / "odd.ply", "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty int id\r\nproperty float x\r\nproperty float y\r\n"
+                         "property list uchar float extra\r\nproperty float z\r\nelement face 1\r\n"
+                         "property list uchar int vertex_indices\r\nend_header\r\n7 0 0 2 0.5 0.5 0\r\n8 1 0 0 0\r\n9 0 1 1 3 0\r\n"
+                         "3 0 1 2\r\n"));
+    EXPECT_EQ(odd.triangle_count(), 1u);
+    EXPECT_EQ(odd.positions[2].y, 1.0f);
+    const Mesh wrapped = load_mesh(write_file(
+        dir / "wrapped.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1\n2 3\n"));
+    EXPECT_EQ(wrapped.triangle_count(), 2u);
     // The same data, one element a line, loads; a leading '+' is a number as strtod reads it.
     const std::string one_face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const Mesh m = load_mesh(write_file(dir / "plus.ply", vertex + one_face + "+0 0 0\n+1 0 0\n0 +1e0 0\n3 +0 1 2\n"));

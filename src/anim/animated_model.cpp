@@ -93,12 +93,12 @@ bool adopt_rest_pose(const std::string& path, AnimatedModel& model, const FileOr
     adopted.normals = rest.normals;
     for (size_t t = 0; t < adopted.triangle_count(); ++t) {
         const double before = triangle_area(model.rest, t);
-        if (before > 0.0 && !(triangle_area(adopted, t) > 1e-6 * before)) return false;
+        if (before > 0.0 && !(triangle_area(adopted, t) > 1e-6 * before)) return model.rest_pose_declined = true, false;
     }
     try {
         validate_mesh(adopted);
     } catch (const Error&) {
-        return false;
+        return model.rest_pose_declined = true, false;
     }
     model.rest = std::move(adopted);
 

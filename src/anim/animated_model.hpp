@@ -115,6 +115,9 @@ struct AnimatedModel {
     // vertices a two-sided sheet's sides share stay one here (LoadOptions::split_two_sided_vertices), where
     // the static loader splits them.
     Mesh rest;
+    // The file's rest pose differs from the static placement but collapses faces or leaves the coordinates
+    // drawing allows: `rest` keeps the static placement (adopt_rest_pose).
+    bool rest_pose_declined = false;
     // Per rest vertex, in the space its influences expect (bind space, or the mesh node's own space).
     std::vector<glm::vec3> bind_positions;
     std::vector<glm::vec3> bind_normals;

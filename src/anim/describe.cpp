@@ -33,6 +33,7 @@ AnimationDescription describe_animation(const AnimatedModel& model) {
         for (Interpolation i : used) s.interpolations += (s.interpolations.empty() ? "" : ", ") + std::string(interpolation_name(i));
         d.animations.push_back(std::move(s));
     }
+    d.rest_pose_declined = model.rest_pose_declined;
     for (const Skin& skin : model.skins) d.skins.push_back(SkinSummary{skin.name, skin.joints.size()});
     for (const MorphSet& set : model.morph_sets)
         d.morphs.push_back(MorphSummary{set.mesh_name, set.node == kNoNode ? std::string() : model.nodes[set.node].name,

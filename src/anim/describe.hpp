@@ -31,6 +31,7 @@ struct AnimationDescription {
     std::vector<AnimationSummary> animations;
     std::vector<SkinSummary> skins;
     std::vector<MorphSummary> morphs;
+    bool rest_pose_declined = false;  // AnimatedModel::rest_pose_declined
 };
 
 AnimationDescription describe_animation(const AnimatedModel& model);

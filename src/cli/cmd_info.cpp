@@ -62,11 +62,12 @@ std::string describe_winding(const WindingRepair& w) {
     return out.empty() ? "as in the file (" + parts + ")" : out;
 }
 
-// The animation fields of --json (an empty "animations" list for a static model).
+// The animation fields of --json: empty lists for a model of no glTF animation, skin or morph target; a glTF
+// model that nothing moves lists what it holds with "rest_pose_only" true (false for every other model).
 std::string animation_json(const ObjectData& object) {
     std::string out = "\"animations\": [";
     const bool still = !object.motion && !anim::describe_lines(object.still).empty();
-    if (!object.motion && !still) return out + "]";
+    if (!object.motion && !still) return out + "], \"rest_pose_only\": false";
     const anim::AnimationDescription d = still ? object.still : anim::describe_animation(*object.motion.model);
     for (size_t i = 0; i < d.animations.size(); ++i)
         out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.animations[i].name) +
@@ -84,10 +85,11 @@ std::string animation_json(const ObjectData& object) {
         out += "]}";
     }
     if (still) return out + "], \"rest_pose_only\": true";  // nothing moves it: no stretch to measure
+    out += "], \"rest_pose_only\": false";
     const anim::StretchHeadroom& h = *object.motion.headroom;
     char stretch[256];
     std::snprintf(stretch, sizeof stretch,
-                  "], \"stretch\": {\"max_area_ratio\": %.6g, \"headroom_cap\": %.6g, \"stretched_polygons\": %zu, "
+                  ", \"stretch\": {\"max_area_ratio\": %.6g, \"headroom_cap\": %.6g, \"stretched_polygons\": %zu, "
                   "\"capped_polygons\": %zu, \"opened_polygons\": %zu, \"candidate_factor\": %.6g}",
                   double(h.max_ratio), double(h.cap), h.stretched_triangles, h.capped_triangles, h.opened_triangles,
                   h.candidate_factor);
@@ -169,7 +171,9 @@ int run_info(const std::vector<std::string>& argv) {
         } else if (const auto lines = anim::describe_lines(object.still); !lines.empty()) {
             // Its skins and default morph weights shape the mesh drawn, which may differ from the stored one.
             for (size_t i = 0; i < lines.size(); ++i) std::printf("%-21s%s\n", i ? "" : "motion:", lines[i].c_str());
-            std::printf("%-21s%s\n", "", "none moves it: drawn in its rest pose (skins and morph weights applied)");
+            std::printf("%-21s%s\n", "", object.still.rest_pose_declined
+                                               ? "none moves it: drawn as stored (its rest pose collapses faces or leaves the coordinates drawing allows)"
+                                               : "none moves it: drawn in its rest pose (skins and morph weights applied)");
         }
         std::printf("load time:           %.3f s (%.0f triangles/s)\n", object.load_seconds,
                     object.load_seconds > 0 ? mesh.triangle_count() / object.load_seconds : 0.0);

@@ -411,9 +411,9 @@ int run_render(const std::vector<std::string>& argv) {
         for (size_t i = 0; i < content.objects.size(); ++i) {
             const ObjectData& o = content.objects[i];
             if (!o.motion) continue;
-            const anim::Animation& a = o.motion.model->animations[size_t(resolve_animation(o, scene.objects[i].animation))];
-            // The time into the animation the frame shows (looped or held), not the scene clock's.
             const size_t chosen = size_t(resolve_animation(o, scene.objects[i].animation));
+            const anim::Animation& a = o.motion.model->animations[chosen];
+            // The time into the animation the frame shows (looped or held), not the scene clock's.
             const std::string named = a.name.empty() ? "animation " + std::to_string(chosen) : "'" + a.name + "'";  // as info names it
             std::printf("animation:          object %zu: %s (%.3f s) at %.3f s%s\n", i, named.c_str(), a.duration,
                         anim::animation_time(a, scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
@@ -465,7 +465,7 @@ int run_render(const std::vector<std::string>& argv) {
         // A CSV holds the dots alone (one row each); the lines go to an SVG or a PDF.
         const std::string lines = plot::is_csv_path(output) ? (last_plot.polylines ? printf_string(" (its %zu polylines are not written to CSV: use .svg or .pdf)", last_plot.polylines) : std::string())
                                                             : printf_string(", %zu polylines", last_plot.polylines);
-        holds = plot::format_number(last_plot.page.width_mm, 2) + "x" + plot::format_number(last_plot.page.height_mm, 2) +  // 100.9 as given (it said 101)
+        holds = plot::format_number(last_plot.page.width_mm, 6) + "x" + plot::format_number(last_plot.page.height_mm, 6) +  // 100.9 as given (it said 101)
                 printf_string(" mm page: %zu dots%s%s; %s at %lldx%lld", last_plot.dots, lines.c_str(), sequence ? " in the last frame" : "",
                               last_plot.fit == plot::Fit::Drawing ? "the drawing fitted to it, from the frame's view" : "the frame's view",
                               width, height);

@@ -244,9 +244,11 @@ std::vector<Piece> pieces_the_screen_draws(std::vector<Piece> pieces, const Merg
     auto inside = [](const glm::dvec2& p, const std::array<glm::dvec2, 2>& box) {
         return glm::all(glm::greaterThanEqual(p, box[0])) && glm::all(glm::lessThanEqual(p, box[1]));
     };
+    // A piece the screen inks a pixel of by itself stays (the screen draws the pieces, not the merged strokes).
     std::erase_if(pieces, [&](const Piece& piece) {
         return std::any_of(unseen.begin(), unseen.end(),
-                           [&](const std::array<glm::dvec2, 2>& box) { return inside(piece[0], box) && inside(piece[1], box); });
+                           [&](const std::array<glm::dvec2, 2>& box) { return inside(piece[0], box) && inside(piece[1], box); }) &&
+               !stroke_inks_a_pixel(Polyline{{piece[0], piece[1]}, false}, width_px);
     });
     return pieces;
 }
@@ -279,9 +281,9 @@ PlotLayer line_layer(const Drawing& drawing, const std::vector<Piece>& pieces, u
         layer.lines.push_back(options.simplify_mm > 0.0 ? simplify(line, options.simplify_mm) : std::move(line));
     }
     if (options.plotter_order) {
-        // Folded where strokes meet within the same bound (a 12-px line's strokes welded and unfolded within half its
-        // width took its curves straight too).
-        const double fold_mm = std::min(0.5 * layer.stroke_mm, kMostFoldPx * plan.layout.mm_per_px);
+        // Folded where strokes meet within the same bound as above (a 12-px line's strokes welded and unfolded within
+        // half its width took its curves straight too).
+        const double fold_mm = fold_px * plan.layout.mm_per_px;
         weld_touching_strokes(layer.lines, layer.stroke_mm, fold_mm);
         order_polylines(layer.lines, pen);
         // Where a contour's visible pieces meet with a gap narrower than the pen, one stroke: the pen was

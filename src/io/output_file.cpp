@@ -29,13 +29,25 @@ void check_output_writable(const std::string& option, const std::string& path) {
     // Missing folders are made when the file is written, not here: a request refused after this check (a bad
     // animation name, a bad model) left an empty folder behind. The nearest folder that exists is tried instead.
     const fs::path wanted = file.has_parent_path() ? file.parent_path() : fs::path(".");
-    fs::path folder = wanted;
-    std::error_code ec;
-    while (!fs::exists(folder, ec) && folder.has_parent_path() && folder.parent_path() != folder) folder = folder.parent_path();
-    if (!fs::exists(folder, ec)) folder = ".";
-    if (!fs::is_directory(folder, ec))
-        fail(named + ": cannot make its folder " + wanted.string() + ": " +
-             (folder == wanted ? std::string("not a folder") : folder.string() + " is not a folder"));
+    // Walked up as the system will resolve it: "missing/../.." is "..", not ".".
+    fs::path folder = (wanted.is_absolute() ? wanted : fs::current_path() / wanted).lexically_normal();
+    for (;;) {
+        std::error_code ec;
+        const fs::file_status seen = fs::symlink_status(folder, ec);
+        // Missing, or under a file (ENOTDIR: said below of that file); anything else is a loop of links, a name
+        // too long or no permission.
+        if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+            fail(named + ": cannot make its folder " + wanted.string() + ": " + ec.message());
+        if (fs::exists(seen)) {
+            if (fs::is_symlink(seen) && !fs::exists(fs::status(folder, ec)))
+                fail(named + ": cannot make its folder " + wanted.string() + ": " + folder.string() + " is a link to nothing");
+            if (!fs::is_directory(fs::status(folder, ec)))
+                fail(named + ": cannot make its folder " + wanted.string() + ": " + folder.string() + " is not a folder");
+            break;
+        }
+        if (!folder.has_parent_path() || folder.parent_path() == folder) break;
+        folder = folder.parent_path();
+    }
     // A file of a name of its own made and removed in the folder: the one test that holds for every reason a
     // file cannot be made there (root's included, to which access() answers yes on /proc), and that touches no
     // file another program may be writing at the output's own name.

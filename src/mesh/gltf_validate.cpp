@@ -360,13 +360,14 @@ private:
             bad(at(where, "count"), std::to_string(n) + " elements of " + std::to_string(stride) + " bytes do not fill the buffer view's " +
                                         std::to_string(length) + " bytes");
     }
-    bool uses_meshopt() const {
+    bool uses(const char* extension) const {
         const json* used = find(doc_, "extensionsUsed");
         if (!used || !used->is_array()) return false;
         for (const json& e : *used)
-            if (e.is_string() && e.get_ref<const std::string&>() == "EXT_meshopt_compression") return true;
+            if (e.is_string() && e.get_ref<const std::string&>() == extension) return true;
         return false;
     }
+    bool uses_meshopt() const { return uses("EXT_meshopt_compression"); }
 
     // `count` elements of `element` bytes, `stride` apart from `offset`, must lie in the buffer view.
     void fits(const std::string& where, size_t view, uint64_t offset, uint64_t n, uint64_t element, uint64_t stride) const {
@@ -548,7 +549,10 @@ private:
             // "pointer" is KHR_animation_pointer's (a channel of properties, not of a node): such channels are
             // skipped, as the extension's other readers do when they do not require it (a file that requires
             // it is refused with the extensions).
-            one_of(required(target, tw, "path"), at(tw, "path"), {"translation", "rotation", "scale", "weights", "pointer"});
+            if (uses("KHR_animation_pointer"))
+                one_of(required(target, tw, "path"), at(tw, "path"), {"translation", "rotation", "scale", "weights", "pointer"});
+            else
+                one_of(required(target, tw, "path"), at(tw, "path"), {"translation", "rotation", "scale", "weights"});
         }
     }
 

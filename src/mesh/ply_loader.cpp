@@ -224,6 +224,7 @@ public:
         }
         return 0.0;
     }
+    int64_t integer_on_line(Scalar t) { return integer(t); }  // binary data has no lines
     int64_t integer(Scalar t) {  // only called with integer types (checked when the header is read)
         switch (t) {
             case Scalar::i8: return get<int8_t>();
@@ -299,8 +300,16 @@ public:
         if (ec != std::errc() || ptr != t.data() + t.size()) bad(t, "is not a number");
         return v;
     }
-    int64_t integer(Scalar) {
-        const std::string_view s = unsigned_plus(token());
+    // An integer of a face: on the face's line, as real() reads a vertex's values (a face one index short read the
+    // next line's count as its last corner, and the message named the wrong line). Strips' lists, which may be
+    // one long line or wrapped, are read with integer().
+    int64_t integer_on_line(Scalar) {
+        const bool same_line = started_;
+        started_ = true;
+        return parse_integer(unsigned_plus(token(same_line)));
+    }
+    int64_t integer(Scalar) { return parse_integer(unsigned_plus(token())); }
+    int64_t parse_integer(std::string_view s) {
         int64_t v = 0;
         const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
         if (ec == std::errc() && ptr == s.data() + s.size()) return v;
@@ -361,7 +370,7 @@ private:
     const char* p_;
     const char* end_;
     size_t line_;
-    bool started_ = false;  // a value of the current element read (real())
+    bool started_ = false;  // a value of the current element read (real(), skip() of a scalar, integer_on_line())
 };
 
 struct Target {
@@ -423,13 +432,13 @@ void read_faces(Reader& r, const Element& e, const Property& list, Target& t, ui
                 r.skip(p);
                 continue;
             }
-            const int64_t n = r.integer(p.count_type);
+            const int64_t n = r.integer_on_line(p.count_type);
             if (n < 3)
                 fail_file(t.path, "face " + std::to_string(done) + " has " + std::to_string(n) +
                                       " vertices; a face needs at least 3");
             r.expect_items(static_cast<uint64_t>(n), p.type);
             corners.clear();
-            for (int64_t i = 0; i < n; ++i) corners.push_back(checked_index(t, r.integer(p.type), "face", done));
+            for (int64_t i = 0; i < n; ++i) corners.push_back(checked_index(t, r.integer_on_line(p.type), "face", done));
             if (corners.size() > 3) t.polygons.emplace_back(t.mesh.indices.size(), uint32_t(corners.size()));
             for (size_t i = 1; i + 1 < corners.size(); ++i)
                 t.mesh.indices.insert(t.mesh.indices.end(), {corners[0], corners[i], corners[i + 1]});
