@@ -369,6 +369,11 @@ TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     EXPECT_EQ(still_info["skins"][0]["joints"], 2) << s.out;
     EXPECT_TRUE(still_info["rest_pose_only"].get<bool>()) << s.out;
     EXPECT_TRUE(still_info["animations"].empty()) << s.out;
+    // One whose rest pose collapses faces (a joint at scale 0) is drawn as stored, and info says so.
+    still.doc["nodes"][2]["scale"] = {0.0, 0.0, 0.0};
+    auto collapsed = run_stipple({"info", test::write_rig(still, "cli_anim_info_collapsed", "collapsed")});
+    ASSERT_EQ(collapsed.exit_code, 0) << collapsed.err;
+    EXPECT_NE(collapsed.out.find("none moves it: drawn as stored (its rest pose collapses faces"), std::string::npos) << collapsed.out;
 
     // A channel of KHR_animation_pointer in a file that uses it without requiring it is skipped (it was refused
     // for its path); the file's other animation still moves it.
