@@ -723,6 +723,9 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"view", "--depth-cull", "often"}, "--depth-cull"},
         // Taken as no benchmark, it left the window open under a script that waited for the figure.
         {{"view", "--benchmark-frames", "0"}, "--benchmark-frames = 0 must be in 1..1000000"},
+        // Checked when the viewer starts (a folder failed only at Ctrl+S, and x.png took the scene's JSON).
+        {{"view", "--save-scene", "x.png"}, "--save-scene x.png: a scene file is named .json"},
+        {{"view", "--save-scene", "/proc/s.json"}, "--save-scene /proc/s.json: cannot write there"},
         {{"info"}, "MODEL"},
         {{"parity", "--devices", "0,99"}, "--devices"},
         {{"parity", "--devices", "0"}, "--devices"},

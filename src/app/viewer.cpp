@@ -3,8 +3,11 @@
 #include "app/viewer.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 
 #include "app/frame_export.hpp"
 #include "export/plot_file.hpp"
@@ -83,8 +86,12 @@ Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
       panel_visible_(options.panel) {
     if (!options.script.empty()) script_ = read_viewer_script(options.script);
     if (!options.frame_log.empty()) {
+        // Into a folder made if missing, as screenshots and saved scenes are.
+        const std::filesystem::path log_path(options.frame_log);
+        std::error_code made;
+        if (log_path.has_parent_path()) std::filesystem::create_directories(log_path.parent_path(), made);
         frame_log_ = std::fopen(options.frame_log.c_str(), "w");
-        if (!frame_log_) fail_file(options.frame_log, "cannot write the frame log");
+        if (!frame_log_) fail_file(options.frame_log, std::string("cannot write the frame log: ") + std::strerror(errno));
     }
     swapchain_.recreate(window_.framebuffer_size(), vsync_);
     if (options.verbose) print_swapchain();
@@ -148,6 +155,17 @@ bool Viewer::progress_due() const {  // background work shows its progress bar (
 }
 
 void Viewer::message(const std::string& text, bool error) {
+    // An error while a script runs (a setting the scene refuses when it is applied, such as the cpu density path
+    // for an animated model) ends it with exit code 1, named at the script's last `set` (or the last line begun):
+    // the viewer went on with the old setting and the script's screenshots showed that, exit code 0.
+    if (error && !script_.empty() && script_at_ > 0 && !script_failed_) {
+        const int line = script_set_line_ > 0 ? script_set_line_ : script_[std::min(script_at_, script_.size()) - 1].line;
+        std::fprintf(stderr, "stipple: %s:%d: %s\n", options_.script.c_str(), line, text.c_str());
+        std::fflush(stderr);
+        script_failed_ = true;
+        window_.request_close();
+        return;
+    }
     // Errors go to stderr too (the panel may be hidden); confirmations to stdout for scripts.
     std::fprintf(error ? stderr : stdout, "stipple: %s\n", text.c_str());
     std::fflush(error ? stderr : stdout);
@@ -296,6 +314,7 @@ void Viewer::run_script() {
                     return;
                 }
                 const ParamSpec& spec = *find_param(action.key);
+                script_set_line_ = action.line;
                 spec.set(live_.scene().objects[action.object].params, action.value);
                 if (spec.effect == ParamEffect::Regenerate) pending_regeneration_.push_back(action.object);
                 message("script: object " + std::to_string(action.object) + " " + action.key + " = " +

@@ -63,7 +63,7 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
                 bad("set needs an object number, got " + script_text(rest[0]));
             action.object = size_t(object);
             const ParamSpec* spec = find_param(rest[1]);
-            if (!spec) bad(script_text(rest[1]) + " is not a parameter (see stipple params)");
+            if (!spec) bad(script_text(rest[1]) + " is not a parameter (the keys are the scene file's: stipple params --markdown lists them)");
             action.key = rest[1];
             if (spec->type == ParamType::Bool) {
                 if (rest[2] != "true" && rest[2] != "false") bad(action.key + ": expected true or false, got " + script_text(rest[2]));

@@ -115,6 +115,7 @@ private:
     size_t script_at_ = 0;
     std::optional<Clock::time_point> script_wait_until_;
     bool script_failed_ = false;
+    int script_set_line_ = 0;  // the script's last `set` line run (a refusal comes when the setting is applied)
     FILE* frame_log_ = nullptr;
     Clock::time_point started_ = Clock::now();
     std::optional<size_t> pending_removal_;

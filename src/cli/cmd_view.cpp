@@ -1,4 +1,6 @@
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/viewer.hpp"
 #include "cli/animation_options.hpp"
@@ -8,6 +10,7 @@
 #include "cli/object_options.hpp"
 #include "core/error.hpp"
 #include "gpu/context.hpp"
+#include "io/output_file.hpp"
 #include "scene/scene_content.hpp"
 
 namespace stipple::cli {
@@ -61,6 +64,14 @@ int run_view(const std::vector<std::string>& argv) {
 
     Scene scene = scene_from_command_line(args, "view");
     viewer.scene_path = args.get("--save-scene", scene.source.empty() ? "stipple-scene.json" : scene.source);
+    // Checked now, not when Ctrl+S is pressed after an hour of tuning (a folder failed only then, and x.png took
+    // the scene's JSON).
+    if (args.has("--save-scene")) {
+        std::string ext = std::filesystem::path(viewer.scene_path).extension().string();
+        for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        if (ext != ".json") fail("--save-scene " + viewer.scene_path + ": a scene file is named .json");
+        check_output_writable("--save-scene", viewer.scene_path);
+    }
     // The models, then whether the device can hold their stipples, then the stipples (minutes for a large model
     // at a high density, with a progress bar on the terminal), all before the window opens: made in the viewer
     // once its device was open, they kept the window blank meanwhile; made before any device, one too big for it

@@ -156,8 +156,8 @@ void view_section() {
   --depth-cull MODE       auto, on or off, as for render (stipple render --help; default auto)
   --depth-raster MODE     auto, compute or fixed, as for render (default auto)
   --screenshot-dir DIR    where S writes screenshots, stipple-0001.png, ... (default: .)
-  --save-scene PATH       where Ctrl+S writes the scene (default: the scene file it opened, else
-                          stipple-scene.json)
+  --save-scene PATH.json  where Ctrl+S writes the scene (default: the scene file it opened, else
+                          stipple-scene.json); checked when the viewer starts
   --benchmark-frames N    draw 10 warm-up frames, then N frames, print the mean fps and exit
   --animation NAME|N      what the animated glTF MODELs play (beside static ones): an animation's
                           name or index (default: each one's first); `stipple info MODEL` lists them
@@ -166,7 +166,8 @@ void view_section() {
   --script FILE           timed actions, one per line: wait SECONDS, wait-idle (until new stipples
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
                           scene key), screenshot PATH (.png), export PATH (.svg, .pdf or .csv, as
-                          render -o writes them), quit
+                          render -o writes them), quit; a bad line, or a setting the scene
+                          refuses, ends the run with exit code 1, naming the file and line
   --frame-log FILE        write one line per presented frame: milliseconds since the start
                           and 1 while background work (new stipples, a model) runs, else 0
 
