@@ -77,7 +77,7 @@ TEST(ExportPolylines, StrokesWhoseEndsTouchAreWeldedIntoOne) {
         {{{50, 50}, {60, 50}}, false},        // e: apart
         {{{0, 0.1}, {1, 1}, {0, 1}}, true},   // f: closed, beside a's start
     };
-    weld_touching_strokes(lines, pen);
+    weld_touching_strokes(lines, pen, 0.5 * pen);
     ASSERT_EQ(lines.size(), 3u);
     size_t open_points = 0, closed = 0;
     double longest = 0.0;
@@ -92,7 +92,7 @@ TEST(ExportPolylines, StrokesWhoseEndsTouchAreWeldedIntoOne) {
 
     // A ring of strokes end to end: welded into one open stroke, not closed.
     std::vector<Polyline> ring = {{{{0, 0}, {10, 0}}, false}, {{{10, 0.01}, {10, 10}}, false}, {{{10.01, 10}, {0, 0.01}}, false}};
-    weld_touching_strokes(ring, pen);
+    weld_touching_strokes(ring, pen, 0.5 * pen);
     ASSERT_EQ(ring.size(), 1u);
     EXPECT_FALSE(ring[0].closed);
     EXPECT_EQ(ring[0].points.size(), 6u);

@@ -135,9 +135,9 @@ void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm, double f
         welded.push_back(std::move(line));
         was_welded.push_back(1);
     }
-    // As join_close_strokes: folds within half the gap where the pieces met are drawn once.
+    // As join_close_strokes: folds within `fold_mm` where the pieces met are drawn once.
     for (size_t i = 0; i < welded.size(); ++i)
-        if (was_welded[i]) welded[i] = unfold(welded[i], fold_mm >= 0.0 ? fold_mm : 0.5 * gap_mm);
+        if (was_welded[i]) welded[i] = unfold(welded[i], fold_mm);
     lines = std::move(welded);
 }
 
@@ -161,9 +161,9 @@ void join_close_strokes(std::vector<Polyline>& lines, double gap_mm, double fold
     }
     // Pieces that overlap where they meet (a contour's visible pieces, each ending a little past where the next
     // begins along the zig-zag) make the joined stroke step back over its last stretch and on again: the pen
-    // drew that stretch three times, a knob on paper. Folds within half the pen's width are drawn once.
+    // drew that stretch three times, a knob on paper. Folds within `fold_mm` are drawn once.
     for (size_t i = 0; i < joined.size(); ++i)
-        if (was_joined[i]) joined[i] = unfold(joined[i], fold_mm >= 0.0 ? fold_mm : 0.5 * gap_mm);
+        if (was_joined[i]) joined[i] = unfold(joined[i], fold_mm);
     lines = std::move(joined);
 }
 

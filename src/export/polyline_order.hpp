@@ -20,13 +20,13 @@ void order_polylines(std::vector<Polyline>& lines, glm::dvec2& pen);
 // that starts where the last ended, so two strokes meeting end to end, or start to start, cost a pen lift (the
 // ogre's outline at 640 x 512 had ends 0.02-0.03 mm apart with a 0.48 mm pen; a review, 2026-12-06). Nearest
 // ends first, each end once, a chain never closed on itself; open strokes only. Unfolded as join_close_strokes.
-void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm = -1.0);
+void weld_touching_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm);
 
 // Strokes in plotting order whose gap (from where one ends to where the next starts) is narrower than `gap_mm`
 // are made one: with the pen's width as the gap, their round caps already meet, so the pen stays down across it
 // (the bridge inks a sliver more than the two caps did). A closed stroke is neither joined nor joined to. A joined
-// stroke is unfolded within half the gap (simplify.hpp unfold), or within `fold_mm` where that is given (>= 0):
-// pieces that overlap where they meet made it step back over its last stretch and on again.
-void join_close_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm = -1.0);
+// stroke is unfolded within `fold_mm` (simplify.hpp unfold; the plan's own fold bound): pieces that overlap where
+// they meet made it step back over its last stretch and on again.
+void join_close_strokes(std::vector<Polyline>& lines, double gap_mm, double fold_mm);
 
 }  // namespace stipple::plot

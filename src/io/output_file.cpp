@@ -39,9 +39,10 @@ void check_output_writable(const std::string& option, const std::string& path) {
         if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
             fail(named + ": cannot make its folder " + wanted.string() + ": " + ec.message());
         if (fs::exists(seen)) {
-            if (fs::is_symlink(seen) && !fs::exists(fs::status(folder, ec)))
+            const fs::file_status target = fs::is_symlink(seen) ? fs::status(folder, ec) : seen;
+            if (!fs::exists(target))
                 fail(named + ": cannot make its folder " + wanted.string() + ": " + folder.string() + " is a link to nothing");
-            if (!fs::is_directory(fs::status(folder, ec)))
+            if (!fs::is_directory(target))
                 fail(named + ": cannot make its folder " + wanted.string() + ": " + folder.string() + " is not a folder");
             break;
         }
