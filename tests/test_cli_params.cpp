@@ -254,6 +254,9 @@ TEST(ParamTable, EachCommandsHelpListsEveryOptionItTakes) {
                                                   {"help", "tone", "--views"}})
         EXPECT_EQ(test::run_stipple(asked).out, tone) << asked[0];
     EXPECT_EQ(test::run_stipple({"help", "help"}).out, all.out);
+    const test::CommandResult two = test::run_stipple({"help", "render", "view"});
+    EXPECT_EQ(two.exit_code, 2);
+    EXPECT_EQ(two.err, "stipple: help takes one command, got 'render' and 'view' (try: stipple help render)\n");
     const test::CommandResult unknown = test::run_stipple({"draw", "--help"});
     EXPECT_EQ(unknown.exit_code, 2);
     EXPECT_EQ(unknown.err, "stipple: unknown command 'draw' (try: stipple --help)\n");

@@ -251,8 +251,21 @@ TEST(StippleCache, TheFolderStaysUnderItsLimitLeastRecentlyUsedFirst) {
     EXPECT_EQ(list_cache_entries(dir).size(), 3u);
     EXPECT_FALSE(fs::exists(entry_of(dir, mesh, [&] { GenerationParams p = params; p.seed = 3; return p; }())))
         << "an old entry nobody read should have been evicted";
+    // Files the cache did not write, even with its extension, are neither listed nor removed (a folder
+    // shared with a user's own files: "cache --clear" removed their "notes.stipples" until 2026-12-07).
+    const std::vector<std::string> foreign = {"notes.stipples", "0123456789ABCDEF.stipples", "0123456789abcdef.stipples.bak",
+                                              "notes.stipples.tmp42-7", "0123456789abcde.stipples"};
+    for (const std::string& name : foreign) std::ofstream(dir / name) << std::string(size_t(limit), 'x');
+    params.seed = 13;
+    {
+        StippleSet finished = generate_stipples(mesh, params);
+        finish_generated_stipples(mesh, params.seed, finished);
+        store_cached_stipples(dir, mesh, params, finished, limit);
+    }
+    EXPECT_EQ(list_cache_entries(dir).size(), 3u) << "foreign files are not entries";
     EXPECT_GT(clear_cache(dir), 0u);
     EXPECT_TRUE(list_cache_entries(dir).empty());
+    for (const std::string& name : foreign) EXPECT_TRUE(fs::exists(dir / name)) << name << " is not the cache's";
     // A folder not made yet is an empty cache; one that cannot be read is said (a path under a file
     // listed as an empty cache, and clearing it "freed 0 MB", both with exit status 0).
     EXPECT_TRUE(list_cache_entries(dir / "not-made-yet").empty());

@@ -13,9 +13,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_entry(const fs::path& path) { return path.extension() == cache_format::kExtension; }
-// A temporary file of a writer, finished or killed: "<key>.stipples.tmp<pid>-<time>".
-bool is_temporary(const fs::path& path) { return path.filename().string().find(".stipples.tmp") != std::string::npos; }
+// Only files named as entry_path names them are ours: 16 lower-case hex digits (the key), then ".stipples",
+// and for a writer's temporary file ".tmp<pid>-<time>" after that (finished or killed). A user's own
+// "notes.stipples" in a shared folder is never listed, counted or removed.
+constexpr size_t kKeyDigits = 16;
+constexpr size_t kExtensionLength = sizeof(cache_format::kExtension) - 1;
+
+bool starts_with_key_and_extension(const std::string& name) {
+    if (name.size() < kKeyDigits + kExtensionLength) return false;
+    for (size_t i = 0; i < kKeyDigits; ++i)
+        if (!((name[i] >= '0' && name[i] <= '9') || (name[i] >= 'a' && name[i] <= 'f'))) return false;
+    return name.compare(kKeyDigits, kExtensionLength, cache_format::kExtension) == 0;
+}
+bool is_entry(const fs::path& path) {
+    const std::string name = path.filename().string();
+    return name.size() == kKeyDigits + kExtensionLength && starts_with_key_and_extension(name);
+}
+bool is_temporary(const fs::path& path) {
+    const std::string name = path.filename().string();
+    return starts_with_key_and_extension(name) && name.compare(kKeyDigits + kExtensionLength, 4, ".tmp") == 0;
+}
 
 }  // namespace
 
