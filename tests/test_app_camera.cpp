@@ -117,3 +117,38 @@ TEST(AppCamera, TheColumnsAnOpenPanelLeaves) {
 }
 
 }  // namespace
+
+namespace {
+
+// The near and far planes hold the whole scene for a camera aimed beside it (a scene file's target and
+// world_distance, or after panning): until 2026-12-07 the near plane stood at the straight-line distance to
+// the scene's centre less its radius, a depth along the view axis only for a centre on the axis, and cut away
+// the front of an object off to the side (a blobby 2.5 units beside a target 5 away lost 2,500 px).
+TEST(AppCamera, TheDepthRangeHoldsASceneOffTheViewAxis) {
+    std::mt19937 random(11);
+    std::normal_distribution<float> normal;
+    for (const bool orthographic : {false, true})
+        for (const float beside : {0.0f, 1.0f, 2.5f, 3.0f, 4.0f}) {
+            const Sphere scene{glm::vec3(beside, -0.5f * beside, 0.0f), 1.0f};
+            OrbitCamera camera;
+            camera.target = glm::vec3(0.0f);
+            camera.distance = 5.0f;
+            camera.fov_y_deg = 60.0f;
+            camera.yaw_deg = 20.0f;
+            camera.orthographic = orthographic;
+            const CameraMatrices m = camera_matrices(camera, 1.25f, scene);
+            float nearest = 2.0f, farthest = -1.0f;
+            for (int i = 0; i < 20000; ++i) {
+                const glm::vec3 p =
+                    scene.center + scene.radius * glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+                const glm::vec4 clip = m.proj * m.view * glm::vec4(p, 1.0f);
+                nearest = std::min(nearest, clip.z / clip.w), farthest = std::max(farthest, clip.z / clip.w);
+            }
+            EXPECT_GE(nearest, 0.0f) << "clipped by the near plane: " << beside << " beside, ortho " << orthographic;
+            EXPECT_LE(farthest, 1.0f) << beside << " beside, ortho " << orthographic;
+            // And tight: the sphere's near side is close to the near plane (depth precision).
+            EXPECT_LT(nearest, orthographic ? 0.1f : 0.5f) << beside;
+        }
+}
+
+}  // namespace

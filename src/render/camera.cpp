@@ -43,9 +43,12 @@ CameraMatrices camera_matrices(const OrbitCamera& camera, float aspect, const Sp
     glm::vec3 up = std::abs(std::cos(pitch)) < 1e-4f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
     m.view = glm::lookAt(m.eye, camera.target, up);
 
-    float center_distance = glm::length(scene.center - m.eye);
-    m.far_plane = center_distance + radius;
-    m.near_plane = std::max(center_distance - radius, m.far_plane * 1e-4f);
+    // The planes bound the scene's sphere in depth along the view axis. The straight-line distance to its
+    // centre is more than that depth when the centre lies off the axis (a scene camera aimed beside the
+    // objects): as the near plane's distance it cut away the front of an object off to the side.
+    const float center_depth = glm::dot(scene.center - m.eye, glm::normalize(camera.target - m.eye));
+    m.far_plane = std::max(center_depth + radius, radius);  // a scene behind the eye: nothing to draw, planes valid
+    m.near_plane = std::max(center_depth - radius, m.far_plane * 1e-4f);
     if (camera.orthographic) {
         const float half_y = camera.distance * std::tan(glm::radians(camera.fov_y_deg) * 0.5f);
         m.proj = glm::ortho(-half_y * aspect, half_y * aspect, -half_y, half_y, m.near_plane, m.far_plane);
