@@ -510,5 +510,28 @@ TEST(Winding, SharedModelsKeepTheirWinding) {
     }
 }
 
+// Whether a surface is open decides whether the depth pass holds its back faces (depth_holds_back_faces):
+// the rims of a hemisphere's opening are border edges, a closed sphere has none, and the count loading
+// keeps is the one counted afresh.
+TEST(Winding, BorderEdgesAreCountedOnceForTheRenderer) {
+    const Mesh closed = make_icosphere(2);
+    EXPECT_EQ(border_edge_count(closed), 0u);
+    const int segments = 24;
+    const Mesh bowl = test::make_open_hemisphere(segments, 6);
+    EXPECT_EQ(border_edge_count(bowl), size_t(segments)) << "the rim of the bowl";
+    Mesh repaired = bowl;
+    repaired.winding = orient_consistently(repaired);
+    EXPECT_EQ(repaired.winding.border_edges, size_t(segments));
+    EXPECT_EQ(border_edge_count(repaired), size_t(segments));
+    const std::string bunny = test::shared_model("stanford-bunny.obj");
+    if (bunny.empty()) return;
+    const Mesh loaded = load_mesh(bunny);
+    Mesh fresh = loaded;
+    fresh.winding = {};
+    std::printf("stanford-bunny.obj: %zu border edges\n", loaded.winding.border_edges);
+    EXPECT_GT(loaded.winding.border_edges, 100u) << "the bunny's base has holes";
+    EXPECT_EQ(border_edge_count(fresh), loaded.winding.border_edges);
+}
+
 }  // namespace
 }  // namespace stipple

@@ -106,6 +106,37 @@ TEST_F(RenderBasics, HiddenSphereContributesNoInk) {
     EXPECT_GT(fraction_differing(alone.color, visible.color, 0), 0.001);
 }
 
+// An open surface seen through its hole: its faces facing away (the inside of the far wall) hide what lies
+// behind them. The depth pass culled them on every object that was not two-sided or drawing object-space
+// lines, so through the bunny's holes seen from below the stipples of the surfaces beyond the far wall
+// showed, and turning borders on (which put the back faces in the depth pass) removed them (2026-12-07).
+TEST_F(RenderBasics, WhatLiesBehindAnOpenSurfaceStaysHiddenThroughItsHole) {
+    ObjectParams params;
+    params.shading = false;
+    Sphere frame_on{glm::vec3(0.0f), 1.0f};
+    const float aspect = 640.0f / 512.0f;
+    const CameraMatrices camera = camera_matrices(frame_sphere(frame_on, aspect, 1.0f, 20.0f, 10.0f), aspect, frame_on);
+    const glm::vec3 toward_eye = glm::normalize(camera.eye);
+    // The big sphere with the cap that faces the camera cut away (a hole a third of its radius across and more).
+    Mesh open = make_icosphere(4, 1.0f);
+    std::vector<uint32_t> kept;
+    for (size_t t = 0; t < open.triangle_count(); ++t) {
+        const glm::vec3 centroid =
+            (open.positions[open.indices[3 * t]] + open.positions[open.indices[3 * t + 1]] + open.positions[open.indices[3 * t + 2]]) / 3.0f;
+        if (glm::dot(glm::normalize(centroid), toward_eye) < 0.8f) kept.insert(kept.end(), open.indices.begin() + 3 * t, open.indices.begin() + 3 * t + 3);
+    }
+    open.indices = kept;
+    Prepared shell = prepare(std::move(open), params);
+    Prepared behind = prepare(make_icosphere(3, 0.3f), params, glm::translate(glm::mat4(1.0f), -toward_eye * 1.6f));
+    RenderedFrame alone = render(*context, {&shell}, params, {glm::vec3(0.0f), 2.0f});
+    RenderedFrame both = render(*context, {&shell, &behind}, params, {glm::vec3(0.0f), 2.0f});
+    const double differing = fraction_differing(alone.color, both.color, 0);
+    std::printf("sphere behind an open shell: %.6f%% of pixels differ\n", 100.0 * differing);
+    EXPECT_EQ(differing, 0.0) << "stipples behind the shell's far wall show through its hole";
+    write_png(test::output_path("open_shell_over_sphere.png").string(), both.color);
+    EXPECT_GT(test::measure_ink(alone).ink_fraction(), 0.01) << "the shell itself is drawn";
+}
+
 TEST_F(RenderBasics, TheSplatDrawsTheSameInTheImagesWordsAsThroughACopy) {
     // Offscreen targets let the splat draw in the colour image's own memory (a linear image); other
     // targets (a window's swapchain images) get the splat's buffer copied in. Same frame both ways: over

@@ -35,6 +35,7 @@ struct WindingRepair {
     size_t conflicting_edges = 0;     // manifold edges still joining two triangles wound the same way
                                       // (a part that has no consistent winding, such as a Möbius strip)
     size_t normals_turned = 0;        // file normals turned to agree with their faces
+    size_t border_edges = 0;          // edges of one triangle (holes' rims, a sheet's edges): the surface is open
 };
 
 struct Mesh {

@@ -262,6 +262,11 @@ WindingRepair orient_parts(Mesh& mesh, std::span<const uint32_t> corners, bool n
 
 WindingRepair orient_consistently(Mesh& mesh) { return orient_consistently(mesh, weld_by_position(mesh.positions)); }
 
+size_t border_edge_count(const Mesh& mesh) {
+    if (mesh.winding.parts > 0) return mesh.winding.border_edges;
+    return manifold_adjacency(mesh, weld_by_position(mesh.positions)).borders.size();
+}
+
 // A sheet made two-sided by a reversed copy (an export's "double-sided"): every edge of it has four triangles,
 // so no edge joined two and each triangle was a part of its own, turned or not by the rounding of a volume of
 // nothing (8,594 of a curved sheet's 24,964 turned: both copies then faced one way in places, drawn twice, with
@@ -301,6 +306,7 @@ WindingRepair orient_parts(Mesh& mesh, std::span<const uint32_t> corners, bool n
     const size_t triangles = mesh.triangle_count();
     const Adjacency adjacency = manifold_adjacency(mesh, corners);
     WindingRepair repair;
+    repair.border_edges = adjacency.borders.size();
 
     // 1. Parts and a winding for each, breadth first from the lowest triangle of each part.
     std::vector<uint32_t> part(triangles, kUnassigned);

@@ -44,6 +44,10 @@ WindingRepair orient_consistently(Mesh& mesh);
 // The same with the corners already welded (weld_by_position of mesh.positions).
 WindingRepair orient_consistently(Mesh& mesh, std::span<const uint32_t> corners, bool normals_from_file = false);
 
+// The edges of one triangle only, corners welded by position (holes' rims, a sheet's edges): what loading's
+// repair counted (WindingRepair::border_edges, where it ran: parts > 0), else counted now.
+size_t border_edge_count(const Mesh& mesh);
+
 // Vertex normals from a file, each turned around where it disagrees with its faces (the area-weighted sum
 // of dot(face normal, vertex normal) over the triangles around it is negative): after a winding repair,
 // normals that followed the old winding. Returns how many were turned.

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/error.hpp"
+#include "mesh/orientation.hpp"
 #include "gpu/context.hpp"
 #include "render/density_formulas.hpp"
 #include "render/deform_pass.hpp"
@@ -108,6 +109,7 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     ObjectGeometry& geometry = object.geometry;
     geometry.index_count = upload.index_count;
     geometry.triangle_count = upload.triangle_count;
+    geometry.open_surface = upload.open_surface;
     geometry.stipple_count = upload.stipple_count;
     geometry.first_stipple = upload.first_stipple;
     geometry.positions = std::move(buffers[kPositions]);
@@ -196,6 +198,7 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     ObjectUpload upload;
     upload.index_count = uint32_t(mesh.indices.size());
     upload.triangle_count = uint32_t(mesh.triangle_count());
+    upload.open_surface = border_edge_count(mesh) > 0;
     upload.stipple_count = uint32_t(stipples.size());
     upload.first_stipple.assign(stipples.first.begin(), stipples.first.end());
     upload.polygons = compute_polygon_constants(mesh, stipples, seed, motion ? &motion.headroom->bounds : nullptr);
@@ -318,9 +321,10 @@ bool draws_edge_lines(const ObjectGpu& object) {
 }
 
 bool depth_holds_back_faces(const ObjectGpu& object) {
-    // The Raskar-Cohen lines keep the paper's front-face depth (docs/paper-reading.md, "Open surfaces").
-    const bool object_space_lines = draws_object_space_lines(object.params) && draws_edge_lines(object);
-    return object.params.two_sided || (object_space_lines && object.geometry.border_edge_count > 0);
+    // A closed surface hides its back faces behind its front ones, so the depth pass culls them (half the
+    // rasteriser's work). Through the holes of an open one they are what is seen, and what they hide must
+    // stay hidden (docs/paper-reading.md, "Open surfaces").
+    return object.params.two_sided || object.geometry.open_surface || object.geometry.border_edge_count > 0;
 }
 
 glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center) {

@@ -50,7 +50,8 @@ struct ObjectGeometry {
     gpu::Buffer silhouette_edges;
     VkBufferView silhouette_edge_texels = VK_NULL_HANDLE;  // its RGBA32UI texels, as the line passes read it
     uint32_t silhouette_edge_count = 0;
-    uint32_t border_edge_count = 0;  // edges with one polygon: the surface is open
+    uint32_t border_edge_count = 0;  // edges with one polygon (once the edges are built)
+    bool open_surface = false;       // the mesh has such edges (known from the start: depth_holds_back_faces)
     bool silhouette_edges_built = false;
 };
 
@@ -123,6 +124,7 @@ struct ObjectGpu {
 // on its worker thread and the UI thread only records the copies (one submission).
 struct ObjectUpload {
     uint32_t index_count = 0, triangle_count = 0, stipple_count = 0;
+    bool open_surface = false;  // the mesh has border edges (border_edge_count): its back faces can be seen
     std::vector<uint32_t> first_stipple;
     PolygonConstants polygons;  // without its GPU buffer
     // The GPU's initial data, in this order: positions, normals, indices, stipples (StippleVertex),
