@@ -19,6 +19,7 @@
 #include "anim/procedural_rigs.hpp"
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
+#include "support/run_command.hpp"
 
 namespace stipple {
 namespace {
@@ -190,6 +191,40 @@ TEST(GltfInstancing, BrokenInstancingIsNamedInOneLine) {
             EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         }
     }
+}
+
+// Within the count limits but not within memory (accessors without data read as zeros, as many as they say):
+// on a machine of 1 GiB, 10 million instances of a triangle, and a primitive of 3 million zero positions with a
+// sparse triangle, loaded for 2.4 GiB and 270 MiB until 2026-12-07, and 66 million instances for about 16 GiB.
+TEST(GltfInstancing, ZerosThatWouldNotFitInMemoryAreRefusedBeforeTheyAreMade) {
+    test::ScopedEnv limit("STIPPLE_HOST_MEMORY_LIMIT", "1G");
+    auto refusal = [](const std::string& name, const anim::GltfBuilder& b) {
+        try {
+            load_mesh_from_bytes(name, b.glb());
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("loaded");
+    };
+    anim::GltfBuilder instanced = instanced_triangle(false);
+    instanced.doc["accessors"].push_back({{"componentType", 5126}, {"count", 10000000}, {"type", "VEC3"}});
+    instanced.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
+        {"TRANSLATION", instanced.doc["accessors"].size() - 1}};
+    EXPECT_EQ(refusal("instances.glb", instanced),
+              "instances.glb: nodes[0].extensions.EXT_mesh_gpu_instancing: 30000000 vertices need about 3.0 GiB to load, "
+              "more than a model may take on this machine: 512.0 MiB, half its 1.0 GiB of memory");
+    anim::GltfBuilder zeros;
+    zeros.add("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}}})}});
+    zeros.doc["accessors"] = json::array({{{"componentType", 5126}, {"count", 30000000}, {"type", "VEC3"}}});
+    zeros.add("nodes", {{"mesh", 0}});
+    EXPECT_EQ(refusal("zeros.glb", zeros).rfind("zeros.glb: mesh 0 primitive 0 POSITION (accessor 0): 30000000 elements "
+                                                "without a buffer view (zeros) would take 343.3 MiB", 0), 0u)
+        << refusal("zeros.glb", zeros);
+    // What fits still loads: a thousand instances of zeros are a thousand copies at the origin, one kept.
+    anim::GltfBuilder few = instanced_triangle(false);
+    few.doc["accessors"].push_back({{"componentType", 5126}, {"count", 1000}, {"type", "VEC3"}});
+    few.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", few.doc["accessors"].size() - 1}};
+    EXPECT_EQ(load_mesh_from_bytes("few.glb", few.glb()).triangle_count(), 1u);
 }
 
 TEST(GltfInstancing, InstancesMoveWithTheirAnimatedNode) {

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 
 namespace stipple {
 
@@ -201,6 +202,12 @@ std::vector<float> AccessorReader::read(int index, bool normalized, const std::s
     const std::string where = field + " (accessor " + std::to_string(index) + ")";
     const Layout l = layout(index, where);
     const size_t n = l.components;
+    // An accessor without a buffer view is zeros, as many as it says: a few bytes of file may ask gigabytes.
+    const uint64_t memory = physical_memory_bytes();
+    if (l.base == nullptr && memory > 0 && uint64_t(a.count) * n * sizeof(float) > memory / 4)
+        fail_file(path_, where + ": " + std::to_string(a.count) + " elements without a buffer view (zeros) would take " +
+                             byte_size(uint64_t(a.count) * n * sizeof(float)) + ", more than this machine's " +
+                             byte_size(memory) + " of memory allows");
     std::vector<float> out(a.count * n, 0.0f);  // no buffer view: zeros (sparse entries may follow)
     if (l.base) convert_any(l.base, l.stride, a.count, n, normalized, a.componentType, out.data());
     for_each_sparse(index, l, where, [&](const unsigned char* value, size_t i) {

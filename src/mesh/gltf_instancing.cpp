@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/error.hpp"
+#include "mesh/loader_util.hpp"
 
 namespace stipple {
 
@@ -59,6 +60,9 @@ std::vector<glm::dmat4> read_gpu_instances(const std::string& path, const tinygl
     if (count > options.max_elements || (mesh_vertices > 0 && count > options.max_elements / mesh_vertices))
         fail_file(path, field + ": " + std::to_string(count) + " instances of a mesh of " + std::to_string(mesh_vertices) +
                             " vertices, more than the limit of " + std::to_string(options.max_elements) + " vertices");
+    // Each instance's transform (a dmat4) and its copy of the mesh's vertices (its triangles are counted
+    // when the copies are made), before any of it is read.
+    check_load_fits_memory(path, field, uint64_t(count) * mesh_vertices, 0, uint64_t(count) * sizeof(glm::dmat4));
     for (Attribute& a : read) {
         const int index = accessor(a.name);
         if (index < 0) continue;

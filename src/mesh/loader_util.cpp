@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 
 namespace stipple {
 
@@ -22,5 +23,20 @@ std::string read_file(const std::string& path) {
     return data;
 }
 
+// What a load takes at its peak, about: 270 bytes a triangle of three vertices of its own (a million such
+// loaded in 266 MiB), the mesh, its welded corners, edges and winding repair included.
+constexpr uint64_t kLoadBytesPerVertex = 64, kLoadBytesPerTriangle = 64;
+
+void check_load_fits_memory(const std::string& path, const std::string& what, uint64_t vertices, uint64_t triangles,
+                            uint64_t extra_bytes) {
+    const uint64_t memory = physical_memory_bytes();
+    // Counts below 2^40 each (the loaders' limits are far lower): no overflow.
+    const uint64_t needs = vertices * kLoadBytesPerVertex + triangles * kLoadBytesPerTriangle + extra_bytes;
+    if (memory > 0 && needs > memory / 2)
+        fail_file(path, what + ": " + std::to_string(vertices) + " vertices" +
+                            (triangles > 0 ? " and " + std::to_string(triangles) + " triangles" : std::string()) +
+                            " need about " + byte_size(needs) + " to load, more than a model may take on this machine: " +
+                            byte_size(memory / 2) + ", half its " + byte_size(memory) + " of memory");
+}
 
 }  // namespace stipple
