@@ -557,6 +557,16 @@ TEST(BadInput, PlyHeaderAndDataDisagree) {
                              "element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
                              "0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1\n2 3\n"));
     EXPECT_EQ(wrapped.triangle_count(), 2u);
+    // Data after the last element the header declares (a count too small) was dropped without a word: a
+    // horse whose header said 1 face loaded as one triangle (until 2026-12-07). Padding after it still loads.
+    expect_load_error(write_file(dir / "more_faces.ply", vertex + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n3 1 2 0\n"),
+                      "line 15: '3' lies after the last element the header declares (its element counts are too small)");
+    const std::string tetra = binary_tetra_ply(false);
+    expect_load_error(write_file(dir / "more_bytes.ply", tetra + std::string("\x03\x00\x01\x02", 4)),
+                      "4 bytes of data after the last element the header declares (its element counts are too small)");
+    EXPECT_EQ(load_mesh(write_file(dir / "padded.ply", tetra + std::string("\n\0\0\0", 4))).triangle_count(), 4u);
+    EXPECT_EQ(load_mesh(write_file(dir / "blank_lines.ply", vertex + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n\n \r\n"))
+                  .triangle_count(), 2u);
     // The same data, one element a line, loads; a leading '+' is a number as strtod reads it.
     const std::string one_face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const Mesh m = load_mesh(write_file(dir / "plus.ply", vertex + one_face + "+0 0 0\n+1 0 0\n0 +1e0 0\n3 +0 1 2\n"));

@@ -121,6 +121,19 @@ TEST(StlLoader, SeveralSolidsInOneAsciiFile) {
     EXPECT_EQ(load_mesh_from_bytes("cube.stl", text).triangle_count(), 12u);
 }
 
+// What other readers take too (refused until 2026-12-07): a count of 0 from a writer that streamed its facets,
+// and padding of less than a facet after the last one. A whole facet more than the count is refused.
+TEST(StlLoader, AZeroCountAndPaddingAreReadAsOtherReadersReadThem) {
+    const std::string binary = binary_stl(cube_facets());
+    std::string uncounted = binary;
+    std::memset(&uncounted[80], 0, 4);
+    EXPECT_EQ(load_mesh_from_bytes("streamed.stl", uncounted).triangle_count(), 12u);
+    EXPECT_EQ(load_mesh_from_bytes("padded.stl", binary + std::string(1, '\0')).triangle_count(), 12u);
+    EXPECT_EQ(load_mesh_from_bytes("padded.stl", binary + std::string(49, ' ')).triangle_count(), 12u);
+    EXPECT_NE(load_error(binary + binary.substr(84, 50)).find("binary STL of 734 bytes, where its count of 12 facets asks 684"),
+              std::string::npos);
+}
+
 TEST(StlLoader, BrokenFilesAreOneLineErrors) {
     const std::string binary = binary_stl(cube_facets());
     EXPECT_NE(load_error(binary.substr(0, binary.size() - 7)).find("binary STL of 677 bytes, where its count of 12 facets asks 684"),

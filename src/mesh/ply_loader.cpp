@@ -238,6 +238,13 @@ public:
     }
     size_t remaining() const { return static_cast<size_t>(end_ - p_); }
     void end_item() {}  // binary elements have no separator
+    // What follows the last element (expect_end in read_body): padding (zeros, whitespace) only.
+    void expect_end() {
+        const bool padding = std::all_of(p_, end_, [](char c) { return c == '\0' || c == ' ' || c == '\n' || c == '\r' || c == '\t'; });
+        if (!padding)
+            fail_file(path_, std::to_string(end_ - p_) + " bytes of data after the last element the header declares "
+                             "(its element counts are too small)");
+    }
     // A list of n items must fit in what is left; checked before the items are read one by one.
     void expect_items(uint64_t n, Scalar t) {
         if (n > static_cast<uint64_t>(end_ - p_) / scalar_size(t)) throw Truncated{};
@@ -332,6 +339,13 @@ public:
         bad({start, static_cast<size_t>(p_ - start)}, "is one value more than the header gives this element (one element a line)");
     }
     void expect_items(uint64_t, Scalar) {}  // items are read one by one; the data end bounds them
+    // What follows the last element (expect_end in read_body): whitespace only.
+    void expect_end() {
+        try {
+            bad(token(), "lies after the last element the header declares (its element counts are too small)");
+        } catch (const Truncated&) {  // nothing but whitespace to the end
+        }
+    }
     void skip(const Property& p) {
         if (!p.is_list) {  // on the element's line, as real() reads
             token(started_);
@@ -525,6 +539,9 @@ void read_body(Reader& r, const Header& h, Target& t) {
                                   std::to_string(done));
         }
     }
+    // Data beyond what the header declares was dropped without a word (a horse whose header said 1 face of its
+    // 96,966 loaded as one triangle).
+    r.expect_end();
 }
 
 // Each polygon's fan, read back into its corners (c0 c1 c2, c0 c2 c3, ...), triangulated in place.

@@ -10,7 +10,8 @@
 // corners as 32-bit floats, and a 16-bit attribute). ASCII: "solid NAME", then for each facet "facet normal
 // x y z", "outer loop", three "vertex x y z", "endloop", "endfacet", and "endsolid NAME". A file is binary
 // when its size is the size its count announces (a binary header may begin with "solid" too), ASCII when it
-// begins with "solid", and neither otherwise.
+// begins with "solid", binary again when its count is 0 and its size holds whole facets or when less than a
+// facet of padding follows its counted facets, and neither otherwise.
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -210,6 +211,13 @@ Mesh parse_stl(const std::string& name, std::string_view bytes, const LoadOption
         fail_file(name, "not an STL file: " + std::to_string(bytes.size()) + " bytes, shorter than a binary STL's 84-byte header" +
                             (first == "solid" ? std::string(" and not ASCII text (it holds a zero byte)") : std::string(", and no ASCII \"solid\"")));
     const uint64_t facets = read_u32(bytes.data() + 80);
+    // What other readers take too: a count of 0 from a writer that streamed its facets (the facets the size
+    // holds), and a few bytes of padding after the last facet (less than a facet: a whole one more would mean
+    // the count is wrong).
+    const uint64_t data = bytes.size() - kHeaderBytes;
+    if (facets == 0 && data > 0 && data % kFacetBytes == 0) return parse_binary(name, bytes, data / kFacetBytes, options);
+    if (facets > 0 && data > facets * kFacetBytes && data - facets * kFacetBytes < kFacetBytes)
+        return parse_binary(name, bytes, facets, options);
     fail_file(name, "binary STL of " + std::to_string(bytes.size()) + " bytes, where its count of " + std::to_string(facets) +
                         " facets asks " + std::to_string(kHeaderBytes + facets * kFacetBytes) +
                         " (truncated, or not an STL file)");
