@@ -349,6 +349,23 @@ std::string one_triangle_gltf(const std::string& mode, uint8_t last_index) {
                          mode + "}]}]");  // no scenes: every mesh once
 }
 
+// A triangle placed 90,000 units out by its node keeps its shape (stored about its own centre, Mesh::origin):
+// the placed positions were rounded to float, 1/128 of a unit there (until 2026-12-07).
+TEST(GltfLoader, AModelPlacedFarByItsNodeKeepsItsShape) {
+    ByteWriter w;
+    for (float v : {0.1f, 0.0f, 0.0f, 1.3f, 0.0f, 0.0f, 0.1f, 0.7f, 0.0f}) w.put<float>(v);
+    const std::string json = gltf_json(
+        embedded(w.bytes()), R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+                             R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+                             R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+                             R"("nodes":[{"mesh":0,"translation":[90000,0,0]}],"scenes":[{"nodes":[0]}])");
+    const Mesh m = load_mesh(write_file(temp_dir("loaders_gltf_far") / "far.gltf", json));
+    ASSERT_EQ(m.triangle_count(), 1u);
+    EXPECT_GT(m.origin.x, 89000.0);
+    const double x[3] = {90000.0 + double(0.1f), 90000.0 + double(1.3f), 90000.0 + double(0.1f)};
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(double(m.positions[i].x) + m.origin.x, x[i], 1e-5) << i;
+}
+
 TEST(GltfLoader, ExternalBufferFile) {
     const auto dir = temp_dir("loaders_gltf_external");
     ByteWriter w;
@@ -581,6 +598,34 @@ TEST(BadInput, PlyBinaryNaNAndInfCoordinates) {
                       "vertex 0 has a NaN coordinate");
     expect_load_error(write_file(dir / "inf.ply", binary_tetra_ply(true, std::numeric_limits<float>::infinity())),
                       "vertex 0 has an infinite coordinate");
+}
+
+// A model far from the file's origin, written in more than single precision, keeps its shape (stored about
+// its own centre, Mesh::origin, as an OBJ is): a double or text PLY was rounded to float where it lay (a unit
+// sphere 90,000 units out to 1/128 of a unit, until 2026-12-07).
+TEST(PlyLoader, AFarModelInDoublesKeepsItsShape) {
+    const auto dir = temp_dir("loaders_ply_far");
+    const double x[3] = {90000.1, 90001.3, 90000.1}, y[3] = {0.0, 0.0, 0.7};
+    std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    ByteWriter w;
+    for (int i = 0; i < 3; ++i) {
+        text += std::to_string(x[i]) + " " + std::to_string(y[i]) + " 0\n";
+        w.put<double>(x[i]).put<double>(y[i]).put<double>(0.0);
+    }
+    w.put<uint8_t>(3).put<int32_t>(0).put<int32_t>(1).put<int32_t>(2);
+    std::string binary = text.substr(0, text.find("end_header\n") + 11);
+    binary.replace(binary.find("ascii"), 5, "binary_little_endian");
+    for (const auto& [name, bytes] : {std::pair{"far_text.ply", text + "3 0 1 2\n"}, std::pair{"far_double.ply", binary + w.bytes()}}) {
+        SCOPED_TRACE(name);
+        const Mesh m = load_mesh(write_file(dir / name, bytes));
+        ASSERT_EQ(m.triangle_count(), 1u);
+        EXPECT_GT(m.origin.x, 89000.0) << "stored about its own centre";
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(double(m.positions[i].x) + m.origin.x, x[i], 1e-5);
+            EXPECT_NEAR(double(m.positions[i].y) + m.origin.y, y[i], 1e-5);
+        }
+    }
 }
 
 // Size and place are the faces': a vertex no face uses is dropped before drawing, so it neither hides a model

@@ -39,10 +39,19 @@ const char* mode_name(int mode) {
 const std::vector<int> kIndexTypes = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
 
+// A document without skins, morph targets or animations: its mesh is drawn as loaded.
+bool nothing_deforms(const tinygltf::Model& model) {
+    if (!model.skins.empty() || !model.animations.empty()) return false;
+    for (const tinygltf::Mesh& mesh : model.meshes)
+        for (const tinygltf::Primitive& prim : mesh.primitives)
+            if (!prim.targets.empty()) return false;
+    return true;
+}
+
 class Loader {
 public:
     Loader(const std::string& path, const tinygltf::Model& model, const LoadOptions& options)
-        : path_(path), model_(model), options_(options), reader_(path, model, options) {}
+        : path_(path), model_(model), options_(options), reader_(path, model, options), keep_exact_(nothing_deforms(model)) {}
 
     // What `stipple info` says was expanded, e.g. "EXT_mesh_gpu_instancing (125 instances of 1 node)";
     // "" for none.
@@ -70,6 +79,14 @@ public:
                                  ": only triangles are drawn");
         for (const std::string& what : skipped_)
             std::fprintf(stderr, "%s: warning: skipping %s: only triangles are drawn\n", path_.c_str(), what.c_str());
+        // Placed far from the file's origin by its nodes, the model is stored about its own centre (Mesh::origin,
+        // as the OBJ and PLY readers do): a unit sphere under a node translated 90,000 units was rounded to 1/128
+        // of a unit (its area 12.62 for 12.56, its shading in bands).
+        if (keep_exact_) {
+            mesh_.origin = far_origin(exact_);
+            if (mesh_.origin != glm::dvec3(0.0))
+                for (size_t v = 0; v < exact_.size(); ++v) mesh_.positions[v] = glm::vec3(exact_[v] - mesh_.origin);
+        }
         return std::move(mesh_);
     }
 
@@ -212,8 +229,11 @@ private:
 
         Mesh part;
         part.positions.resize(vertex_count);
-        for (size_t i = 0; i < vertex_count; ++i)
-            part.positions[i] = glm::vec3(world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
+        for (size_t i = 0; i < vertex_count; ++i) {
+            const glm::dvec3 p(world * glm::dvec4(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], 1.0));
+            part.positions[i] = glm::vec3(p);
+            if (keep_exact_) exact_.push_back(p);
+        }
         const glm::dmat3 linear(world);
         if (glm::determinant(linear) < 0.0)  // a mirroring transform turns faces inside out: undo it
             for (size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
@@ -238,6 +258,10 @@ private:
     const LoadOptions& options_;
     AccessorReader reader_;
     Mesh mesh_;
+    // The placed positions in double, for a far origin (run). Not for a model that deforms: its skins and morph
+    // targets are matched to the mesh as placed (anim/animated_model.cpp).
+    bool keep_exact_;
+    std::vector<glm::dvec3> exact_;
     std::vector<std::string> skipped_;  // primitives of points or lines, as "mesh M primitive P (mode X)"
     size_t instanced_nodes_ = 0, instances_ = 0;  // EXT_mesh_gpu_instancing, as drawn
 };

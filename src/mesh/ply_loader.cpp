@@ -394,6 +394,9 @@ struct Target {
     // Faces of more than 3 corners: where their fans start in mesh.indices, and their corner counts. They are
     // cut properly once the vertices are read (a PLY may list its faces first): triangulate_polygons.
     std::vector<std::pair<size_t, uint32_t>> polygons = {};
+    // Positions as the file gives them, where that is more than single precision holds (double or 32-bit
+    // integer properties, text): recentre_far_model then keeps a model far from the file's origin in shape.
+    std::vector<glm::dvec3> exact = {};
 };
 
 uint32_t checked_index(const Target& t, int64_t index, const char* what, uint64_t number) {
@@ -418,18 +421,41 @@ void read_vertices(Reader& r, const Element& e, Target& t, uint64_t& done) {
     }
     if (!has_normals)
         for (int& s : slot) s = s >= 3 ? -1 : s;
+    bool precise = std::is_same_v<Reader, AsciiReader>;
+    for (const char* name : {"x", "y", "z"}) {
+        const Scalar type = e.find(name)->type;
+        precise = precise || type == Scalar::f64 || type == Scalar::i32 || type == Scalar::u32;
+    }
     t.mesh.positions.resize(e.count);
+    if (precise) t.exact.resize(e.count);
     if (has_normals) t.mesh.normals.resize(e.count);
-    float v[6] = {};
+    double v[6] = {};
     for (done = 0; done < e.count; ++done) {
         for (size_t k = 0; k < e.properties.size(); ++k) {
             if (slot[k] < 0) r.skip(e.properties[k]);
-            else v[slot[k]] = static_cast<float>(r.real(e.properties[k].type));
+            else v[slot[k]] = r.real(e.properties[k].type);
         }
         r.end_item();
-        t.mesh.positions[done] = {v[0], v[1], v[2]};
-        if (has_normals) t.mesh.normals[done] = {v[3], v[4], v[5]};
+        t.mesh.positions[done] = glm::vec3(float(v[0]), float(v[1]), float(v[2]));
+        if (precise) t.exact[done] = {v[0], v[1], v[2]};
+        if (has_normals) t.mesh.normals[done] = glm::vec3(float(v[3]), float(v[4]), float(v[5]));
     }
+}
+
+// A model far from its file's origin, read in more than single precision, is stored about its own centre
+// (Mesh::origin, as the OBJ reader does): a unit sphere 90,000 units out, from a double PLY, was rounded to
+// 1/128 of a unit (its area 12.62 for 12.56, its shading in bands).
+void recentre_far_model(Target& t) {
+    if (t.exact.empty()) return;
+    std::vector<uint8_t> used(t.exact.size(), 0);
+    for (const uint32_t v : t.mesh.indices) used[v] = 1;
+    std::vector<glm::dvec3> drawn;
+    for (size_t v = 0; v < t.exact.size(); ++v)
+        if (used[v]) drawn.push_back(t.exact[v]);
+    t.mesh.origin = far_origin(drawn);
+    if (t.mesh.origin != glm::dvec3(0.0))
+        for (size_t v = 0; v < t.exact.size(); ++v) t.mesh.positions[v] = glm::vec3(t.exact[v] - t.mesh.origin);
+    std::vector<glm::dvec3>().swap(t.exact);
 }
 
 // Faces: polygons are fan-triangulated around their first corner here, and the concave ones cut again by
@@ -586,6 +612,7 @@ Mesh parse_ply(const std::string& path, std::string_view file, const LoadOptions
         BinaryReader<true> r(path, begin, end);
         read_body(r, h, target);
     }
+    recentre_far_model(target);
     triangulate_polygons(target);
     return mesh;
 }
