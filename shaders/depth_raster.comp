@@ -71,6 +71,10 @@ struct Setup {
 
 // False when the triangle covers no pixel centre of the frame, faces away from a one-sided depth pass
 // or has no area. `w` are the corners' clip w (all positive here), `z` their window depth.
+bool two_sided_object() {  // object.flags.x, read where lavapipe cannot fold it (uniform_branch.h)
+    return (object.flags[unfoldable_zero()] & kFlagTwoSided) != 0u;
+}
+
 bool setup_triangle(vec2 window[3], vec3 z, bool one_sided, out Setup s) {
     for (int i = 0; i < 3; ++i) s.corner[i] = i64vec2(round(window[i] * kSubpixels));
     i64vec2 e1 = s.corner[1] - s.corner[0], e2 = s.corner[2] - s.corner[0];
@@ -103,6 +107,9 @@ bool setup_triangle(vec2 window[3], vec3 z, bool one_sided, out Setup s) {
     float resolution = kDepthUnorm24 ? 1.0f / 16777216.0f
                                      : exp2(float(int(floor(log2(max(max(z.x, max(z.y, z.z)), 1e-30f)))) - 23));
     s.offset = max(abs(slope.x), abs(slope.y)) * kDepthBiasSlopeFactor + resolution * kDepthBiasConstant;
+    // A face facing away of an open one-sided object only hides: pushed further back, as the fixed-function
+    // pass draws it (kBackFaceBiasScale).
+    if (doubled_area > 0 && !two_sided_object()) s.offset *= kBackFaceBiasScale;
     return true;
 }
 

@@ -56,6 +56,11 @@ STIPPLE_CONST uint kSplatShortRun = 4;
 STIPPLE_CONST float kDepthBiasSlopeFactor = 1.5f;
 // Its constant factor, in units of the depth format's resolution (also vkCmdSetDepthBias's).
 STIPPLE_CONST float kDepthBiasConstant = 2.0f;
+// The faces facing away of an open one-sided object are in the depth pass only to hide what lies behind
+// them through its holes; they carry no stipples. Pushed back this many times further (both factors), they
+// lose the ties along the outline where the offset put them before the front faces beside them (which cut
+// the bunny's toon outline and hid stipples there).
+STIPPLE_CONST float kBackFaceBiasScale = 4.0f;
 STIPPLE_CONST uint kSplatIterationBudget = 32768;
 STIPPLE_CONST uint kSplatRingFactor = 32;
 STIPPLE_CONST uint kSplatRingCap = 2048;

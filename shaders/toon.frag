@@ -13,8 +13,8 @@ layout(set = 0, binding = kBindingFrame) uniform FrameBlock { FrameUniforms fram
 layout(set = 0, binding = kBindingObject) uniform ObjectBlock { ObjectUniforms object; };
 
 void main() {
-    // A polygon facing away is drawn only when it can be seen through an opening (its object is
-    // two-sided or has borders): it is seen from its inside, so its normal is flipped.
+    // A polygon facing away is drawn only when it can be seen through an opening (its object is open
+    // or two-sided): it is seen from its inside, so its normal is flipped.
     vec3 normal = gl_FrontFacing ? normalize(in_normal_view) : -normalize(in_normal_view);
     // Parallel lines of sight in an orthographic view (FrameUniforms::projection.z): the eye ray is +z.
     vec3 to_eye = frame.projection.z != 0.0 ? vec3(0.0, 0.0, 1.0) : normalize(-in_position_view);

@@ -46,8 +46,15 @@ RenderedFrame render(gpu::Context& context, const test::Prepared& object, const 
 // nearer than the mesh's own, or the mesh's own do not cover the pixel).
 std::vector<uint8_t> opening_mask(gpu::Context& context, const test::Prepared& bowl, const test::Prepared& inside_out) {
     ObjectParams plain;
-    std::vector<float> front = render(context, bowl, plain).depth;
-    std::vector<float> back = render(context, inside_out, plain).depth;
+    // The depth of the faces facing the eye alone: an open mesh's depth pass holds its back faces too
+    // (depth_holds_back_faces), so each is drawn as a mesh its loading found closed (no border edge counted).
+    auto front_faces_only = [](test::Prepared p) {
+        p.mesh.winding.parts = 1;
+        p.mesh.winding.border_edges = 0;
+        return p;
+    };
+    std::vector<float> front = render(context, front_faces_only(bowl), plain).depth;
+    std::vector<float> back = render(context, front_faces_only(inside_out), plain).depth;
     std::vector<uint8_t> mask(front.size());
     for (size_t i = 0; i < mask.size(); ++i) mask[i] = back[i] < 1.0f && back[i] < front[i];
     return mask;

@@ -3,6 +3,8 @@
 // pixels (render/depth_triangles.hpp), and the copy of its depth into words for the compute passes
 // that test against it (the splat, the object-space lines).
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -65,26 +67,42 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
     for (const ObjectGpu* object : order) {
         if (object->geometry.index_count == 0) continue;
         // Toon-mode objects shade their surface in the same pass (no extra pass when toon is off).
-        bool toon = object->params.toon;
-        bool back_faces = depth_holds_back_faces(*object);
-        VkPipeline pipeline = toon ? (back_faces ? toon_two_sided_pipeline_ : toon_pipeline_)
-                                   : (back_faces ? depth_two_sided_pipeline_ : depth_pipeline_);
-        if (pipeline != bound) {
-            vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-            vkCmdSetDepthBias(cb, gpu::kDepthBiasConstant, 0.0f, gpu::kDepthBiasSlopeFactor);
-            bound = pipeline;
+        const bool toon = object->params.toon;
+        // Two-sided: every face at the paper's offset (each carries stipples). Open and one-sided: the front
+        // faces, then the faces facing away pushed further back (kBackFaceBiasScale), which only hide.
+        const bool two_sided = object->params.two_sided, back_faces = depth_holds_back_faces(*object);
+        struct Draw {
+            VkPipeline pipeline;
+            float bias_scale;
+        };
+        std::array<Draw, 2> draws{};
+        size_t draw_count = 0;
+        if (two_sided) {
+            draws[draw_count++] = {toon ? toon_two_sided_pipeline_ : depth_two_sided_pipeline_, 1.0f};
+        } else {
+            draws[draw_count++] = {toon ? toon_pipeline_ : depth_pipeline_, 1.0f};
+            if (back_faces)
+                draws[draw_count++] = {toon ? toon_back_faces_pipeline_ : depth_back_faces_pipeline_, gpu::kBackFaceBiasScale};
         }
         VkBuffer buffers[] = {object->geometry.positions.handle(), object->geometry.normals.handle()};
         VkDeviceSize offsets[] = {0, 0};
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
-                                nullptr);
-        vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
-        if (object->frame.depth_listed) {  // the triangles that may cover a pixel centre (depth_triangles.comp)
-            vkCmdBindIndexBuffer(cb, object->frame.depth_triangles.handle(), 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexedIndirect(cb, object->frame.depth_triangles.handle(), 0, 1, sizeof(gpu::DepthTriangles));
-        } else {
-            vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
+        for (const Draw& draw : std::span(draws.data(), draw_count)) {
+            if (draw.pipeline != bound) {
+                vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline);
+                bound = draw.pipeline;
+            }
+            // Set for every draw: the bias is dynamic state, and the last draw may have scaled it.
+            vkCmdSetDepthBias(cb, gpu::kDepthBiasConstant * draw.bias_scale, 0.0f, gpu::kDepthBiasSlopeFactor * draw.bias_scale);
+            vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
+                                    nullptr);
+            vkCmdBindVertexBuffers(cb, 0, toon ? 2 : 1, buffers, offsets);
+            if (object->frame.depth_listed) {  // the triangles that may cover a pixel centre (depth_triangles.comp)
+                vkCmdBindIndexBuffer(cb, object->frame.depth_triangles.handle(), 0, VK_INDEX_TYPE_UINT32);
+                vkCmdDrawIndexedIndirect(cb, object->frame.depth_triangles.handle(), 0, 1, sizeof(gpu::DepthTriangles));
+            } else {
+                vkCmdBindIndexBuffer(cb, object->geometry.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+                vkCmdDrawIndexed(cb, object->geometry.index_count, 1, 0, 0, 0);
+            }
         }
     }
 }

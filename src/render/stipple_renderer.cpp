@@ -41,7 +41,8 @@ void StippleRenderer::release() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     deform_pass_.reset();
-    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, stipple_pipelines_[0], stipple_pipelines_[1],
+    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, depth_back_faces_pipeline_, toon_back_faces_pipeline_,
+                         stipple_pipelines_[0], stipple_pipelines_[1],
                          stipple_list_pipelines_[0], stipple_list_pipelines_[1],
                          stipple_gradient_listed_pipelines_[0], stipple_gradient_listed_pipelines_[1],
                          stipple_chunk_pipelines_[0], stipple_chunk_pipelines_[1],
@@ -83,6 +84,10 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     gpu::GraphicsPipelineDesc depth_two_sided = depth;
     depth_two_sided.cull_mode = VK_CULL_MODE_NONE;
     depth_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, depth_two_sided, layouts_.pipeline);
+    // An open one-sided object's faces facing away, drawn after its front faces with kBackFaceBiasScale.
+    gpu::GraphicsPipelineDesc depth_back_faces = depth;
+    depth_back_faces.cull_mode = VK_CULL_MODE_FRONT_BIT;
+    depth_back_faces_pipeline_ = gpu::create_graphics_pipeline(context_, depth_back_faces, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc stipple;
     stipple.vertex_shader = "stipple.vert";
@@ -122,6 +127,8 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
     toon.cull_mode = VK_CULL_MODE_NONE;  // toon.frag flips the normal of faces seen from behind
     toon_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
+    toon.cull_mode = VK_CULL_MODE_FRONT_BIT;  // an open one-sided object's faces facing away (depth_back_faces)
+    toon_back_faces_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
 
     for (uint32_t facing : {0u, 1u}) {  // [1]: the variants that write the facing bits (objects with lines)
         // The corners of polygons large on screen are read as the stipple shaders read them.

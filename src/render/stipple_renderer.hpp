@@ -240,6 +240,8 @@ private:
     VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
     VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
     VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
+    VkPipeline depth_back_faces_pipeline_ = VK_NULL_HANDLE;  // an open one-sided object's faces facing away
+    VkPipeline toon_back_faces_pipeline_ = VK_NULL_HANDLE;
     VkPipeline facing_pipeline_ = VK_NULL_HANDLE;      // facing bits alone (objects with CPU densities and lines)
     VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
     VkPipeline silhouette_words_pipeline_ = VK_NULL_HANDLE;  // the same tested against the depth words
