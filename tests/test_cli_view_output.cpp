@@ -360,6 +360,17 @@ TEST(CliView, ScriptSwitchesTakeTrueOrFalse) {
         EXPECT_NE(std::string(e.what()).find(script + ":1: contours: expected true or false, got '1'"), std::string::npos)
             << e.what();
     }
+    // A value is named by the key the script wrote, as a switch is (the command line's "--dmax" until 2026-12-07).
+    for (const auto& [line, message] : std::vector<std::pair<std::string, std::string>>{
+             {"set 0 dmax 99\n", ":1: dmax = 99 is out of range"}, {"set 0 shading_exponent inf\n", ":1: shading_exponent: 'inf'"}}) {
+        std::ofstream(script) << line;
+        try {
+            app::read_viewer_script(script);
+            ADD_FAILURE() << line << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(script + message), std::string::npos) << e.what();
+        }
+    }
 }
 
 // What a script cannot mean is refused in one short line: an object number no scene has (1e300 became object

@@ -715,6 +715,14 @@ TEST_F(SceneObjects, ViewerSceneTakesDropsAndResultsOnlyAsThePanelAsks) {
     timeline.toggle_play(live.scene(), live.objects());
     EXPECT_TRUE(timeline.playing());
     EXPECT_DOUBLE_EQ(timeline.time(), 0.0) << "played from the end, it starts again";
+    // With another object that loops the clock runs on (the one that does not holds its last pose, as render
+    // draws it): it stopped at the end and froze the looping one too (until 2026-12-07).
+    live.add_model(tube);
+    ASSERT_EQ(live.size(), 3u);
+    live.scene().objects[2].animation.loop = true;
+    timeline.advance(length + 1.0, live.scene(), live.objects());
+    EXPECT_TRUE(timeline.playing()) << "an object still loops";
+    EXPECT_DOUBLE_EQ(timeline.time(), length + 1.0);
 }
 
 TEST_F(SceneObjects, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/param_widgets.hpp"
+#include "mesh/mesh.hpp"
 
 namespace stipple::app {
 
@@ -125,7 +126,8 @@ void object_section(SceneObject& object, size_t index, const std::string& name, 
         if (object.transform.matrix) {
             ImGui::TextDisabled("matrix transform (edit it in the scene file)");
         } else {
-            ImGui::DragFloat3("translate", &object.transform.translate.x, 0.01f);
+            // Within what a scene file accepts (scene_json.cpp's place): typed as 1e30 it was saved and then refused.
+            ImGui::DragFloat3("translate", &object.transform.translate.x, 0.01f, -kMaxCoordinate, kMaxCoordinate, "%.3f", kClamp);
             ImGui::SliderFloat3("rotate deg", &object.transform.rotate_deg.x, -180.0f, 180.0f, "%.0f", kClamp);
             ImGui::DragFloat("scale", &object.transform.scale, 0.01f, 1e-4f, 1e4f, "%.3f", kLog);
         }

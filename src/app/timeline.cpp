@@ -19,6 +19,15 @@ bool all_loop(const Scene& scene, const std::vector<ObjectData>& objects) {
     return true;
 }
 
+// Whether the clock runs on past the longest animation: while any object loops, something still moves (the
+// others hold their last pose, as render draws them). With one object looping and one not, the clock stopped
+// at the end and froze the looping one too.
+bool any_loop(const Scene& scene, const std::vector<ObjectData>& objects) {
+    for (size_t i = 0; i < objects.size(); ++i)
+        if (objects[i].motion && scene.objects[i].animation.loop) return true;
+    return false;
+}
+
 // "1 'Walk'": how the chooser lists an animation.
 std::string animation_label(const anim::AnimatedModel& model, size_t index) {
     const std::string& name = model.animations[index].name;
@@ -43,14 +52,14 @@ void Timeline::toggle_play(const Scene& scene, const std::vector<ObjectData>& ob
     playing_ = !playing_;
     // At the end the clock stops (advance); played again from there it would stop at once, and Play
     // would seem to do nothing.
-    if (playing_ && !all_loop(scene, objects) && time_ >= timeline_length(scene, objects)) time_ = 0.0;
+    if (playing_ && !any_loop(scene, objects) && time_ >= timeline_length(scene, objects)) time_ = 0.0;
 }
 
 void Timeline::advance(double wall_seconds, const Scene& scene, const std::vector<ObjectData>& objects) {
     if (!playing_) return;
     time_ += double(speed_) * wall_seconds;
     const double length = timeline_length(scene, objects);
-    if (!all_loop(scene, objects) && time_ >= length) {  // the end holds: nothing more would move
+    if (!any_loop(scene, objects) && time_ >= length) {  // the end holds: nothing more would move
         time_ = length;
         playing_ = false;
     }
@@ -75,15 +84,16 @@ glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, c
         ImGui::SameLine();
         ImGui::Text("scene time %.3f s", time_);
         const double length = timeline_length(scene, objects);
-        const bool loop = all_loop(scene, objects);
+        const bool loop = all_loop(scene, objects), some_loop = any_loop(scene, objects);
         // Looping, the bar shows where in the longest animation the clock is; dragging it moves the clock there.
-        float shown = float(length > 0.0 ? (loop ? std::fmod(std::max(time_, 0.0), length) : std::min(time_, length)) : 0.0);
+        float shown = float(length > 0.0 ? (some_loop ? std::fmod(std::max(time_, 0.0), length) : std::min(time_, length)) : 0.0);
         if (ImGui::SliderFloat("time", &shown, 0.0f, float(length), "%.3f s", ImGuiSliderFlags_AlwaysClamp))
             time_ = shown;
         ImGui::SliderFloat("speed", &speed_, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
         bool loop_edit = loop;
-        if (ImGui::Checkbox("loop", &loop_edit)) {
+        // Unticked while only some objects loop (as their scene file says): a tick makes them all loop.
+        if (ImGui::Checkbox(some_loop && !loop ? "loop (some objects)###loop" : "loop###loop", &loop_edit)) {
             for (size_t i = 0; i < objects.size(); ++i)
                 if (objects[i].motion) scene.objects[i].animation.loop = loop_edit;
             // Looping, the clock may be many cycles on: without loop it would stand past the end at once.

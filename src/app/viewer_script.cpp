@@ -70,7 +70,7 @@ std::vector<ScriptAction> read_viewer_script(const std::string& path) {
                 action.value = rest[2] == "true" ? 1.0 : 0.0;
             } else {
                 try {
-                    action.value = parse_param_text(*spec, rest[2]);
+                    action.value = parse_param_text(*spec, rest[2], true);  // named as the script names it
                 } catch (const Error& e) {
                     bad(excerpt(e.what(), 200));  // it quotes the value whole
                 }

@@ -356,7 +356,7 @@ int run_render(const std::vector<std::string>& argv) {
                                                       "chance: a finer --pen-width, or --dot-style filled",
                                                       empty_small_dots).c_str()
                      : no_stipples ? " - D_max is 0 (no stipples) and no line is drawn"
-                                   : " - the object is out of view, or too far or too light for a dot");
+                                   : " - the object is out of view (or the camera inside it), or too far or too light for a dot");
 
     // Timed frames after the first (which warms caches and the driver's shader compilation).
     std::vector<double> frame_ms;

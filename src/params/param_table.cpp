@@ -287,8 +287,8 @@ std::optional<std::string> param_value_problem(const ParamSpec& spec, double val
     return shown + " is out of range: it must be " + param_range_text(spec) + (underflows ? underflow_hint(spec) : "");
 }
 
-double parse_param_text(const ParamSpec& spec, const std::string& text) {
-    const std::string where = "--" + std::string(spec.cli);
+double parse_param_text(const ParamSpec& spec, const std::string& text, bool named_by_key) {
+    const std::string where = named_by_key ? std::string(spec.key) : "--" + std::string(spec.cli);
     if (spec.type == ParamType::Choice) {
         for (size_t i = 0; i < spec.choices.size(); ++i)
             if (text == spec.choices[i]) return double(i);

@@ -71,8 +71,9 @@ std::string format_param_value(const ParamSpec& spec, double value);
 // from ("--dmax = " on the command line, "<file>: objects[0].params.dmax: " in a scene file).
 std::optional<std::string> param_value_problem(const ParamSpec& spec, double value);
 
-// Parses command-line text for a non-Bool parameter; throws stipple::Error prefixed "--<cli>".
-double parse_param_text(const ParamSpec& spec, const std::string& text);
+// Parses command-line text for a non-Bool parameter; throws stipple::Error prefixed "--<cli>", or "<key>"
+// with named_by_key (a viewer script sets parameters by their scene keys).
+double parse_param_text(const ParamSpec& spec, const std::string& text, bool named_by_key = false);
 
 // The smallest value a slider or input may hold: the minimum, or just above it when it is excluded.
 double param_lowest_value(const ParamSpec& spec);
