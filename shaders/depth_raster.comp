@@ -69,12 +69,12 @@ struct Setup {
     ivec2 last;
 };
 
-// False when the triangle covers no pixel centre of the frame, faces away from a one-sided depth pass
-// or has no area. `w` are the corners' clip w (all positive here), `z` their window depth.
 bool two_sided_object() {  // object.flags.x, read where lavapipe cannot fold it (uniform_branch.h)
     return (object.flags[unfoldable_zero()] & kFlagTwoSided) != 0u;
 }
 
+// False when the triangle covers no pixel centre of the frame, faces away from a one-sided depth pass
+// or has no area. `w` are the corners' clip w (all positive here), `z` their window depth.
 bool setup_triangle(vec2 window[3], vec3 z, bool one_sided, out Setup s) {
     for (int i = 0; i < 3; ++i) s.corner[i] = i64vec2(round(window[i] * kSubpixels));
     i64vec2 e1 = s.corner[1] - s.corner[0], e2 = s.corner[2] - s.corner[0];

@@ -20,12 +20,10 @@ int main(int argc, char** argv) {
         // `stipple help view` (or --help view, -h view), as `stipple view --help`; `help help` is everything.
         if (args.size() >= 2 && !asks_help(args[1])) {
             // `help render view` printed render's options and said nothing of "view" (options after the command
-            // are fine: `help tone --views` is tone's help, where --views is).
-            const auto extra = std::find_if(args.begin() + 2, args.end(),
-                                            [&](const std::string& a) { return !asks_help(a) && !a.starts_with('-'); });
-            if (extra != args.end()) {
+            // are fine, with their values: `help tone --views`, `help render --width 400`).
+            if (args.size() >= 3 && !asks_help(args[2]) && !args[2].starts_with('-')) {
                 std::fprintf(stderr, "stipple: help takes one command, got '%s' and '%s' (try: stipple help %s)\n",
-                             args[1].c_str(), extra->c_str(), args[1].c_str());
+                             args[1].c_str(), args[2].c_str(), args[1].c_str());
                 return 2;
             }
             return stipple::cli::print_command_usage(args[1]) ? 0 : unknown_command(args[1]);

@@ -257,6 +257,7 @@ TEST(ParamTable, EachCommandsHelpListsEveryOptionItTakes) {
     const test::CommandResult two = test::run_stipple({"help", "render", "view"});
     EXPECT_EQ(two.exit_code, 2);
     EXPECT_EQ(two.err, "stipple: help takes one command, got 'render' and 'view' (try: stipple help render)\n");
+    EXPECT_EQ(test::run_stipple({"help", "render", "--width", "400"}).exit_code, 0) << "an option with its value";
     const test::CommandResult unknown = test::run_stipple({"draw", "--help"});
     EXPECT_EQ(unknown.exit_code, 2);
     EXPECT_EQ(unknown.err, "stipple: unknown command 'draw' (try: stipple --help)\n");

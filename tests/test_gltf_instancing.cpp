@@ -211,7 +211,7 @@ TEST(GltfInstancing, ZerosThatWouldNotFitInMemoryAreRefusedBeforeTheyAreMade) {
     instanced.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
         {"TRANSLATION", instanced.doc["accessors"].size() - 1}};
     EXPECT_EQ(refusal("instances.glb", instanced),
-              "instances.glb: nodes[0].extensions.EXT_mesh_gpu_instancing: 30000000 vertices need about 3.0 GiB to load, "
+              "instances.glb: nodes[0].extensions.EXT_mesh_gpu_instancing: 30000000 vertices need about 3.7 GiB to load, "
               "more than a model may take on this machine: 512.0 MiB, half its 1.0 GiB of memory");
     anim::GltfBuilder zeros;
     zeros.add("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}}})}});

@@ -92,6 +92,11 @@ TEST_F(DepthRasterTest, CoversWhatTheFixedFunctionPassCovers) {
     expect_same_coverage(*context, coarse, params, test::framed_view(bounds, kExtent), "coarse sphere, framed");
     expect_same_coverage(*context, box, params, test::framed_view(compute_bounding_sphere(box.mesh), kExtent, 1.0f, 35.0f, 25.0f),
                          "box");
+    // An open one-sided bowl seen partly into its opening: its faces facing away are drawn after the front
+    // faces, pushed further back (kBackFaceBiasScale), by both passes.
+    const test::Prepared bowl = test::prepare(test::make_open_hemisphere(192, 48), params);
+    expect_same_coverage(*context, bowl, params,
+                         test::framed_view(compute_bounding_sphere(bowl.mesh), kExtent, 1.0f, 20.0f, 35.0f), "open bowl");
 }
 
 // The eye close to the surface: triangles cross the near plane and reach far beyond the frame, and

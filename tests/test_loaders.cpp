@@ -352,12 +352,16 @@ std::string one_triangle_gltf(const std::string& mode, uint8_t last_index) {
 // A triangle placed 90,000 units out by its node keeps its shape (stored about its own centre, Mesh::origin):
 // the placed positions were rounded to float, 1/128 of a unit there (until 2026-12-07).
 TEST(GltfLoader, AModelPlacedFarByItsNodeKeepsItsShape) {
+    // A fourth vertex no face uses, at the node's origin: the model's place is its faces' (the far origin was
+    // measured on every vertex, and this one made the triangle look near the origin).
     ByteWriter w;
-    for (float v : {0.1f, 0.0f, 0.0f, 1.3f, 0.0f, 0.0f, 0.1f, 0.7f, 0.0f}) w.put<float>(v);
+    for (float v : {0.1f, 0.0f, 0.0f, 1.3f, 0.0f, 0.0f, 0.1f, 0.7f, 0.0f, -90000.0f, 0.0f, 0.0f}) w.put<float>(v);
+    for (uint8_t i : {0, 1, 2}) w.put<uint8_t>(i);
     const std::string json = gltf_json(
-        embedded(w.bytes()), R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
-                             R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
-                             R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+        embedded(w.bytes()), R"("bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":3}],)"
+                             R"("accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},)"
+                             R"({"bufferView":1,"componentType":5121,"count":3,"type":"SCALAR"}],)"
+                             R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
                              R"("nodes":[{"mesh":0,"translation":[90000,0,0]}],"scenes":[{"nodes":[0]}])");
     const Mesh m = load_mesh(write_file(temp_dir("loaders_gltf_far") / "far.gltf", json));
     ASSERT_EQ(m.triangle_count(), 1u);
@@ -584,6 +588,9 @@ TEST(BadInput, PlyHeaderAndDataDisagree) {
     EXPECT_EQ(load_mesh(write_file(dir / "padded.ply", tetra + std::string("\n\0\0\0", 4))).triangle_count(), 4u);
     EXPECT_EQ(load_mesh(write_file(dir / "blank_lines.ply", vertex + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n\n \r\n"))
                   .triangle_count(), 2u);
+    EXPECT_EQ(load_mesh(write_file(dir / "dos_end.ply", vertex + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n" +
+                                                           std::string("\0\0\x1a\f", 4)))
+                  .triangle_count(), 2u) << "zero bytes, a DOS end-of-file mark and a form feed are padding";
     // The same data, one element a line, loads; a leading '+' is a number as strtod reads it.
     const std::string one_face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const Mesh m = load_mesh(write_file(dir / "plus.ply", vertex + one_face + "+0 0 0\n+1 0 0\n0 +1e0 0\n3 +0 1 2\n"));

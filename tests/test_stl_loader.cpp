@@ -134,6 +134,20 @@ TEST(StlLoader, AZeroCountAndPaddingAreReadAsOtherReadersReadThem) {
               std::string::npos);
 }
 
+// A model far from the file's origin keeps its shape: the text is read in double and the model stored about its
+// own centre (Mesh::origin), as the OBJ and PLY readers do (a unit sphere 90,000 units out lost its shape).
+TEST(StlLoader, AFarAsciiModelKeepsItsShape) {
+    const std::string text = "solid far\n facet normal 0 0 1\n  outer loop\n   vertex 90000.1 0 0\n   vertex 90001.3 0 0\n"
+                             "   vertex 90000.1 0.7 0\n  endloop\n endfacet\nendsolid far\n";
+    const Mesh m = load_mesh_from_bytes("far.stl", text);
+    ASSERT_EQ(m.triangle_count(), 1u);
+    EXPECT_GT(m.origin.x, 89000.0);
+    const double x[3] = {90000.1, 90001.3, 90000.1};
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(double(m.positions[i].x) + m.origin.x, x[i], 1e-5) << i;
+    EXPECT_NE(load_error("solid big\nfacet normal 0 0 1\nouter loop\nvertex 1e39 0 0\nvertex 0 0 0\nvertex 0 1 0\nendloop\n"
+                         "endfacet\nendsolid\n").find("beyond single precision's range"), std::string::npos);
+}
+
 TEST(StlLoader, BrokenFilesAreOneLineErrors) {
     const std::string binary = binary_stl(cube_facets());
     EXPECT_NE(load_error(binary.substr(0, binary.size() - 7)).find("binary STL of 677 bytes, where its count of 12 facets asks 684"),

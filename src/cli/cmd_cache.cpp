@@ -16,7 +16,7 @@ namespace {
 
 // In the units --cache-size reads (500M is 500 MiB, 64K is 64 KiB): "1073.7 MB" for the default 1G read as
 // another size; below a MiB in KiB or bytes (a limit of 1K listed as "0.0 MiB").
-std::string byte_size(uint64_t bytes) {
+std::string cache_size_text(uint64_t bytes) {
     char text[32];
     if (bytes >= 1048576) std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / 1048576.0);
     else if (bytes >= 1024) std::snprintf(text, sizeof text, "%.1f KiB", double(bytes) / 1024.0);
@@ -54,23 +54,23 @@ int run_cache(const std::vector<std::string>& argv) {
         fail_file(settings.dir.string(), "the stipple cache folder is a file");
     if (args.flag("--clear")) {
         const uint64_t freed = clear_cache(settings.dir);
-        std::printf("cleared %s: %s freed\n", settings.dir.c_str(), byte_size(freed).c_str());
+        std::printf("cleared %s: %s freed\n", settings.dir.c_str(), cache_size_text(freed).c_str());
         return 0;
     }
     uint64_t total = 0;
     const auto entries = list_cache_entries(settings.dir);
-    std::printf("%s (limit %s; most recently used first)\n", settings.dir.c_str(), byte_size(settings.max_bytes).c_str());
+    std::printf("%s (limit %s; most recently used first)\n", settings.dir.c_str(), cache_size_text(settings.max_bytes).c_str());
     for (const CacheEntryInfo& e : entries) {
         total += e.bytes;
         if (e.readable)
             std::printf("  %s  %9s  %10llu stipples  %9llu polygons  %s\n", local_time(e.last_used).c_str(),
-                        byte_size(e.bytes).c_str(), (unsigned long long)e.stipples, (unsigned long long)e.triangles,
+                        cache_size_text(e.bytes).c_str(), (unsigned long long)e.stipples, (unsigned long long)e.triangles,
                         e.model.c_str());
         else
-            std::printf("  %s  %9s  (unreadable: %s)\n", local_time(e.last_used).c_str(), byte_size(e.bytes).c_str(),
+            std::printf("  %s  %9s  (unreadable: %s)\n", local_time(e.last_used).c_str(), cache_size_text(e.bytes).c_str(),
                         e.path.filename().c_str());
     }
-    std::printf("%zu entries, %s\n", entries.size(), byte_size(total).c_str());
+    std::printf("%zu entries, %s\n", entries.size(), cache_size_text(total).c_str());
     return 0;
 }
 

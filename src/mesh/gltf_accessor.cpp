@@ -197,17 +197,22 @@ void AccessorReader::for_each_sparse(int index, const Layout& layout, const std:
     }
 }
 
+// An accessor without a buffer view is zeros, as many as it says: a few bytes of file may ask gigabytes.
+void AccessorReader::check_zeros_fit(const tinygltf::Accessor& a, const Layout& l, const std::string& where,
+                                     size_t value_bytes) const {
+    if (l.base != nullptr) return;  // its data is in the file, which fits (check_model_size)
+    const uint64_t memory = physical_memory_bytes(), bytes = uint64_t(a.count) * l.components * value_bytes;
+    if (memory > 0 && bytes > memory / 4)
+        fail_file(path_, where + ": " + std::to_string(a.count) + " elements without a buffer view (zeros) would take " +
+                             byte_size(bytes) + ", more than this machine's " + byte_size(memory) + " of memory allows");
+}
+
 std::vector<float> AccessorReader::read(int index, bool normalized, const std::string& field) const {
     const tinygltf::Accessor& a = get(index, field);
     const std::string where = field + " (accessor " + std::to_string(index) + ")";
     const Layout l = layout(index, where);
     const size_t n = l.components;
-    // An accessor without a buffer view is zeros, as many as it says: a few bytes of file may ask gigabytes.
-    const uint64_t memory = physical_memory_bytes();
-    if (l.base == nullptr && memory > 0 && uint64_t(a.count) * n * sizeof(float) > memory / 4)
-        fail_file(path_, where + ": " + std::to_string(a.count) + " elements without a buffer view (zeros) would take " +
-                             byte_size(uint64_t(a.count) * n * sizeof(float)) + ", more than this machine's " +
-                             byte_size(memory) + " of memory allows");
+    check_zeros_fit(a, l, where, sizeof(float));
     std::vector<float> out(a.count * n, 0.0f);  // no buffer view: zeros (sparse entries may follow)
     if (l.base) convert_any(l.base, l.stride, a.count, n, normalized, a.componentType, out.data());
     for_each_sparse(index, l, where, [&](const unsigned char* value, size_t i) {
@@ -236,6 +241,7 @@ std::vector<uint32_t> AccessorReader::uints(int index, int type, const std::vect
     const std::string where = field + " (accessor " + std::to_string(index) + ")";
     const Layout l = layout(index, where);
     const size_t n = l.components, size = l.element / n;
+    check_zeros_fit(a, l, where, sizeof(uint32_t));
     std::vector<uint32_t> out(a.count * n, 0u);
     auto put = [&](const unsigned char* element, size_t i) {
         for (size_t c = 0; c < n; ++c) out[i * n + c] = static_cast<uint32_t>(component(element + c * size, a.componentType));

@@ -54,6 +54,8 @@ private:
         size_t components = 0, element = 0, stride = 0;
     };
     Layout layout(int index, const std::string& where) const;
+    // Refuses, in one line, zeros (an accessor without a buffer view) of more than a quarter of the machine's memory.
+    void check_zeros_fit(const tinygltf::Accessor& a, const Layout& l, const std::string& where, size_t value_bytes) const;
     // Calls apply(first byte of an element, i) for each entry of a sparse accessor (none otherwise).
     template <class Apply>
     void for_each_sparse(int index, const Layout& layout, const std::string& where, Apply&& apply) const;

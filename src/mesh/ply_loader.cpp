@@ -339,12 +339,15 @@ public:
         bad({start, static_cast<size_t>(p_ - start)}, "is one value more than the header gives this element (one element a line)");
     }
     void expect_items(uint64_t, Scalar) {}  // items are read one by one; the data end bounds them
-    // What follows the last element (expect_end in read_body): whitespace only.
+    // What follows the last element (expect_end in read_body): whitespace or padding only (zero bytes, a DOS
+    // end-of-file mark, form feeds: files ending so loaded before the check).
     void expect_end() {
-        try {
-            bad(token(), "lies after the last element the header declares (its element counts are too small)");
-        } catch (const Truncated&) {  // nothing but whitespace to the end
-        }
+        const auto padding = [](char c) {
+            return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' || c == '\0' || c == '\x1a';
+        };
+        while (p_ < end_ && padding(*p_)) line_ += *p_++ == '\n';
+        if (p_ == end_) return;
+        bad(token(), "lies after the last element the header declares (its element counts are too small)");
     }
     void skip(const Property& p) {
         if (!p.is_list) {  // on the element's line, as real() reads

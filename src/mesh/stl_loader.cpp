@@ -19,6 +19,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/error.hpp"
 #include "mesh/load_mesh.hpp"
@@ -98,9 +99,10 @@ public:
             expect("loop");
             for (int corner = 0; corner < 3; ++corner) {
                 expect("vertex");
-                glm::vec3 p;
+                glm::dvec3 p;
                 for (int i = 0; i < 3; ++i) p[i] = number();
-                add_corner(mesh_, p);
+                exact_.push_back(p);
+                add_corner(mesh_, glm::vec3(p));
             }
             expect("endloop");
             expect("endfacet");
@@ -108,6 +110,11 @@ public:
                 fail_file(name_, "more than " + std::to_string(limit_) + " facets, the limit");
         }
         if (mesh_.indices.empty()) fail_file(name_, "the model has no triangles (an ASCII STL without facets)");
+        // Far from the file's origin, about the model's own centre (Mesh::origin, as the OBJ and PLY readers
+        // keep it): the text holds more than single precision (a unit sphere 90,000 units out lost its shape).
+        mesh_.origin = far_origin(exact_);
+        if (mesh_.origin != glm::dvec3(0.0))
+            for (size_t v = 0; v < exact_.size(); ++v) mesh_.positions[v] = glm::vec3(exact_[v] - mesh_.origin);
         return std::move(mesh_);
     }
 
@@ -167,27 +174,30 @@ private:
         if (!is(word, keyword)) fail_here("expected \"" + std::string(keyword) + "\", got " + shown(word));
     }
 
-    float number() {
+    // In double, as written (the model may lie far from the file's origin: read()).
+    double number() {
         std::string_view word = next();
         if (word.empty()) fail_here("the file ends where a number was expected");
         if (word.size() > 1 && word.front() == '+' && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.'))
             word.remove_prefix(1);
-        float value = 0.0f;
+        double value = 0.0;
         const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
         if (ptr != word.data() + word.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
             fail_here("expected a number, got " + shown(word));
-        // Out of float's range: below it, a rounding to keep (1e-50 is 0); above it, refused.
+        // Out of range: below it, a rounding to keep (1e-400 is 0); above it, refused.
         if (ec == std::errc::result_out_of_range) {
             const double wide = std::strtod(std::string(word).c_str(), nullptr);
             if (std::abs(wide) >= 1.0) fail_here("the number " + shown(word) + " is beyond single precision's range");
-            value = float(wide);
+            value = wide;
         }
         if (!std::isfinite(value)) fail_here("the number " + shown(word) + " is not finite");
+        if (!std::isfinite(float(value))) fail_here("the number " + shown(word) + " is beyond single precision's range");
         return value;
     }
 
     const std::string& name_;
     std::string_view text_;
+    std::vector<glm::dvec3> exact_;  // the corners as written, for a far origin
     uint64_t limit_;
     size_t pos_ = 0, line_ = 1;
     Mesh mesh_;

@@ -324,7 +324,7 @@ bool depth_holds_back_faces(const ObjectGpu& object) {
     // A closed surface hides its back faces behind its front ones, so the depth pass culls them (half the
     // rasteriser's work). Through the holes of an open one they are what is seen, and what they hide must
     // stay hidden (docs/paper-reading.md, "Open surfaces").
-    return object.params.two_sided || object.geometry.open_surface || object.geometry.border_edge_count > 0;
+    return object.params.two_sided || object.geometry.open_surface;
 }
 
 glm::mat4 up_axis_rotation(UpAxis up, glm::vec3 center) {

@@ -188,8 +188,8 @@ inline float largest_point_size_drawn_within(float device_most) {
 
 // Whether the object draws lines from its edge table this frame (any kind; the table is built).
 bool draws_edge_lines(const ObjectGpu& object);
-// Whether its depth pass also holds the polygons facing away: they can be seen through an opening
-// (two-sided stipples on them, or object-space lines that they must hide).
+// Whether its depth pass also holds the polygons facing away: they can be seen through an opening of an
+// open mesh (where they hide what lies behind them), or carry two-sided stipples.
 bool depth_holds_back_faces(const ObjectGpu& object);
 
 // The rotation about the object's bounding-sphere centre that turns its up axis (ObjectParams::up) to +y.

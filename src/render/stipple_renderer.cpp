@@ -79,12 +79,12 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     depth.color_format = color_format;
     depth.depth_format = depth_format;
     depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layouts_.pipeline);
-    // Objects whose faces facing away can be seen, through an opening (depth_holds_back_faces): they
-    // hide what lies behind them and carry two-sided stipples, at the same polygon offset.
+    // Two-sided objects: their faces facing away carry stipples too, at the same polygon offset.
     gpu::GraphicsPipelineDesc depth_two_sided = depth;
     depth_two_sided.cull_mode = VK_CULL_MODE_NONE;
     depth_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, depth_two_sided, layouts_.pipeline);
-    // An open one-sided object's faces facing away, drawn after its front faces with kBackFaceBiasScale.
+    // An open one-sided object's faces facing away (depth_holds_back_faces), seen through its openings: drawn
+    // after its front faces with kBackFaceBiasScale, they only hide what lies behind them.
     gpu::GraphicsPipelineDesc depth_back_faces = depth;
     depth_back_faces.cull_mode = VK_CULL_MODE_FRONT_BIT;
     depth_back_faces_pipeline_ = gpu::create_graphics_pipeline(context_, depth_back_faces, layouts_.pipeline);
