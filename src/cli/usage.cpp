@@ -167,7 +167,8 @@ void view_section() {
                           or dropped models are shown), set OBJECT KEY VALUE (a parameter by its
                           scene key), screenshot PATH (.png), export PATH (.svg, .pdf or .csv, as
                           render -o writes them), quit; a bad line, or a setting the scene
-                          refuses, ends the run with exit code 1, naming the file and line
+                          refuses, ends the run with exit code 1, naming the file and line; a
+                          script without quit leaves the window open for a person when it ends
   --frame-log FILE        write one line per presented frame: milliseconds since the start
                           and 1 while background work (new stipples, a model) runs, else 0
 
