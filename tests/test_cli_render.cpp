@@ -88,7 +88,10 @@ TEST(CliRender, InfoPrintsFiguresAsJson) {
         EXPECT_TRUE(info.contains("stipple_candidates"));
         EXPECT_EQ(info["stipples_per_second"].is_null(), info["from_cache"].get<bool>()) << result.out;
         EXPECT_EQ(info["from_cache"].get<bool>(), run == 1) << "the cache folder is the test's own";
+        EXPECT_EQ(info["winding"]["border_edges"], 4) << "a square: open all round";
     }
+    const test::CommandResult text = run_stipple({"info", model, "--cache-dir", (dir / "cache").string()});
+    EXPECT_NE(text.out.find("surface:             open (4 border edges)"), std::string::npos) << text.out;
 }
 
 // An OBJ of `quads` squares of side 2 stacked 1e-4 apart: a large area in a small model, whose planned

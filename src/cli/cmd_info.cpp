@@ -129,7 +129,7 @@ int run_info(const std::vector<std::string>& argv) {
             "\"stipple_density_per_area\": %.9g, \"poisson_radius\": %.9g, "
             "\"load_seconds\": %.6f, \"generation_seconds\": %.6f, \"stipples_per_second\": %s, "
             "\"from_cache\": %s, \"winding\": {\"parts\": %zu, \"triangles_turned\": %zu, \"wound_against\": %zu, "
-            "\"parts_turned_outward\": %zu, \"parts_turned_to_normals\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu}, "
+            "\"parts_turned_outward\": %zu, \"parts_turned_to_normals\": %zu, \"normals_turned\": %zu, \"conflicting_edges\": %zu, \"border_edges\": %zu}, "
             "\"duplicates_dropped\": %zu, \"decoded\": %s, %s}\n",
             json_string(path).c_str(), mesh.triangle_count(), mesh.vertex_count(), stipples.size(), area, bounds.min.x,
             bounds.min.y, bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z, object.bounds.center.x,
@@ -141,7 +141,7 @@ int run_info(const std::vector<std::string>& argv) {
             stipples.from_cache ? "true" : "false",
             mesh.winding.parts, mesh.winding.triangles_turned, mesh.winding.wound_against,
             mesh.winding.parts_turned_outward, mesh.winding.parts_turned_to_normals, mesh.winding.normals_turned, mesh.winding.conflicting_edges,
-            mesh.duplicates_dropped, json_string(mesh.decoded).c_str(),
+            mesh.winding.border_edges, mesh.duplicates_dropped, json_string(mesh.decoded).c_str(),
             animation_json(object).c_str());
     } else {
         std::printf("model:               %s\n", path.c_str());
@@ -153,6 +153,13 @@ int run_info(const std::vector<std::string>& argv) {
                         double(params.generation.dmax), (unsigned long long)params.generation.max_stipples);
         std::printf("surface area:        %.6g\n", area);
         std::printf("winding:             %s\n", describe_winding(mesh.winding).c_str());
+        // Whether the depth pass holds its faces facing away (depth_holds_back_faces): seen through a hole they
+        // hide what lies behind them.
+        if (mesh.winding.border_edges > 0)
+            std::printf("surface:             open (%zu border edges): through its holes the inside hides what lies behind\n",
+                        mesh.winding.border_edges);
+        else
+            std::printf("surface:             closed\n");
         if (mesh.duplicates_dropped > 0)
             std::printf("repeated faces:      %zu dropped (the same corners in the same order as an earlier face, or two "
                         "corners at one place)\n",
