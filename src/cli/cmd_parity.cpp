@@ -3,6 +3,7 @@
 #include <set>
 
 #include "cli/args.hpp"
+#include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/decimal.hpp"
@@ -47,6 +48,7 @@ std::vector<DensityPath> parse_paths(const std::string& text) {
 CommandOptions parity_command_options() {
     CommandOptions accepted{object_flags(), object_options()};
     accepted.options.insert({"--devices", "--paths", "--yaws", "--width", "--height"});
+    accepted.options.merge(cache_options());  // it makes (and keeps) stipples as render does
     return accepted;
 }
 
@@ -55,6 +57,7 @@ int run_parity(const std::vector<std::string>& argv) {
     Args args(argv, accepted.flags, accepted.options);
     if (args.has("--density-path")) fail("parity draws each path of --paths (default splat,vertex); --density-path does not apply");
     args.expect_at_most_positionals(1, "parity takes at most one MODEL");
+    apply_cache_options(args);
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     const std::vector<std::string> names = gpu::Context::list_devices();
     if (names.empty()) fail("parity: this machine has no Vulkan device");

@@ -8,6 +8,7 @@
 
 #include "core/unit_direction.hpp"
 #include "cli/args.hpp"
+#include "cli/cache_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/object_options.hpp"
 #include "core/decimal.hpp"
@@ -187,6 +188,7 @@ CommandOptions tone_command_options() {
     accepted.flags.insert({"--regimes", "--orthographic"});
     accepted.options.insert({"--views", "--distances", "--width", "--height", "--frames", "--arc", "--light", "--device", "--fov",
                              "--images", "--seeds"});
+    accepted.options.merge(cache_options());  // it makes (and keeps) stipples as render does
     return accepted;
 }
 
@@ -194,6 +196,7 @@ int run_tone(const std::vector<std::string>& argv) {
     const CommandOptions accepted = tone_command_options();
     Args args(argv, accepted.flags, accepted.options);
     args.expect_at_most_positionals(1, "tone takes at most one MODEL");
+    apply_cache_options(args);
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
     if (args.flag("--extrinsic") || args.flag("--no-extrinsic"))
         fail("tone draws every table with the extrinsic enhancement on and off; drop --extrinsic/--no-extrinsic");

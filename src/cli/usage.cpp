@@ -237,9 +237,9 @@ void info_section() {
 }
 
 void cache_section() {
-    std::printf(R"(Stipple cache options (render, view, info, cache): generated stipples are kept on disk, so a model
-reopened with the same generation parameters skips generation (~4-5 bytes per stipple, checked
-when read; a damaged entry is reported and regenerated)
+    std::printf(R"(Stipple cache options (render, view, info, tone, parity, cache): generated stipples are kept on
+disk, so a model reopened with the same generation parameters skips generation (~4-5 bytes per
+stipple, checked when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
                           $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
@@ -325,7 +325,7 @@ void environment_section() {
   STIPPLE_SHARED_MODELS   where bench finds the scans (default: the source folder's ../shared/models)
   STIPPLE_CACHE_DIR       bench's derived models go to $STIPPLE_CACHE_DIR/bench-models (default:
                           the build folder's bench-models); the stipple cache is
-                          $STIPPLE_CACHE_DIR/stipples (render, view and info: see --cache-dir)
+                          $STIPPLE_CACHE_DIR/stipples (render, view, info, tone and parity: see --cache-dir)
   STIPPLE_NO_CACHE=1      always generate the stipples (neither read nor write the stipple cache)
   STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory: how a
@@ -380,12 +380,12 @@ constexpr CommandHelp kCommands[] = {
      R"(  stipple tone [MODEL] [options]  does the model keep its tone as it moves away (§2.3)? mean ink
                                   inside its footprint per distance, extrinsic enhancement on and off
 )",
-     {&model_section, &tone_section, &stipple_section, &environment_section}},
+     {&model_section, &tone_section, &stipple_section, &cache_section, &environment_section}},
     {"parity",
      R"(  stipple parity [MODEL] [options]
                                   do two Vulkan devices (lavapipe and a GPU) draw the same stipples?
 )",
-     {&model_section, &parity_section, &stipple_section, &environment_section}},
+     {&model_section, &parity_section, &stipple_section, &cache_section, &environment_section}},
     {"params",
      R"(  stipple params [--markdown]     list the per-object parameters: options, ranges, defaults (with
                                   --markdown the README's table, with each one's scene key)
