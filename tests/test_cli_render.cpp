@@ -743,7 +743,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},
         // Numbers are decimal everywhere: hex was read by some options (--seed 0x10 as 16) and not others.
-        {{"render", "--seed", "0x10"}, "--seed: '0x10' is not a finite number"},
+        {{"render", "--seed", "0x10"}, "--seed: '0x10' is not an integer"},
+        {{"render", "--ink", "1,0"}, "is not three numbers R,G,B"},
         {{"render", "--dmax", "0x0.4p0"}, "--dmax: '0x0.4p0' is not a finite number"},
         {{"render", "--width", " 320"}, "--width: ' 320' is not an integer"},
         {{"render", "--light", "0x1,0,1"}, "is not three numbers X,Y,Z"},

@@ -96,7 +96,8 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
         const std::optional<double> part =
             comma == std::string::npos ? std::nullopt : parse_decimal(std::string_view(text).substr(start, comma - start));
         if (!part || (i == 2 && text.find(',', start) != std::string::npos))
-            fail("option " + name + ": '" + text + "' is not three numbers X,Y,Z");
+            fail("option " + name + ": '" + text + "' is not three numbers " +
+                 (name == "--ink" || name == "--paper" ? "R,G,B" : "X,Y,Z"));
         v[i] = *part;
         start = comma + 1;
     }

@@ -296,7 +296,7 @@ double parse_param_text(const ParamSpec& spec, const std::string& text, bool nam
     }
     if (spec.type == ParamType::Bool) fail(where + " takes no value");
     const std::optional<double> value = parse_decimal(text);
-    if (!value) fail(where + ": '" + text + "' is not a finite number");
+    if (!value) fail(where + ": '" + text + "' is not " + (spec.type == ParamType::Int ? "an integer" : "a finite number"));
     if (spec.type == ParamType::Float && *value == 0.0 && names_nonzero(text))
         fail(where + " = " + text + " is out of range: it must be " + param_range_text(spec) + underflow_hint(spec));
     if (auto problem = param_value_problem(spec, *value)) fail(where + " = " + *problem);
