@@ -640,13 +640,16 @@ TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     // buffer (the validation layer is on: a descriptor set rewritten between them would be an error).
     test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1",
                                          "--warmup", "0", "--width", "320", "--height", "256", "--models-dir",
-                                         "/nonexistent/stipple/models", "--out", out.string(), "--queued", "3"});
+                                         "/nonexistent/stipple's models", "--out", out.string(), "--queued", "3"});
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("not in /nonexistent/stipple/models"), std::string::npos);
+    EXPECT_NE(r.out.find("not in /nonexistent/stipple's models"), std::string::npos);
     EXPECT_NE(r.out.find("procedural UV sphere"), std::string::npos);
     nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
     EXPECT_FALSE(j["scans_found"].get<bool>());
+    // The command as a shell reads it back (a word with a space was recorded as two).
+    EXPECT_NE(j["command"].get<std::string>().find(" --models-dir '/nonexistent/stipple'\\''s models' --out"), std::string::npos)
+        << j["command"];
     EXPECT_EQ(j["queued_frames"], 3);
     EXPECT_EQ(j["validation_messages"], 0);
     EXPECT_NE(read_bytes(out / "results.md").find("with 3 frames queued back to back per submission"), std::string::npos);

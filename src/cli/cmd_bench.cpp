@@ -141,7 +141,16 @@ int run_bench(const std::vector<std::string>& argv) {
     const size_t plot_dots = size_t(bounded(args, "--plot-dots", options.quick ? 15'000 : 150'000, 0, 10'000'000));
     const bool plot_row = plot_dots > 0 && (plot_asked || (!options.animated_only && !args.has("--models")));
     options.command = "stipple bench";
-    for (const std::string& a : argv) options.command += " " + a;
+    // As a shell reads it back: a word with a space or a quote quoted (--models 'low-res dragon').
+    for (const std::string& a : argv) {
+        if (a.find_first_of(" \t'\"$\\`") == std::string::npos) {
+            options.command += " " + a;
+            continue;
+        }
+        std::string quoted = "'";
+        for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        options.command += " " + quoted + "'";
+    }
 
     const auto log = [](const std::string& line) {
         std::printf("%s\n", line.c_str());

@@ -143,7 +143,8 @@ void print_sampling_note(const ToneSurvey& survey, const ToneSurveyOptions& opti
 
 void print_regimes(const ToneSurvey& survey, const ToneSurveyOptions& options, float point_size) {
     std::printf("\nWhere the tone goes (extrinsic on; stipples summed over the frames; owed: area x density x "
-                "every term, allowed: the same from the integer candidates, expected: probability x drawn density):\n");
+                "every term, allowed: the same from the integer candidates, expected: probability x drawn density; counts in "
+                "stipples' ink, an enlarged dot counting as the stipples it stands for):\n");
     for (size_t v = 0; v < options.views.size(); ++v) {
         std::printf("\nview %.1f:%.1f\n", options.views[v][0], options.views[v][1]);
         std::printf("| distance | regime | polygons | owed | allowed | expected | drawn | drawn/owed |\n");
