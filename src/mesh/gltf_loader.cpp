@@ -82,18 +82,7 @@ public:
         // Placed far from the file's origin by its nodes, the model is stored about its own centre (Mesh::origin,
         // as the OBJ and PLY readers do): a unit sphere under a node translated 90,000 units was rounded to 1/128
         // of a unit (its area 12.62 for 12.56, its shading in bands).
-        if (keep_exact_) {
-            // Measured on the vertices its faces use (a vertex left unused at the origin made it look near it).
-            std::vector<uint8_t> used(exact_.size(), 0);
-            for (const uint32_t v : mesh_.indices)
-                if (v < used.size()) used[v] = 1;
-            std::vector<glm::dvec3> drawn;
-            for (size_t v = 0; v < exact_.size(); ++v)
-                if (used[v]) drawn.push_back(exact_[v]);
-            mesh_.origin = far_origin(drawn);
-            if (mesh_.origin != glm::dvec3(0.0))
-                for (size_t v = 0; v < exact_.size(); ++v) mesh_.positions[v] = glm::vec3(exact_[v] - mesh_.origin);
-        }
+        if (keep_exact_) store_about_far_origin(mesh_, exact_);
         return std::move(mesh_);
     }
 

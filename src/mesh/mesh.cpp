@@ -132,6 +132,23 @@ glm::dvec3 far_origin(std::span<const glm::dvec3> positions) {
     return offset > kRecentreOverExtent * extent ? centre : glm::dvec3(0.0);
 }
 
+glm::dvec3 far_origin(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices) {
+    std::vector<uint8_t> used(positions.size(), 0);
+    for (const uint32_t v : indices)
+        if (v < used.size()) used[v] = 1;
+    std::vector<glm::dvec3> drawn;
+    for (size_t v = 0; v < positions.size(); ++v)
+        if (used[v]) drawn.push_back(positions[v]);
+    return far_origin(drawn);
+}
+
+void store_about_far_origin(Mesh& mesh, std::span<const glm::dvec3> exact) {
+    STIPPLE_CHECK(exact.size() == mesh.positions.size(), "one exact position per vertex");
+    mesh.origin = far_origin(exact, mesh.indices);
+    if (mesh.origin != glm::dvec3(0.0))
+        for (size_t v = 0; v < exact.size(); ++v) mesh.positions[v] = glm::vec3(exact[v] - mesh.origin);
+}
+
 Mesh reflected_through_origin(const Mesh& mesh) {
     Mesh reflected = mesh;
     reflected.origin = -mesh.origin;

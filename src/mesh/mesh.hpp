@@ -77,6 +77,12 @@ inline constexpr double kRecentreOverExtent = 100.0;
 // The origin to store `positions` about (kRecentreOverExtent), or 0 where they are near their own; 0 too where a
 // coordinate lies beyond kMaxCoordinate (validate_mesh refuses the model).
 glm::dvec3 far_origin(std::span<const glm::dvec3> positions);
+// far_origin of the vertices `indices` use (a vertex left unused at the file's origin made a far model look
+// near it; indices beyond `positions` are skipped, validate_mesh reports them).
+glm::dvec3 far_origin(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
+// Sets mesh.origin to far_origin(exact, mesh.indices) and, where it is not 0, mesh.positions to `exact` about it:
+// a reader that read the positions in more than single precision (one per mesh vertex) keeps a far model's shape.
+void store_about_far_origin(Mesh& mesh, std::span<const glm::dvec3> exact);
 
 // Throws stipple::Error("<source>: ...") if an index is out of range, a coordinate is NaN/Inf or beyond
 // kMaxCoordinate, the model is less than kMinExtent across or lies beyond kMaxOffsetOverExtent times its size

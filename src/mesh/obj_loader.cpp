@@ -138,14 +138,7 @@ public:
         mesh.source = path_;
         // In double as read, then about the model's own centre where it lies far from the file's origin: the
         // centre of the vertices the faces use (a vertex left unused at the origin made the model look near it).
-        {
-            std::vector<uint8_t> used(positions_.size(), 0);
-            for (const uint32_t v : corner_vertex_) used[v] = 1;
-            std::vector<glm::dvec3> drawn;
-            for (size_t v = 0; v < positions_.size(); ++v)
-                if (used[v]) drawn.push_back(positions_[v]);
-            mesh.origin = far_origin(drawn);
-        }
+        mesh.origin = far_origin(positions_, corner_vertex_);
         mesh.positions.reserve(positions_.size());
         for (const glm::dvec3& p : positions_) mesh.positions.push_back(glm::vec3(p - mesh.origin));
         std::vector<glm::dvec3>().swap(positions_);

@@ -450,14 +450,7 @@ void read_vertices(Reader& r, const Element& e, Target& t, uint64_t& done) {
 // 1/128 of a unit (its area 12.62 for 12.56, its shading in bands).
 void recentre_far_model(Target& t) {
     if (t.exact.empty()) return;
-    std::vector<uint8_t> used(t.exact.size(), 0);
-    for (const uint32_t v : t.mesh.indices) used[v] = 1;
-    std::vector<glm::dvec3> drawn;
-    for (size_t v = 0; v < t.exact.size(); ++v)
-        if (used[v]) drawn.push_back(t.exact[v]);
-    t.mesh.origin = far_origin(drawn);
-    if (t.mesh.origin != glm::dvec3(0.0))
-        for (size_t v = 0; v < t.exact.size(); ++v) t.mesh.positions[v] = glm::vec3(t.exact[v] - t.mesh.origin);
+    store_about_far_origin(t.mesh, t.exact);
     std::vector<glm::dvec3>().swap(t.exact);
 }
 

@@ -112,9 +112,7 @@ public:
         if (mesh_.indices.empty()) fail_file(name_, "the model has no triangles (an ASCII STL without facets)");
         // Far from the file's origin, about the model's own centre (Mesh::origin, as the OBJ and PLY readers
         // keep it): the text holds more than single precision (a unit sphere 90,000 units out lost its shape).
-        mesh_.origin = far_origin(exact_);
-        if (mesh_.origin != glm::dvec3(0.0))
-            for (size_t v = 0; v < exact_.size(); ++v) mesh_.positions[v] = glm::vec3(exact_[v] - mesh_.origin);
+        store_about_far_origin(mesh_, exact_);
         return std::move(mesh_);
     }
 
