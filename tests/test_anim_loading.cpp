@@ -300,6 +300,40 @@ TEST(AnimLoading, DescribesTheQuadsTargetsByName) {
                                                "morph targets of mesh 'sheet': 2 ('lift', 'raise')"}));
 }
 
+// Channels that move no drawn vertex are dropped, so a file whose animations drive only such nodes is
+// still (drawn by every path, one frame for a sequence) instead of "animated" with nothing moving; a
+// channel on an ancestor of a drawn node, or on a joint the vertices follow, moves the drawing.
+TEST(AnimLoading, ChannelsThatMoveNothingDrawnAreDropped) {
+    // The box's channels moved to a node with no mesh beside it.
+    auto box = rigs::node_animated_box();
+    const int empty = box.add("nodes", {{"name", "empty"}});
+    box.doc["scenes"][0]["nodes"].push_back(empty);
+    for (auto& c : box.doc["animations"][0]["channels"]) c["target"]["node"] = empty;
+    const AnimatedModel idle = load_rig(box, "anim_load_idle", "empty_node");
+    EXPECT_FALSE(idle.is_animated());
+    ASSERT_EQ(idle.animations.size(), 1u);
+    EXPECT_EQ(idle.animations[0].channels.size(), 0u);
+    EXPECT_EQ(idle.animations[0].idle_channels, 3u);
+    EXPECT_FLOAT_EQ(idle.animations[0].duration, 2.0f) << "the loop stays the file's";
+    EXPECT_EQ(describe_lines(describe_animation(idle))[0], "animation 0 'Move': 2.000 s, 0 channels, and 3 that move nothing drawn");
+    EXPECT_FALSE(load_model_data(write_rig(box, "anim_load_idle", "empty_node")).motion);
+
+    // The same channels on the box's parent: its transform places the box.
+    for (auto& c : box.doc["animations"][0]["channels"]) c["target"]["node"] = 0;
+    const AnimatedModel parent = load_rig(box, "anim_load_idle", "parent_node");
+    EXPECT_TRUE(parent.is_animated());
+    EXPECT_EQ(parent.animations[0].channels.size(), 3u);
+    EXPECT_EQ(parent.animations[0].idle_channels, 0u);
+
+    // The tube's joints animated while its node uses no skin: its vertices follow its own node.
+    auto tube = rigs::bending_cylinder();
+    EXPECT_TRUE(load_rig(tube, "anim_load_idle", "skinned").is_animated());
+    tube.doc["nodes"][0].erase("skin");
+    const AnimatedModel unskinned = load_rig(tube, "anim_load_idle", "unskinned");
+    EXPECT_FALSE(unskinned.is_animated());
+    EXPECT_EQ(unskinned.animations[0].idle_channels + unskinned.animations[1].idle_channels, 2u);
+}
+
 // glTF allows rotations as normalized integers and morph targets as sparse accessors: both must give
 // the same pose as the plain float files.
 TEST(AnimLoading, NormalizedRotationsAndSparseTargets) {

@@ -116,6 +116,38 @@ bool adopt_rest_pose(const std::string& path, AnimatedModel& model, const FileOr
     return true;
 }
 
+// Drops the channels that move no drawn vertex: a node's transform reaches the drawing only through the
+// palette slots the vertices' influences use (a skin's joints, or the node of a rigid mesh instance) and
+// those nodes' ancestors; weights only through a morph set some vertex reads. A file whose animations
+// drive only such nodes (an empty node, a node outside the scene, the joints of a skin no drawn mesh
+// uses) is then still, as it looks: drawn by every path, one frame for its sequence, its CPU paths
+// allowed, rather than "animated" with nothing moving.
+void drop_channels_that_move_nothing(AnimatedModel& model) {
+    std::vector<char> slot_used(model.palette.size(), 0);
+    std::vector<char> weights_used(model.morph_weight_count, 0);
+    for (size_t v = 0; v < model.influences.size(); ++v) {
+        const Influences& inf = model.influences[v];
+        for (uint32_t i = 0; i < kMaxInfluences; ++i)
+            if (inf.weight[i] != 0.0f && inf.slot[i] < slot_used.size()) slot_used[inf.slot[i]] = 1;
+        const MorphRef& ref = model.morph_refs[v];
+        if (ref.count > 0 && ref.first_weight < weights_used.size()) weights_used[ref.first_weight] = 1;
+    }
+    std::vector<char> moves(model.nodes.size(), 0);  // the node's transform reaches a drawn vertex
+    for (size_t s = 0; s < model.palette.size(); ++s)
+        for (int n = slot_used[s] ? model.palette[s].node : kNoNode; n != kNoNode && !moves[n]; n = model.nodes[n].parent)
+            moves[n] = 1;
+    auto idle = [&](const Channel& c) {
+        if (c.path != ChannelPath::Weights) return !moves[c.node];
+        const int set = model.nodes[c.node].morph_set;
+        return set < 0 || !weights_used[model.morph_sets[set].first_weight];
+    };
+    for (Animation& a : model.animations) {
+        const size_t before = a.channels.size();
+        std::erase_if(a.channels, idle);
+        a.idle_channels += before - a.channels.size();
+    }
+}
+
 // The animated model over the static loader's mesh (file order) of the same document: the streams read
 // here are matched to its vertices.
 AnimatedModel build_animated_model(const std::string& path, const Mesh& file_order, const tinygltf::Model& gltf,
@@ -180,6 +212,7 @@ AnimatedModel build_animated_model(const std::string& path, const Mesh& file_ord
         model.morph_refs[i] = ref;
     }
     adopt_rest_pose(path, model, streams, order.origin, tolerance);
+    drop_channels_that_move_nothing(model);
     return model;
 }
 

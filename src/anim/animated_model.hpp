@@ -85,6 +85,10 @@ struct Animation {
     std::vector<Sampler> samplers;
     std::vector<Channel> channels;
     float duration = 0.0f;  // the last keyframe time of any sampler; the animation runs from 0
+    // Channels of the file that move nothing drawn (no node, a property of an extension, a node that
+    // neither places a drawn vertex nor is an ancestor of one that does, weights of a mesh not drawn):
+    // not in `channels`. The duration still counts those that were read, so the loop is the file's.
+    size_t idle_channels = 0;
 };
 
 // Up to kMaxInfluences (palette slot, weight) pairs; weights sum to 1; unused pairs are (0, 0).
@@ -134,7 +138,7 @@ struct AnimatedModel {
     std::vector<Animation> animations;
 
     size_t vertex_count() const { return rest.vertex_count(); }
-    // Whether anything can move it: an animation with at least one channel.
+    // Whether anything can move it: an animation with at least one channel (one that moves a drawn vertex).
     bool is_animated() const;
 };
 

@@ -12,6 +12,7 @@ struct AnimationSummary {
     std::string name;
     double duration = 0.0;  // seconds
     size_t channels = 0;
+    size_t idle_channels = 0;  // Animation::idle_channels
     size_t samplers = 0;
     std::string interpolations;  // the kinds its channels use, e.g. "LINEAR, STEP"
 };

@@ -54,7 +54,10 @@ private:
             ChannelPath path;
             // Channels without a node or with a path of an extension (KHR_animation_pointer) drive
             // nothing this program draws.
-            if (channel.target_node < 0 || !parse_path(channel.target_path, path)) continue;
+            if (channel.target_node < 0 || !parse_path(channel.target_path, path)) {
+                ++animation.idle_channels;
+                continue;
+            }
             if (static_cast<size_t>(channel.target_node) >= model_.nodes.size())
                 fail_file(path_, channel_field + ".target.node: node " + std::to_string(channel.target_node) + " does not exist");
             if (channel.sampler < 0 || static_cast<size_t>(channel.sampler) >= in.samplers.size())
@@ -68,7 +71,10 @@ private:
                 if (node.morph_set < 0) {
                     // A node outside the drawn scene has no morph set even when its mesh has targets:
                     // its weights move nothing drawn.
-                    if (has_morph_targets(channel.target_node)) continue;
+                    if (has_morph_targets(channel.target_node)) {
+                        ++animation.idle_channels;
+                        continue;
+                    }
                     fail_file(path_, channel_field + ": node " + std::to_string(channel.target_node) +
                                          " has no morph targets to weight");
                 }

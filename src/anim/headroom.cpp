@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "anim/stretch.hpp"
+#include "core/error.hpp"
 
 namespace stipple::anim {
 
@@ -29,7 +30,7 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
             return glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(kMaxCoordinate)));  // false for NaN too
         };
         if (headroom.out_of_range.empty() && !(in_range(report.bounds.min) && in_range(report.bounds.max)))
-            headroom.out_of_range = "animation " + std::to_string(a) + " '" + model.animations[a].name + "'";
+            headroom.out_of_range = "animation " + std::to_string(a) + " " + quoted_excerpt(model.animations[a].name, 120);
         headroom.bounds.min = glm::min(headroom.bounds.min, report.bounds.min);
         headroom.bounds.max = glm::max(headroom.bounds.max, report.bounds.max);
     }
@@ -51,7 +52,8 @@ StretchHeadroom measure_headroom(const AnimatedModel& model, float cap) {
 }
 
 std::string describe_headroom(const StretchHeadroom& h, size_t triangles) {
-    const std::string where = h.max_animation.empty() ? std::string() : " (" + h.max_animation + ")";
+    // The name as one printable line of bounded length: it goes into a fixed-size line below.
+    const std::string where = h.max_animation.empty() ? std::string() : " (" + quoted_excerpt(h.max_animation, 120) + ")";
     char line[320];
     std::snprintf(line, sizeof line,
                   "polygons reach up to %.2fx their rest area%s; candidates generated for up to %.3gx: %zu of %zu "

@@ -7,6 +7,7 @@
 
 #include "anim/pose.hpp"
 #include "app/param_widgets.hpp"
+#include "core/error.hpp"
 #include "scene/scene_content.hpp"
 
 namespace stipple::app {
@@ -31,7 +32,9 @@ bool any_loop(const Scene& scene, const std::vector<ObjectData>& objects) {
 // "1 'Walk'": how the chooser lists an animation.
 std::string animation_label(const anim::AnimatedModel& model, size_t index) {
     const std::string& name = model.animations[index].name;
-    return std::to_string(index) + (name.empty() ? std::string() : " '" + name + "'");
+    std::string label = std::to_string(index);
+    if (!name.empty()) label += ' ', label += quoted_excerpt(name, 120);
+    return label;
 }
 
 }  // namespace

@@ -72,7 +72,8 @@ std::string animation_json(const ObjectData& object) {
     for (size_t i = 0; i < d.animations.size(); ++i)
         out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.animations[i].name) +
                ", \"duration\": " + std::to_string(d.animations[i].duration) +
-               ", \"channels\": " + std::to_string(d.animations[i].channels) + "}";
+               ", \"channels\": " + std::to_string(d.animations[i].channels) +
+               ", \"idle_channels\": " + std::to_string(d.animations[i].idle_channels) + "}";
     out += "], \"skins\": [";
     for (size_t i = 0; i < d.skins.size(); ++i)
         out += (i ? ", " : "") + std::string("{\"name\": ") + json_string(d.skins[i].name) +

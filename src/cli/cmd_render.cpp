@@ -414,7 +414,7 @@ int run_render(const std::vector<std::string>& argv) {
             const size_t chosen = size_t(resolve_animation(o, scene.objects[i].animation));
             const anim::Animation& a = o.motion.model->animations[chosen];
             // The time into the animation the frame shows (looped or held), not the scene clock's.
-            const std::string named = a.name.empty() ? "animation " + std::to_string(chosen) : "'" + a.name + "'";  // as info names it
+            const std::string named = a.name.empty() ? "animation " + std::to_string(chosen) : quoted_excerpt(a.name, 120);  // as info names it
             std::printf("animation:          object %zu: %s (%.3f s) at %.3f s%s\n", i, named.c_str(), a.duration,
                         anim::animation_time(a, scene.objects[i].animation.time_at(clock.frame_time(cameras.size() - 1)),
                                              scene.objects[i].animation.loop),
