@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <new>
 
@@ -45,6 +46,12 @@ ObjectData read_model(const std::string& path) {
             object.bounds = box_sphere(object.motion.headroom->bounds);
             object.box = object.motion.headroom->bounds;
         } else {
+            // What glTF would show (the rest pose) cannot be drawn and nothing moves it: say so where it is drawn,
+            // not only in info.
+            if (model->rest_pose_declined)
+                std::fprintf(stderr, "%s: warning: its rest pose (skins and default morph weights applied) collapses faces "
+                                     "or leaves the coordinates drawing allows, and no animation moves it: drawn as stored\n",
+                             excerpt(path, 400).c_str());
             object.still = anim::describe_animation(*model);
             object.mesh = std::make_shared<const Mesh>(std::move(model->rest));
         }
