@@ -378,6 +378,21 @@ TEST(CliAnimation, InfoListsAnimationsSkinsAndHeadroom) {
     EXPECT_NE(collapsed.err.find(": warning: its rest pose (skins and default morph weights applied) collapses faces"),
               std::string::npos) << collapsed.err;
 
+    // Skin weights that sum to 2 (glTF requires 1) are scaled to 1, and the file is warned about, once.
+    anim::GltfBuilder heavy = anim::rigs::bending_cylinder();
+    const auto& attributes = heavy.doc["meshes"][0]["primitives"][0]["attributes"];
+    const size_t vertices = heavy.doc["accessors"][attributes["POSITION"].get<int>()]["count"].get<size_t>();
+    std::vector<float> doubled;
+    for (size_t v = 0; v < vertices; ++v) doubled.insert(doubled.end(), {2.0f, 0.0f, 0.0f, 0.0f});
+    heavy.doc["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_0"] = heavy.add_floats(doubled, "VEC4");
+    auto h = run_stipple({"info", test::write_rig(heavy, "cli_anim_info_heavy", "heavy")});
+    ASSERT_EQ(h.exit_code, 0) << h.err;
+    EXPECT_NE(h.err.find("meshes[0].primitives[0].attributes.WEIGHTS_0: " + std::to_string(vertices) + " of " +
+                         std::to_string(vertices) + " vertices' weights sum to other than 1 (2 to 2)"),
+              std::string::npos) << h.err;
+    auto plain = run_stipple({"info", test::write_rig(anim::rigs::bending_cylinder(), "cli_anim_info_heavy", "plain")});
+    EXPECT_EQ(plain.err.find("warning"), std::string::npos) << plain.err;
+
     // A channel of KHR_animation_pointer in a file that uses it without requiring it is skipped (it was refused
     // for its path); the file's other animation still moves it.
     anim::GltfBuilder pointer = anim::rigs::bending_cylinder();

@@ -28,7 +28,9 @@ const std::vector<int> kJointTypes = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TIN
 
 std::string indexed(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
 
-constexpr uint32_t kNoSlot = UINT32_MAX;  // add_primitive: no palette slot chosen by the caller
+constexpr uint32_t kNoSlot = UINT32_MAX;
+// How far a vertex's skin weights may sum from 1 before the file is warned about (rounding stays below it).
+constexpr double kWeightSumWarning = 0.05;  // add_primitive: no palette slot chosen by the caller
 
 class SceneReader {
 public:
@@ -372,13 +374,22 @@ private:
                 }
             }
         }
+        size_t off = 0;  // vertices whose weights sum to well other than 1 (glTF requires 1)
+        double lowest = HUGE_VAL, highest = -HUGE_VAL;
         for (size_t v = 0; v < count; ++v) {
             if (!(sums[v] > 0.0))
                 fail_file(path_, field + ".attributes.WEIGHTS_0: vertex " + std::to_string(v) + "'s weights sum to zero");
             // Exporters round weights; the blend must stay affine, so they are made to sum to 1.
             Influences& inf = streams_.influences[first + v];
             for (uint32_t i = 0; i < used[v]; ++i) inf.weight[i] = static_cast<float>(inf.weight[i] / sums[v]);
+            if (std::abs(sums[v] - 1.0) > kWeightSumWarning) ++off, lowest = std::min(lowest, sums[v]), highest = std::max(highest, sums[v]);
         }
+        // Beyond rounding (8-bit weights are off by up to 8/255 at 8 influences), the file is wrong: said once a
+        // primitive, since what is drawn (the weights scaled) may not be what its author meant.
+        if (off > 0)
+            std::fprintf(stderr, "%s: warning: %s.attributes.WEIGHTS_0: %zu of %zu vertices' weights sum to other than 1 "
+                                 "(%.3g to %.3g); each vertex's are scaled to sum to 1\n",
+                         path_.c_str(), field.c_str(), off, count, lowest, highest);
     }
 
     void add_morph_deltas(const tinygltf::Primitive& prim, const std::string& field, size_t count, MorphRef morph) {
