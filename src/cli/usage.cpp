@@ -198,7 +198,8 @@ void scene_section() {
   {"objects": [{"model": "blobby.glb",
                 "transform": {"translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s or [x,y,z]}
                              (or {"matrix": [16 numbers, column-major]}; a negative axis scale,
-                             [-1, 1, 1], or a matrix of negative determinant draws the mirror image),
+                             [-1, 1, 1], or a matrix of negative determinant draws the mirror image;
+                             an animated model cannot be mirrored: mirror it in its file),
 )");
     // The parameters come from the one table (src/params/param_table.cpp): never retyped here.
     std::istringstream example(param_scene_example());
