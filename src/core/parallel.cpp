@@ -2,6 +2,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <system_error>
 
 namespace stipple::detail {
 
@@ -19,12 +20,19 @@ public:
         if (running_pool_job || threads < 2) return false;
         std::unique_lock<std::mutex> taken(taken_, std::try_to_lock);
         if (!taken.owns_lock()) return false;
-        const unsigned helpers = threads - 1;
+        unsigned helpers = threads - 1;
         {
             std::lock_guard<std::mutex> lock(mutex_);
             while (workers_.size() < helpers) {
                 const unsigned index = static_cast<unsigned>(workers_.size());
-                workers_.emplace_back([this, index] { work(index); });
+                try {
+                    workers_.emplace_back([this, index] { work(index); });
+                } catch (const std::system_error&) {
+                    // No thread to be had (a limit on processes, or memory): the job runs on those there are,
+                    // the caller's alone at worst. Its chunks are taken as they come, so the result is the same.
+                    helpers = static_cast<unsigned>(workers_.size());
+                    break;
+                }
             }
             job_ = job;
             helpers_ = helpers;

@@ -12,6 +12,7 @@
 #include <exception>
 #include <mutex>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -103,7 +104,11 @@ void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
     }
     std::vector<std::thread> own_threads;  // the pool is taken: threads of this call's own
     own_threads.reserve(threads - 1);
-    for (unsigned i = 1; i < threads; ++i) own_threads.emplace_back(worker);
+    try {
+        for (unsigned i = 1; i < threads; ++i) own_threads.emplace_back(worker);
+    } catch (const std::system_error&) {
+        // No more threads to be had (a limit on processes, or memory): those started and this one take every chunk.
+    }
     worker();  // the calling thread works too
     for (std::thread& t : own_threads) t.join();
     if (error) std::rethrow_exception(error);
