@@ -4,6 +4,7 @@
 // mid-entry leaves nothing that loads.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -90,7 +91,7 @@ TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
         std::optional<std::string> value;
     };
     std::vector<Saved> saved;
-    for (const char* name : {"STIPPLE_CACHE_DIR", "XDG_CACHE_HOME", "HOME"}) {
+    for (const char* name : {"STIPPLE_CACHE_DIR", "XDG_CACHE_HOME", "HOME", "TMPDIR"}) {
         const char* v = std::getenv(name);
         saved.push_back({name, v ? std::optional<std::string>(v) : std::nullopt});
     }
@@ -105,6 +106,18 @@ TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
     EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/var/cache/me/stipple/stipples"));
     set("STIPPLE_CACHE_DIR", "/data/stipple");
     EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/data/stipple/stipples"));
+    // Without a home (or with a relative one), the temporary folder's, per user; /tmp where TMPDIR names
+    // nothing (temp_directory_path threw, and every command failed, even one given --cache-dir).
+    const std::string per_user = "stipple-cache-" + std::to_string(getuid());
+    set("STIPPLE_CACHE_DIR", "");
+    set("XDG_CACHE_HOME", "");
+    set("HOME", "relative/home");
+    set("TMPDIR", "/nonexistent/tmp");
+    EXPECT_EQ(default_stipple_cache_dir(), std::filesystem::path("/tmp") / per_user / "stipples");
+    ::unsetenv("HOME");
+    const std::filesystem::path tmp = test::temp_dir("cache_default_tmpdir");
+    set("TMPDIR", tmp.c_str());
+    EXPECT_EQ(default_stipple_cache_dir(), tmp / per_user / "stipples");
     for (const Saved& s : saved) {
         if (s.value) ::setenv(s.name, s.value->c_str(), 1);
         else ::unsetenv(s.name);

@@ -85,8 +85,16 @@ std::filesystem::path default_stipple_cache_dir() {
     if (const char* dir = std::getenv("STIPPLE_CACHE_DIR"); dir && *dir) return std::filesystem::path(dir) / "stipples";
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && std::filesystem::path(xdg).is_absolute())
         return std::filesystem::path(xdg) / "stipple" / "stipples";
-    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "stipple" / "stipples";
-    return std::filesystem::temp_directory_path() / "stipple-cache" / "stipples";
+    // A relative HOME is no home (it put the cache wherever the current directory was).
+    if (const char* home = std::getenv("HOME"); home && std::filesystem::path(home).is_absolute())
+        return std::filesystem::path(home) / ".cache" / "stipple" / "stipples";
+    // The temporary folder, per user (one shared name let the first user own it and others plant entries there),
+    // and /tmp where TMPDIR names nothing usable (temp_directory_path threw, failing even runs that asked for
+    // another cache folder or none).
+    std::error_code error;
+    std::filesystem::path tmp = std::filesystem::temp_directory_path(error);
+    if (error || tmp.empty()) tmp = "/tmp";
+    return tmp / ("stipple-cache-" + std::to_string(getuid())) / "stipples";
 }
 
 StippleCacheSettings& stipple_cache_settings() {
