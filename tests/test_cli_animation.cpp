@@ -93,6 +93,26 @@ TEST(CliAnimation, AMissingShaderIsOneLineAndLeavesNothingBehind) {
         EXPECT_NE(r.err.find(std::string(broken) + (bytes > 0 ? ": a truncated or corrupt SPIR-V module" : ": not a SPIR-V module")),
                   std::string::npos) << r.err;
     }
+    // A module of another stage in its place (lavapipe crashed on a fragment shader bound as compute), and a
+    // folder in its place (an internal error from deep in the stream): refused, naming the file.
+    {
+        const test::CommandResult r = render_with([&](const fs::path& dir) {
+            fs::copy_file(dir / "toon.frag.spv", dir / "deform.comp.spv", fs::copy_options::overwrite_existing);
+        });
+        EXPECT_EQ(r.exit_code, 1);
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find("deform.comp.spv: a shader of another stage than its name says (SPIR-V execution model 4, "
+                             "expected 5)"),
+                  std::string::npos) << r.err;
+    }
+    {
+        const test::CommandResult r = render_with([&](const fs::path& dir) {
+            fs::remove(dir / "depth.vert.spv");
+            fs::create_directory(dir / "depth.vert.spv");
+        });
+        EXPECT_EQ(r.exit_code, 1);
+        EXPECT_NE(r.err.find("depth.vert.spv: not a file"), std::string::npos) << r.err;
+    }
 }
 
 size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }

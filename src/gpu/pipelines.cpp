@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -22,7 +23,10 @@ struct ShaderModules {
     ~ShaderModules() {
         for (VkShaderModule m : modules) vkDestroyShaderModule(context.device, m, nullptr);
     }
-    VkShaderModule add(const std::string& name) { return modules.emplace_back(load_shader(context, name)); }
+    VkShaderModule add(const std::string& name) {
+        modules.reserve(modules.size() + 1);  // so that keeping the module cannot throw and lose it
+        return modules.emplace_back(load_shader(context, name));
+    }
 };
 
 struct SpecializationData {
@@ -55,8 +59,16 @@ std::string shader_path(const std::string& name) {
     return dir + "/" + name + ".spv";
 }
 
+// The SPIR-V execution model of a shader named "<name>.<stage>": Vertex 0, Fragment 4, GLCompute 5 (-1: unknown).
+static int execution_model_of(const std::string& name) {
+    if (name.ends_with(".vert")) return 0;
+    if (name.ends_with(".frag")) return 4;
+    if (name.ends_with(".comp")) return 5;
+    return -1;
+}
+
 // Refuses, naming the file, a module the driver should never see.
-static void check_spirv_module(const std::string& path, const std::vector<char>& bytes) {
+static void check_spirv_module(const std::string& path, const std::vector<char>& bytes, int execution_model) {
     // Its instructions must tile the file: a truncated or overwritten module reached the driver (and the
     // validation layer) before, which answered "out of memory" or VkResult(unknown).
     std::vector<uint32_t> words(bytes.size() / 4);
@@ -77,7 +89,13 @@ static void check_spirv_module(const std::string& path, const std::vector<char>&
             break;
         }
         if (opcode == kOpFunction && count > 2) functions.push_back(words[at + 2]);
-        if (opcode == kOpEntryPoint && count > 2) needed.push_back(words[at + 2]);
+        if (opcode == kOpEntryPoint && count > 2) {
+            needed.push_back(words[at + 2]);
+            // A module of another stage put in its place (a developer's STIPPLE_SHADER_DIR) crashed lavapipe.
+            if (execution_model >= 0 && words[at + 1] != uint32_t(execution_model))
+                fail_file(path, "a shader of another stage than its name says (SPIR-V execution model " +
+                                    std::to_string(words[at + 1]) + ", expected " + std::to_string(execution_model) + ")");
+        }
         if (opcode == kOpFunctionCall && count > 3) needed.push_back(words[at + 3]);
         last_opcode = opcode;
         at += count;
@@ -91,11 +109,15 @@ static void check_spirv_module(const std::string& path, const std::vector<char>&
 
 VkShaderModule load_shader(const Context& context, const std::string& name) {
     std::string path = shader_path(name);
+    // A folder or a pipe in its place threw from deep in the stream or waited forever for a writer.
+    std::error_code error;
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        fail_file(path, "not a file (a SPIR-V module was expected here)");
     std::ifstream file(path, std::ios::binary);
     if (!file) fail_file(path, "shader not found (was the project built? set STIPPLE_SHADER_DIR to move it)");
     std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
-    check_spirv_module(path, bytes);
+    check_spirv_module(path, bytes, execution_model_of(name));
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes.size();
     info.pCode = reinterpret_cast<const uint32_t*>(bytes.data());
