@@ -1,5 +1,6 @@
 // stipple: interactive illustrative stipple drawing of polygonal models (Lu et al., VMV 2002).
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -10,6 +11,9 @@
 #include "core/parallel.hpp"
 
 int main(int argc, char** argv) {
+    // A write beyond the file-size limit (ulimit -f) fails with EFBIG, which every writer reports in one line,
+    // instead of killing the process with no word and a partial file left behind.
+    std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     const auto asks_help = [](const std::string& a) { return a == "--help" || a == "-h" || a == "help"; };
     const auto unknown_command = [](const std::string& command) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "export/plot_plan.hpp"
 #include "io/png_io.hpp"
 #include "support/export_helpers.hpp"
+#include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
 namespace {
@@ -150,7 +152,31 @@ TEST(ExportPdf, EachObjectsLayersTakeItsInk) {
 
 TEST(ExportPdf, UnwritablePathIsOneLineError) {
     const PlotPlan plan = make_plot_plan(grid_drawing(2, 2), {});
-    stipple::test::expect_plot_error([&] { write_pdf(plan, "/nonexistent-dir/x.pdf"); }, "/nonexistent-dir/x.pdf: cannot write PDF");
+    // Under a file, where no folder can be made (a missing folder is made: root could make /nonexistent-dir).
+    const auto dir = stipple::test::temp_dir("export_pdf_unwritable");
+    const std::string file = (dir / "file").string();
+    std::ofstream(file) << "a file";
+    stipple::test::expect_plot_error([&] { write_pdf(plan, file + "/x.pdf"); }, file + "/x.pdf: cannot write PDF");
+}
+
+// A write that fails part way (a full disk; here the file-size limit) leaves the file that was there, and no
+// part of the new one: it had left a truncated PDF in place of the good one.
+TEST(ExportPdf, AFailedWriteLeavesTheFileThatWasThere) {
+    const auto dir = stipple::test::temp_dir("export_pdf_failed_write");
+    const std::string path = (dir / "x.pdf").string();
+    write_pdf(make_plot_plan(grid_drawing(2, 2), {}), path);
+    const auto read_text = [](const std::string& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string good = read_text(path);
+    const PlotPlan large = make_plot_plan(grid_drawing(200, 200), {});
+    {
+        stipple::test::ScopedFileSizeLimit limit(good.size() + 100);
+        stipple::test::expect_plot_error([&] { write_pdf(large, path); }, path + ": cannot write PDF");
+    }
+    EXPECT_EQ(read_text(path), good);
+    EXPECT_EQ(stipple::test::folder_entries(dir.string()), std::vector<std::string>{"x.pdf"});
 }
 
 }  // namespace

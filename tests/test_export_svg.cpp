@@ -9,6 +9,7 @@
 #include <cstring>
 #include <cctype>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -19,6 +20,7 @@
 #include "export/text_format.hpp"
 #include "io/png_io.hpp"
 #include "support/export_helpers.hpp"
+#include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 
 namespace {
@@ -216,7 +218,29 @@ TEST(ExportSvg, TextThatIsNotUtf8IsMadeValid) {
 
 TEST(ExportSvg, UnwritablePathIsOneLineError) {
     const PlotPlan plan = make_plot_plan(grid_drawing(2, 2), {});
-    stipple::test::expect_plot_error([&] { write_svg(plan, "/nonexistent-dir/x.svg"); }, "/nonexistent-dir/x.svg: cannot write");
+    // Under a file, where no folder can be made (a missing folder is made: root could make /nonexistent-dir).
+    const auto dir = stipple::test::temp_dir("export_svg_unwritable");
+    const std::string file = (dir / "file").string();
+    std::ofstream(file) << "a file";
+    stipple::test::expect_plot_error([&] { write_svg(plan, file + "/x.svg"); }, file + "/x.svg: cannot write");
+}
+
+// A write that fails part way (a full disk; here the file-size limit) leaves the file that was there, and no
+// part of the new one: it had left a truncated SVG in place of the good one.
+TEST(ExportSvg, AFailedWriteLeavesTheFileThatWasThere) {
+    const auto dir = stipple::test::temp_dir("export_svg_failed_write");
+    const std::string path = (dir / "x.svg").string();
+    write_svg(make_plot_plan(grid_drawing(2, 2), {}), path);
+    std::ifstream in(path);
+    const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const PlotPlan large = make_plot_plan(grid_drawing(100, 100), {});
+    {
+        stipple::test::ScopedFileSizeLimit limit(good.size() + 100);
+        stipple::test::expect_plot_error([&] { write_svg(large, path); }, path + ": cannot write: File too large");
+    }
+    std::ifstream again(path);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()), good);
+    EXPECT_EQ(stipple::test::folder_entries(dir.string()), std::vector<std::string>{"x.svg"});
 }
 
 }  // namespace

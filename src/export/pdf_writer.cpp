@@ -13,6 +13,7 @@
 #include <cairo.h>
 
 #include "core/error.hpp"
+#include "io/output_file.hpp"
 
 namespace stipple::plot {
 
@@ -22,7 +23,10 @@ using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy
 using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
 
 void check(cairo_status_t status, const std::string& path) {
-    if (status != CAIRO_STATUS_SUCCESS) fail_file(path, std::string("cannot write PDF: ") + cairo_status_to_string(status));
+    // cairo names no cause for a failed write: the likely ones are said.
+    if (status != CAIRO_STATUS_SUCCESS)
+        fail_file(path, std::string("cannot write PDF: ") + cairo_status_to_string(status) +
+                            (status == CAIRO_STATUS_WRITE_ERROR ? " (a full disk, or the file-size limit?)" : ""));
 }
 
 void set_colour(cairo_t* cr, glm::vec3 colour) { cairo_set_source_rgb(cr, colour.r, colour.g, colour.b); }
@@ -88,11 +92,10 @@ std::optional<std::string> source_date() {
     return std::string(date);
 }
 
-}  // namespace
-
-void write_pdf(const PlotPlan& plan, const std::string& path) {
+// The PDF at `file`, named `path` in messages.
+void write_pdf_at(const PlotPlan& plan, const std::string& file, const std::string& path) {
     const double width_pt = plan.layout.page.width_mm * kPointsPerMm, height_pt = plan.layout.page.height_mm * kPointsPerMm;
-    Surface surface(cairo_pdf_surface_create(path.c_str(), width_pt, height_pt), &cairo_surface_destroy);
+    Surface surface(cairo_pdf_surface_create(file.c_str(), width_pt, height_pt), &cairo_surface_destroy);
     check(cairo_surface_status(surface.get()), path);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, "stipple drawing");
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "stipple");
@@ -121,6 +124,12 @@ void write_pdf(const PlotPlan& plan, const std::string& path) {
     check(cairo_status(cr), path);
     cairo_surface_finish(surface.get());
     check(cairo_surface_status(surface.get()), path);
+}
+
+}  // namespace
+
+void write_pdf(const PlotPlan& plan, const std::string& path) {
+    write_output(path, "cannot write PDF", [&](const std::string& file) { write_pdf_at(plan, file, path); });
 }
 
 }  // namespace stipple::plot

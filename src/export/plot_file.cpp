@@ -43,19 +43,8 @@ void check_page_for_format(const std::string& path, double width_mm, double heig
 void write_plot_file(const PlotPlan& plan, const std::string& path) {
     const std::string ext = extension_of(path);
     check_page_for_format(path, plan.layout.page.width_mm, plan.layout.page.height_mm);
-    // Into a folder made if missing, as PNG images are.
-    const std::filesystem::path fs_path(path);
-    if (fs_path.has_parent_path()) {
-        std::error_code ec;
-        std::filesystem::create_directories(fs_path.parent_path(), ec);
-        if (ec) fail_file(path, "cannot create its folder: " + ec.message());
-    }
-    if (ext == ".pdf") {
-        // cairo says only "error while writing to output stream": the file is tried first for the cause.
-        std::FILE* probe = std::fopen(path.c_str(), "wb");
-        if (!probe) fail_file(path, std::string("cannot write PDF: ") + std::strerror(errno));
-        std::fclose(probe);
-    }
+    // Each writer writes through write_output (io/output_file.hpp): into a folder made if missing, as PNG
+    // images are, whole or not at all, and the file tried first for the cause of a failure.
     if (ext == ".svg") write_svg(plan, path);
     else if (ext == ".pdf") write_pdf(plan, path);
     else if (ext == ".csv") write_csv(plan, path);

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "io/output_file.hpp"
 #include "core/utf8.hpp"
 
 namespace stipple::plot {
@@ -68,16 +69,6 @@ std::string xml_escape(std::string_view raw) {
     return out;
 }
 
-void write_text_file(const std::string& path, std::string_view contents) {
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) fail_file(path, std::string("cannot write: ") + std::strerror(errno));
-    const size_t written = std::fwrite(contents.data(), 1, contents.size(), file);
-    if (written != contents.size()) {
-        const int error = errno;
-        std::fclose(file);
-        fail_file(path, std::string("cannot write: ") + std::strerror(error));
-    }
-    if (std::fclose(file) != 0) fail_file(path, std::string("cannot write: ") + std::strerror(errno));
-}
+void write_text_file(const std::string& path, std::string_view contents) { write_output(path, "cannot write", contents); }
 
 }  // namespace stipple::plot

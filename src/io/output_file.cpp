@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -59,6 +60,62 @@ void check_output_writable(const std::string& option, const std::string& path) {
     if (fd < 0) fail(named + ": cannot write there: " + std::string(std::strerror(errno)));
     close(fd);
     unlink(name.data());
+}
+
+namespace {
+
+// Writes `bytes` to `file`, naming `path` in the message on failure.
+void write_bytes(const std::string& file, const std::string& path, const std::string& what, std::string_view bytes) {
+    errno = 0;
+    std::FILE* out = std::fopen(file.c_str(), "wb");
+    if (!out) fail_file(path, what + ": " + std::strerror(errno));
+    const size_t written = std::fwrite(bytes.data(), 1, bytes.size(), out);
+    const int write_error = written == bytes.size() ? 0 : (errno ? errno : EIO);
+    const int close_error = std::fclose(out) == 0 ? 0 : (errno ? errno : EIO);
+    if (write_error || close_error) fail_file(path, what + ": " + std::strerror(write_error ? write_error : close_error));
+}
+
+}  // namespace
+
+void write_output(const std::string& path, const std::string& what, const std::function<void(const std::string& file)>& write) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    if (target.has_parent_path()) {
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) fail_file(path, what + ": cannot create its folder: " + ec.message());
+    }
+    const std::string temporary = path + ".part-" + std::to_string(getpid());
+    // The new file can be made beside the target (tried, as the writer may be a library that names no cause).
+    const int probe = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (probe < 0) {
+        // In place, as before: the folder takes no new file, but the target may be writable. Tried first without
+        // truncating it, for the cause (a library writer may name none).
+        const int in_place = open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+        if (in_place < 0) fail_file(path, what + ": " + std::strerror(errno));
+        close(in_place);
+        write(path);
+        return;
+    }
+    close(probe);
+    try {
+        write(temporary);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw;
+    }
+    std::error_code ec;
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        fail_file(path, what + ": cannot move the new file into place: " + ec.message());
+    }
+}
+
+void write_output(const std::string& path, const std::string& what, std::string_view bytes) {
+    write_output(path, what, [&](const std::string& file) { write_bytes(file, path, what, bytes); });
 }
 
 }  // namespace stipple

@@ -1,7 +1,9 @@
 #pragma once
 // Whether a file can be written at a path, asked before the work that makes it: a render of a large model
 // takes minutes to generate and draw, and an output that cannot be written was named only then.
+#include <functional>
 #include <string>
+#include <string_view>
 
 namespace stipple {
 
@@ -11,5 +13,15 @@ namespace stipple {
 // make the missing ones): the nearest existing one is tried. Never opens the output itself: an existing file, pipe or link is left as it is, and a
 // new file's folder is tried with a temporary file of another name.
 void check_output_writable(const std::string& option, const std::string& path);
+
+// Writes an output file (an image, a drawing) whole or not at all: `write(file)` writes it at `file`, a new
+// file beside `path`, which is then renamed over `path`. A write that fails (a full disk, the file-size
+// limit, an error in the writer) removes that file and leaves whatever was at `path` before: it had left a
+// truncated file in place of the good one. Messages name `path`, prefixed by `what` ("cannot write PNG").
+// Where no new file can be made beside it (a writable file in a folder that is not) it is written in place.
+// Makes the missing folders.
+void write_output(const std::string& path, const std::string& what, const std::function<void(const std::string& file)>& write);
+// The same for bytes in memory.
+void write_output(const std::string& path, const std::string& what, std::string_view bytes);
 
 }  // namespace stipple

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "io/output_file.hpp"
 
 // Debian's libstb-dev is header-only for our purposes (there is a libstb.so, but the stb::stb
 // target only adds the include folder), so the implementation lives here. The functions are made
@@ -105,18 +106,8 @@ void write_png(const std::string& path, const Image& image, double dpi) {
         fail_file(path, "cannot write PNG: encoding failed");
     if (dpi > 0.0 && encoded.size() > 33) insert_resolution(encoded, dpi);
 
-    const std::filesystem::path fs_path(path);
-    if (fs_path.has_parent_path()) {
-        std::error_code ec;
-        std::filesystem::create_directories(fs_path.parent_path(), ec);
-        if (ec) fail_file(path, "cannot write PNG: cannot create folder: " + ec.message());
-    }
-    errno = 0;
-    std::ofstream out(fs_path, std::ios::binary | std::ios::trunc);
-    if (!out) fail_file(path, "cannot write PNG: " + errno_text());
-    out.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
-    out.close();
-    if (!out) fail_file(path, "cannot write PNG: " + errno_text());
+    write_output(path, "cannot write PNG",
+                 std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 Image read_png(const std::string& path) {

@@ -2,8 +2,10 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "support/test_paths.hpp"
 
@@ -36,6 +38,13 @@ CommandResult run_stipple(const std::vector<std::string>& args, const std::strin
     std::filesystem::remove(out);
     std::filesystem::remove(err);
     return result;
+}
+
+std::vector<std::string> folder_entries(const std::string& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 }  // namespace stipple::test

@@ -1,5 +1,8 @@
 #pragma once
 // Runs the stipple executable as a user would, capturing exit status, stdout and stderr.
+#include <sys/resource.h>
+
+#include <csignal>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -37,5 +40,31 @@ private:
     std::string name_;
     std::optional<std::string> before_;
 };
+
+// The process's file-size limit (ulimit -f) at `bytes` for the guard's life, with SIGXFSZ ignored (as stipple's
+// main does), so that a write beyond it fails with EFBIG: a full disk in miniature, for the writers' tests.
+class ScopedFileSizeLimit {
+public:
+    explicit ScopedFileSizeLimit(rlim_t bytes) {
+        ::getrlimit(RLIMIT_FSIZE, &before_);
+        signal_before_ = std::signal(SIGXFSZ, SIG_IGN);
+        struct rlimit limited = before_;
+        limited.rlim_cur = bytes;
+        ::setrlimit(RLIMIT_FSIZE, &limited);
+    }
+    ~ScopedFileSizeLimit() {
+        ::setrlimit(RLIMIT_FSIZE, &before_);
+        std::signal(SIGXFSZ, signal_before_);
+    }
+    ScopedFileSizeLimit(const ScopedFileSizeLimit&) = delete;
+    ScopedFileSizeLimit& operator=(const ScopedFileSizeLimit&) = delete;
+
+private:
+    struct rlimit before_ {};
+    void (*signal_before_)(int) = SIG_DFL;
+};
+
+// The names in `folder` (files a failed write could have left behind), sorted.
+std::vector<std::string> folder_entries(const std::string& folder);
 
 }  // namespace stipple::test
