@@ -71,6 +71,25 @@ TEST(CliRender, NoArgumentsRendersTheDefaultScene) {
     EXPECT_GT(double(inked) / double(covered), 0.03);
 }
 
+// A write beyond the file-size limit (ulimit -f) is one line and exit 1, and the image that was there stays:
+// the signal of that limit killed the process with no word (exit 153), leaving a truncated image in place
+// of the good one.
+TEST(CliRender, AnImageBeyondTheFileSizeLimitLeavesTheOneThatWasThere) {
+    const auto dir = test::temp_dir("cli-file-size-limit");
+    const std::string path = (dir / "frame.png").string(), cache = (dir / "cache").string();
+    auto small = run_stipple({"render", "-o", path, "--width", "64", "--height", "48", "--cache-dir", cache});
+    ASSERT_EQ(small.exit_code, 0) << small.err;
+    std::ifstream before_in(path, std::ios::binary);
+    const std::string before((std::istreambuf_iterator<char>(before_in)), std::istreambuf_iterator<char>());
+    ASSERT_LT(before.size(), 16u * 1024u);
+    auto large = run_stipple({"render", "-o", path, "--cache-dir", cache}, "ulimit -f 16;");  // 16 KiB
+    EXPECT_EQ(large.exit_code, 1) << large.err;
+    EXPECT_NE(large.err.find(path + ": cannot write PNG: File too large"), std::string::npos) << large.err;
+    std::ifstream after_in(path, std::ios::binary);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after_in)), std::istreambuf_iterator<char>()), before);
+    for (const std::string& name : test::folder_entries(dir.string())) EXPECT_EQ(name.find(".part-"), std::string::npos) << name;
+}
+
 // The JSON parses whatever the file is called (a quote or backslash in its path was printed as it stood),
 // and a cache read gives no generation speed (it gave the cache's reading speed, 83M stipples/s).
 TEST(CliRender, InfoPrintsFiguresAsJson) {
@@ -353,6 +372,18 @@ TEST(CliRender, RunningOutOfMemoryWhileGeneratingNamesTheModel) {
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(count_lines(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(model.string() + ": out of memory generating its 60000000 stipples"), std::string::npos) << r.err;
+}
+
+// An address-space limit too small for the Vulkan driver is refused in one line before a device is made:
+// lavapipe's shader compiler crashed the process under it (exit 139, no message).
+TEST(CliRender, AnAddressSpaceTooSmallForTheDriverIsRefused) {
+    if (!kHugePageNew) GTEST_SKIP() << "a sanitizer's shadow memory needs more address space than ulimit -v leaves";
+    const auto out = test::temp_dir("cli-address-space") / "never.png";
+    const test::CommandResult r = run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "48"}, guarded("800000", 60));
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find("the address-space limit (ulimit -v) is 781.2 MiB, below the 1.5 GiB"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 // A device too small for the object (here made so with STIPPLE_GPU_MEMORY_LIMIT): one line saying what

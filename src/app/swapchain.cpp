@@ -235,7 +235,7 @@ VkResult Swapchain::present_shared(VkQueue queue, uint32_t image_index, const Pi
     submit.pWaitDstStageMask = &stage;
     VK_CHECK(vkResetFences(context_.device, 1, &shared_shown_));
     VK_CHECK(vkQueueSubmit(queue, 1, &submit, shared_shown_));
-    VK_CHECK(vkWaitForFences(context_.device, 1, &shared_shown_, VK_TRUE, UINT64_MAX));
+    context_.wait_for_fence(shared_shown_);
     if (vsync_) {  // no faster than the monitor: what FIFO means to a swapchain
         const auto due = last_shown_ + refresh_interval_;
         if (std::chrono::steady_clock::now() < due) std::this_thread::sleep_until(due);

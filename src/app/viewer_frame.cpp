@@ -10,7 +10,7 @@ namespace stipple::app {
 
 void Viewer::finish_previous_frame() {
     if (!submitted_) return;
-    VK_CHECK(vkWaitForFences(context_.device, 1, &frame_done_, VK_TRUE, UINT64_MAX));
+    context_.wait_for_fence(frame_done_);
     submitted_ = false;
     renderer_.collect();
     collected_ = renderer_.stats();  // until the next frame's prepare() starts its own

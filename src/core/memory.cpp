@@ -1,5 +1,6 @@
 #include "core/memory.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -54,6 +55,12 @@ std::optional<uint64_t> control_group_memory_limit(const std::string& proc_self_
         }
     }
     return least;
+}
+
+std::optional<uint64_t> address_space_limit() {
+    struct rlimit limit {};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+    return uint64_t(limit.rlim_cur);
 }
 
 uint64_t physical_memory_bytes() {

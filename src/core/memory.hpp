@@ -32,6 +32,9 @@ inline void release_free_memory() {
 // the system says nothing.
 uint64_t physical_memory_bytes();
 
+// The process's address-space limit (RLIMIT_AS, ulimit -v), where it has one.
+std::optional<uint64_t> address_space_limit();
+
 // The smallest memory limit of a process's control groups and their ancestors, as `proc_self_cgroup` (the format
 // of /proc/self/cgroup) lists them under `cgroup_root` (/sys/fs/cgroup): a cgroup v2 line "0::/path" names
 // root/path (or root/unified/path on a hybrid host) and its memory.max; a v1 line whose controllers include memory

@@ -7,6 +7,7 @@
 
 #include "core/decimal.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace stipple::gpu {
@@ -82,6 +83,11 @@ static uint32_t workgroups_from_environment() {
 }
 
 Context::Context(const ContextOptions& options) {
+    // Under an address-space limit (ulimit -v) too small for the driver, lavapipe's compiler crashed the
+    // process in pipeline creation (a segmentation fault, no message): refused here in one line instead.
+    if (const std::optional<uint64_t> limit = address_space_limit(); limit && *limit < kDriverAddressSpace)
+        fail("the address-space limit (ulimit -v) is " + byte_size(*limit) + ", below the " + byte_size(kDriverAddressSpace) +
+             " the Vulkan driver and its shader compiler need (lavapipe reserves about 1 GiB): raise it");
     // The loader needs a runtime dir on some set-ups; an unset XDG_RUNTIME_DIR only causes warnings.
     const uint32_t asked_groups_x = workgroups_from_environment();
     create_instance(options);
@@ -331,9 +337,20 @@ void Context::submit_and_wait(VkCommandBuffer cb) const {
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cb;
     VkResult result = vkQueueSubmit(queue, 1, &submit, fence);
-    if (result == VK_SUCCESS) result = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    if (result == VK_SUCCESS) wait_for_fence(fence);
     vkDestroyFence(device, fence, nullptr);
     vkFreeCommandBuffers(device, command_pool, 1, &cb);
+    VK_CHECK(result);
+}
+
+void Context::wait_for_fence(VkFence fence) const {
+    const VkResult result = vkWaitForFences(device, 1, &fence, VK_TRUE, uint64_t(kDeviceWaitSeconds) * 1000000000ull);
+    if (result == VK_TIMEOUT) {
+        std::fprintf(stderr, "stipple: the Vulkan device did not finish its work within %d s (a driver that could not "
+                             "start its threads, under a limit on processes such as ulimit -u?)\n", kDeviceWaitSeconds);
+        std::fflush(stderr);
+        std::_Exit(1);
+    }
     VK_CHECK(result);
 }
 

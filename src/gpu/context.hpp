@@ -51,6 +51,15 @@ inline float depth_to_float(VkFormat format, uint32_t word) {
     return value;
 }
 
+// How long a wait for the device may take before the program gives up (Context::wait_for_fence). The longest
+// single submission is one frame or tile: seconds on lavapipe at the largest sizes.
+inline constexpr int kDeviceWaitSeconds = 300;
+// The least address space (ulimit -v) a process that creates a device is allowed: a render's peak on
+// lavapipe is 0.9-1.0 GiB (VmPeak: the default scene 951 MB, igea 1,023 MB on 2 cores), and lavapipe's
+// compiler crashed the process below it (at 400-850 MB); half a GiB more for the thread stacks of machines of
+// more cores.
+inline constexpr uint64_t kDriverAddressSpace = uint64_t(1536) << 20;
+
 class Context {
 public:
     explicit Context(const ContextOptions& options = {});
@@ -81,6 +90,11 @@ public:
     // One-shot command buffer: record, then submit and wait.
     VkCommandBuffer begin_one_shot() const;
     void submit_and_wait(VkCommandBuffer command_buffer) const;
+    // Waits for `fence` (every wait of the program goes through here), at most kDeviceWaitSeconds: a device
+    // that never finishes (lavapipe when it could not start its threads, under a limit on processes) made
+    // the program wait forever. Past that it says so in one line and ends the process with exit status 1
+    // (its work still pending, nothing can be destroyed cleanly).
+    void wait_for_fence(VkFence fence) const;
 
     uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                               VkMemoryPropertyFlags preferred = 0) const;
