@@ -9,7 +9,7 @@ set(allowed_mesh core mesh)
 set(allowed_stipple core mesh params anim stipple)  # anim: ObjectData carries a model's motion, its headroom shapes generation
 set(allowed_gpu core gpu)
 set(allowed_anim core mesh gpu anim)
-set(allowed_export core export)
+set(allowed_export core io export)  # io: its outputs written whole or not at all (io/output_file.hpp)
 set(allowed_render core io params mesh stipple gpu anim render)
 set(allowed_scene core io params mesh stipple gpu anim render scene)
 set(allowed_app core io params mesh stipple gpu anim render scene export app)
