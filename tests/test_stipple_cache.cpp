@@ -217,6 +217,28 @@ TEST(StippleCache, DamagedEntriesAreReportedAndRegenerated) {
     }
 }
 
+// A folder in an entry's place: reported as damaged when read, and the new entry that cannot replace it is
+// said (it was silently never kept, and every run generated again with only the first warning).
+TEST(StippleCache, AFolderInAnEntrysPlaceIsSaid) {
+    const auto dir = test::temp_dir("stipple_cache_folder_in_place");
+    const Mesh mesh = make_icosphere(2);
+    GenerationParams params;
+    params.dmax = 0.02f;
+    const StippleSet generated = generate_stipples_cached(mesh, params, dir);
+    const fs::path entry = entry_of(dir, mesh, params);
+    fs::remove(entry);
+    fs::create_directories(entry / "inside");
+    testing::internal::CaptureStderr();
+    const StippleSet again = generate_stipples_cached(mesh, params, dir);
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(same(again, generated));
+    EXPECT_NE(warning.find("warning: " + entry.string() + ": cannot put the new stipple cache entry in place"), std::string::npos)
+        << warning;
+    EXPECT_TRUE(fs::is_directory(entry / "inside")) << "not ours to remove";
+    for (const fs::directory_entry& file : fs::directory_iterator(dir))
+        EXPECT_EQ(file.path().filename().string().find(".tmp"), std::string::npos) << file.path();
+}
+
 // A cache folder that cannot be made is said once, and the stipples are still drawn.
 TEST(StippleCache, AFolderThatCannotBeMadeIsSaidOnce) {
     const auto dir = test::temp_dir("stipple_cache_unusable");

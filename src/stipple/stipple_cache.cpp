@@ -280,6 +280,10 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
     }
     std::filesystem::rename(temporary, final_path, ec);
     if (ec) {
+        // Something not ours in the entry's place (a folder of its name): said, rather than the entry
+        // silently never kept.
+        std::fprintf(stderr, "stipple: warning: %s: cannot put the new stipple cache entry in place (%s)\n",
+                     final_path.c_str(), ec.message().c_str());
         std::filesystem::remove(temporary, ec);
         return;
     }
