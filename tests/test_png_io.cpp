@@ -1,6 +1,7 @@
 // PNG round trips and the shared image-comparison helpers that golden-image tests rely on.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -63,6 +64,28 @@ TEST(PngIo, WriteCreatesParentFolders) {
     const std::string path = (dir / "a" / "b" / "c.png").string();
     stipple::write_png(path, make_pattern(4, 3, 3));
     EXPECT_EQ(stipple::read_png(path).width, 4);
+}
+
+// An image is written beside and renamed into place (io/output_file.hpp), keeping the old file's mode; a link
+// at the path is the user's to name and is written through, as before, not replaced by a file.
+TEST(PngIo, WriteKeepsTheModeAndWritesThroughALink) {
+    namespace fs = std::filesystem;
+    const auto dir = stipple::test::temp_dir("png_mode_and_link");
+    const std::string path = (dir / "private.png").string();
+    stipple::write_png(path, make_pattern(4, 3, 3));
+    fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+    stipple::write_png(path, make_pattern(5, 3, 3));
+    EXPECT_EQ(stipple::read_png(path).width, 5);
+    EXPECT_EQ(fs::status(path).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+
+    const fs::path real = dir / "real.png", link = dir / "link.png";
+    stipple::write_png(real.string(), make_pattern(4, 3, 3));
+    fs::create_symlink(real.filename(), link);
+    stipple::write_png(link.string(), make_pattern(6, 3, 3));
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_EQ(stipple::read_png(real.string()).width, 6);
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".part-"), std::string::npos) << entry.path();
 }
 
 TEST(PngIo, FractionDifferingCountsPixelsOverTolerance) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <ctime>
 #include <memory>
@@ -22,11 +24,25 @@ namespace {
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
 
-void check(cairo_status_t status, const std::string& path) {
-    // cairo names no cause for a failed write: the likely ones are said.
-    if (status != CAIRO_STATUS_SUCCESS)
-        fail_file(path, std::string("cannot write PDF: ") + cairo_status_to_string(status) +
-                            (status == CAIRO_STATUS_WRITE_ERROR ? " (a full disk, or the file-size limit?)" : ""));
+// Where cairo's output goes: the file write_output opened, and the first write error's errno (cairo names no
+// cause for a failed write).
+struct Stream {
+    std::FILE* out = nullptr;
+    int error = 0;
+};
+
+cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
+    Stream& stream = *static_cast<Stream*>(closure);
+    errno = 0;
+    if (std::fwrite(data, 1, length, stream.out) == length) return CAIRO_STATUS_SUCCESS;
+    if (!stream.error) stream.error = errno ? errno : EIO;
+    return CAIRO_STATUS_WRITE_ERROR;
+}
+
+void check(cairo_status_t status, const std::string& path, const Stream& stream) {
+    if (status == CAIRO_STATUS_SUCCESS) return;
+    fail_file(path, std::string("cannot write PDF: ") +
+                        (status == CAIRO_STATUS_WRITE_ERROR && stream.error ? std::strerror(stream.error) : cairo_status_to_string(status)));
 }
 
 void set_colour(cairo_t* cr, glm::vec3 colour) { cairo_set_source_rgb(cr, colour.r, colour.g, colour.b); }
@@ -92,11 +108,12 @@ std::optional<std::string> source_date() {
     return std::string(date);
 }
 
-// The PDF at `file`, named `path` in messages.
-void write_pdf_at(const PlotPlan& plan, const std::string& file, const std::string& path) {
+// The PDF written to `out`, named `path` in messages.
+void write_pdf_to(const PlotPlan& plan, std::FILE* out, const std::string& path) {
     const double width_pt = plan.layout.page.width_mm * kPointsPerMm, height_pt = plan.layout.page.height_mm * kPointsPerMm;
-    Surface surface(cairo_pdf_surface_create(file.c_str(), width_pt, height_pt), &cairo_surface_destroy);
-    check(cairo_surface_status(surface.get()), path);
+    Stream stream{out};
+    Surface surface(cairo_pdf_surface_create_for_stream(write_to_stream, &stream, width_pt, height_pt), &cairo_surface_destroy);
+    check(cairo_surface_status(surface.get()), path, stream);
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, "stipple drawing");
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "stipple");
     // Reproducible builds' convention: SOURCE_DATE_EPOCH (seconds since 1970) is the creation date, so that
@@ -121,15 +138,15 @@ void write_pdf_at(const PlotPlan& plan, const std::string& file, const std::stri
         cairo_pop_group_to_source(cr);
         cairo_paint(cr);
     }
-    check(cairo_status(cr), path);
+    check(cairo_status(cr), path, stream);
     cairo_surface_finish(surface.get());
-    check(cairo_surface_status(surface.get()), path);
+    check(cairo_surface_status(surface.get()), path, stream);
 }
 
 }  // namespace
 
 void write_pdf(const PlotPlan& plan, const std::string& path) {
-    write_output(path, "cannot write PDF", [&](const std::string& file) { write_pdf_at(plan, file, path); });
+    write_output(path, "cannot write PDF", [&](std::FILE* out) { write_pdf_to(plan, out, path); });
 }
 
 }  // namespace stipple::plot

@@ -4,8 +4,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <functional>
+#include <mutex>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -64,20 +68,78 @@ void check_output_writable(const std::string& option, const std::string& path) {
 
 namespace {
 
-// Writes `bytes` to `file`, naming `path` in the message on failure.
-void write_bytes(const std::string& file, const std::string& path, const std::string& what, std::string_view bytes) {
+// The temporary file being written (one at a time), removed if the process is interrupted before it is
+// renamed into place: an interrupted render left "<name>.part-XXXXXX" beside its images.
+char pending_temporary[4096];
+std::atomic<bool> pending_set{false};
+
+extern "C" void remove_pending_and_reraise(int sig) {
+    if (pending_set.load()) unlink(pending_temporary);  // async-signal-safe
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
+// Installed on first use, and only over the default action (a handler of someone else's, or an ignored
+// signal, is left as it is).
+void install_interrupt_cleanup() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+            struct sigaction current {};
+            if (sigaction(sig, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) continue;
+            struct sigaction action {};
+            action.sa_handler = remove_pending_and_reraise;
+            sigemptyset(&action.sa_mask);
+            sigaction(sig, &action, nullptr);
+        }
+    });
+}
+
+// Marks `temporary` as the file to remove on an interruption, for the guard's life (where no other is marked).
+class PendingTemporary {
+public:
+    explicit PendingTemporary(const std::string& temporary) {
+        bool expected = false;
+        if (temporary.size() >= sizeof pending_temporary || !pending_set.compare_exchange_strong(expected, true)) return;
+        std::memcpy(pending_temporary, temporary.c_str(), temporary.size() + 1);
+        owned_ = true;
+    }
+    ~PendingTemporary() {
+        if (owned_) pending_set.store(false);
+    }
+    PendingTemporary(const PendingTemporary&) = delete;
+    PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+private:
+    bool owned_ = false;
+};
+
+// The mode a new file gets: 0666 less the process's umask (mkstemp makes its files 0600).
+mode_t new_file_mode() {
+    const mode_t mask = umask(0);
+    umask(mask);
+    return 0666 & ~mask;
+}
+
+// Runs `write` on `out`, then flushes it to the disk (`sync`) and closes it; a failure throws naming `path`.
+void write_and_close(std::FILE* out, bool sync, const std::string& path, const std::string& what,
+                     const std::function<void(std::FILE*)>& write) {
+    try {
+        write(out);
+    } catch (...) {
+        std::fclose(out);
+        throw;
+    }
     errno = 0;
-    std::FILE* out = std::fopen(file.c_str(), "wb");
-    if (!out) fail_file(path, what + ": " + std::strerror(errno));
-    const size_t written = std::fwrite(bytes.data(), 1, bytes.size(), out);
-    const int write_error = written == bytes.size() ? 0 : (errno ? errno : EIO);
-    const int close_error = std::fclose(out) == 0 ? 0 : (errno ? errno : EIO);
-    if (write_error || close_error) fail_file(path, what + ": " + std::strerror(write_error ? write_error : close_error));
+    int error = std::fflush(out) == 0 && !std::ferror(out) ? 0 : (errno ? errno : EIO);
+    if (!error && sync && fsync(fileno(out)) != 0) error = errno;
+    if (std::fclose(out) != 0 && !error) error = errno ? errno : EIO;
+    if (error) fail_file(path, what + ": " + std::strerror(error));
 }
 
 }  // namespace
 
-void write_output(const std::string& path, const std::string& what, const std::function<void(const std::string& file)>& write) {
+void write_output(const std::string& path, const std::string& what, const std::function<void(std::FILE* out)>& write) {
     namespace fs = std::filesystem;
     const fs::path target(path);
     if (target.has_parent_path()) {
@@ -85,37 +147,48 @@ void write_output(const std::string& path, const std::string& what, const std::f
         fs::create_directories(target.parent_path(), ec);
         if (ec) fail_file(path, what + ": cannot create its folder: " + ec.message());
     }
-    const std::string temporary = path + ".part-" + std::to_string(getpid());
-    // The new file can be made beside the target (tried, as the writer may be a library that names no cause).
-    const int probe = open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (probe < 0) {
-        // In place, as before: the folder takes no new file, but the target may be writable. Tried first without
-        // truncating it, for the cause (a library writer may name none).
-        const int in_place = open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
-        if (in_place < 0) fail_file(path, what + ": " + std::strerror(errno));
-        close(in_place);
-        write(path);
-        return;
+    // Beside and renamed into place where the target is missing or a plain file of this user's alone. A link, a
+    // pipe or a device is the user's to name and is written through, as before; so is a file with other hard
+    // links or of another owner, whose links, owner and mode a new file would not keep.
+    struct stat seen {};
+    const bool exists = lstat(path.c_str(), &seen) == 0;
+    if (!exists || (S_ISREG(seen.st_mode) && seen.st_nlink == 1 && seen.st_uid == geteuid())) {
+        std::string temporary = path + ".part-XXXXXX";  // a name of its own, made without following links
+        const int fd = mkstemp(temporary.data());
+        if (fd >= 0) {
+            install_interrupt_cleanup();
+            const PendingTemporary pending(temporary);
+            fchmod(fd, exists ? (seen.st_mode & 07777) : new_file_mode());
+            std::FILE* out = fdopen(fd, "wb");
+            if (!out) {
+                close(fd);
+                unlink(temporary.c_str());
+                fail_file(path, what + ": " + std::strerror(errno));
+            }
+            try {
+                write_and_close(out, true, path, what, write);
+            } catch (...) {
+                unlink(temporary.c_str());
+                throw;
+            }
+            if (std::rename(temporary.c_str(), path.c_str()) == 0) return;
+            // Not allowed to replace it (a sticky folder, a file bind-mounted on its own): written in place.
+            unlink(temporary.c_str());
+        }
+        // No new file can be made beside it (a writable file in a folder that is not): written in place.
     }
-    close(probe);
-    try {
-        write(temporary);
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw;
-    }
-    std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        fail_file(path, what + ": cannot move the new file into place: " + ec.message());
-    }
+    errno = 0;
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    if (!out) fail_file(path, what + ": " + std::strerror(errno));
+    write_and_close(out, false, path, what, write);
 }
 
 void write_output(const std::string& path, const std::string& what, std::string_view bytes) {
-    write_output(path, what, [&](const std::string& file) { write_bytes(file, path, what, bytes); });
+    write_output(path, what, [&](std::FILE* out) {
+        errno = 0;
+        if (std::fwrite(bytes.data(), 1, bytes.size(), out) != bytes.size())
+            fail_file(path, what + ": " + std::strerror(errno ? errno : EIO));
+    });
 }
 
 }  // namespace stipple

@@ -1,6 +1,7 @@
 #pragma once
 // Whether a file can be written at a path, asked before the work that makes it: a render of a large model
 // takes minutes to generate and draw, and an output that cannot be written was named only then.
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -14,13 +15,15 @@ namespace stipple {
 // new file's folder is tried with a temporary file of another name.
 void check_output_writable(const std::string& option, const std::string& path);
 
-// Writes an output file (an image, a drawing) whole or not at all: `write(file)` writes it at `file`, a new
-// file beside `path`, which is then renamed over `path`. A write that fails (a full disk, the file-size
-// limit, an error in the writer) removes that file and leaves whatever was at `path` before: it had left a
-// truncated file in place of the good one. Messages name `path`, prefixed by `what` ("cannot write PNG").
-// Where no new file can be made beside it (a writable file in a folder that is not) it is written in place.
-// Makes the missing folders.
-void write_output(const std::string& path, const std::string& what, const std::function<void(const std::string& file)>& write);
+// Writes an output file (an image, a drawing) whole or not at all: `write(out)` writes it to `out`, a new
+// file beside `path` (a name of its own, made without following links, with the old file's mode), flushed to
+// the disk and then renamed over `path`. A write that fails (a full disk, the file-size limit, an error in the
+// writer) or is interrupted (SIGINT, SIGTERM, SIGHUP) removes that file and leaves whatever was at `path`
+// before: it had left a truncated file in place of the good one. Written in place, as before, where `path` is
+// a link, a pipe or a device, a file with other hard links or of another owner, or where the new file cannot
+// be made or renamed there (a folder that takes no new file, a sticky one). Messages name `path`, prefixed by
+// `what` ("cannot write PNG"). Makes the missing folders.
+void write_output(const std::string& path, const std::string& what, const std::function<void(std::FILE* out)>& write);
 // The same for bytes in memory.
 void write_output(const std::string& path, const std::string& what, std::string_view bytes);
 
