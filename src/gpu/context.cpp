@@ -337,21 +337,35 @@ void Context::submit_and_wait(VkCommandBuffer cb) const {
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cb;
     VkResult result = vkQueueSubmit(queue, 1, &submit, fence);
-    if (result == VK_SUCCESS) wait_for_fence(fence);
+    if (result == VK_SUCCESS) {
+        try {
+            wait_for_fence(fence);
+        } catch (...) {  // a lost device: what was made here is still freed
+            vkDestroyFence(device, fence, nullptr);
+            vkFreeCommandBuffers(device, command_pool, 1, &cb);
+            throw;
+        }
+    }
     vkDestroyFence(device, fence, nullptr);
     vkFreeCommandBuffers(device, command_pool, 1, &cb);
     VK_CHECK(result);
 }
 
 void Context::wait_for_fence(VkFence fence) const {
-    const VkResult result = vkWaitForFences(device, 1, &fence, VK_TRUE, uint64_t(kDeviceWaitSeconds) * 1000000000ull);
-    if (result == VK_TIMEOUT) {
-        std::fprintf(stderr, "stipple: the Vulkan device did not finish its work within %d s (a driver that could not "
-                             "start its threads, under a limit on processes such as ulimit -u?)\n", kDeviceWaitSeconds);
-        std::fflush(stderr);
-        std::_Exit(1);
+    // In slices, and only slices that ran out count: a process stopped meanwhile (Ctrl-Z, a debugger, a job
+    // scheduler) finds at most one slice run out when it resumes, not the whole limit spent.
+    constexpr int kSliceSeconds = 5;
+    for (int slices = 0; slices < kDeviceWaitSeconds / kSliceSeconds; ++slices) {
+        const VkResult result = vkWaitForFences(device, 1, &fence, VK_TRUE, uint64_t(kSliceSeconds) * 1000000000ull);
+        if (result == VK_TIMEOUT) continue;
+        VK_CHECK(result);
+        return;
     }
-    VK_CHECK(result);
+    std::fflush(stdout);  // what was said so far ("wrote ..." lines) is kept
+    std::fprintf(stderr, "stipple: the Vulkan device did not finish its work within %d s (a driver that could not "
+                         "start its threads, under a limit on processes such as ulimit -u?)\n", kDeviceWaitSeconds);
+    std::fflush(stderr);
+    std::_Exit(1);
 }
 
 // A size in bytes from an environment variable ("64M", "2G", "512k" or bytes: parse_byte_size); 0 when unset.

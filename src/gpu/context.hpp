@@ -90,10 +90,12 @@ public:
     // One-shot command buffer: record, then submit and wait.
     VkCommandBuffer begin_one_shot() const;
     void submit_and_wait(VkCommandBuffer command_buffer) const;
-    // Waits for `fence` (every wait of the program goes through here), at most kDeviceWaitSeconds: a device
-    // that never finishes (lavapipe when it could not start its threads, under a limit on processes) made
-    // the program wait forever. Past that it says so in one line and ends the process with exit status 1
-    // (its work still pending, nothing can be destroyed cleanly).
+    // Waits for `fence` (every fence wait of the program goes through here; vkDeviceWaitIdle, which has no
+    // limit, is left where the device is all but idle: teardown, a new swapchain, an object replaced in the
+    // viewer), at most kDeviceWaitSeconds of waiting: a device that never finishes
+    // (lavapipe when it could not start its threads, under a limit on processes) made the program wait
+    // forever. Past that it says so in one line and ends the process with exit status 1 (its work still
+    // pending, nothing can be destroyed cleanly).
     void wait_for_fence(VkFence fence) const;
 
     uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
