@@ -118,6 +118,20 @@ TEST(StippleCache, EmptyOrRelativeFolderVariablesAreUnset) {
     const std::filesystem::path tmp = test::temp_dir("cache_default_tmpdir");
     set("TMPDIR", tmp.c_str());
     EXPECT_EQ(default_stipple_cache_dir(), tmp / per_user / "stipples");
+    EXPECT_EQ(std::filesystem::status(tmp / per_user).permissions() & std::filesystem::perms::all, std::filesystem::perms::owner_all)
+        << "private: the entries' headers name the models";
+    // One of that name that another user made first (only root can make it so here) is not used: a fresh
+    // private folder of its own, said once.
+    if (getuid() == 0) {
+        ASSERT_EQ(::chown((tmp / per_user).c_str(), 65534, 65534), 0);
+        testing::internal::CaptureStderr();
+        const std::filesystem::path fresh = default_stipple_cache_dir();
+        const std::string warning = testing::internal::GetCapturedStderr();
+        EXPECT_NE(fresh, tmp / per_user / "stipples");
+        EXPECT_EQ(fresh.parent_path().parent_path(), tmp);
+        EXPECT_EQ(fresh.parent_path().filename().string().rfind(per_user + "-", 0), 0u) << fresh;
+        EXPECT_NE(warning.find("is not this user's own private folder"), std::string::npos) << warning;
+    }
     for (const Saved& s : saved) {
         if (s.value) ::setenv(s.name, s.value->c_str(), 1);
         else ::unsetenv(s.name);

@@ -1,5 +1,6 @@
 #include "stipple/stipple_cache.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -93,8 +94,22 @@ std::filesystem::path default_stipple_cache_dir() {
     // another cache folder or none).
     std::error_code error;
     std::filesystem::path tmp = std::filesystem::temp_directory_path(error);
-    if (error || tmp.empty()) tmp = "/tmp";
-    return tmp / ("stipple-cache-" + std::to_string(getuid())) / "stipples";
+    if (error || !tmp.is_absolute()) tmp = "/tmp";
+    // Made private (0700), and used only while it is this user's own folder: another user could make one of
+    // its name first, to read or plant entries. Otherwise a fresh private folder of its own, said once.
+    const std::filesystem::path mine = tmp / ("stipple-cache-" + std::to_string(getuid()));
+    mkdir(mine.c_str(), 0700);
+    struct stat seen {};
+    if (lstat(mine.c_str(), &seen) == 0 && S_ISDIR(seen.st_mode) && seen.st_uid == getuid() &&
+        ((seen.st_mode & 077) == 0 || chmod(mine.c_str(), 0700) == 0))  // one made before it was private
+        return mine / "stipples";
+    std::string fresh = (tmp / ("stipple-cache-" + std::to_string(getuid()) + "-XXXXXX")).string();
+    if (!mkdtemp(fresh.data())) return mine / "stipples";  // unusable: the cache says so when it writes
+    static std::atomic<bool> warned{false};
+    if (!warned.exchange(true))
+        std::fprintf(stderr, "stipple: warning: %s is not this user's own private folder; the stipple cache is kept in %s\n",
+                     mine.c_str(), fresh.c_str());
+    return std::filesystem::path(fresh) / "stipples";
 }
 
 StippleCacheSettings& stipple_cache_settings() {
