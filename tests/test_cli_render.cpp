@@ -82,7 +82,7 @@ TEST(CliRender, AnImageBeyondTheFileSizeLimitLeavesTheOneThatWasThere) {
     std::ifstream before_in(path, std::ios::binary);
     const std::string before((std::istreambuf_iterator<char>(before_in)), std::istreambuf_iterator<char>());
     ASSERT_LT(before.size(), 16u * 1024u);
-    auto large = run_stipple({"render", "-o", path, "--cache-dir", cache}, "ulimit -f 16;");  // 16 KiB
+    auto large = run_stipple({"render", "-o", path, "--cache-dir", cache}, "ulimit -f 16;");  // 8 KiB in dash's 512-byte blocks, 16 KiB in bash's
     EXPECT_EQ(large.exit_code, 1) << large.err;
     EXPECT_NE(large.err.find(path + ": cannot write PNG: File too large"), std::string::npos) << large.err;
     std::ifstream after_in(path, std::ios::binary);

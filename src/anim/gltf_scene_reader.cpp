@@ -28,9 +28,9 @@ const std::vector<int> kJointTypes = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TIN
 
 std::string indexed(const std::string& array, size_t i) { return array + "[" + std::to_string(i) + "]"; }
 
-constexpr uint32_t kNoSlot = UINT32_MAX;
+constexpr uint32_t kNoSlot = UINT32_MAX;  // add_primitive: no palette slot chosen by the caller
 // How far a vertex's skin weights may sum from 1 before the file is warned about (rounding stays below it).
-constexpr double kWeightSumWarning = 0.05;  // add_primitive: no palette slot chosen by the caller
+constexpr double kWeightSumWarning = 0.05;
 
 class SceneReader {
 public:
@@ -387,9 +387,10 @@ private:
         // Beyond rounding (8-bit weights are off by up to 8/255 at 8 influences), the file is wrong: said once a
         // primitive, since what is drawn (the weights scaled) may not be what its author meant.
         if (off > 0)
-            std::fprintf(stderr, "%s: warning: %s.attributes.WEIGHTS_0: %zu of %zu vertices' weights sum to other than 1 "
+            std::fprintf(stderr, "%s: warning: %s.attributes.%s: %zu of %zu vertices' weights sum to other than 1 "
                                  "(%.3g to %.3g); each vertex's are scaled to sum to 1\n",
-                         path_.c_str(), field.c_str(), off, count, lowest, highest);
+                         excerpt(path_, 400).c_str(), field.c_str(), attribute(prim, "WEIGHTS_1") ? "WEIGHTS_0/WEIGHTS_1" : "WEIGHTS_0",
+                         off, count, lowest, highest);
     }
 
     void add_morph_deltas(const tinygltf::Primitive& prim, const std::string& field, size_t count, MorphRef morph) {

@@ -1,5 +1,7 @@
 #include "core/error.hpp"
 
+#include <algorithm>
+
 namespace stipple {
 
 std::string one_line(const std::string& text) {
@@ -16,7 +18,11 @@ std::string one_line(const std::string& text) {
 }
 
 std::string excerpt(const std::string& text, size_t most) {
-    std::string out = one_line(text.substr(0, most));
+    // Cut before a UTF-8 continuation byte's sequence rather than through it (a name's last letter halved).
+    size_t cut = std::min(most, text.size());
+    if (cut < text.size())
+        while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    std::string out = one_line(text.substr(0, cut));
     if (text.size() > most) out += "...";
     return out;
 }

@@ -27,7 +27,7 @@ public:
                 const unsigned index = static_cast<unsigned>(workers_.size());
                 try {
                     workers_.emplace_back([this, index] { work(index); });
-                } catch (const std::system_error&) {
+                } catch (const std::exception&) {  // std::system_error, or std::bad_alloc for the thread's state
                     // No thread to be had (a limit on processes, or memory): the job runs on those there are,
                     // the caller's alone at worst. Its chunks are taken as they come, so the result is the same.
                     helpers = static_cast<unsigned>(workers_.size());

@@ -106,7 +106,7 @@ void parallel_for_chunks(size_t n, size_t chunk, Body&& body) {
     own_threads.reserve(threads - 1);
     try {
         for (unsigned i = 1; i < threads; ++i) own_threads.emplace_back(worker);
-    } catch (const std::system_error&) {
+    } catch (const std::exception&) {  // std::system_error, or std::bad_alloc for the thread's state
         // No more threads to be had (a limit on processes, or memory): those started and this one take every chunk.
     }
     worker();  // the calling thread works too
