@@ -242,8 +242,9 @@ void cache_section() {
 disk, so a model reopened with the same generation parameters skips generation (~4-5 bytes per
 stipple, checked when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
-                          $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples, and
-                          without HOME the temporary folder's stipple-cache-UID/stipples)
+                          $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples; an
+                          empty or relative variable counts as unset, and without a home a private
+                          stipple-cache-UID/stipples in the temporary folder)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
                           is written, the least recently used ones are removed beyond it
 
