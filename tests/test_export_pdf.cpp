@@ -162,21 +162,9 @@ TEST(ExportPdf, UnwritablePathIsOneLineError) {
 // A write that fails part way (a full disk; here the file-size limit) leaves the file that was there, and no
 // part of the new one: it had left a truncated PDF in place of the good one.
 TEST(ExportPdf, AFailedWriteLeavesTheFileThatWasThere) {
-    const auto dir = stipple::test::temp_dir("export_pdf_failed_write");
-    const std::string path = (dir / "x.pdf").string();
-    write_pdf(make_plot_plan(grid_drawing(2, 2), {}), path);
-    const auto read_text = [](const std::string& file) {
-        std::ifstream in(file, std::ios::binary);
-        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    };
-    const std::string good = read_text(path);
-    const PlotPlan large = make_plot_plan(grid_drawing(200, 200), {});
-    {
-        stipple::test::ScopedFileSizeLimit limit(good.size() + 100);
-        stipple::test::expect_plot_error([&] { write_pdf(large, path); }, path + ": cannot write PDF");
-    }
-    EXPECT_EQ(read_text(path), good);
-    EXPECT_EQ(stipple::test::folder_entries(dir.string()), std::vector<std::string>{"x.pdf"});
+    stipple::test::expect_failed_write_keeps_the_file(
+        "export_pdf_failed_write", "x.pdf", make_plot_plan(grid_drawing(2, 2), {}), make_plot_plan(grid_drawing(200, 200), {}),
+        [](const std::string& path, const PlotPlan& plan) { write_pdf(plan, path); }, "cannot write PDF: File too large");
 }
 
 }  // namespace

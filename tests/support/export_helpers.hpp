@@ -5,10 +5,15 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "export/drawing.hpp"
+#include "support/run_command.hpp"
+#include "support/test_paths.hpp"
 
 namespace stipple::test {
 
@@ -23,6 +28,28 @@ void expect_plot_error(Fn&& fn, const std::string& needle) {
         EXPECT_NE(what.find(needle), std::string::npos) << what;
         EXPECT_EQ(what.find('\n'), std::string::npos) << "error must be one line: " << what;
     }
+}
+
+// A write that fails part way (a full disk; here the file-size limit) must leave the file that was there and
+// no part of the new one. `write(path, large)`: a writer of `small` and `large` plans (PDF, SVG, CSV); the
+// failure's message must contain `needle` after the path.
+template <class Plan, class Write>
+void expect_failed_write_keeps_the_file(const std::string& folder, const std::string& name, const Plan& small,
+                                        const Plan& large, Write&& write, const std::string& needle) {
+    const auto dir = temp_dir(folder);
+    const std::string path = (dir / name).string();
+    write(path, small);
+    const auto read_bytes = [](const std::string& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string good = read_bytes(path);
+    {
+        ScopedFileSizeLimit limit(good.size() + 100);
+        expect_plot_error([&] { write(path, large); }, path + ": " + needle);
+    }
+    EXPECT_EQ(read_bytes(path), good);
+    EXPECT_EQ(folder_entries(dir.string()), std::vector<std::string>{name});
 }
 
 // A 400x300 px drawing with one object "cube" holding `dots` dots on a grid (intensity 1,
