@@ -490,6 +490,19 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
         EXPECT_TRUE(std::filesystem::is_empty(cache)) << "vector output generated before refusing";
     }
     {
+        // A mesh whose polygons alone exceed the largest buffer (16 bytes each): no stipple option helps, and
+        // the refusal says so (an 8.7M-triangle model was told to lower --dmax).
+        test::ScopedEnv small("STIPPLE_MAX_STORAGE_BUFFER", "512k");
+        const test::CommandResult r =
+            run_stipple({"render", blobby, "--dmax", "0", "--silhouette-lines", "-o", (dir / "never.png").string()});
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find("the mesh is too large for this device (at most 32768 polygons and 43690 vertices): use a "
+                             "simplified model"),
+                  std::string::npos) << r.err;
+        EXPECT_EQ(r.err.find("--dmax"), std::string::npos) << r.err;
+    }
+    {
         // Vector output with --stats holds the objects twice (the screen frame's renderer and the export's)
         // and the list (about 12 + 12 + 14 MiB here): refused under 30 MiB, which holds one copy and the list.
         test::ScopedEnv memory("STIPPLE_GPU_MEMORY_LIMIT", "30M");

@@ -57,10 +57,17 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
     const uint64_t needed = 24 * v + 12 * t + 8 * s + 16 * t + 16 * t + s / 8 + path_buffers;
     const std::string what = mesh.source.empty() ? std::string("the object") : mesh.source;
     const std::string lower = ": lower --dmax or --max-stipples, or use a simplified model";
-    if (largest > context.max_storage_buffer_bytes())
+    if (largest > context.max_storage_buffer_bytes()) {
+        // Say what to lower: the stipples, or the mesh (its polygons' buffer, 16 bytes each, or its vertices'),
+        // which no stipple option shrinks (an 8.7M-triangle model was told to lower --dmax).
+        const uint64_t limit = context.max_storage_buffer_bytes();
+        const bool mesh_bound = std::max({16 * t, 12 * t, 12 * v}) > limit;
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need a " +
-             mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(context.max_storage_buffer_bytes()) +
-             lower);
+             mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(limit) +
+             (mesh_bound ? ": the mesh is too large for this device (at most " + std::to_string(limit / 16) +
+                               " polygons and " + std::to_string(limit / 12) + " vertices): use a simplified model"
+                         : lower));
+    }
     // The stipple shaders read the mesh, the polygons and the candidates as texels (a vertex, triangle or
     // stipple a texel, or a float or index a texel where three-component texel buffers are not read).
     const uint64_t texels = std::max((context.features.vec3_texels ? 1 : 3) * std::max(v, t), s);
