@@ -192,19 +192,39 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
     return page;
 }
 
-plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
-                              const FrameView& view, double scene_seconds) {
+namespace {
+
+RendererOptions recording_visible() {
     RendererOptions options;
     options.record_visible = true;
-    StippleRenderer renderer(context, kColorFormat, context.depth_format, options);
+    return options;
+}
+
+}  // namespace
+
+DrawingCapture::DrawingCapture(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects)
+    : context_(context), scene_(scene), objects_(objects),
+      renderer_(context, kColorFormat, context.depth_format, recording_visible()) {
     // The Raskar-Cohen lines (§3.1) are back-face edges drawn wide under the surface: only their visible
     // fringe shows, so they have no visible pieces to export. Their vector form is the outline they trace,
     // the contour edges (between a polygon facing the viewer and one facing away), walked against the
     // depth pass and exported as the object's silhouette. (An open mesh's depth pass then keeps its back
     // faces, as for contours: on the bunny 2 of 51,716 exported dots differ from the screen's.)
-    add_splat_objects(renderer, scene, objects, scene_seconds, true);
-    OffscreenTarget target(context, view.extent);
-    target.draw(renderer, view);
+    add_splat_objects(renderer_, scene, objects, 0.0, true);
+}
+
+DrawingCapture::~DrawingCapture() = default;
+
+plot::Drawing DrawingCapture::capture(const FrameView& view, double scene_seconds) {
+    const Scene& scene = scene_;
+    const std::vector<ObjectData>& objects = objects_;
+    StippleRenderer& renderer = renderer_;
+    set_scene_time(renderer, scene, objects, scene_seconds);
+    if (!target_ || target_->extent().width != view.extent.width || target_->extent().height != view.extent.height) {
+        target_.reset();
+        target_ = std::make_unique<OffscreenTarget>(context_, view.extent);
+    }
+    target_->draw(renderer, view);
 
     plot::Drawing drawing;
     drawing.width_px = view.extent.width;
@@ -242,12 +262,23 @@ plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, c
     return drawing;
 }
 
+plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
+                              const FrameView& view, double scene_seconds) {
+    return DrawingCapture(context, scene, objects).capture(view, scene_seconds);
+}
+
+plot::PlotStats export_frame(DrawingCapture& capture, const FrameView& view, const plot::ExportOptions& options,
+                             const std::string& path, double scene_seconds) {
+    const plot::PlotPlan plan = plot::make_plot_plan(capture.capture(view, scene_seconds), options);
+    plot::write_plot_file(plan, path);
+    return plot::plot_stats(plan);
+}
+
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                              const FrameView& view, const plot::ExportOptions& options, const std::string& path,
                              double scene_seconds) {
-    const plot::PlotPlan plan = plot::make_plot_plan(capture_drawing(context, scene, objects, view, scene_seconds), options);
-    plot::write_plot_file(plan, path);
-    return plot::plot_stats(plan);
+    DrawingCapture capture(context, scene, objects);
+    return export_frame(capture, view, options, path, scene_seconds);
 }
 
 }  // namespace stipple::app

@@ -3,6 +3,7 @@
 // the stipples it actually inks (after density, fractional intensity, hidden-stipple removal and the
 // toon fade), and those, with the visible lines, become an SVG, PDF or CSV through src/export. Used by
 // `stipple render -o x.svg|x.pdf|x.csv` and the viewer's export button.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,15 +14,35 @@
 #include "export/plot_plan.hpp"
 #include "export/plot_stats.hpp"
 #include "io/png_io.hpp"
+#include "render/offscreen.hpp"
 #include "render/stipple_renderer.hpp"
 #include "scene/scene.hpp"
 #include "stipple/object_data.hpp"
 
 namespace stipple::app {
 
-// The scene's frame as the export reads it. Every object is drawn by the splat (its CPU-density
+// The scene's frames as the export reads them. Every object is drawn by the splat (its CPU-density
 // variant for the CPU paths): all density paths draw the same stipples (tests/test_gpu_density_paths.cpp).
-// `scene_seconds`: where animated objects are in their animations (set_scene_time).
+// One capture serves every frame of a sequence: made again per frame, its pipelines and the objects'
+// upload took 0.4-0.9 s of each (a 200-frame SVG turntable of the bunny 177 s, its PNGs 14 s).
+class DrawingCapture {
+public:
+    DrawingCapture(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects);
+    ~DrawingCapture();
+    DrawingCapture(const DrawingCapture&) = delete;
+    DrawingCapture& operator=(const DrawingCapture&) = delete;
+    // `scene_seconds`: where animated objects are in their animations (set_scene_time).
+    plot::Drawing capture(const FrameView& view, double scene_seconds = 0.0);
+
+private:
+    const gpu::Context& context_;
+    const Scene& scene_;
+    const std::vector<ObjectData>& objects_;
+    StippleRenderer renderer_;
+    std::unique_ptr<OffscreenTarget> target_;  // made for the first view's extent, again where it changes
+};
+
+// One frame's capture (DrawingCapture for one frame).
 plot::Drawing capture_drawing(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                               const FrameView& view, double scene_seconds = 0.0);
 
@@ -80,5 +101,8 @@ Image render_print(const gpu::Context& context, const Scene& scene, const std::v
 plot::PlotStats export_frame(const gpu::Context& context, const Scene& scene, const std::vector<ObjectData>& objects,
                              const FrameView& view, const plot::ExportOptions& options, const std::string& path,
                              double scene_seconds = 0.0);
+// The same with a capture kept across a sequence's frames.
+plot::PlotStats export_frame(DrawingCapture& capture, const FrameView& view, const plot::ExportOptions& options,
+                             const std::string& path, double scene_seconds = 0.0);
 
 }  // namespace stipple::app

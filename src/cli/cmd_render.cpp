@@ -303,6 +303,7 @@ int run_render(const std::vector<std::string>& argv) {
     bool print_fitted = false;  // the last print's drawing fitted to its page (not when it drew nothing)
     FrameView view;
     double render_seconds = 0.0;
+    std::optional<app::DrawingCapture> capture;  // vector output: one for every frame of the sequence
     for (size_t i = 0; i < cameras.size(); ++i) {
         // A print's camera frames the drawing inside the page's margins (render_print sets its pixels).
         view = scene_frame_view(scene, cameras[i], bounds, print_of_page_shape ? app::print_layout(*print).drawing_px : extent);
@@ -328,8 +329,9 @@ int run_render(const std::vector<std::string>& argv) {
         if (screen_frame) frame = target->render(renderer, view);
         render_seconds = seconds_since(render_start);
         if (vector) {
-            last_plot = app::export_frame(context, scene, content.objects, view, vector_options,
-                                          output_path(output, i, sequence), animated ? clock.frame_time(i) : 0.0);
+            if (!capture) capture.emplace(context, scene, content.objects);
+            last_plot = app::export_frame(*capture, view, vector_options, output_path(output, i, sequence),
+                                          animated ? clock.frame_time(i) : 0.0);
             if (last_plot.dots == 0 && last_plot.polylines == 0) {
                 ++empty_pages;
                 empty_small_dots += last_plot.small_dots;
