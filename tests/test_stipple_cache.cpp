@@ -300,6 +300,17 @@ TEST(StippleCache, TheFolderStaysUnderItsLimitLeastRecentlyUsedFirst) {
     EXPECT_EQ(list_cache_entries(dir).size(), 3u);
     EXPECT_FALSE(fs::exists(entry_of(dir, mesh, [&] { GenerationParams p = params; p.seed = 3; return p; }())))
         << "an old entry nobody read should have been evicted";
+    // An entry larger than the whole limit is not kept, and evicts nothing (it emptied the folder of every other
+    // entry and still stood beyond the limit).
+    {
+        GenerationParams dense = params;
+        dense.dmax = 0.05f;
+        StippleSet finished = generate_stipples(mesh, dense);
+        finish_generated_stipples(mesh, dense.seed, finished);
+        store_cached_stipples(dir, mesh, dense, finished, limit);
+        EXPECT_FALSE(fs::exists(entry_of(dir, mesh, dense)));
+        EXPECT_EQ(list_cache_entries(dir).size(), 3u);
+    }
     // Files the cache did not write, even with its extension, are neither listed nor removed (a folder
     // shared with a user's own files: "cache --clear" removed their "notes.stipples" until 2026-12-07).
     const std::vector<std::string> foreign = {"notes.stipples", "0123456789ABCDEF.stipples", "0123456789abcdef.stipples.bak",

@@ -246,7 +246,8 @@ stipple, checked when read; a damaged entry is reported and regenerated)
                           empty or relative variable counts as unset, and without a home a private
                           stipple-cache-UID/stipples in the temporary folder)
   --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
-                          is written, the least recently used ones are removed beyond it
+                          is written, the least recently used ones are removed beyond it (an entry
+                          larger than the whole limit is not kept)
 
 )");
 }

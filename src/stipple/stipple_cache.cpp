@@ -258,6 +258,9 @@ void store_cached_stipples(const std::filesystem::path& dir, const Mesh& mesh, c
     const size_t packed = ZSTD_compress2(context, compressed.data(), compressed.size(), raw.data(), raw.size());
     ZSTD_freeCCtx(context);
     if (ZSTD_isError(packed)) return;
+    // An entry larger than the folder's whole limit is not kept: it emptied the folder of every other entry
+    // and still stood beyond the limit (a 9.9 MiB entry under --cache-size 1M).
+    if (packed + sizeof(Header) > max_bytes) return;
 
     Header header{};
     header.magic = cache_format::kMagic;
