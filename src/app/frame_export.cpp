@@ -218,7 +218,7 @@ DrawingCapture::~DrawingCapture() = default;
 plot::Drawing DrawingCapture::capture(const FrameView& view, double scene_seconds) {
     const Scene& scene = scene_;
     const std::vector<ObjectData>& objects = objects_;
-    StippleRenderer& renderer = renderer_;
+    StippleRenderer& renderer = renderer_;  // the names the drawing's reading below has always used
     set_scene_time(renderer, scene, objects, scene_seconds);
     if (!target_ || target_->extent().width != view.extent.width || target_->extent().height != view.extent.height) {
         target_.reset();

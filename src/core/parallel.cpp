@@ -2,7 +2,6 @@
 
 #include <condition_variable>
 #include <cstdint>
-#include <system_error>
 
 namespace stipple::detail {
 

@@ -8,10 +8,10 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
-#include <functional>
-#include <mutex>
 #include <cstring>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <vector>
 
 #include "core/error.hpp"

@@ -61,7 +61,7 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
         // Say what to lower: the stipples, or the mesh (its polygons' buffer, 16 bytes each, or its vertices'),
         // which no stipple option shrinks (an 8.7M-triangle model was told to lower --dmax).
         const uint64_t limit = context.max_storage_buffer_bytes();
-        const bool mesh_bound = std::max({16 * t, 12 * t, 12 * v}) > limit;
+        const bool mesh_bound = std::max(16 * t, 12 * v) > limit;  // polygons, or positions (indices: 12 * t < 16 * t)
         fail(what + ": its " + std::to_string(s) + " stipples on " + std::to_string(t) + " polygons need a " +
              mebibytes(largest) + " buffer, and this device's largest is " + mebibytes(limit) +
              (mesh_bound ? ": the mesh is too large for this device (at most " + std::to_string(limit / 16) +
