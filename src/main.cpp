@@ -9,6 +9,28 @@
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "gpu/context.hpp"
+
+namespace {
+
+int unknown_command(const std::string& command) {
+    std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
+    return 2;
+}
+
+int run_command(const std::string& command, const std::vector<std::string>& args) {
+    if (command == "render") return stipple::cli::run_render(args);
+    if (command == "info") return stipple::cli::run_info(args);
+    if (command == "view") return stipple::cli::run_view(args);
+    if (command == "bench") return stipple::cli::run_bench(args);
+    if (command == "params") return stipple::cli::run_params(args);
+    if (command == "cache") return stipple::cli::run_cache(args);
+    if (command == "tone") return stipple::cli::run_tone(args);
+    if (command == "parity") return stipple::cli::run_parity(args);
+    return unknown_command(command);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     // A write beyond the file-size limit (ulimit -f) fails with EFBIG, which every writer reports in one line,
@@ -16,10 +38,6 @@ int main(int argc, char** argv) {
     std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     const auto asks_help = [](const std::string& a) { return a == "--help" || a == "-h" || a == "help"; };
-    const auto unknown_command = [](const std::string& command) {
-        std::fprintf(stderr, "stipple: unknown command '%s' (try: stipple --help)\n", command.c_str());
-        return 2;
-    };
     if (args.empty() || asks_help(args[0])) {
         // `stipple help view` (or --help view, -h view), as `stipple view --help`; `help help` is everything.
         if (args.size() >= 2 && !asks_help(args[1])) {
@@ -43,15 +61,15 @@ int main(int argc, char** argv) {
     }
     try {
         stipple::worker_count();  // a bad STIPPLE_THREADS fails here, not in whatever thread first asks
-        if (command == "render") return stipple::cli::run_render(args);
-        if (command == "info") return stipple::cli::run_info(args);
-        if (command == "view") return stipple::cli::run_view(args);
-        if (command == "bench") return stipple::cli::run_bench(args);
-        if (command == "params") return stipple::cli::run_params(args);
-        if (command == "cache") return stipple::cli::run_cache(args);
-        if (command == "tone") return stipple::cli::run_tone(args);
-        if (command == "parity") return stipple::cli::run_parity(args);
-        return unknown_command(command);
+        const int status = run_command(command, args);
+        // Any validation message fails the command, whichever device printed it (render and the viewer
+        // say so themselves; tone, parity and the viewer's probe device did not, and exited 0).
+        const uint32_t messages = stipple::gpu::validation_messages_in_process();
+        if (status == 0 && messages > 0) {
+            std::fprintf(stderr, "stipple: %u Vulkan validation message(s): the result is not trustworthy\n", messages);
+            return 2;
+        }
+        return status;
     } catch (const stipple::Error& e) {
         std::fprintf(stderr, "stipple: %s\n", e.what());
         return 1;

@@ -196,5 +196,19 @@ TEST(CliTone, BadOptionsGetOneLine) {
     }
 }
 
+// A validation message fails every command, not only render and view: tone exited 0 after printing 206 of
+// them. The layer's best-practices checks are a message a run can always provoke (one about the debug
+// extension a validated instance enables, at least).
+TEST(CliTone, AValidationMessageFailsTheSurvey) {
+    test::ScopedEnv validation("STIPPLE_VALIDATION", "1");
+    test::ScopedEnv best_practices("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_BEST_PRACTICES_EXT");
+    const test::CommandResult r = test::run_stipple(
+        {"tone", "--distances", "1", "--views", "30:10", "--frames", "1", "--width", "160", "--height", "128"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("vulkan validation: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("Vulkan validation message(s): the result is not trustworthy"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("| on "), std::string::npos) << r.out;  // the survey itself ran
+}
+
 }  // namespace
 }  // namespace stipple

@@ -252,7 +252,7 @@ int Viewer::run() {
             std::printf("benchmark: gpu %-12s mean %.3f ms\n", pass.c_str(), total / std::max(bench_samples_, 1));
     }
     if (options_.verbose) print_panel_draws("stipple");
-    if (uint32_t n = context_.validation_message_count()) {
+    if (uint32_t n = gpu::validation_messages_in_process()) {  // the probe device's too
         std::fprintf(stderr, "stipple: %u Vulkan validation message(s)\n", n);
         return 2;
     }

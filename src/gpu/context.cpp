@@ -16,6 +16,8 @@ namespace {
 
 const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
+std::atomic<uint32_t> g_validation_messages_in_process{0};
+
 bool layer_available(const char* name) {
     uint32_t count = 0;
     VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
@@ -97,6 +99,8 @@ Context::Context(const ContextOptions& options) {
     max_groups_x_ = asked_groups_x ? std::min(asked_groups_x, device_groups_x) : device_groups_x;
 }
 
+uint32_t validation_messages_in_process() { return g_validation_messages_in_process.load(); }
+
 Context::~Context() {
     if (device) {
         vkDeviceWaitIdle(device);
@@ -117,6 +121,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::debug_callback(VkDebugUtilsMessageSeveri
     if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
     auto* context = static_cast<Context*>(user);
     context->validation_messages_.fetch_add(1);
+    g_validation_messages_in_process.fetch_add(1);
     std::fprintf(stderr, "vulkan validation: %s\n", data->pMessage ? data->pMessage : "(no message)");
     return VK_FALSE;
 }

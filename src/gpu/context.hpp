@@ -140,4 +140,8 @@ private:
                                                          void* user);
 };
 
+// Validation messages seen by every Context this process made, alive or gone: a command whose own
+// checks do not look (a probe device, a survey's contexts) still fails by it (main.cpp).
+uint32_t validation_messages_in_process();
+
 }  // namespace stipple::gpu
