@@ -268,4 +268,30 @@ void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups
     vkCmdDispatch(cb, grid.x, grid.y, 1);
 }
 
+void LazyPipeline::define_graphics(const Context& context, GraphicsPipelineDesc desc, VkPipelineLayout layout) {
+    reset();
+    context_ = &context;
+    make_ = [&context, desc = std::move(desc), layout] { return create_graphics_pipeline(context, desc, layout); };
+}
+
+void LazyPipeline::define_compute(const Context& context, std::string shader, VkPipelineLayout layout,
+                                  Specialization specialization) {
+    reset();
+    context_ = &context;
+    make_ = [&context, shader = std::move(shader), layout, specialization = std::move(specialization)] {
+        return create_compute_pipeline(context, shader, layout, specialization);
+    };
+}
+
+VkPipeline LazyPipeline::get() const {
+    STIPPLE_CHECK(make_, "a pipeline was used that was never defined");
+    if (!pipeline_) pipeline_ = make_();
+    return pipeline_;
+}
+
+void LazyPipeline::reset() {
+    if (pipeline_) vkDestroyPipeline(context_->device, pipeline_, nullptr);
+    pipeline_ = VK_NULL_HANDLE;
+}
+
 }  // namespace stipple::gpu

@@ -67,7 +67,7 @@ DeformPass::DeformPass(const gpu::Context& context, bool vec3_texels) : context_
         layout_ = gpu::create_pipeline_layout(context, {&set_layout_, 1}, sizeof(gpu::PolygonConstantsPush));
         gpu::Specialization texels;
         texels.constants.push_back({gpu::kSpecPolygonVec3Texels, vec3_texels_ ? 1u : 0u});
-        pipeline_ = gpu::create_compute_pipeline(context, "polygon_constants.comp", layout_, texels);
+        pipeline_.define_compute(context, "polygon_constants.comp", layout_, texels);
     } catch (...) {
         release();
         throw;
@@ -77,7 +77,7 @@ DeformPass::DeformPass(const gpu::Context& context, bool vec3_texels) : context_
 DeformPass::~DeformPass() { release(); }
 
 void DeformPass::release() {
-    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    pipeline_.reset();
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(context_.device, set_layout_, nullptr);
 }
@@ -118,7 +118,7 @@ void DeformPass::record_polygons(VkCommandBuffer cb, std::span<const std::unique
     // The deformed vertices before the polygons read them (as texels: a sampled read).
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_READ_BIT);
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects) {
         if (!object->animation || object->geometry.triangle_count == 0) continue;

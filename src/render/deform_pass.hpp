@@ -18,6 +18,7 @@
 #include "anim/gpu_deform.hpp"
 #include "anim/headroom.hpp"
 #include "anim/pose.hpp"
+#include "gpu/pipelines.hpp"
 #include "mesh/mesh.hpp"
 
 namespace stipple {
@@ -92,7 +93,7 @@ private:
     bool vec3_texels_ = false;  // the objects' mesh texel views hold a vertex (triangle) per texel
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    gpu::LazyPipeline pipeline_;  // made with the first animated object's frame
 };
 
 }  // namespace stipple

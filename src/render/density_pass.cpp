@@ -109,10 +109,10 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
             if (object->geometry.triangle_count == 0) continue;
             if (!density_on_cpu(object->params.density_path)) {
                 const size_t facing = draws_edge_lines(*object) ? 1 : 0;
-                dispatch(*object, lists_work_items(*object) ? density_list_pipelines_[facing] : density_pipelines_[facing]);
+                dispatch(*object, lists_work_items(*object) ? density_list_pipelines_[facing].get() : density_pipelines_[facing].get());
             }
             else if (draws_edge_lines(*object))
-                dispatch(*object, facing_pipeline_);  // the lines' facing bits
+                dispatch(*object, facing_pipeline_.get());  // the lines' facing bits
         }
     }
     // The gradient pass over the polygons each density pass listed as large on screen (density.comp): the
@@ -128,7 +128,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                     : lists_work_items(*object)  ? 1
                                     : lists_gradient_chunks(*object) ? 2
                                                                      : 0;
-            dispatch_over(*object, gradient_pipelines_[gradient], object->frame.gradient_polygons);
+            dispatch_over(*object, gradient_pipelines_[gradient].get(), object->frame.gradient_polygons);
         }
     }
     // Indirect path: the list of the stipples that draw, from the densities just written (read through
@@ -143,7 +143,7 @@ void StippleRenderer::record_density(VkCommandBuffer cb) {
                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
         for (auto& object : objects_) {
             if (object->geometry.triangle_count == 0 || object->params.density_path != DensityPath::Indirect) continue;
-            dispatch_over(*object, drawn_stipples_pipeline_, object->frame.drawn_polygons);
+            dispatch_over(*object, drawn_stipples_pipeline_.get(), object->frame.drawn_polygons);
         }
     }
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,

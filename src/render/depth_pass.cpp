@@ -43,7 +43,7 @@ void StippleRenderer::record_depth_triangles(VkCommandBuffer cb) {
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_triangles_pipeline_);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_triangles_pipeline_.get());
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (auto& object : objects_) {
         if (!object->frame.depth_listed) continue;
@@ -78,11 +78,11 @@ void StippleRenderer::record_depth(VkCommandBuffer cb) {
         std::array<Draw, 2> draws{};
         size_t draw_count = 0;
         if (two_sided) {
-            draws[draw_count++] = {toon ? toon_two_sided_pipeline_ : depth_two_sided_pipeline_, 1.0f};
+            draws[draw_count++] = {toon ? toon_two_sided_pipeline_.get() : depth_two_sided_pipeline_.get(), 1.0f};
         } else {
-            draws[draw_count++] = {toon ? toon_pipeline_ : depth_pipeline_, 1.0f};
+            draws[draw_count++] = {toon ? toon_pipeline_.get() : depth_pipeline_.get(), 1.0f};
             if (back_faces)
-                draws[draw_count++] = {toon ? toon_back_faces_pipeline_ : depth_back_faces_pipeline_, gpu::kBackFaceBiasScale};
+                draws[draw_count++] = {toon ? toon_back_faces_pipeline_.get() : depth_back_faces_pipeline_.get(), gpu::kBackFaceBiasScale};
         }
         VkBuffer buffers[] = {object->geometry.positions.handle(), object->geometry.normals.handle()};
         VkDeviceSize offsets[] = {0, 0};

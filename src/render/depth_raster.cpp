@@ -72,7 +72,7 @@ void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTarget
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     for (int large = 0; large < 2; ++large) {
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_raster_pipelines_[large]);
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_raster_pipelines_[large].get());
         for (auto& object : objects_) {
             if (object->geometry.index_count == 0) continue;
             VkDescriptorSet sets[] = {object->set, image_set_};
@@ -101,7 +101,7 @@ void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTarget
 void StippleRenderer::copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets) {
     const bool stencil = gpu::format_has_stencil(depth_format_);
     if (stencil) {  // the coverage stencil (CoverageStencil::Write) from the words, four pixels a word
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_coverage_pipeline_);
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, depth_coverage_pipeline_.get());
         VkDescriptorSet sets[] = {objects_.front()->set, image_set_};
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, layouts_.splat_pipeline, 0, 2, sets, 0, nullptr);
         const uint32_t words = (targets.extent.width * targets.extent.height + 3) / 4;

@@ -19,7 +19,7 @@
 
 namespace stipple {
 
-void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& depth) {
+void StippleRenderer::define_line_pipelines(const gpu::GraphicsPipelineDesc& depth) {
     // Raskar-Cohen: edges with a face facing away as wide lines; the front faces' depth lets only the
     // silhouette through.
     gpu::GraphicsPipelineDesc lines;
@@ -34,13 +34,13 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     lines.stencil = gpu::CoverageStencil::None;  // outlines lie half outside the surface
     lines.color_format = color_format_;
     lines.depth_format = depth_format_;
-    silhouette_pipeline_ = gpu::create_graphics_pipeline(context_, lines, layouts_.pipeline);
+    silhouette_pipeline_.define_graphics(context_, lines, layouts_.pipeline);
     // The same against the depth words, when the depth pass ran as compute (no depth image then).
     gpu::GraphicsPipelineDesc lines_on_words = lines;
     lines_on_words.fragment_shader = "silhouette_words.frag";
     lines_on_words.depth_test = false;
     lines_on_words.specialization = {{{gpu::kSpecDepthUnorm24, depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u}}};
-    silhouette_words_pipeline_ = gpu::create_graphics_pipeline(context_, lines_on_words, layouts_.splat_pipeline);
+    silhouette_words_pipeline_.define_graphics(context_, lines_on_words, layouts_.splat_pipeline);
     // Their round caps: an end of each edge as a point of the line's width (silhouette_caps.vert, kSpecLineCaps).
     for (auto [desc, caps, layout] : {std::tuple{lines, &silhouette_caps_pipeline_, layouts_.pipeline},
                                       std::tuple{lines_on_words, &silhouette_words_caps_pipeline_, layouts_.splat_pipeline}}) {
@@ -51,7 +51,7 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
         desc.dynamic_line_width = false;
         desc.specialization.constants.push_back({gpu::kSpecLineCaps, 1u});
         desc.specialization.constants.push_back({gpu::kSpecMeshVec3Texels, mesh_vec3_texels() ? 1u : 0u});
-        *caps = gpu::create_graphics_pipeline(context_, desc, layout);
+        caps->define_graphics(context_, desc, layout);
     }
 
     gpu::GraphicsPipelineDesc pieces;
@@ -61,12 +61,12 @@ void StippleRenderer::create_line_pipelines(const gpu::GraphicsPipelineDesc& dep
     pieces.depth_write = false;
     pieces.color_format = color_format_;
     pieces.depth_format = depth_format_;
-    line_pieces_pipeline_ = gpu::create_graphics_pipeline(context_, pieces, layouts_.pipeline);
+    line_pieces_pipeline_.define_graphics(context_, pieces, layouts_.pipeline);
 
-    line_edges_pipeline_ = gpu::create_compute_pipeline(context_, "line_edges.comp", layouts_.pipeline);
+    line_edges_pipeline_.define_compute(context_, "line_edges.comp", layouts_.pipeline);
     // Reads the depth pass's words from the splat's frame set (set 1), hence the splat's layout.
     const uint32_t unorm24 = depth_format_ == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
-    line_walk_pipeline_ = gpu::create_compute_pipeline(context_, "line_walk.comp", layouts_.splat_pipeline,
+    line_walk_pipeline_.define_compute(context_, "line_walk.comp", layouts_.splat_pipeline,
                                                        {{{gpu::kSpecDepthUnorm24, unorm24},
                                                          {gpu::kSpecMeshVec3Texels, mesh_vec3_texels() ? 1u : 0u}}});
 }
@@ -88,7 +88,7 @@ void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
     gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_edges_pipeline_);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_edges_pipeline_.get());
     const uint32_t group = gpu::kDensityWorkgroupSize;
     for (const auto& object : objects_) {
         if (!draws_edge_lines(*object)) continue;
@@ -99,7 +99,7 @@ void StippleRenderer::record_line_edges(VkCommandBuffer cb) {
         gpu::memory_barrier(cb, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_walk_pipeline_);
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, line_walk_pipeline_.get());
         for (const auto& object : objects_) {
             if (!draws_edge_lines(*object) || !draws_object_space_lines(object->params)) continue;
             VkDescriptorSet sets[] = {object->set, image_set_};
@@ -122,7 +122,7 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
                                 nullptr);
         if (object->params.silhouette_lines) {
-            const VkPipeline pipeline = depth_by_compute_ ? silhouette_words_pipeline_ : silhouette_pipeline_;
+            const VkPipeline pipeline = depth_by_compute_ ? silhouette_words_pipeline_.get() : silhouette_pipeline_.get();
             if (bound != pipeline) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             bound = pipeline;
             if (depth_by_compute_) {  // the depth words too (set 1)
@@ -137,7 +137,7 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
             vkCmdBindIndexBuffer(cb, object->frame.silhouette_lines.handle(), 0, VK_INDEX_TYPE_UINT32);
             vkCmdDrawIndexedIndirect(cb, object->frame.silhouette_lines.handle(), 0, 1, sizeof(gpu::SilhouetteLines));
             if (object->frame.line_width > gpu::kLineCapsAbovePx && context_.features.large_points) {
-                bound = depth_by_compute_ ? silhouette_words_caps_pipeline_ : silhouette_caps_pipeline_;
+                bound = depth_by_compute_ ? silhouette_words_caps_pipeline_.get() : silhouette_caps_pipeline_.get();
                 vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
                 // The list's header as a draw of as many vertices as it holds indices, from its first
                 // (VkDrawIndirectCommand's four words are the indexed command's first four).
@@ -145,8 +145,8 @@ void StippleRenderer::record_lines(VkCommandBuffer cb) {
             }
         }
         if (draws_object_space_lines(object->params)) {
-            if (bound != line_pieces_pipeline_) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, line_pieces_pipeline_);
-            bound = line_pieces_pipeline_;
+            if (bound != line_pieces_pipeline_.get()) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, line_pieces_pipeline_.get());
+            bound = line_pieces_pipeline_.get();
             vkCmdDrawIndirect(cb, object->frame.line_pieces.handle(), 0, 1, sizeof(gpu::LinePiecesHeader));
         }
     }

@@ -26,7 +26,7 @@ StippleRenderer::StippleRenderer(const gpu::Context& context, VkFormat color_for
       timer_(context) {
     try {
         layouts_ = create_render_layouts(context);
-        create_pipelines(color_format, depth_format);
+        define_pipelines(color_format, depth_format);
         deform_pass_ = std::make_unique<DeformPass>(context, mesh_vec3_texels());
         frame_uniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
     } catch (...) {
@@ -41,21 +41,7 @@ void StippleRenderer::release() {
     vkDeviceWaitIdle(context_.device);
     objects_.clear();
     deform_pass_.reset();
-    for (VkPipeline p : {depth_pipeline_, depth_two_sided_pipeline_, depth_back_faces_pipeline_, toon_back_faces_pipeline_,
-                         stipple_pipelines_[0], stipple_pipelines_[1],
-                         stipple_list_pipelines_[0], stipple_list_pipelines_[1],
-                         stipple_gradient_listed_pipelines_[0], stipple_gradient_listed_pipelines_[1],
-                         stipple_chunk_pipelines_[0], stipple_chunk_pipelines_[1],
-                         density_pipelines_[0], density_pipelines_[1], density_list_pipelines_[0],
-                         density_list_pipelines_[1], gradient_pipelines_[0], gradient_pipelines_[1], gradient_pipelines_[2],
-                         gradient_pipelines_[3],
-                         facing_pipeline_,
-                         drawn_stipples_pipeline_, toon_pipeline_,
-                         toon_two_sided_pipeline_, silhouette_pipeline_, silhouette_words_pipeline_, silhouette_caps_pipeline_,
-                         silhouette_words_caps_pipeline_,
-                         line_edges_pipeline_, line_walk_pipeline_, line_pieces_pipeline_, depth_triangles_pipeline_,
-                         depth_raster_pipelines_[0], depth_raster_pipelines_[1], depth_coverage_pipeline_})
-        if (p) vkDestroyPipeline(context_.device, p, nullptr);
+    // The lazily made pipelines go with their members (gpu::LazyPipeline), after this wait for the device.
     for (VkPipeline p : splat_pipelines_)
         if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
@@ -64,7 +50,7 @@ void StippleRenderer::release() {
     destroy_render_layouts(context_, layouts_);
 }
 
-void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_format) {
+void StippleRenderer::define_pipelines(VkFormat color_format, VkFormat depth_format) {
     gpu::GraphicsPipelineDesc depth;
     depth.vertex_shader = "depth.vert";
     depth.vertex_bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -78,16 +64,16 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     depth.color_write = false;  // depth only; the colour attachment stays bound for the one rendering scope
     depth.color_format = color_format;
     depth.depth_format = depth_format;
-    depth_pipeline_ = gpu::create_graphics_pipeline(context_, depth, layouts_.pipeline);
+    depth_pipeline_.define_graphics(context_, depth, layouts_.pipeline);
     // Two-sided objects: their faces facing away carry stipples too, at the same polygon offset.
     gpu::GraphicsPipelineDesc depth_two_sided = depth;
     depth_two_sided.cull_mode = VK_CULL_MODE_NONE;
-    depth_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, depth_two_sided, layouts_.pipeline);
+    depth_two_sided_pipeline_.define_graphics(context_, depth_two_sided, layouts_.pipeline);
     // An open one-sided object's faces facing away (depth_holds_back_faces), seen through its openings: drawn
     // after its front faces with kBackFaceBiasScale, they only hide what lies behind them.
     gpu::GraphicsPipelineDesc depth_back_faces = depth;
     depth_back_faces.cull_mode = VK_CULL_MODE_FRONT_BIT;
-    depth_back_faces_pipeline_ = gpu::create_graphics_pipeline(context_, depth_back_faces, layouts_.pipeline);
+    depth_back_faces_pipeline_.define_graphics(context_, depth_back_faces, layouts_.pipeline);
 
     gpu::GraphicsPipelineDesc stipple;
     stipple.vertex_shader = "stipple.vert";
@@ -108,14 +94,14 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     for (uint32_t round : {0u, 1u}) {  // [1]: large dots, pulled onto their own slanted surface
         gpu::GraphicsPipelineDesc variant = stipple;
         variant.specialization.constants.push_back({gpu::kSpecRoundPoints, round});
-        stipple_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
+        stipple_pipelines_[round].define_graphics(context_, variant, layouts_.pipeline);
         gpu::GraphicsPipelineDesc vertex_path = variant;  // the vertex path's two draws
         vertex_path.specialization.constants.push_back({gpu::kSpecGradientListed, 1u});
-        stipple_gradient_listed_pipelines_[round] = gpu::create_graphics_pipeline(context_, vertex_path, layouts_.pipeline);
+        stipple_gradient_listed_pipelines_[round].define_graphics(context_, vertex_path, layouts_.pipeline);
         vertex_path.specialization.constants.push_back({gpu::kSpecGradientChunks, 1u});
-        stipple_chunk_pipelines_[round] = gpu::create_graphics_pipeline(context_, vertex_path, layouts_.pipeline);
+        stipple_chunk_pipelines_[round].define_graphics(context_, vertex_path, layouts_.pipeline);
         variant.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
-        stipple_list_pipelines_[round] = gpu::create_graphics_pipeline(context_, variant, layouts_.pipeline);
+        stipple_list_pipelines_[round].define_graphics(context_, variant, layouts_.pipeline);
     }
 
     gpu::GraphicsPipelineDesc toon = depth;
@@ -124,32 +110,32 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
     toon.vertex_bindings.push_back({1, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX});
     toon.vertex_attributes.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
     toon.color_write = true;  // opaque: the nearest surface's toon ink wins with the depth test
-    toon_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
+    toon_pipeline_.define_graphics(context_, toon, layouts_.pipeline);
     toon.cull_mode = VK_CULL_MODE_NONE;  // toon.frag flips the normal of faces seen from behind
-    toon_two_sided_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
+    toon_two_sided_pipeline_.define_graphics(context_, toon, layouts_.pipeline);
     toon.cull_mode = VK_CULL_MODE_FRONT_BIT;  // an open one-sided object's faces facing away (depth_back_faces)
-    toon_back_faces_pipeline_ = gpu::create_graphics_pipeline(context_, toon, layouts_.pipeline);
+    toon_back_faces_pipeline_.define_graphics(context_, toon, layouts_.pipeline);
 
     for (uint32_t facing : {0u, 1u}) {  // [1]: the variants that write the facing bits (objects with lines)
         // The corners of polygons large on screen are read as the stipple shaders read them.
-        density_pipelines_[facing] = gpu::create_compute_pipeline(
+        density_pipelines_[facing].define_compute(
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
-        density_list_pipelines_[facing] = gpu::create_compute_pipeline(
+        density_list_pipelines_[facing].define_compute(
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecListDrawn, 1u}, {gpu::kSpecFacingBits, facing}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
     }
     for (uint32_t list : {0u, 1u, 2u, 3u})  // [2]: the vertex path's chunks; [3]: the splat's varying polygons apart
-        gradient_pipelines_[list] = gpu::create_compute_pipeline(
+        gradient_pipelines_[list].define_compute(
             context_, "density.comp", layouts_.pipeline,
             {{{gpu::kSpecGradientPass, 1u},
               {gpu::kSpecListDrawn, list == 1 || list == 3 ? 1u : 0u},
               {gpu::kSpecListGradientChunks, list == 2 ? 1u : 0u},
               {gpu::kSpecListVaryingApart, list == 3 ? 1u : 0u},
               {gpu::kSpecMeshVec3Texels, vec3_texels}}});
-    facing_pipeline_ = gpu::create_compute_pipeline(context_, "density.comp", layouts_.pipeline,
+    facing_pipeline_.define_compute(context_, "density.comp", layouts_.pipeline,
                                                     {{{gpu::kSpecFacingOnly, 1u}, {gpu::kSpecMeshVec3Texels, vec3_texels}}});
-    create_line_pipelines(depth);
+    define_line_pipelines(depth);
 
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
@@ -160,15 +146,15 @@ void StippleRenderer::create_pipelines(VkFormat color_format, VkFormat depth_for
                               {gpu::kSpecMeshVec3Texels, vec3_texels}}};
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
-    drawn_stipples_pipeline_ = gpu::create_compute_pipeline(context_, "drawn_stipples.comp", layouts_.pipeline);
-    depth_triangles_pipeline_ = gpu::create_compute_pipeline(context_, "depth_triangles.comp", layouts_.pipeline,
+    drawn_stipples_pipeline_.define_compute(context_, "drawn_stipples.comp", layouts_.pipeline);
+    depth_triangles_pipeline_.define_compute(context_, "depth_triangles.comp", layouts_.pipeline,
                                                              {{{gpu::kSpecMeshVec3Texels, vec3_texels}}});
     if (context_.features.int64) {  // the depth pass as compute (render/depth_raster.hpp)
         for (uint32_t large = 0; large < 2; ++large)
-            depth_raster_pipelines_[large] = gpu::create_compute_pipeline(
+            depth_raster_pipelines_[large].define_compute(
                 context_, "depth_raster.comp", layouts_.splat_pipeline,
                 {{{gpu::kSpecDepthUnorm24, unorm24}, {gpu::kSpecMeshVec3Texels, vec3_texels}, {gpu::kSpecRasterLarge, large}}});
-        depth_coverage_pipeline_ = gpu::create_compute_pipeline(context_, "depth_coverage.comp", layouts_.splat_pipeline,
+        depth_coverage_pipeline_.define_compute(context_, "depth_coverage.comp", layouts_.splat_pipeline,
                                                                 {{{gpu::kSpecDepthUnorm24, unorm24}}});
     }
 }
@@ -273,9 +259,9 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
                             object->params.density_path == DensityPath::Cpu;
         const size_t round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u ? 1 : 0;
         const bool gradient_listed = lists_gradient_chunks(*object);
-        const VkPipeline pipeline = listed            ? stipple_list_pipelines_[round]
-                                    : gradient_listed ? stipple_gradient_listed_pipelines_[round]
-                                                      : stipple_pipelines_[round];
+        const VkPipeline pipeline = listed            ? stipple_list_pipelines_[round].get()
+                                    : gradient_listed ? stipple_gradient_listed_pipelines_[round].get()
+                                                      : stipple_pipelines_[round].get();
         auto use = [&](VkPipeline p) {
             if (p != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
             bound = p;
@@ -291,7 +277,7 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         } else {  // vertex; splat and cpu-splat on targets without the splat's transfers
             vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
             if (gradient_listed) {  // the polygons whose density changes across them, a chunk an instance
-                use(stipple_chunk_pipelines_[round]);
+                use(stipple_chunk_pipelines_[round].get());
                 vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
             }
         }

@@ -166,11 +166,11 @@ public:
 private:
     // The mesh texel views' layout (shaders/stipple_position.h, kSpecMeshVec3Texels).
     bool mesh_vec3_texels() const;
-    void create_pipelines(VkFormat color_format, VkFormat depth_format);
+    void define_pipelines(VkFormat color_format, VkFormat depth_format);
     // Destroys what the constructor made; also when it throws midway (a shader missing), since a
     // destructor does not run then and the device would be destroyed with them alive.
     void release();
-    void create_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
+    void define_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
     void record_stipples(VkCommandBuffer cb);
     // clear: the depth pass's scope (depth and stencil cleared; the colour too unless clear_color is false).
@@ -215,41 +215,41 @@ private:
     VkFormat depth_format_;
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
     std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
-    VkPipeline depth_pipeline_ = VK_NULL_HANDLE;
+    gpu::LazyPipeline depth_pipeline_;
     // [1]: the variants for large dots (kSpecRoundPoints).
-    VkPipeline stipple_pipelines_[2] = {};       // every candidate; the vertex shader culls (§3.2)
-    VkPipeline stipple_list_pipelines_[2] = {};  // the survivors' list (indirect and cpu paths)
+    gpu::LazyPipeline stipple_pipelines_[2];       // every candidate; the vertex shader culls (§3.2)
+    gpu::LazyPipeline stipple_list_pipelines_[2];  // the survivors' list (indirect and cpu paths)
     // The vertex path's: every candidate but those of the polygons whose density changes across them,
     // then those, a chunk an instance.
-    VkPipeline stipple_gradient_listed_pipelines_[2] = {};
-    VkPipeline stipple_chunk_pipelines_[2] = {};
+    gpu::LazyPipeline stipple_gradient_listed_pipelines_[2];
+    gpu::LazyPipeline stipple_chunk_pipelines_[2];
     // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
-    VkPipeline density_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    VkPipeline density_list_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};  // also list the polygons that draw, for the splat
+    gpu::LazyPipeline density_pipelines_[2];
+    gpu::LazyPipeline density_list_pipelines_[2];  // also list the polygons that draw, for the splat
     // The density pass's gradient pass over the polygons large on screen: [1] also lists their work items,
     // [2] the chunks of those whose density changes across them (the vertex path's second draw), [3] their
     // work items apart from the work list (the splat's varying dispatch).
-    VkPipeline gradient_pipelines_[4] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE};
-    VkPipeline drawn_stipples_pipeline_ = VK_NULL_HANDLE;  // the indirect path's survivors' list
-    VkPipeline depth_triangles_pipeline_ = VK_NULL_HANDLE;  // the triangles the depth pass draws
+    gpu::LazyPipeline gradient_pipelines_[4];
+    gpu::LazyPipeline drawn_stipples_pipeline_;  // the indirect path's survivors' list
+    gpu::LazyPipeline depth_triangles_pipeline_;  // the triangles the depth pass draws
     // The depth pass as compute: [0] every triangle, the small ones drawn; [1] the listed ones (kSpecRasterLarge).
-    VkPipeline depth_raster_pipelines_[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    VkPipeline depth_coverage_pipeline_ = VK_NULL_HANDLE;  // the coverage stencil from its words
+    gpu::LazyPipeline depth_raster_pipelines_[2];
+    gpu::LazyPipeline depth_coverage_pipeline_;  // the coverage stencil from its words
     bool depth_by_compute_ = false;  // this frame's depth pass ran as compute
     bool depth_triangles_small_ = false;  // the prepared view's triangles are small enough for it (auto)
-    VkPipeline depth_two_sided_pipeline_ = VK_NULL_HANDLE;  // the depth pass with the faces facing away too
-    VkPipeline toon_pipeline_ = VK_NULL_HANDLE;        // depth pass of toon-mode objects (§3.1)
-    VkPipeline toon_two_sided_pipeline_ = VK_NULL_HANDLE;
-    VkPipeline depth_back_faces_pipeline_ = VK_NULL_HANDLE;  // an open one-sided object's faces facing away
-    VkPipeline toon_back_faces_pipeline_ = VK_NULL_HANDLE;
-    VkPipeline facing_pipeline_ = VK_NULL_HANDLE;      // facing bits alone (objects with CPU densities and lines)
-    VkPipeline silhouette_pipeline_ = VK_NULL_HANDLE;  // Raskar-Cohen back-face lines (§3.1)
-    VkPipeline silhouette_words_pipeline_ = VK_NULL_HANDLE;  // the same tested against the depth words
-    VkPipeline silhouette_caps_pipeline_ = VK_NULL_HANDLE;        // their round caps, as points (kSpecLineCaps)
-    VkPipeline silhouette_words_caps_pipeline_ = VK_NULL_HANDLE;  // the same against the depth words
-    VkPipeline line_edges_pipeline_ = VK_NULL_HANDLE;  // this frame's lines from the edge table
-    VkPipeline line_walk_pipeline_ = VK_NULL_HANDLE;   // the visible pieces of the object-space lines
-    VkPipeline line_pieces_pipeline_ = VK_NULL_HANDLE;  // object-space line pieces as capsules
+    gpu::LazyPipeline depth_two_sided_pipeline_;  // the depth pass with the faces facing away too
+    gpu::LazyPipeline toon_pipeline_;        // depth pass of toon-mode objects (§3.1)
+    gpu::LazyPipeline toon_two_sided_pipeline_;
+    gpu::LazyPipeline depth_back_faces_pipeline_;  // an open one-sided object's faces facing away
+    gpu::LazyPipeline toon_back_faces_pipeline_;
+    gpu::LazyPipeline facing_pipeline_;      // facing bits alone (objects with CPU densities and lines)
+    gpu::LazyPipeline silhouette_pipeline_;  // Raskar-Cohen back-face lines (§3.1)
+    gpu::LazyPipeline silhouette_words_pipeline_;  // the same tested against the depth words
+    gpu::LazyPipeline silhouette_caps_pipeline_;        // their round caps, as points (kSpecLineCaps)
+    gpu::LazyPipeline silhouette_words_caps_pipeline_;  // the same against the depth words
+    gpu::LazyPipeline line_edges_pipeline_;  // this frame's lines from the edge table
+    gpu::LazyPipeline line_walk_pipeline_;   // the visible pieces of the object-space lines
+    gpu::LazyPipeline line_pieces_pipeline_;  // object-space line pieces as capsules
     // Compute splat: its layout (object set + frame images), pipelines, and frame images.
     // Draws the densities of the GPU's pass or the CPU's: [round dots + 2 * print detail's whole dots
     // + 4 * the list + 12 * the density across polygons] (kSpecRoundPoints, kSpecWholeDot, kSpecSplatList,
