@@ -269,6 +269,40 @@ TEST(AppPanel, AWindowReturnsToItsPlaceWhenTheViewerGrowsAgain) {
                 double(lost.x), double(lost.y), double(back.x), double(back.y));
 }
 
+// The panel's height after each stretch of frames at a display (and frame) height, 1280 wide: {height, frames}.
+std::vector<float> panel_heights_over(const std::vector<std::pair<float, int>>& stretches) {
+    ImGuiIO& io = start_headless_imgui(ImVec2(1280.0f, stretches.front().first));
+    Scene scene;
+    app::PanelFigures figures;
+    app::ExportPanelState export_state;
+    std::vector<float> after;
+    for (const auto& [height, frames] : stretches) {
+        io.DisplaySize = ImVec2(1280.0f, height);
+        figures.extent = {1280, uint32_t(height)};
+        float h = 0.0f;
+        for (int frame = 0; frame < frames; ++frame) {
+            ImGui::NewFrame();
+            h = app::draw_panel(scene, {}, figures, export_state).rect.w;
+            ImGui::Render();
+        }
+        after.push_back(h);
+    }
+    ImGui::DestroyContext();
+    return after;
+}
+
+// A viewer made 300 px high, grown for one frame, then made 50 px high and grown again: the frame at full
+// height let the panel fit its content again, which Dear ImGui does over a few frames and caps at the
+// display, so in the 50-px display it became 100 px (its least), under the 200-px floor of its height
+// limit, which therefore did not count it as clamped, and it stayed 100 px high in the full window (the
+// figures alone, the rest behind a scroll bar).
+TEST(AppPanel, ThePanelGrowsBackAfterAVeryLowWindow) {
+    const std::vector<float> h = panel_heights_over({{1024.0f, 6}, {300.0f, 6}, {1024.0f, 1}, {50.0f, 6}, {1024.0f, 6}});
+    EXPECT_GT(h[0], 300.0f);
+    EXPECT_LE(h[3], 200.0f);
+    EXPECT_FLOAT_EQ(h[4], h[0]) << "after 300: " << h[1] << ", after 50: " << h[3];
+}
+
 TEST(AppPanel, AnEnterBetweenTwoFramesCommitsTheTypedValue) {
     const auto [lost, lost_value] = type_and_enter(false);
     EXPECT_FALSE(lost) << "without the latch Dear ImGui 1.86 misses the Enter: the test no longer shows the problem";

@@ -281,6 +281,36 @@ TEST(CliView, SleepsWhileNothingChangesAndWakesOnInput) {
     EXPECT_EQ(session.viewer().wait_exit(30s), 0) << session.err();
 }
 
+// Escape closes an open list of the panel before it quits the viewer (it quit at once, a scene unsaved), and
+// keys are the panel's while the list is open; a window destroyed from outside ends the viewer in one line
+// (Xlib's handler printed its protocol dump).
+TEST(CliView, EscapeClosesAnOpenListFirstAndADestroyedWindowIsOneLine) {
+    if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
+    auto dir = test::temp_dir("cli-view-escape");
+    write_ply_binary((dir / "sphere.ply").string(), make_uv_sphere(4000));
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x(410)) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({(dir / "sphere.ply").string(), "--screenshot-dir", (dir / "shots").string(), "--cache-dir",
+                          (dir / "cache").string()});
+    ASSERT_TRUE(session.find_window()) << session.out() << session.err();
+    session.focus();
+    ASSERT_FALSE(session.screenshot().empty()) << session.err();  // drawn, and S is the viewer's
+    const auto screenshots = [&] { return count_of(session.out(), "screenshot: "); };
+    // The density path's list (the panel's layout at 1280 x 1024 with one object), opened by a click.
+    session.xdotool("mousemove --window " + session.window() + " 150 822 sleep 0.5 click 1 sleep 0.8");
+    const size_t before = screenshots();
+    session.xdotool("key s sleep 1.5");
+    EXPECT_EQ(screenshots(), before) << "S took a screenshot: the click opened no list, or keys went past it";
+    session.xdotool("key Escape sleep 1");
+    ASSERT_TRUE(session.viewer().running()) << "Escape quit the viewer with a list open\n" << session.err();
+    EXPECT_FALSE(session.screenshot().empty()) << "the list did not close: keys are still the panel's";
+    session.xdotool("windowclose " + session.window());
+    EXPECT_EQ(session.viewer().wait_exit(30s), 1);
+    const std::string err = session.err();
+    EXPECT_EQ(count_of(err, "\n"), 1u) << err;
+    EXPECT_NE(err.find("stipple: the X server refused a request of the viewer's ("), std::string::npos) << err;  // BadWindow or BadDrawable
+}
+
 // A script's export line names a vector file; anything else is refused before the window opens, in
 
 }  // namespace

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupsExceptModals
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 #define GLFW_INCLUDE_NONE
@@ -120,6 +122,16 @@ void Overlay::new_frame() {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGuiIO& io = ImGui::GetIO();
+    // A drag that leaves the window keeps its cursor: this backend reads the cursor only over the window or
+    // while the window has focus, so a slider dragged past the window's edge in an unfocused window (no window
+    // manager to focus it) read no cursor and jumped to its least value. The pointer is grabbed while a
+    // button is held, so GLFW's cursor stays true outside.
+    if (!ImGui::IsMousePosValid(&io.MousePos) &&
+        std::any_of(std::begin(io.MouseDown), std::end(io.MouseDown), [](bool down) { return down; })) {
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window_, &x, &y);
+        io.MousePos = ImVec2(float(x), float(y));
+    }
     key_latch_.apply(io.KeysDown, IM_ARRAYSIZE(io.KeysDown), [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS; });
     KeyLatch::set_modifiers(io.KeysDown, io.KeyCtrl, io.KeyShift, io.KeyAlt, io.KeySuper);
     // The panel is drawn into the frame, which a window larger than the device can draw is clamped to
@@ -129,6 +141,10 @@ void Overlay::new_frame() {
         io.DisplaySize.y = std::min(io.DisplaySize.y, float(extent_.height) / io.DisplayFramebufferScale.y);
     }
     ImGui::NewFrame();
+    // Escape closes an open list or menu (this Dear ImGui does so only with keyboard navigation on); the
+    // viewer leaves Escape to the panel meanwhile (wants_keys) rather than quitting.
+    if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopup) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
+        ImGui::ClosePopupsExceptModals();
     in_frame_ = true;
 }
 
@@ -178,5 +194,6 @@ bool Overlay::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
 // Not WantCaptureKeyboard: that also holds while a window is dragged, and a key pressed just after the
 // release (before the next frame updates it) would be lost. Only text fields use keys in this panel.
 bool Overlay::wants_text() const { return ImGui::GetIO().WantTextInput; }
+bool Overlay::wants_keys() const { return wants_text() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopup); }
 
 }  // namespace stipple::app

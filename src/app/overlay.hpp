@@ -46,6 +46,9 @@ public:
     // cursor was over it) / is editing text (then single-letter shortcuts are typing, not commands).
     bool wants_mouse() const;
     bool wants_text() const;
+    // Keys belong to the panel: a text field is typed in, or a list or menu is open (Escape closes it
+    // rather than quitting the viewer).
+    bool wants_keys() const;
 
     // The panel's layer, for the window's copy to lay over the frame (Swapchain::present); no pixels
     // where the panel is drawn straight into every frame.

@@ -148,7 +148,8 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(470, 0), ImGuiCond_FirstUseEver);
-    const float max_height = std::max(200.0f, float(figures.extent.height) - 20);
+    // The height the display the panel is drawn in leaves it (the frame's can differ for a frame after a resize).
+    const float max_height = std::max(200.0f, ImGui::GetIO().DisplaySize.y - 20);
     // A window made small clamps the panel's height; grown again, the panel fits its content again (it
     // stayed 200 px tall, the timeline over its figures).
     static float clamped_at = 0.0f;   // the height limit that last clamped the panel, 0 if none
@@ -176,7 +177,9 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     bool open = ImGui::Begin(title);
     place.after_begin(ImGui::GetIO().DisplaySize);
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    if (size.y >= max_height - 0.5f) clamped_at = max_height;
+    // Clamped by the limit, or squeezed by Dear ImGui into a display lower than the limit's floor (a 50-px
+    // window made it 100 px, under the limit of 200, and the panel was never grown again).
+    if (size.y >= max_height - 0.5f || size.y > ImGui::GetIO().DisplaySize.y - 20) clamped_at = max_height;
     last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
     requests.open = open && !ImGui::IsWindowCollapsed();  // a new window's first Begin is true while folded too

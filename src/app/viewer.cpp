@@ -105,7 +105,7 @@ Viewer::Viewer(Scene scene, SceneContent content, const ViewerOptions& options)
             };
             return panel_visible_ && (over(panel_rect_) || over(timeline_rect_) || overlay_->wants_mouse());
         },
-        [this] { return panel_visible_ && overlay_->wants_text(); });
+        [this] { return panel_visible_ && overlay_->wants_keys(); });
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = context_.command_pool;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;

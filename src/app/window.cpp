@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/x11_errors.hpp"
 #include "core/error.hpp"
 #include "gpu/vk_check.hpp"
 
@@ -38,6 +39,7 @@ Window::Window(int width, int height, const std::string& title) {
         glfwTerminate();
         fail("cannot open a window: " + (reason.empty() ? "glfwCreateWindow failed" : reason));
     }
+    report_x11_failures_in_one_line();
     glfwSetWindowUserPointer(window_, this);
     // Installed before Dear ImGui's backend, which chains to them: both see every event.
     glfwSetCursorPosCallback(window_, on_cursor);
