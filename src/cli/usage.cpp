@@ -178,8 +178,8 @@ void view_section() {
   H hides/shows the panel (folded to its title in a window under 1000 px wide: click to open it),
   S saves a screenshot (window resolution, without the panel), V toggles vsync, O switches between
   perspective and orthographic projection, Space plays or
-  pauses the animation, Ctrl+S saves the scene, Escape or Q quits. The panel
-  sets every per-object parameter (generation parameters take effect on release or Enter: new
+  pauses the animation, Ctrl+S saves the scene, Escape or Q quits (Escape first closes an open
+  list). The panel sets every per-object parameter (generation parameters take effect on release or Enter: new
   stipples are made in the background with a progress bar while the old ones are drawn, and a newer
   value cancels an older one; dropped models load in the background too), the light, paper and ink
   colours, and shows at its top fps, CPU and GPU frame time and stipple counts, and at its foot the
