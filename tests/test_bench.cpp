@@ -704,6 +704,10 @@ TEST(BenchCommand, BadArgumentsFailWithOneLine) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_EQ(r.err.rfind("stipple: ", 0), 0u) << r.err;
     }
+    // A row named as its files are ("low-res-dragon.ply"), without the quotes its space needs, is that row.
+    const test::CommandResult twice = run_stipple({"bench", "--models", "low-res-dragon,low-res dragon"});
+    EXPECT_EQ(twice.exit_code, 1);
+    EXPECT_EQ(twice.err, "stipple: --models: 'low-res dragon' is named twice\n");
 }
 
 }  // namespace

@@ -1,10 +1,16 @@
 #include "bench/table1.hpp"
 
+#include <algorithm>
+
 namespace stipple::bench {
 
 const PaperRow* find_paper_row(const std::string& name) {
-    for (const PaperRow& row : kPaperTable)
-        if (name == row.name) return &row;
+    // "low-res-dragon" too, as the row's model and image files are named (no quotes needed in a shell).
+    for (const PaperRow& row : kPaperTable) {
+        std::string hyphened = row.name;
+        std::replace(hyphened.begin(), hyphened.end(), ' ', '-');
+        if (name == row.name || name == hyphened) return &row;
+    }
     return nullptr;
 }
 

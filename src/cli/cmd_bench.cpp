@@ -71,10 +71,11 @@ int run_bench(const std::vector<std::string>& argv) {
     options.animated_only = args.flag("--animated-only");
     if (options.animated_only && options.animated_triangles == 0) fail("--animated-only needs --animated-triangles > 0");
     if (args.has("--models")) {
-        for (const std::string& name : split_list("--models", args.get("--models", "")))
-            if (!bench::find_paper_row(name))
-                fail("--models: unknown model '" + name + "' (the rows of Table 1 are: " + bench::paper_row_names() + ")");
-        options.models = split_list("--models", args.get("--models", ""));
+        for (const std::string& name : split_list("--models", args.get("--models", ""))) {
+            const bench::PaperRow* row = bench::find_paper_row(name);
+            if (!row) fail("--models: unknown model '" + name + "' (the rows of Table 1 are: " + bench::paper_row_names() + ")");
+            options.models.push_back(row->name);  // "low-res-dragon" as the row's own name
+        }
         fail_on_repeats("--models", options.models);
     } else if (options.quick) {
         options.models = {bench::kPaperTable[0].name, bench::kPaperTable[1].name};

@@ -69,9 +69,9 @@ void render_section() {
   --animation NAME|N      what an animated glTF MODEL plays: an animation's name or index (default:
                           its first); `stipple info MODEL` lists them
   --time SECONDS          the scene clock of the (first) frame (default 0); animations loop
-  --fps F                 frames per second of a sequence (--frames N or a camera_path; 0.001..1000,
-                          default 30): frame i shows --time + i/F; with an animated model --frames
-                          alone renders the animation
+  --fps F                 an animated model's frames per second in a sequence (--frames N or a
+                          camera_path; 0.001..1000, default 30): frame i shows --time + i/F; --frames
+                          alone renders the animation (a still model's sequence takes no --fps)
 
 )");
 }
@@ -109,7 +109,7 @@ void vector_section() {
                           (WxHmm: 10 mm to 10 m a side, a PDF's at most 5080 mm; default A4 for
                           vector output; a print image names its page). A named size without
                           -portrait or -landscape is turned as the drawing is (landscape when wider
-                          than tall); with --fit frame a print image's is portrait
+                          than tall); with --fit frame and no --width a print image's is portrait
   --margin MM             border of bare paper around the drawing (default 10)
   --fit WHAT              vector output and print images: drawing (what is drawn, its dots and
                           lines, fills the page inside the margins, enlarged at most 4 times) or
@@ -257,8 +257,9 @@ void tone_section() {
 itself; without MODEL the default scene's model):
   --distances 1,2,4,8,16  camera distances, multiples of the framing distance
   --views 30:10,...       YAW:PITCH pairs in degrees (default 30:10), one table row each
-  --frames N              average each view over N frames at yaws spread over --arc DEG (default 1;
-                          the arc defaults to 40 with frames; 360 goes all around the object)
+  --frames N              average each view over N frames at yaws spread over --arc DEG (1..64,
+                          default 1; the arc defaults to 40 with frames; 360 goes all around the
+                          object)
   --fov DEG               vertical field of view (default 30); a narrow one keeps the same surface in
                           view at every distance (perspective shows a framed object's sides less)
   --orthographic          parallel lines of sight: the same surface in view at every distance, only
@@ -268,8 +269,8 @@ itself; without MODEL the default scene's model):
                           enhancement owes and draws, and the ink they leave on the screen
   --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
                           each distance's ink averaged over the seeds (instead of --seed)
-  --images DIR            write each view and distance (cropped to the object; a crop under 256 px
-                          high enlarged to about that, at most 8 times) as PNG:
+  --images DIR            write each view and distance (cropped to the object; a crop under 128 px
+                          high enlarged by a whole factor, at most 8, to 128-255 px) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
   A distance at which the object covers no pixel (beyond the frame, the camera inside it, thinner than
@@ -300,8 +301,10 @@ void bench_section() {
                           the paper's columns (without the contours, borders and creases columns)
   --out DIR               where results.md, results.json, chart.svg, images/ go (default: bench-results)
   --models a,b  --paths vertex,cpu,...|all  --frames N (default 20)  --warmup N (default 3)
+                          (rows: horse, low-res-dragon, bunny, skeleton1, skeleton2, hand, dragon)
   --width N --height N (default 1280 x 1024)  --device N  --list-devices
-  --models-dir DIR        where the scans are (default: $STIPPLE_SHARED_MODELS, else ../shared/models)
+  --models-dir DIR        where the scans are (default: $STIPPLE_SHARED_MODELS, else the source
+                          folder's ../shared/models)
   --cache-dir DIR         where the models derived from them are kept (not the stipple cache;
                           default: $STIPPLE_CACHE_DIR/bench-models, else the build folder's bench-models)
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
