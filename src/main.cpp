@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
     std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     const auto asks_help = [](const std::string& a) { return a == "--help" || a == "-h" || a == "help"; };
+    if (!args.empty() && (args[0] == "--version" || args[0] == "version")) {
+        std::printf("stipple %s\n", STIPPLE_VERSION);
+        return 0;
+    }
     if (args.empty() || asks_help(args[0])) {
         // `stipple help view` (or --help view, -h view), as `stipple view --help`; `help help` is everything.
         if (args.size() >= 2 && !asks_help(args[1])) {

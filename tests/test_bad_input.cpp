@@ -48,6 +48,16 @@ TEST(NoTriangleArea, ObjOfCollinearTriangles) {
                  "no triangle with non-zero area (all 2 triangles are degenerate)");
 }
 
+// A text file of another kind renamed .obj said only "the model has no triangles"; vertices without faces
+// say how many there are.
+TEST(NoTriangleArea, ObjWithoutFacesSaysWhatItHas) {
+    const auto dir = temp_dir("bad_obj_no_faces");
+    expect_error(write_file(dir / "notes.obj", "Shopping list\n- bread\n- milk\n"),
+                 "no vertex (v) or face (f) statements: not an OBJ model");
+    expect_error(write_file(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+                 "the model has no triangles (3 vertices and no face (f) statements)");
+}
+
 TEST(NoTriangleArea, PlyOfRepeatedCorners) {
     const auto dir = temp_dir("bad_zero_area_ply");
     expect_error(write_file(dir / "repeated.ply",

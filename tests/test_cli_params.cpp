@@ -8,6 +8,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -205,6 +206,9 @@ TEST(ParamTable, HelpAnywhereAfterTheCommandPrintsTheUsage) {
         EXPECT_EQ(r.exit_code, 0) << args.back() << ": " << r.err;
         EXPECT_NE(r.out.find("Usage:"), std::string::npos) << r.out;
     }
+    const test::CommandResult version = test::run_stipple({"--version"});
+    EXPECT_EQ(version.exit_code, 0) << version.err;
+    EXPECT_TRUE(std::regex_match(version.out, std::regex("stipple [0-9]+\\.[0-9]+\\.[0-9]+\n"))) << version.out;
 }
 
 // Whether `help` names `option` as a word of its own (not "--frames" inside "--benchmark-frames").

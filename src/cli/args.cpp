@@ -73,7 +73,7 @@ double Args::number(const std::string& name, double fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
     const std::optional<double> value = parse_decimal(it->second);
-    if (!value) fail("option " + name + ": '" + it->second + "' is not a finite number");
+    if (!value) fail(name + ": '" + it->second + "' is not a finite number");
     return *value;
 }
 
@@ -81,7 +81,7 @@ long long Args::integer(const std::string& name, long long fallback) const {
     auto it = values_.find(name);
     if (it == values_.end()) return fallback;
     const std::optional<int64_t> value = parse_decimal_integer(it->second);
-    if (!value) fail("option " + name + ": '" + it->second + "' is not an integer");
+    if (!value) fail(name + ": '" + it->second + "' is not an integer");
     return *value;
 }
 
@@ -96,14 +96,14 @@ glm::vec3 Args::vec3(const std::string& name, glm::vec3 fallback) const {
         const std::optional<double> part =
             comma == std::string::npos ? std::nullopt : parse_decimal(std::string_view(text).substr(start, comma - start));
         if (!part || (i == 2 && text.find(',', start) != std::string::npos))
-            fail("option " + name + ": '" + text + "' is not three numbers " +
+            fail(name + ": '" + text + "' is not three numbers " +
                  (name == "--ink" || name == "--paper" ? "R,G,B" : "X,Y,Z"));
         v[i] = *part;
         start = comma + 1;
     }
     // Read in double so that 1e300 is named for what it is, not "not a number".
     if (glm::any(glm::greaterThan(glm::abs(v), glm::dvec3(std::numeric_limits<float>::max()))))
-        fail("option " + name + ": '" + it->second + "' has a number beyond single precision (3.4e+38)");
+        fail(name + ": '" + it->second + "' has a number beyond single precision (3.4e+38)");
     return glm::vec3(v);
 }
 
@@ -117,10 +117,10 @@ glm::vec3 Args::colour(const std::string& name, glm::vec3 fallback) const {
         const bool hash = !text.empty() && text[0] == '#';
         const std::string digits = hash ? text.substr(1) : text;
         if (!hash && !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos)
-            fail("option " + name + ": '" + text + "' is not a colour: write #" + text + " for hex digits, or R,G,B each in 0..1");
+            fail(name + ": '" + text + "' is not a colour: write #" + text + " for hex digits, or R,G,B each in 0..1");
         const bool hex = !digits.empty() && digits.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
         if (!hex || (digits.size() != 6 && digits.size() != 3))
-            fail("option " + name + ": '" + text + "' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)");
+            fail(name + ": '" + text + "' is not a colour (#rrggbb, #rgb, or R,G,B each in 0..1)");
         const size_t width = digits.size() / 3;  // 2 or 1 hex digits a channel; #abc is #aabbcc
         glm::vec3 c;
         for (int i = 0; i < 3; ++i) {
@@ -132,7 +132,7 @@ glm::vec3 Args::colour(const std::string& name, glm::vec3 fallback) const {
     const glm::vec3 c = vec3(name, fallback);
     for (int i = 0; i < 3; ++i)
         if (!(c[i] >= 0.0f && c[i] <= 1.0f))
-            fail("option " + name + ": '" + text + "' is not a colour: each of R,G,B must be in 0..1 (or give #rrggbb)");
+            fail(name + ": '" + text + "' is not a colour: each of R,G,B must be in 0..1 (or give #rrggbb)");
     return c;
 }
 

@@ -408,7 +408,8 @@ void command_list() {
     std::printf("Usage:\n");
     for (const CommandHelp& command : kCommands) std::fputs(command.entry, stdout);
     std::printf("  stipple --help                  this text (stipple COMMAND --help or stipple help COMMAND: one\n"
-                "                                  command's options)\n\n");
+                "                                  command's options)\n"
+                "  stipple --version               the version\n\n");
 }
 
 }  // namespace

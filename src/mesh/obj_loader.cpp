@@ -125,7 +125,11 @@ public:
         check_far(far_vertex_, positions_.size(), "vertex", "vertices");
         check_far(far_normal_, normals_.size(), "normal", "normals");
         check_far(far_texcoord_, texcoords_, "texture coordinate", "texture coordinates");
-        if (face_end_.empty()) fail_file(path_, "the model has no triangles");
+        // A text file of another kind renamed .obj reads as nothing at all (unknown statements are skipped).
+        if (face_end_.empty() && positions_.empty())
+            fail_file(path_, "no vertex (v) or face (f) statements: not an OBJ model");
+        if (face_end_.empty())
+            fail_file(path_, "the model has no triangles (" + std::to_string(positions_.size()) + " vertices and no face (f) statements)");
     }
 
     // Polygons into triangles; where faces give one position different normals, the first normal keeps
