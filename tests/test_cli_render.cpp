@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -111,6 +112,16 @@ TEST(CliRender, InfoPrintsFiguresAsJson) {
     }
     const test::CommandResult text = run_stipple({"info", model, "--cache-dir", (dir / "cache").string()});
     EXPECT_NE(text.out.find("surface:             open (4 border edges)"), std::string::npos) << text.out;
+    // The cache lists the entry; another seed is another entry of the same model, told apart by its key.
+    const auto listed = [&] { return run_stipple({"cache", "--list", "--cache-dir", (dir / "cache").string()}).out; };
+    EXPECT_NE(listed().find("\n1 entry, "), std::string::npos) << listed();
+    ASSERT_EQ(run_stipple({"info", model, "--seed", "2", "--cache-dir", (dir / "cache").string()}).exit_code, 0);
+    const std::string two = listed();
+    EXPECT_NE(two.find("\n2 entries, "), std::string::npos) << two;
+    std::set<std::string> keys;
+    for (size_t at = two.find('[', two.find('\n')); at != std::string::npos; at = two.find('[', at + 1))  // after the heading
+        keys.insert(two.substr(at, two.find(']', at) - at));
+    EXPECT_EQ(keys.size(), 2u) << two;
 }
 
 // An OBJ of `quads` squares of side 2 stacked 1e-4 apart: a large area in a small model, whose planned

@@ -59,18 +59,21 @@ int run_cache(const std::vector<std::string>& argv) {
     }
     uint64_t total = 0;
     const auto entries = list_cache_entries(settings.dir);
-    std::printf("%s (limit %s; most recently used first)\n", settings.dir.c_str(), cache_size_text(settings.max_bytes).c_str());
+    // One entry per model and generation parameters (seed, D_max, budget, ...): the same model's entries are
+    // told apart by their key, the entry's file name.
+    std::printf("%s (limit %s; most recently used first; [key] tells one model's entries apart)\n", settings.dir.c_str(),
+                cache_size_text(settings.max_bytes).c_str());
     for (const CacheEntryInfo& e : entries) {
         total += e.bytes;
         if (e.readable)
-            std::printf("  %s  %9s  %10llu stipples  %9llu polygons  %s\n", local_time(e.last_used).c_str(),
+            std::printf("  %s  %9s  %10llu stipples  %9llu polygons  [%s]  %s\n", local_time(e.last_used).c_str(),
                         cache_size_text(e.bytes).c_str(), (unsigned long long)e.stipples, (unsigned long long)e.triangles,
-                        e.model.c_str());
+                        e.path.stem().c_str(), e.model.c_str());
         else
             std::printf("  %s  %9s  (unreadable: %s)\n", local_time(e.last_used).c_str(), cache_size_text(e.bytes).c_str(),
                         e.path.filename().c_str());
     }
-    std::printf("%zu entries, %s\n", entries.size(), cache_size_text(total).c_str());
+    std::printf("%zu %s, %s\n", entries.size(), entries.size() == 1 ? "entry" : "entries", cache_size_text(total).c_str());
     return 0;
 }
 
