@@ -177,9 +177,11 @@ PanelRequests draw_panel(Scene& scene, const std::vector<std::string>& names, co
     bool open = ImGui::Begin(title);
     place.after_begin(ImGui::GetIO().DisplaySize);
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    // Clamped by the limit, or squeezed by Dear ImGui into a display lower than the limit's floor (a 50-px
-    // window made it 100 px, under the limit of 200, and the panel was never grown again).
-    if (size.y >= max_height - 0.5f || size.y > ImGui::GetIO().DisplaySize.y - 20) clamped_at = max_height;
+    // Clamped by the limit, or squeezed by Dear ImGui to its least height in a display lower than the limit's
+    // floor (a 50-px window made it 100 px, under the limit of 200, and the panel was never grown again); a
+    // panel the user made that low by hand is left as it is.
+    const bool squeezed = size.y <= 100.5f && ImGui::GetIO().DisplaySize.y - 20 < 200.0f;
+    if (size.y >= max_height - 0.5f || squeezed) clamped_at = max_height;
     last_width = size.x;
     requests.rect = {pos.x, pos.y, size.x, size.y};
     requests.open = open && !ImGui::IsWindowCollapsed();  // a new window's first Begin is true while folded too

@@ -143,7 +143,9 @@ void Window::on_key(GLFWwindow* w, int key, int, int action, int mods) {
     if (action == GLFW_RELEASE || me->wants_keyboard_()) return;
     auto& out = me->pending_.commands;
     switch (key) {
-        case GLFW_KEY_ESCAPE: out.push_back(KeyCommand::Quit); break;
+        case GLFW_KEY_ESCAPE:  // a press, not its repeat: Escape held to close a list would quit once it closed
+            if (action == GLFW_PRESS) out.push_back(KeyCommand::Quit);
+            break;
         case GLFW_KEY_LEFT: out.push_back(KeyCommand::OrbitLeft); break;
         case GLFW_KEY_RIGHT: out.push_back(KeyCommand::OrbitRight); break;
         case GLFW_KEY_UP: out.push_back(KeyCommand::OrbitUp); break;

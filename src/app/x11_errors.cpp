@@ -14,8 +14,8 @@ namespace stipple::app {
 
 namespace {
 
-// Neither may return into Xlib after a fatal failure, nor call back into it: std::_Exit, no atexit handlers
-// (the viewer's teardown would talk to the server again).
+// Neither returns into Xlib after a fatal failure: std::_Exit, no atexit handlers (the viewer's teardown
+// would talk to the server again).
 [[noreturn]] void end_viewer(const char* line) {
     std::fflush(stdout);
     std::fprintf(stderr, "stipple: %s\n", line);
@@ -25,10 +25,12 @@ namespace {
 
 int on_x_error(Display* display, XErrorEvent* event) {
     char text[160] = {};
-    XGetErrorText(display, event->error_code, text, sizeof text);
-    char line[320];
-    std::snprintf(line, sizeof line, "the X server refused a request of the viewer's (%s, request %d): was its window destroyed from outside?",
-                  text, int(event->request_code));
+    XGetErrorText(display, event->error_code, text, sizeof text);  // local: no request to the server
+    const bool window_gone = event->error_code == BadWindow || event->error_code == BadDrawable;
+    char line[400];
+    std::snprintf(line, sizeof line, "the X server refused a request of the viewer's (%s, request %d.%d, resource 0x%lx)%s", text,
+                  int(event->request_code), int(event->minor_code), static_cast<unsigned long>(event->resourceid),
+                  window_gone ? ": was its window destroyed from outside?" : "");
     end_viewer(line);
 }
 

@@ -269,8 +269,8 @@ itself; without MODEL the default scene's model):
                           enhancement owes and draws, and the ink they leave on the screen
   --seeds 1,2,3           one table per seed (the stipples and the selection generated again), then
                           each distance's ink averaged over the seeds (instead of --seed)
-  --images DIR            write each view and distance (cropped to the object; a crop under 128 px
-                          high enlarged by a whole factor, at most 8, to 128-255 px) as PNG:
+  --images DIR            write each view and distance (cropped to the object; a crop of 128 px or
+                          less enlarged by a whole factor, at most 8, to 129-256 px) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
   A distance at which the object covers no pixel (beyond the frame, the camera inside it, thinner than

@@ -107,7 +107,11 @@ static void check_spirv_module(const std::string& path, const std::vector<char>&
     if (!sound) fail_file(path, "a truncated or corrupt SPIR-V module (rebuild the project)");
 }
 
-VkShaderModule load_shader(const Context& context, const std::string& name) {
+namespace {
+
+// The module's words, refused in one line naming the file where it is missing, not a file, or not a sound
+// SPIR-V module of the stage its name says.
+std::vector<char> read_shader(const std::string& name) {
     std::string path = shader_path(name);
     // A folder or a pipe in its place threw from deep in the stream or waited forever for a writer.
     std::error_code error;
@@ -118,6 +122,15 @@ VkShaderModule load_shader(const Context& context, const std::string& name) {
     std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     if (bytes.empty() || bytes.size() % 4 != 0) fail_file(path, "not a SPIR-V module");
     check_spirv_module(path, bytes, execution_model_of(name));
+    return bytes;
+}
+
+}  // namespace
+
+void check_shader(const std::string& name) { read_shader(name); }
+
+VkShaderModule load_shader(const Context& context, const std::string& name) {
+    const std::vector<char> bytes = read_shader(name);
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes.size();
     info.pCode = reinterpret_cast<const uint32_t*>(bytes.data());
@@ -269,6 +282,8 @@ void dispatch_groups(VkCommandBuffer cb, const Context& context, uint64_t groups
 }
 
 void LazyPipeline::define_graphics(const Context& context, GraphicsPipelineDesc desc, VkPipelineLayout layout) {
+    check_shader(desc.vertex_shader);
+    if (!desc.fragment_shader.empty()) check_shader(desc.fragment_shader);
     reset();
     context_ = &context;
     make_ = [&context, desc = std::move(desc), layout] { return create_graphics_pipeline(context, desc, layout); };
@@ -276,6 +291,7 @@ void LazyPipeline::define_graphics(const Context& context, GraphicsPipelineDesc 
 
 void LazyPipeline::define_compute(const Context& context, std::string shader, VkPipelineLayout layout,
                                   Specialization specialization) {
+    check_shader(shader);
     reset();
     context_ = &context;
     make_ = [&context, shader = std::move(shader), layout, specialization = std::move(specialization)] {

@@ -13,6 +13,8 @@ class Context;
 // Reads <shader dir>/<name>.spv, e.g. load_shader(ctx, "stipple.vert"). The shader dir is the build's
 // (compiled in) unless STIPPLE_SHADER_DIR is set in the environment.
 VkShaderModule load_shader(const Context& context, const std::string& name);
+// The checks load_shader makes, without a device: a broken install is told where a pipeline is defined.
+void check_shader(const std::string& name);
 std::string shader_path(const std::string& name);
 
 // Specialisation constants: (constant_id, 32-bit value) pairs; variants without copied files.
@@ -55,7 +57,8 @@ VkPipeline create_compute_pipeline(const Context& context, const std::string& sh
 // A pipeline made when a frame first binds it. A renderer holds every variant of every density path, line
 // kind and depth pass, and a run binds a few of them: made up front, the default render made 39 pipelines
 // and bound 7, and their compilation was 0.8 s of its 1.15 s on lavapipe (SVG output: 75 made, 1.9 s).
-// A shader missing or broken is then reported when the frame that needs it is recorded.
+// Its shaders are checked when it is defined (check_shader), so a missing or broken one is still reported
+// before any frame, not in the middle of a sequence or a viewer session.
 class LazyPipeline {
 public:
     LazyPipeline() = default;

@@ -144,6 +144,7 @@ void StippleRenderer::define_pipelines(VkFormat color_format, VkFormat depth_for
                               {gpu::kSpecDepthUnorm24, unorm24},
                               {gpu::kSpecRecordVisible, record},
                               {gpu::kSpecMeshVec3Texels, vec3_texels}}};
+    gpu::check_shader("splat.comp");  // its variants are made as frames need them (splat_pipeline)
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     drawn_stipples_pipeline_.define_compute(context_, "drawn_stipples.comp", layouts_.pipeline);

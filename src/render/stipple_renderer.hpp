@@ -167,8 +167,8 @@ private:
     // The mesh texel views' layout (shaders/stipple_position.h, kSpecMeshVec3Texels).
     bool mesh_vec3_texels() const;
     void define_pipelines(VkFormat color_format, VkFormat depth_format);
-    // Destroys what the constructor made; also when it throws midway (a shader missing), since a
-    // destructor does not run then and the device would be destroyed with them alive.
+    // Destroys what the constructor made; also when it throws midway (a shader missing, found when its
+    // pipeline is defined), since a destructor does not run then and the device would be destroyed with them alive.
     void release();
     void define_line_pipelines(const gpu::GraphicsPipelineDesc& depth);
     void record_density(VkCommandBuffer cb);
