@@ -423,9 +423,19 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
         test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", limit);
         const test::CommandResult five = test::run_stipple({"render", scene_path, "-o", out.string(), "--width", "64", "--height", "64"});
         EXPECT_EQ(five.exit_code, refused ? 1 : 0) << limit << ": " << five.err;
-        if (refused) {
-            EXPECT_NE(five.err.find("MiB free ("), std::string::npos) << five.err;
+        if (refused) {  // the scene's line: the object, what the others take, and what to lower in a scene file
+            EXPECT_EQ(std::count(five.err.begin(), five.err.end(), '\n'), 1) << five.err;
+            for (const std::string& part : std::vector<std::string>{scene_path + ": objects[2] (" + model + ") needs about ", " the objects before it take",
+                                           "fewer objects, or lighter ones (a lower \"dmax\""})
+                EXPECT_NE(five.err.find(part), std::string::npos) << part << " missing in: " << five.err;
         }
+    }
+    {  // Vector output that also draws the screen's frame holds the scene twice, and says so.
+        test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", "80M");
+        const auto svg = std::filesystem::path(scene_path).parent_path() / "never.svg";
+        const test::CommandResult twice = test::run_stipple({"render", scene_path, "-o", svg.string(), "--width", "64", "--height", "64", "--stats"});
+        EXPECT_EQ(twice.exit_code, 1) << twice.err;
+        EXPECT_NE(twice.err.find("(held twice: vector output with --stats"), std::string::npos) << twice.err;
     }
     std::filesystem::remove(out);
     // A size that is not one is refused, not ignored (a typo would test nothing).
@@ -520,7 +530,9 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
         const test::CommandResult r = run_stipple({"render", blobby, "--seed", "424243", "-o", (dir / "never.svg").string(),
                                                    "--width", "320", "--height", "256", "--stats"});
         EXPECT_EQ(r.exit_code, 1) << r.err;
-        EXPECT_NE(r.err.find("MiB taken by this drawing)"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("(held twice: vector output with --stats, --mask or --repeat draws the screen's frame too)"),
+                  std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("a lower --dmax or --max-stipples"), std::string::npos) << r.err;
         EXPECT_TRUE(std::filesystem::is_empty(cache)) << "vector output with --stats generated before refusing";
     }
     nlohmann::json scene = {{"objects", nlohmann::json::array()}};
@@ -532,7 +544,7 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
         const test::CommandResult r = run_stipple({"render", scene_path, "-o", (dir / "two.png").string(), "--width", "64", "--height", "64"});
         EXPECT_EQ(r.exit_code, refused ? 1 : 0) << limit << ": " << r.err;
         if (!refused) continue;
-        EXPECT_NE(r.err.find("MiB free ("), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(scene_path + ": objects[1] ("), std::string::npos) << r.err;
         EXPECT_TRUE(std::filesystem::is_empty(cache)) << "the scene generated before refusing";
     }
     EXPECT_FALSE(std::filesystem::is_empty(cache)) << "the scene that fits was drawn from generated stipples";

@@ -242,9 +242,10 @@ int run_render(const std::vector<std::string>& argv) {
     const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
     const int copies = vector && screen_frame && !print ? 2 : 1;
     uint64_t planned_bytes = 0;
+    const std::string twice = copies == 2 ? " (held twice: vector output with --stats, --mask or --repeat draws the screen's frame too)" : "";
     for (int copy = 0; copy < copies; ++copy)
         for (size_t i = 0; i < planned.size(); ++i) {
-            planned_bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_bytes);
+            planned_bytes += check_scene_object_fits(context, scene, content, i, planned[i], planned_bytes, twice);
             if (vector && copy == 0) planned_bytes += check_visible_list_fits(context, planned[i]);
         }
     // A D_max the stipple budget caps draws as the cap does: a larger one changes nothing, so it is said (once for

@@ -4,6 +4,7 @@
 // The same description drives `stipple view` and `stipple render`; scene_json.cpp reads and writes it.
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,9 @@ Transform placement_beside(const Sphere& scene_bounds, const Sphere& sphere, flo
 Sphere transform_sphere(const Sphere& sphere, const glm::mat4& model);
 // The smallest sphere holding both (exact for two spheres).
 Sphere merge_spheres(const Sphere& a, const Sphere& b);
+// A sphere enclosing all of them, independent of their order and near the smallest one (the merge above
+// is exact for two, loose for many).
+Sphere enclosing_sphere(std::span<const Sphere> spheres);
 
 // The orbit camera a SceneCamera describes for a scene with these bounds and this aspect ratio.
 OrbitCamera resolve_camera(const SceneCamera& camera, const Sphere& scene_bounds, float aspect);

@@ -121,12 +121,36 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
     return planned;
 }
 
+uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content, size_t i,
+                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice) {
+    const Mesh& mesh = *content.objects[i].mesh;
+    try {
+        return check_object_fits(context, mesh, planned_stipples, planned_before);
+    } catch (const Error&) {
+        if (planned_before == 0) throw;
+        // Too large by itself, this throws its own refusal, which says what to lower.
+        const uint64_t alone = check_object_fits(context, mesh, planned_stipples, 0);
+        // 200 copies of a model at the default D_max: each fits, all together do not.
+        const bool file = !scene.source.empty();
+        const std::string object = file                      ? "objects[" + std::to_string(i) + "] (" + mesh.source + ")"
+                                   : scene.objects.size() > 1 ? mesh.source + " (model " + std::to_string(i + 1) + ")"
+                                                              : mesh.source;
+        const std::string line = object + " needs about " + mebibytes(alone) + " of GPU memory beside the " +
+                                 mebibytes(planned_before) + " the objects before it take" + twice +
+                                 ", and the device has no more room: " +
+                                 (file ? "fewer objects, or lighter ones (a lower \"dmax\" or \"max_stipples\" in their params)"
+                                       : "fewer models, or a lower --dmax or --max-stipples");
+        if (scene.source.empty()) fail(line);
+        fail_file(scene.source, line);
+    }
+}
+
 uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
                           uint64_t planned_before) {
     const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
     uint64_t bytes = 0;
     for (size_t i = 0; i < planned.size(); ++i)
-        bytes += check_object_fits(context, *content.objects[i].mesh, planned[i], planned_before + bytes);
+        bytes += check_scene_object_fits(context, scene, content, i, planned[i], planned_before + bytes);
     return bytes;
 }
 
@@ -138,7 +162,7 @@ SceneContent load_scene_content(const Scene& scene) {
 
 Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) {
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
-    Sphere bounds{};
+    std::vector<Sphere> spheres;
     for (size_t i = 0; i < objects.size(); ++i) {
         // The box turned up as the drawing turns it (a quarter turn about the sphere's centre keeps it a box).
         const glm::mat4 up = up_axis_rotation(scene.objects[i].params.up, objects[i].bounds.center);
@@ -147,10 +171,9 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
             const glm::vec3 p(up * glm::vec4(objects[i].box.corner(corner), 1.0f));
             box.min = glm::min(box.min, p), box.max = glm::max(box.max, p);
         }
-        Sphere s = transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.drawing_matrix());
-        bounds = i == 0 ? s : merge_spheres(bounds, s);
+        spheres.push_back(transformed_bounds(objects[i].bounds, box, scene.objects[i].transform.drawing_matrix()));
     }
-    return bounds;
+    return enclosing_sphere(spheres);
 }
 
 void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects) {

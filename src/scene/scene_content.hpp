@@ -42,6 +42,11 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
 // (check_object_fits, object by object); throws its one-line refusal otherwise. Returns the bytes planned.
 uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
                           uint64_t planned_before = 0);
+// Object i's part of that check. An object that fits alone but not beside the ones before it is refused in a
+// line about the scene (naming the object and what the others take; `twice`, when not empty, says why the
+// scene is held twice), not with the single model's advice of --dmax, which a scene file does not take.
+uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content, size_t i,
+                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice = "");
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.
