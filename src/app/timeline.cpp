@@ -75,8 +75,13 @@ glm::vec4 Timeline::draw(Scene& scene, const std::vector<ObjectData>& objects, c
     // Beside the panel where the window is wide enough, else as far right as it fits (at x = 490 a window
     // of 640 showed a third of it).
     const float x = std::clamp(window_size.x - 450.0f, 10.0f, 490.0f);
-    ImGui::SetNextWindowPos(ImVec2(x, std::max(10.0f, window_size.y - 170.0f)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_FirstUseEver);
+    // A row for each animated object's choice under the controls: its height fitted to them, and at the
+    // foot of the window, but at most half the window high, scrolled beyond that (eleven foxes ran below
+    // the window's edge, their rows out of reach).
+    const float animated = float(std::count_if(objects.begin(), objects.end(), [](const ObjectData& o) { return bool(o.motion); }));
+    const float fitted = 136.0f + 24.0f * animated, most = std::max(160.0f, 0.5f * window_size.y);
+    ImGui::SetNextWindowPos(ImVec2(x, std::max(10.0f, window_size.y - std::min(fitted, most) - 10.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(440, fitted > most ? most : 0.0f), ImGuiCond_FirstUseEver);
     place_.before_begin(ImGui::GetIO().DisplaySize);
     const bool open = ImGui::Begin("timeline");
     place_.after_begin(ImGui::GetIO().DisplaySize);
