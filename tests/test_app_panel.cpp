@@ -6,11 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "anim/procedural_rigs.hpp"
 #include "app/key_latch.hpp"
 #include "app/panel.hpp"
 #include "app/param_widgets.hpp"
+#include "app/timeline.hpp"
 #include "app/window_place.hpp"
 #include "params/param_table.hpp"
+#include "scene/scene_content.hpp"
+#include "support/anim_files.hpp"
 
 namespace {
 
@@ -301,6 +305,31 @@ TEST(AppPanel, ThePanelGrowsBackAfterAVeryLowWindow) {
     EXPECT_GT(h[0], 300.0f);
     EXPECT_LE(h[3], 200.0f);
     EXPECT_FLOAT_EQ(h[4], h[0]) << "after 300: " << h[1] << ", after 50: " << h[3];
+}
+
+// The timeline holds a row for each animated object: with twelve of them it ran below a 1024-px window's edge,
+// the last rows out of reach. It stays inside the window, at most half its height, its rows scrolled; with one
+// object it sits at the window's foot as before.
+TEST(AppPanel, TheTimelineOfManyAnimatedObjectsStaysInTheWindow) {
+    const std::string rig = test::write_rig(anim::rigs::bending_cylinder(), "app-panel-timeline", "bend");
+    for (const size_t animated : {size_t(1), size_t(12)}) {
+        Scene scene;
+        for (size_t i = 0; i < animated; ++i) scene.objects.push_back({rig, {}, {}, {}});
+        const SceneContent content = load_scene_models(scene);
+        start_headless_imgui(ImVec2(1280.0f, 1024.0f));
+        app::Timeline timeline;
+        glm::vec4 rect(0.0f);
+        for (int frame = 0; frame < 6; ++frame) {
+            ImGui::NewFrame();
+            rect = timeline.draw(scene, content.objects, std::vector<std::string>(animated, "bend.glb"), glm::vec2(1280.0f, 1024.0f));
+            ImGui::Render();
+        }
+        ImGui::DestroyContext();
+        std::printf("%zu animated objects: timeline at y %.0f, %.0f high\n", animated, double(rect.y), double(rect.w));
+        EXPECT_GT(rect.w, 100.0f) << animated;
+        EXPECT_LE(rect.y + rect.w, 1024.0f) << animated << " animated objects: the timeline runs below the window";
+        EXPECT_LE(rect.w, animated == 1 ? 200.0f : 512.0f) << animated;
+    }
 }
 
 TEST(AppPanel, AnEnterBetweenTwoFramesCommitsTheTypedValue) {
