@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <mutex>
+#include <set>
 
 #include "core/error.hpp"
 #include "gpu/context.hpp"
@@ -127,7 +129,19 @@ std::vector<char> read_shader(const std::string& name) {
 
 }  // namespace
 
-void check_shader(const std::string& name) { read_shader(name); }
+void check_shader(const std::string& name) {
+    // Once a file for the process: a renderer defines density.comp's nine variants and splat.comp's 24.
+    static std::mutex mutex;
+    static std::set<std::string> checked;
+    const std::string path = shader_path(name);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (checked.count(path)) return;
+    }
+    read_shader(name);
+    std::lock_guard<std::mutex> lock(mutex);
+    checked.insert(path);
+}
 
 VkShaderModule load_shader(const Context& context, const std::string& name) {
     const std::vector<char> bytes = read_shader(name);

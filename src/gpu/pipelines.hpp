@@ -71,8 +71,6 @@ public:
                         Specialization specialization = {});
     // The pipeline, made on the first call (a cache of the definition: const as reading it is).
     VkPipeline get() const;
-    bool defined() const { return bool(make_); }
-    bool made() const { return pipeline_ != VK_NULL_HANDLE; }
     void reset();  // destroys it if made; the definition stays
 
 private:

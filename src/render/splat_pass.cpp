@@ -18,18 +18,8 @@
 namespace stipple {
 
 VkPipeline StippleRenderer::splat_pipeline(bool round_points, bool whole_dots, uint32_t list, bool varying_density) {
-    // Made the first time a frame needs it: most runs use three (the work list, the varying polygons', the ring).
     STIPPLE_CHECK(list <= gpu::kSplatListRing, "a splat list is kSplatListDrawn, kSplatListVarying or kSplatListRing");
-    VkPipeline& pipeline =
-        splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0) + 4 * list + (varying_density ? 12 : 0)];
-    if (pipeline) return pipeline;
-    gpu::Specialization specialization = splat_specialization_;
-    specialization.constants.push_back({gpu::kSpecRoundPoints, round_points ? 1u : 0u});
-    specialization.constants.push_back({gpu::kSpecWholeDot, whole_dots ? 1u : 0u});
-    specialization.constants.push_back({gpu::kSpecSplatList, list});
-    specialization.constants.push_back({gpu::kSpecVaryingDensity, varying_density ? 1u : 0u});
-    pipeline = gpu::create_compute_pipeline(context_, "splat.comp", layouts_.splat_pipeline, specialization);
-    return pipeline;
+    return splat_pipelines_[(round_points ? 1 : 0) + (whole_dots ? 2 : 0) + 4 * list + (varying_density ? 12 : 0)].get();
 }
 
 void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {

@@ -1,5 +1,7 @@
 #include "render/stipple_renderer.hpp"
 
+#include <iterator>
+
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -42,8 +44,6 @@ void StippleRenderer::release() {
     objects_.clear();
     deform_pass_.reset();
     // The lazily made pipelines go with their members (gpu::LazyPipeline), after this wait for the device.
-    for (VkPipeline p : splat_pipelines_)
-        if (p) vkDestroyPipeline(context_.device, p, nullptr);
     if (image_pool_) vkDestroyDescriptorPool(context_.device, image_pool_, nullptr);
     if (splat_depth_texels_) vkDestroyBufferView(context_.device, splat_depth_texels_, nullptr);
     splat_depth_texels_ = VK_NULL_HANDLE;
@@ -140,11 +140,18 @@ void StippleRenderer::define_pipelines(VkFormat color_format, VkFormat depth_for
     const uint32_t count = options_.count_drawn ? 1u : 0u;
     const uint32_t unorm24 = depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u;
     const uint32_t record = options_.record_visible ? 1u : 0u;
-    splat_specialization_ = {{{gpu::kSpecCountDrawn, count},
-                              {gpu::kSpecDepthUnorm24, unorm24},
-                              {gpu::kSpecRecordVisible, record},
-                              {gpu::kSpecMeshVec3Texels, vec3_texels}}};
-    gpu::check_shader("splat.comp");  // its variants are made as frames need them (splat_pipeline)
+    // The splat's variants (splat_pipeline): [round dots + 2 * print detail's whole dots + 4 * the list + 12 *
+    // the density across polygons]; most runs bind three (the work list, the varying polygons', the ring).
+    for (uint32_t variant = 0; variant < std::size(splat_pipelines_); ++variant)
+        splat_pipelines_[variant].define_compute(context_, "splat.comp", layouts_.splat_pipeline,
+                                                 {{{gpu::kSpecCountDrawn, count},
+                                                   {gpu::kSpecDepthUnorm24, unorm24},
+                                                   {gpu::kSpecRecordVisible, record},
+                                                   {gpu::kSpecMeshVec3Texels, vec3_texels},
+                                                   {gpu::kSpecRoundPoints, variant & 1u},
+                                                   {gpu::kSpecWholeDot, (variant >> 1) & 1u},
+                                                   {gpu::kSpecSplatList, (variant % 12) / 4},
+                                                   {gpu::kSpecVaryingDensity, variant / 12}}});
     image_pool_ = gpu::create_pool(context_, splat_frame_bindings(), 1);
     image_set_ = gpu::allocate_set(context_, image_pool_, layouts_.splat_frame_set);
     drawn_stipples_pipeline_.define_compute(context_, "drawn_stipples.comp", layouts_.pipeline);

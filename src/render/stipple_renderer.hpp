@@ -254,8 +254,7 @@ private:
     // Draws the densities of the GPU's pass or the CPU's: [round dots + 2 * print detail's whole dots
     // + 4 * the list + 12 * the density across polygons] (kSpecRoundPoints, kSpecWholeDot, kSpecSplatList,
     // kSpecVaryingDensity), each made when a frame first needs it (splat_pipeline).
-    VkPipeline splat_pipelines_[24] = {};
-    gpu::Specialization splat_specialization_;  // the constants they share
+    gpu::LazyPipeline splat_pipelines_[24];
     VkDescriptorPool image_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet image_set_ = VK_NULL_HANDLE;
     gpu::Buffer splat_background_;  // the frame's colour before the splat, which mixes ink into it
