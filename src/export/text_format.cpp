@@ -30,6 +30,12 @@ void append_number(std::string& out, double value, int decimals) {
     out.append(text, static_cast<size_t>(end - text));
 }
 
+int decimals_for(double unit_mm, double fraction, int least) {
+    const double step = unit_mm * fraction;
+    if (!(step > 0.0) || !std::isfinite(step)) return least;
+    return std::clamp(int(std::ceil(-std::log10(step))), least, 9);
+}
+
 std::string format_number(double value, int decimals) {
     std::string out;
     append_number(out, value, decimals);

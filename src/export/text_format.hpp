@@ -12,6 +12,9 @@ namespace stipple::plot {
 // shortest form that keeps the precision: file size is per dot.
 void append_number(std::string& out, double value, int decimals);
 std::string format_number(double value, int decimals);
+// The decimals that write lengths to `fraction` of `unit_mm` (an image pixel on the page), at least `least`
+// and at most 9: coordinates and radii keep their precision on a page of a few millimetres.
+int decimals_for(double unit_mm, double fraction, int least);
 
 // The text with ASCII letters in lower case: option values (--page, --fit, --dot-style) in any case.
 std::string lower_ascii(std::string text);
