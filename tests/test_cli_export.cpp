@@ -434,6 +434,25 @@ TEST(CliExport, ABlankPageIsSaid) {
     EXPECT_NE(inside.err.find("stipple: warning: " + png + ": nothing is drawn (no dot, no line)"), std::string::npos) << inside.err;
 }
 
+// SOURCE_DATE_EPOCH dates a PDF so that the same command writes the same bytes; a value that is not a whole
+// number of seconds is said in one warning (it was ignored without a word, the PDF dated now) and the PDF written.
+TEST(CliExport, AMalformedSourceDateIsSaid) {
+    const auto dir = test::temp_dir("cli-export-source-date");
+    const std::string out = (dir / "dated.pdf").string();
+    for (const char* value : {"abc", "-5", "1e9", "99999999999999999999"}) {
+        test::ScopedEnv date("SOURCE_DATE_EPOCH", value);
+        const test::CommandResult r = test::run_stipple({"render", "--width", "160", "--height", "128", "-o", out});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.err.find(std::string("stipple: warning: SOURCE_DATE_EPOCH=") + value + " is not a whole number of seconds"),
+                  std::string::npos) << r.err;
+        EXPECT_TRUE(std::filesystem::exists(out));
+    }
+    test::ScopedEnv date("SOURCE_DATE_EPOCH", "1764900000");
+    const test::CommandResult r = test::run_stipple({"render", "--width", "160", "--height", "128", "-o", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("SOURCE_DATE_EPOCH"), std::string::npos) << r.err;
+}
+
 // What each format can hold: a PDF page of at most 5080 mm a side (ISO 32000; readers refuse larger
 // ones), refused before anything is drawn, where an SVG takes any page; a CSV, the dots alone, which
 // the command's last line says where lines were drawn.

@@ -36,6 +36,10 @@ TEST(ExportPage, BadNamesAreOneLineErrors) {
     stipple::test::expect_plot_error([] { parse_page("210 x 297 mm"); }, "no spaces");
     for (const char* bad : {"A9", "", "x200mm", "300xmm", "0x200mm", "-3x200mm", "300x200", "300x200cm", "300x200mm-sideways", "1e9x10mm", "nanx10mm"})
         stipple::test::expect_plot_error([&] { parse_page(bad); }, "--page");
+    // Beyond a double's range: said too large or too small, not "not a positive number".
+    stipple::test::expect_plot_error([] { parse_page("1e400x100mm"); }, "larger than 10 m");
+    stipple::test::expect_plot_error([] { parse_page("100x1e-400mm"); }, "smaller than 10 mm");
+    stipple::test::expect_plot_error([] { parse_page("nanx100mm"); }, "positive numbers");
 }
 
 TEST(ExportPage, FitsUniformlyAndCentred) {

@@ -5,6 +5,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <utility>
 
 #include "core/error.hpp"
@@ -25,7 +27,13 @@ double parse_length(const std::string& text) {
     double value = -1.0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value) || value <= 0.0) return -1.0;
+    // Beyond a double's range (1e400, 1e-400): too large or too small, not "not a number" (strtod: inf, or 0
+    // for a positive number too small, taken as the smallest).
+    if (ec == std::errc::result_out_of_range && ptr == end) {
+        value = std::strtod(text.c_str(), nullptr);
+        if (value == 0.0 && text.front() != '-') value = std::numeric_limits<double>::min();
+    } else if (ec != std::errc() || ptr != end) return -1.0;
+    if (std::isnan(value) || value <= 0.0) return -1.0;
     return value;
 }
 

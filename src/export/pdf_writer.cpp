@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -92,17 +93,25 @@ void draw_lines(cairo_t* cr, const PlotLayer& layer) {
 }
 
 // SOURCE_DATE_EPOCH as cairo's ISO 8601 date ("2026-12-05T10:00:00Z"), or nothing where it is unset or
-// not a whole number of seconds.
+// not a whole number of seconds (said once a process on stderr: a typo would otherwise leave the PDF dated
+// today without a word, and its bytes different from run to run).
 std::optional<std::string> source_date() {
     const char* text = std::getenv("SOURCE_DATE_EPOCH");
     if (!text || !*text) return std::nullopt;
+    const auto malformed = [&]() -> std::optional<std::string> {
+        static bool said = false;
+        if (!std::exchange(said, true))
+            std::fprintf(stderr, "stipple: warning: SOURCE_DATE_EPOCH=%s is not a whole number of seconds since 1970: the PDF "
+                                 "is dated now\n", text);
+        return std::nullopt;
+    };
     char* end = nullptr;
     errno = 0;
     const long long seconds = std::strtoll(text, &end, 10);
-    if (errno != 0 || *end != '\0' || seconds < 0) return std::nullopt;
+    if (errno != 0 || *end != '\0' || seconds < 0) return malformed();
     const std::time_t t = static_cast<std::time_t>(seconds);
     std::tm utc{};
-    if (!gmtime_r(&t, &utc)) return std::nullopt;
+    if (!gmtime_r(&t, &utc) || utc.tm_year + 1900 > 9999) return malformed();
     char date[32];
     std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
     return std::string(date);
