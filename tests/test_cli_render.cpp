@@ -411,14 +411,23 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
                              "lower --dmax or --max-stipples"})
         EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
-    // The objects of a scene count together: under a limit that holds two copies of the model (each about 12
-    // MiB), the third is refused, saying what the others hold (each was checked alone against the whole
-    // limit, and a scene of a thousand copies grew to 5 GB).
+    // The objects of a scene count together: under a limit that holds two of the model's objects (each about
+    // 12 MiB; each with stipples of its own seed), the third is refused, saying what the others hold (each was
+    // checked alone against the whole limit, and a scene of a thousand copies grew to 5 GB).
     const std::string model = test::source_path("assets/blobby.glb");
-    nlohmann::json scene = {{"objects", nlohmann::json::array()}};
-    for (int i = 0; i < 5; ++i)
-        scene["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
-    const std::string scene_path = test::write_file(test::temp_dir("cli-device-limit-scene") / "five.json", scene.dump());
+    nlohmann::json scene = {{"objects", nlohmann::json::array()}}, copies = scene;
+    for (int i = 0; i < 5; ++i) {
+        scene["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}, {"params", {{"seed", i + 1}}}});
+        copies["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
+    }
+    const auto scene_dir = test::temp_dir("cli-device-limit-scene");
+    const std::string scene_path = test::write_file(scene_dir / "five.json", scene.dump());
+    {  // Copies of one model share its mesh and candidates (ObjectShape): five in 40 MiB, where five of their own need 60.
+        const std::string copies_path = test::write_file(scene_dir / "copies.json", copies.dump());
+        test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", "40M");
+        const test::CommandResult five = test::run_stipple({"render", copies_path, "-o", out.string(), "--width", "64", "--height", "64"});
+        EXPECT_EQ(five.exit_code, 0) << five.err;
+    }
     for (const auto& [limit, refused] : {std::pair<const char*, bool>{"30M", true}, {"80M", false}}) {
         test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", limit);
         const test::CommandResult five = test::run_stipple({"render", scene_path, "-o", out.string(), "--width", "64", "--height", "64"});
@@ -496,8 +505,10 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
     }
     // Vector output's list of visible stipples (20 bytes a candidate) and a scene's objects together are
     // checked before generation too: the default model's 735,511 candidates fit an 8 MiB buffer as drawing
-    // needs them (8 bytes each) but not as vector output's list; two copies of it fit a 14 MiB device one
-    // at a time (about 8 MiB each) but not together.
+    // needs them (8 bytes each) but not as vector output's list; two objects of it with stipples of their own
+    // (two seeds: copies would share their mesh and candidates) fit a 14 MiB device one at a time (about 8 MiB
+    // each) but not together. From a scene file, the list's refusal names the file and the object, and says what
+    // to lower in its params.
     const std::string blobby = test::source_path("assets/blobby.glb");
     const auto cache = dir / "cache-vector-and-scene";
     std::filesystem::create_directories(cache);
@@ -537,8 +548,17 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {
     }
     nlohmann::json scene = {{"objects", nlohmann::json::array()}};
     for (int i = 0; i < 2; ++i)
-        scene["objects"].push_back({{"model", blobby}, {"params", {{"seed", 424243}}}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
+        scene["objects"].push_back({{"model", blobby}, {"params", {{"seed", 424243 + i}}}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}});
     const std::string scene_path = test::write_file(dir / "two.json", scene.dump());
+    {
+        test::ScopedEnv small("STIPPLE_MAX_STORAGE_BUFFER", "8M");
+        const test::CommandResult r = run_stipple({"render", scene_path, "-o", (dir / "never.svg").string()});
+        EXPECT_EQ(r.exit_code, 1) << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        for (const std::string& part : {scene_path + ": objects[0] (" + blobby + "): vector output of 735511 candidate",
+                                       std::string("a lower \"dmax\" or \"max_stipples\" in its params, or write a PNG")})
+            EXPECT_NE(r.err.find(part), std::string::npos) << part << " missing in: " << r.err;
+    }
     for (const auto& [limit, refused] : {std::pair<const char*, bool>{"14M", true}, {"40M", false}}) {
         test::ScopedEnv memory("STIPPLE_GPU_MEMORY_LIMIT", limit);
         const test::CommandResult r = run_stipple({"render", scene_path, "-o", (dir / "two.png").string(), "--width", "64", "--height", "64"});

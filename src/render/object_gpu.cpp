@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "mesh/orientation.hpp"
 #include "gpu/context.hpp"
 #include "render/density_formulas.hpp"
@@ -45,7 +46,8 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
 
 }  // namespace
 
-uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before) {
+uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before,
+                           bool copy) {
     const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
     const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
     // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
@@ -54,7 +56,9 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
     // or the indirect path's work list and survivors (a slot per candidate).
     const uint64_t work_list = 4 * t + 4 * s / gpu::kSplatShortRun;
     const uint64_t path_buffers = 4 * t + std::max(3 * work_list, work_list + 4 * s);
-    const uint64_t needed = 24 * v + 12 * t + 8 * s + 16 * t + 16 * t + s / 8 + path_buffers;
+    // The shape's part (positions and normals, indices, candidates, polygon constants) once for its copies.
+    const uint64_t shape = copy ? 0 : 24 * v + 12 * t + 8 * s + 16 * t;
+    const uint64_t needed = shape + 16 * t + s / 8 + path_buffers;
     const std::string what = mesh.source.empty() ? std::string("the object") : mesh.source;
     const std::string lower = ": lower --dmax or --max-stipples, or use a simplified model";
     if (largest > context.max_storage_buffer_bytes()) {
@@ -94,14 +98,14 @@ uint64_t check_model_fits(const gpu::Context& context, const ObjectData& model, 
     return check_object_fits(context, *model.mesh, planned_stipple_count(model, generation), planned_before);
 }
 
-uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates) {
+uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates, const std::string& lower) {
     const uint64_t bytes = sizeof(gpu::VisibleStipplesHeader) + sizeof(gpu::VisibleStipple) * candidates;
     // 20 bytes a candidate where drawing needs 8 (check_object_fits): vector output of 8.4M-16.8M candidates on
     // a device of 128 MiB storage buffers wrote past the descriptor's range.
     if (bytes > context.max_storage_buffer_bytes())
         fail("vector output of " + std::to_string(candidates) + " candidate stipples needs a " + mebibytes(bytes) +
-             " list, and this device's largest buffer is " + mebibytes(context.max_storage_buffer_bytes()) +
-             ": lower --dmax or --max-stipples, or write a PNG");
+             " list, and this device's largest buffer is " + mebibytes(context.max_storage_buffer_bytes()) + ": " +
+             lower + ", or write a PNG");
     return bytes;
 }
 
@@ -109,11 +113,13 @@ namespace {
 
 enum StagedIndex { kPositions, kNormals, kIndices, kStipples, kPolygons, kDensities, kStagedCount };
 
-// Every buffer of a new object, from its upload (one submission for all the staged data).
-void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool count_drawn, ObjectGpu& object) {
-    STIPPLE_CHECK(upload.staged.size() == kStagedCount, "object upload is not staged");
-    std::vector<Buffer> buffers = gpu::upload_staged(context, upload.staged);
-    ObjectGeometry& geometry = object.geometry;
+// A new shape from an object's upload and its staged data uploaded (`buffers`, in StagedIndex order; the
+// densities are the object's: upload_frame).
+std::shared_ptr<ObjectShape> make_shape(const gpu::Context& context, const ObjectUpload& upload, std::vector<Buffer>& buffers,
+                                        bool vec3_texels) {
+    auto shape = std::make_shared<ObjectShape>(context);
+    shape->key = upload.shape_key;
+    ObjectGeometry& geometry = shape->geometry;
     geometry.index_count = upload.index_count;
     geometry.triangle_count = upload.triangle_count;
     geometry.open_surface = upload.open_surface;
@@ -129,19 +135,41 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     geometry.silhouette_edge_texels =
         gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
 
-    object.polygons.cpu = upload.polygons.cpu;
-    object.polygons.corner_positions = upload.polygons.corner_positions;
-    object.polygons.corner_indices = upload.polygons.corner_indices;
-    object.polygons.bounds = upload.polygons.bounds;
-    object.polygons.origin = upload.polygons.origin;
-    object.polygons.box_min = upload.polygons.box_min;
-    object.polygons.box_size = upload.polygons.box_size;
-    object.polygons.gpu = std::move(buffers[kPolygons]);
+    PolygonConstants& polygons = shape->polygons;
+    polygons.cpu = upload.polygons.cpu;
+    polygons.corner_positions = upload.polygons.corner_positions;
+    polygons.corner_indices = upload.polygons.corner_indices;
+    polygons.bounds = upload.polygons.bounds;
+    polygons.origin = upload.polygons.origin;
+    polygons.box_min = upload.polygons.box_min;
+    polygons.box_size = upload.polygons.box_size;
+    polygons.gpu = std::move(buffers[kPolygons]);
     // Filled for animated objects (create_object_animation); the descriptor set needs a buffer.
-    object.polygons.full_areas = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
+    polygons.full_areas = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
 
+    double surface_area = 0.0;
+    for (const gpu::TriangleInfo& info : polygons.cpu) surface_area += double(info.area);
+    geometry.surface_area = float(surface_area);
+    // Within the device's texel buffer limit (check_object_fits).
+    geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
+                                                      vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
+    geometry.index_texels = gpu::create_texel_view(context, geometry.indices.handle(),
+                                                   vec3_texels ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
+    static_assert(sizeof(gpu::TriangleInfo) == 16, "TriangleInfo is read as one RGBA32UI texel");
+    polygons.texels = gpu::create_texel_view(context, polygons.gpu.handle(), VK_FORMAT_R32G32B32A32_UINT);
+    static_assert(sizeof(gpu::StippleVertex) == 8, "StippleVertex is read as one RG32UI texel");
+    geometry.stipple_texels = gpu::create_texel_view(context, geometry.stipples.handle(), VK_FORMAT_R32G32_UINT);
+    return shape;
+}
+
+// The object's own buffers: its densities (`densities`: device-local, initialised with each polygon's first
+// stipple) and the placeholders of the buffers made when a frame first needs them.
+void upload_frame(const gpu::Context& context, Buffer densities, bool count_drawn, ObjectGpu& object) {
+    const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     ObjectFrame& frame = object.frame;
-    frame.triangle_draw = std::move(buffers[kDensities]);
+    frame.triangle_draw = std::move(densities);
+    static_assert(sizeof(gpu::TriangleDraw) == 16, "TriangleDraw is read as one RGBA32UI texel");
+    frame.triangle_draw_texels = gpu::create_texel_view(context, frame.triangle_draw.handle(), VK_FORMAT_R32G32B32A32_UINT);
     for (PathBuffer kind : kPathBuffers)
         path_buffer(frame, kind) = make_path_buffer(context, kind, kPathBufferPlaceholderBytes);
     frame.silhouette_lines = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
@@ -151,11 +179,24 @@ void upload_object(const gpu::Context& context, const ObjectUpload& upload, bool
     frame.facing = Buffer(context, kPathBufferPlaceholderBytes, storage, MemoryUse::DeviceLocal);
     frame.line_candidates = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
     frame.line_pieces = make_index_list_buffer(context, kPathBufferPlaceholderBytes);
-    const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((geometry.stipple_count + 31) / 32) : 0;
+    const VkDeviceSize mask_bytes = count_drawn ? sizeof(uint32_t) * ((object.geometry.stipple_count + 31) / 32) : 0;
     frame.debug = Buffer(context, sizeof(gpu::DebugCounters) + mask_bytes, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          MemoryUse::Readback);
     frame.object_uniforms =
         Buffer(context, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
+}
+
+// Each polygon's density zero, with its first stipple (TriangleDraw), as the GPU starts from.
+std::vector<gpu::TriangleDraw> initial_draws(std::span<const uint32_t> first_stipple, size_t triangles) {
+    std::vector<gpu::TriangleDraw> draws(triangles);
+    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, first_stipple[t], 0.0f, 0.0f};
+    return draws;
+}
+
+void check_point_size(const gpu::Context& context, const ObjectParams& params) {
+    if (drawn_point_size(params.point_size) > context.features.max_point_size)
+        fail("--point-size " + std::to_string(params.point_size) + " (drawn " + std::to_string(drawn_point_size(params.point_size)) +
+             " px across) exceeds this device's maximum of " + std::to_string(context.features.max_point_size));
 }
 
 // How the model matrix scales lengths from object to world: the mean (the cube root of the volume's
@@ -191,10 +232,17 @@ Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes) {
                   MemoryUse::DeviceLocal);
 }
 
+ObjectGpu::ObjectGpu(std::shared_ptr<ObjectShape> shape_)
+    : shape(std::move(shape_)), geometry(shape->geometry), polygons(shape->polygons) {}
+
 ObjectGpu::~ObjectGpu() {
     if (pool) vkDestroyDescriptorPool(context->device, pool, nullptr);
-    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, frame.triangle_draw_texels, polygons.texels,
-                              geometry.silhouette_edge_texels, geometry.stipple_texels})
+    if (frame.triangle_draw_texels) vkDestroyBufferView(context->device, frame.triangle_draw_texels, nullptr);
+}
+
+ObjectShape::~ObjectShape() {
+    for (VkBufferView view : {geometry.position_texels, geometry.index_texels, polygons.texels, geometry.silhouette_edge_texels,
+                              geometry.stipple_texels, retired_edge_texels})
         if (view) vkDestroyBufferView(context->device, view, nullptr);
 }
 
@@ -213,9 +261,9 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
         upload.motion = motion;
         upload.full_areas = animated_full_areas(mesh, motion);
     }
+    upload.shape_key = object_shape_key(mesh, stipples, seed);
     const std::vector<gpu::StippleVertex> vertices = pack_stipples(mesh, stipples);
-    std::vector<gpu::TriangleDraw> draws(upload.triangle_count);
-    for (size_t t = 0; t < draws.size(); ++t) draws[t] = {0.0f, upload.first_stipple[t], 0.0f, 0.0f};
+    const std::vector<gpu::TriangleDraw> draws = initial_draws(upload.first_stipple, upload.triangle_count);
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
     upload.staged.resize(kStagedCount);
     // The stipple shaders read the corners of the polygons whose stipples they place.
@@ -232,37 +280,32 @@ ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh
     return upload;
 }
 
+uint64_t object_shape_key(const Mesh& mesh, const StippleSet& stipples, uint64_t seed) {
+    uint64_t key = mix64(seed);
+    key = hash_values(std::span(mesh.positions), key);
+    key = hash_values(std::span(mesh.normals), key);
+    key = hash_values(std::span(mesh.indices), key);
+    key = hash_values(std::span(&mesh.origin, 1), key);
+    key = hash_values(std::span(stipples.positions), key);
+    key = hash_values(std::span(stipples.triangle), key);
+    key = hash_values(std::span(stipples.first), key);
+    return hash_values(std::span(stipples.selection), key);
+}
+
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const Buffer& frame_uniforms, const ObjectUpload& upload,
                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn,
                                              bool vec3_texels) {
     validate_params(params);
-    if (drawn_point_size(params.point_size) > context.features.max_point_size)
-        fail("--point-size " + std::to_string(params.point_size) + " (drawn " + std::to_string(drawn_point_size(params.point_size)) +
-             " px across) exceeds this device's maximum of " + std::to_string(context.features.max_point_size));
-
-    auto object = std::make_unique<ObjectGpu>();
+    check_point_size(context, params);
+    STIPPLE_CHECK(upload.staged.size() == kStagedCount, "object upload is not staged");
+    std::vector<Buffer> buffers = gpu::upload_staged(context, upload.staged);  // one submission for all
+    auto object = std::make_unique<ObjectGpu>(make_shape(context, upload, buffers, vec3_texels));
     object->context = &context;
     object->frame_uniforms = frame_uniforms.handle();
     object->params = params;
     object->model = model;
-    upload_object(context, upload, count_drawn, *object);
-    double surface_area = 0.0;
-    for (const gpu::TriangleInfo& info : upload.polygons.cpu) surface_area += double(info.area);
-    object->geometry.surface_area = float(surface_area);
-    // Within the device's texel buffer limit (check_object_fits).
-    ObjectGeometry& geometry = object->geometry;
-    geometry.position_texels = gpu::create_texel_view(context, geometry.positions.handle(),
-                                                      vec3_texels ? VK_FORMAT_R32G32B32_SFLOAT : VK_FORMAT_R32_SFLOAT);
-    geometry.index_texels = gpu::create_texel_view(context, geometry.indices.handle(),
-                                                   vec3_texels ? VK_FORMAT_R32G32B32_UINT : VK_FORMAT_R32_UINT);
-    static_assert(sizeof(gpu::TriangleDraw) == 16, "TriangleDraw is read as one RGBA32UI texel");
-    object->frame.triangle_draw_texels =
-        gpu::create_texel_view(context, object->frame.triangle_draw.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    static_assert(sizeof(gpu::TriangleInfo) == 16, "TriangleInfo is read as one RGBA32UI texel");
-    object->polygons.texels = gpu::create_texel_view(context, object->polygons.gpu.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    static_assert(sizeof(gpu::StippleVertex) == 8, "StippleVertex is read as one RG32UI texel");
-    geometry.stipple_texels = gpu::create_texel_view(context, geometry.stipples.handle(), VK_FORMAT_R32G32_UINT);
+    upload_frame(context, std::move(buffers[kDensities]), count_drawn, *object);
     if (upload.motion) object->animation = create_object_animation(context, *object, upload.motion, upload.full_areas);
     check_animated_path(*object);
     create_object_descriptors(context, set_layout, *object);
@@ -270,28 +313,48 @@ std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDesc
     return object;
 }
 
-void ensure_line_buffers(ObjectGpu& object) {
-    ObjectGeometry& geometry = object.geometry;
+std::unique_ptr<ObjectGpu> create_object_copy(const gpu::Context& context, VkDescriptorSetLayout set_layout,
+                                              const Buffer& frame_uniforms, std::shared_ptr<ObjectShape> shape,
+                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn) {
+    validate_params(params);
+    check_point_size(context, params);
+    auto object = std::make_unique<ObjectGpu>(std::move(shape));
+    object->context = &context;
+    object->frame_uniforms = frame_uniforms.handle();
+    object->params = params;
+    object->model = model;
+    const std::vector<gpu::TriangleDraw> draws = initial_draws(object->geometry.first_stipple, object->geometry.triangle_count);
+    upload_frame(context,
+                 gpu::create_device_buffer(context, std::span<const gpu::TriangleDraw>(draws),
+                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT),
+                 count_drawn, *object);
+    check_animated_path(*object);
+    create_object_descriptors(context, set_layout, *object);
+    ensure_path_buffers(*object, params.density_path);
+    return object;
+}
+
+namespace {
+
+// The shape's edge table, built by the first of its objects to draw lines. Read back from the GPU: the shape
+// keeps no CPU copy of its mesh, and most objects never need this. Refused (a one-line error) before anything
+// is marked built, so that no object draws lines from a table that was not made.
+void ensure_shape_edges(ObjectShape& shape) {
+    ObjectGeometry& geometry = shape.geometry;
     if (geometry.silhouette_edges_built) return;
-    geometry.silhouette_edges_built = true;
-    // Read back from the GPU: the object keeps no CPU copy of its mesh, and most objects never need this.
-    std::vector<std::byte> bytes = gpu::read_buffer(*object.context, geometry.indices);
+    const gpu::Context& context = *shape.context;
+    std::vector<std::byte> bytes = gpu::read_buffer(context, geometry.indices);
     std::vector<uint32_t> indices(geometry.index_count);
     std::memcpy(indices.data(), bytes.data(), sizeof(uint32_t) * indices.size());
-    bytes = gpu::read_buffer(*object.context, geometry.positions);
+    bytes = gpu::read_buffer(context, geometry.positions);
     std::vector<glm::vec3> positions(bytes.size() / sizeof(glm::vec3));
     std::memcpy(positions.data(), bytes.data(), sizeof(glm::vec3) * positions.size());
     const std::vector<uint32_t> welded = weld_by_position(positions);
     for (uint32_t& index : indices) index = welded[index];
     std::vector<gpu::SilhouetteEdge> edges = build_silhouette_edges(indices);
-    geometry.silhouette_edge_count = uint32_t(edges.size());
-    geometry.border_edge_count = uint32_t(
-        std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second_polygon == gpu::kNoPolygon; }));
-    if (edges.empty()) return;
     if (edges.size() > gpu::kLineEdgeMask)
         fail(std::to_string(edges.size()) + " edges: object-space lines take at most " +
              std::to_string(gpu::kLineEdgeMask) + " per object");
-    const gpu::Context& context = *object.context;
     if (edges.size() > context.properties.limits.maxTexelBufferElements)
         fail(std::to_string(edges.size()) + " edges: the device's texel buffers hold at most " +
              std::to_string(context.properties.limits.maxTexelBufferElements));
@@ -301,30 +364,48 @@ void ensure_line_buffers(ObjectGpu& object) {
         fail(std::to_string(edges.size()) + " edges: their lines need a " +
              mebibytes(sizeof(gpu::SilhouetteEdge) * uint64_t(edges.size())) + " buffer, and this device's largest is " +
              mebibytes(context.max_storage_buffer_bytes()) + ": draw it without lines, or use a simplified model");
-    geometry.silhouette_edges = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges), kEdgeUsage);
-    // The placeholder's view goes with the placeholder it views (write_object_descriptors below rewrites the set).
-    vkDestroyBufferView(context.device, geometry.silhouette_edge_texels, nullptr);
-    geometry.silhouette_edge_texels =
-        gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
-    object.frame.silhouette_lines =
-        make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges.size());
-    object.frame.facing = Buffer(context, sizeof(uint32_t) * ((geometry.triangle_count + 31) / 32),
+    geometry.border_edge_count = uint32_t(
+        std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second_polygon == gpu::kNoPolygon; }));
+    if (!edges.empty()) {
+        Buffer table = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges), kEdgeUsage);
+        // The placeholder and its view stay while the shape lives: the descriptor sets of its other objects name
+        // them until those draw lines too (ensure_line_buffers rewrites each object's set).
+        shape.retired_edges = std::move(geometry.silhouette_edges);
+        shape.retired_edge_texels = geometry.silhouette_edge_texels;
+        geometry.silhouette_edges = std::move(table);
+        geometry.silhouette_edge_texels =
+            gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
+    }
+    geometry.silhouette_edge_count = uint32_t(edges.size());
+    geometry.silhouette_edges_built = true;
+}
+
+}  // namespace
+
+void ensure_line_buffers(ObjectGpu& object) {
+    if (object.line_buffers_ready) return;
+    ensure_shape_edges(*object.shape);
+    object.line_buffers_ready = true;
+    const gpu::Context& context = *object.context;
+    const uint64_t edges = object.geometry.silhouette_edge_count;
+    if (edges == 0) return;
+    object.frame.silhouette_lines = make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges);
+    object.frame.facing = Buffer(context, sizeof(uint32_t) * ((object.geometry.triangle_count + 31) / 32),
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                  MemoryUse::DeviceLocal);
-    object.frame.line_candidates =
-        make_index_list_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges.size());
+    object.frame.line_candidates = make_index_list_buffer(context, sizeof(gpu::LineCandidates) + sizeof(uint32_t) * edges);
     // Room for one visible piece per edge: most edges draw no object-space line, and few of those
     // that do are split by an occluder. Pieces beyond it are dropped (and reported by the read-back).
     // At most what one storage buffer holds (a model of millions of edges: 153 MiB of pieces for 6.4M).
     const uint64_t most_pieces = (context.max_storage_buffer_bytes() - sizeof(gpu::LinePiecesHeader)) / sizeof(gpu::LinePiece);
-    object.frame.line_piece_capacity = uint32_t(std::min<uint64_t>(uint64_t(edges.size()) + 256, most_pieces));
+    object.frame.line_piece_capacity = uint32_t(std::min<uint64_t>(edges + 256, most_pieces));
     object.frame.line_pieces =
         make_index_list_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
     write_object_descriptors(object);
 }
 
 bool draws_edge_lines(const ObjectGpu& object) {
-    return draws_edge_lines(object.params) && object.geometry.silhouette_edge_count > 0;
+    return draws_edge_lines(object.params) && object.line_buffers_ready && object.geometry.silhouette_edge_count > 0;
 }
 
 bool depth_holds_back_faces(const ObjectGpu& object) {
@@ -415,7 +496,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
         if (p.borders) flags |= gpu::kFlagBorders;
         if (p.creases) flags |= gpu::kFlagCreases;
     }
-    u.flags = glm::uvec4(flags, g.triangle_count, g.silhouette_edge_count, g.stipple_count);
+    u.flags = glm::uvec4(flags, g.triangle_count, object.line_buffers_ready ? g.silhouette_edge_count : 0u, g.stipple_count);
     u.box_min = glm::vec4(object.polygons.box_min, 0.0f);
     // w: how far a centroid quantised in the box (16 bits an axis, TriangleInfo) may lie from the true one, in
     // view depth (twice the bound), so that the density pass and the stipples agree on which centroids lie

@@ -5,9 +5,12 @@
 //                     with the bounds and quantisation box of the object's shape: computed on the CPU at
 //                     creation, and rewritten each frame for an animated object (render/deform_pass.hpp);
 //   ObjectFrame       this frame's uniforms, densities and the buffers of the density paths in use.
+// The first two make an ObjectShape, which static copies of one model (equal mesh, stipples and seed: the
+// shape key) share in a renderer: a crowd of copies holds its mesh and candidates once.
 // The CPU density paths read PolygonConstants (cpu, corner_*) and ObjectGeometry::first_stipple (nothing
 // else).
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -99,18 +102,39 @@ struct ObjectFrame {
     bool splatted = false;            // drawn by the compute splat this frame
 };
 
+// What copies of one static model share (an animated object has its own: the deformation rewrites it).
+struct ObjectShape {
+    explicit ObjectShape(const gpu::Context& context) : context(&context) {}
+    ~ObjectShape();  // its texel views (the buffers free themselves)
+    ObjectShape(const ObjectShape&) = delete;
+    ObjectShape& operator=(const ObjectShape&) = delete;
+
+    const gpu::Context* context;
+    uint64_t key = 0;  // object_shape_key
+    ObjectGeometry geometry;
+    PolygonConstants polygons;
+    // The edge table's placeholder, kept once the table is built: the descriptor sets of copies that draw no
+    // lines still name it.
+    gpu::Buffer retired_edges;
+    VkBufferView retired_edge_texels = VK_NULL_HANDLE;
+};
+
 struct ObjectGpu {
-    ObjectGpu() = default;
+    explicit ObjectGpu(std::shared_ptr<ObjectShape> shape_);
     ~ObjectGpu();
     ObjectGpu(const ObjectGpu&) = delete;
     ObjectGpu& operator=(const ObjectGpu&) = delete;
 
+    std::shared_ptr<ObjectShape> shape;
     ObjectParams params;
     glm::mat4 model{1.0f};  // the scene's transform (object_to_world adds the up-axis rotation)
-    ObjectGeometry geometry;
-    PolygonConstants polygons;
+    ObjectGeometry& geometry;    // the shape's
+    PolygonConstants& polygons;  // the shape's
     ObjectFrame frame;
     std::unique_ptr<ObjectAnimation> animation;  // null for a static object
+    // This object's line buffers are made and its descriptor set names the shape's edge table
+    // (ensure_line_buffers; a copy may find the table built by another).
+    bool line_buffers_ready = false;
 
     // The object's descriptor set (render/descriptor_schema.hpp says which buffer each binding reads).
     const gpu::Context* context = nullptr;
@@ -132,30 +156,43 @@ struct ObjectUpload {
     std::vector<gpu::StagedBuffer> staged;
     anim::Motion motion;             // an animated object's (empty for a static one)
     std::vector<float> full_areas;   // animated: per polygon, rest area x headroom (animated_full_areas)
+    uint64_t shape_key = 0;          // object_shape_key of the mesh, stipples and seed it was made from (static)
 };
 // `motion`: an animated glTF's (the mesh is its rest mesh): the quantisation box holds every pose.
 ObjectUpload prepare_object_upload(const gpu::Context& context, const Mesh& mesh, const StippleSet& stipples,
                                    uint64_t seed, const anim::Motion& motion = {});
+// A hash of everything prepare_object_upload reads but the motion (the mesh's vertices, normals, indices
+// and origin, the stipples and their polygons' selection values, the seed): equal for copies of one model
+// with equal generation parameters, whatever path they came by.
+uint64_t object_shape_key(const Mesh& mesh, const StippleSet& stipples, uint64_t seed);
 
 // An object of `stipples` candidates on `mesh` that this device cannot hold is refused in one line saying
 // what it needs, what there is and what to lower: before anything is staged (prepare_object_upload), and
 // before its stipples are generated (render, tone and the viewer, with planned_stipple_count), instead of a
 // failed allocation half way, a lost device or minutes of generation for nothing. `planned_before`: the
-// bytes of a scene's objects checked before this one and not yet allocated. Returns the bytes it needs.
-uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0);
+// bytes of a scene's objects checked before this one and not yet allocated; `copy`: a static copy of an
+// object checked before, whose shape it shares (its own buffers only). Returns the bytes it needs.
+uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0,
+                           bool copy = false);
 // check_object_fits for the stipples make_stipples would make for `model` (planned_stipple_count), before
 // they are made.
 uint64_t check_model_fits(const gpu::Context& context, const ObjectData& model, const GenerationParams& generation,
                           uint64_t planned_before = 0);
 // Vector output's list of visible stipples (20 bytes a candidate) must fit one storage buffer: refused in
-// one line otherwise. Returns its bytes.
-uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates);
+// one line otherwise (`lower`: what to lower, as the command takes it). Returns its bytes.
+uint64_t check_visible_list_fits(const gpu::Context& context, uint64_t candidates,
+                                 const std::string& lower = "lower --dmax or --max-stipples");
 
 // `vec3_texels`: the texel views' layout, as the renderer's pipelines read it (kSpecMeshVec3Texels).
 std::unique_ptr<ObjectGpu> create_object_gpu(const gpu::Context& context, VkDescriptorSetLayout set_layout,
                                              const gpu::Buffer& frame_uniforms, const ObjectUpload& upload,
                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn,
                                              bool vec3_texels);
+// A copy of a static object: the same shape (made by create_object_gpu with the same texel layout), its own
+// parameters, transform and per-frame buffers.
+std::unique_ptr<ObjectGpu> create_object_copy(const gpu::Context& context, VkDescriptorSetLayout set_layout,
+                                              const gpu::Buffer& frame_uniforms, std::shared_ptr<ObjectShape> shape,
+                                              const glm::mat4& model, const ObjectParams& params, bool count_drawn);
 
 // A buffer that a compute pass fills with an indexed indirect draw and its indices (header first).
 gpu::Buffer make_index_list_buffer(const gpu::Context& context, VkDeviceSize bytes);

@@ -171,23 +171,49 @@ bool StippleRenderer::mesh_vec3_texels() const { return context_.features.vec3_t
 
 size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples, const glm::mat4& model,
                                    const ObjectParams& params, const anim::Motion& motion) {
+    // A copy of a static object already here needs nothing prepared (the key is hashed again in the
+    // preparation otherwise: only where there is a shape it could match).
+    if (!motion && !shapes_.empty()) {
+        if (std::shared_ptr<ObjectShape> shape = find_shape(object_shape_key(mesh, stipples, params.generation.seed))) {
+            objects_.push_back(create_object_copy(context_, layouts_.object_set, frame_uniforms_, std::move(shape), model,
+                                                  params, options_.count_drawn));
+            return objects_.size() - 1;
+        }
+    }
     return add_object(prepare_object_upload(context_, mesh, stipples, params.generation.seed, motion), model, params);
 }
 
 size_t StippleRenderer::add_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params) {
-    objects_.push_back(
-        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn,
-                          mesh_vec3_texels()));
+    objects_.push_back(make_object(upload, model, params));
     return objects_.size() - 1;
 }
+
+std::unique_ptr<ObjectGpu> StippleRenderer::make_object(const ObjectUpload& upload, const glm::mat4& model,
+                                                        const ObjectParams& params) {
+    if (!upload.motion)
+        if (std::shared_ptr<ObjectShape> shape = find_shape(upload.shape_key))
+            return create_object_copy(context_, layouts_.object_set, frame_uniforms_, std::move(shape), model, params,
+                                      options_.count_drawn);
+    std::unique_ptr<ObjectGpu> object = create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model,
+                                                          params, options_.count_drawn, mesh_vec3_texels());
+    if (!upload.motion) shapes_[upload.shape_key] = object->shape;
+    return object;
+}
+
+std::shared_ptr<ObjectShape> StippleRenderer::find_shape(uint64_t key) {
+    const auto found = shapes_.find(key);
+    if (found == shapes_.end()) return nullptr;
+    std::shared_ptr<ObjectShape> shape = found->second.lock();
+    if (!shape) shapes_.erase(found);  // its last object is gone
+    return shape;
+}
+
 
 void StippleRenderer::replace_object(size_t object, const ObjectUpload& upload) {
     STIPPLE_CHECK(object < objects_.size(), "replace_object: no such object");
     const ObjectParams params = objects_[object]->params;
     const glm::mat4 model = objects_[object]->model;
-    auto replacement =
-        create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model, params, options_.count_drawn,
-                          mesh_vec3_texels());
+    auto replacement = make_object(upload, model, params);
     VK_CHECK(vkDeviceWaitIdle(context_.device));  // the old object's buffers may be in use
     objects_[object] = std::move(replacement);
 }

@@ -7,6 +7,7 @@
 // in depth_pass.cpp, the compute splat in splat_pass.cpp, the line passes in line_passes.cpp.
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -271,6 +272,10 @@ private:
     gpu::GpuTimer timer_;
     DepthCullChooser depth_cull_;  // --depth-cull auto's choice, from the frames' GPU times
     std::vector<std::unique_ptr<ObjectGpu>> objects_;
+    // The shapes of the static objects by key (object_shape_key): a copy of one shares it.
+    std::unordered_map<uint64_t, std::weak_ptr<ObjectShape>> shapes_;
+    std::shared_ptr<ObjectShape> find_shape(uint64_t key);  // null where none is alive
+    std::unique_ptr<ObjectGpu> make_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params);
     FrameView view_;
     FrameStats stats_;
 };

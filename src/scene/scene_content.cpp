@@ -121,15 +121,25 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
     return planned;
 }
 
+bool is_static_copy(const Scene& scene, const SceneContent& content, size_t i) {
+    if (content.objects[i].motion) return false;
+    const GenerationKey key{mesh_key(scene, i), generation_values(scene.objects[i].params.generation)};
+    for (size_t j = 0; j < i; ++j)
+        if (!content.objects[j].motion && GenerationKey{mesh_key(scene, j), generation_values(scene.objects[j].params.generation)} == key)
+            return true;
+    return false;
+}
+
 uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content, size_t i,
                                  uint64_t planned_stipples, uint64_t planned_before, const std::string& twice) {
     const Mesh& mesh = *content.objects[i].mesh;
+    const bool copy = is_static_copy(scene, content, i);
     try {
-        return check_object_fits(context, mesh, planned_stipples, planned_before);
+        return check_object_fits(context, mesh, planned_stipples, planned_before, copy);
     } catch (const Error&) {
         if (planned_before == 0) throw;
         // Too large by itself, this throws its own refusal, which says what to lower.
-        const uint64_t alone = check_object_fits(context, mesh, planned_stipples, 0);
+        const uint64_t alone = check_object_fits(context, mesh, planned_stipples, 0, copy);
         // 200 copies of a model at the default D_max: each fits, all together do not.
         const bool file = !scene.source.empty();
         const std::string object = file                      ? "objects[" + std::to_string(i) + "] (" + mesh.source + ")"
@@ -142,6 +152,15 @@ uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene
                                        : "fewer models, or a lower --dmax or --max-stipples");
         if (scene.source.empty()) fail(line);
         fail_file(scene.source, line);
+    }
+}
+
+uint64_t check_scene_visible_list_fits(const gpu::Context& context, const Scene& scene, size_t i, uint64_t planned_stipples) {
+    if (scene.source.empty()) return check_visible_list_fits(context, planned_stipples);
+    try {
+        return check_visible_list_fits(context, planned_stipples, "a lower \"dmax\" or \"max_stipples\" in its params");
+    } catch (const Error& e) {
+        fail_file(scene.source, "objects[" + std::to_string(i) + "] (" + scene.model_path(i) + "): " + e.what());
     }
 }
 

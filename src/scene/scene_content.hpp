@@ -42,6 +42,12 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
 // (check_object_fits, object by object); throws its one-line refusal otherwise. Returns the bytes planned.
 uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
                           uint64_t planned_before = 0);
+// check_visible_list_fits for object i's planned stipples: from a scene file, the line names the file and the
+// object and says what to lower in its params (the command's --dmax and --max-stipples do not take a scene).
+uint64_t check_scene_visible_list_fits(const gpu::Context& context, const Scene& scene, size_t i, uint64_t planned_stipples);
+// Whether object i is a static copy of an object before it (the same model and generation parameters, neither
+// animated): the renderer gives it that object's shape (ObjectShape), so it needs its own buffers only.
+bool is_static_copy(const Scene& scene, const SceneContent& content, size_t i);
 // Object i's part of that check. An object that fits alone but not beside the ones before it is refused in a
 // line about the scene (naming the object and what the others take; `twice`, when not empty, says why the
 // scene is held twice), not with the single model's advice of --dmax, which a scene file does not take.
