@@ -122,5 +122,42 @@ TEST_F(ObjectCopies, CopiesDrawAsTheSameObjectsAlone) {
     EXPECT_EQ(differing_pixels(without_first, darker(alone1_lines, alone2)), 0u);
 }
 
+// The viewer adds and regenerates objects from uploads prepared on its worker thread: a copy's upload finds the
+// shape too, and replacing the object that made it (new stipples) leaves its copy drawing as before.
+TEST_F(ObjectCopies, UploadsShareAndAReplacedObjectLeavesItsCopies) {
+    const Mesh mesh = make_icosphere(3);
+    ObjectParams params;
+    const StippleSet stipples = generate_stipples(mesh, params.generation);
+    const VkExtent2D extent{320, 128};
+    OffscreenTarget target(*context, extent);
+    const FrameView view = test::framed_view(Sphere{glm::vec3(0.0f), 2.9f}, extent, 1.0f, 0.0f, 10.0f);
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+    renderer.add_object(prepare_object_upload(*context, mesh, stipples, params.generation.seed), at_x(-1.5f), params);
+    renderer.add_object(prepare_object_upload(*context, mesh, stipples, params.generation.seed), at_x(1.5f), params);
+    ASSERT_EQ(renderer.object(1).shape, renderer.object(0).shape);
+    const Image before = target.render(renderer, view).color;
+
+    // The same stipples again: the object takes the shape back; the frame is the same.
+    renderer.replace_object(0, prepare_object_upload(*context, mesh, stipples, params.generation.seed));
+    EXPECT_EQ(renderer.object(0).shape, renderer.object(1).shape);
+    EXPECT_EQ(differing_pixels(target.render(renderer, view).color, before), 0u);
+
+    // Other stipples: a shape of its own; the copy, now alone with the first shape, draws its half as before.
+    ObjectParams seeded = params;
+    seeded.generation.seed = 2;
+    renderer.replace_object(0, prepare_object_upload(*context, mesh, generate_stipples(mesh, seeded.generation), seeded.generation.seed));
+    EXPECT_NE(renderer.object(0).shape, renderer.object(1).shape);
+    const Image after = target.render(renderer, view).color;
+    size_t left = 0, right = 0;  // differing pixels in each half (the first object on the left)
+    for (int y = 0; y < int(extent.height); ++y)
+        for (int x = 0; x < int(extent.width); ++x) {
+            const size_t i = 4 * (size_t(y) * extent.width + size_t(x));
+            (x < int(extent.width) / 2 ? left : right) += after.pixels[i] != before.pixels[i];
+        }
+    std::printf("replaced with other stipples: %zu pixels differ on its side, %zu on its copy's\n", left, right);
+    EXPECT_GT(left, 50u);
+    EXPECT_EQ(right, 0u);
+}
+
 }  // namespace
 }  // namespace stipple

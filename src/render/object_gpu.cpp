@@ -368,13 +368,13 @@ void ensure_shape_edges(ObjectShape& shape) {
         std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second_polygon == gpu::kNoPolygon; }));
     if (!edges.empty()) {
         Buffer table = gpu::create_device_buffer(context, std::span<const gpu::SilhouetteEdge>(edges), kEdgeUsage);
+        const VkBufferView table_texels = gpu::create_texel_view(context, table.handle(), VK_FORMAT_R32G32B32A32_UINT);
         // The placeholder and its view stay while the shape lives: the descriptor sets of its other objects name
         // them until those draw lines too (ensure_line_buffers rewrites each object's set).
         shape.retired_edges = std::move(geometry.silhouette_edges);
         shape.retired_edge_texels = geometry.silhouette_edge_texels;
         geometry.silhouette_edges = std::move(table);
-        geometry.silhouette_edge_texels =
-            gpu::create_texel_view(context, geometry.silhouette_edges.handle(), VK_FORMAT_R32G32B32A32_UINT);
+        geometry.silhouette_edge_texels = table_texels;
     }
     geometry.silhouette_edge_count = uint32_t(edges.size());
     geometry.silhouette_edges_built = true;
@@ -385,10 +385,12 @@ void ensure_shape_edges(ObjectShape& shape) {
 void ensure_line_buffers(ObjectGpu& object) {
     if (object.line_buffers_ready) return;
     ensure_shape_edges(*object.shape);
-    object.line_buffers_ready = true;
     const gpu::Context& context = *object.context;
     const uint64_t edges = object.geometry.silhouette_edge_count;
-    if (edges == 0) return;
+    if (edges == 0) {
+        object.line_buffers_ready = true;
+        return;
+    }
     object.frame.silhouette_lines = make_index_list_buffer(context, gpu::kIndexListHeaderBytes + 2 * sizeof(uint32_t) * edges);
     object.frame.facing = Buffer(context, sizeof(uint32_t) * ((object.geometry.triangle_count + 31) / 32),
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -402,6 +404,7 @@ void ensure_line_buffers(ObjectGpu& object) {
     object.frame.line_pieces =
         make_index_list_buffer(context, sizeof(gpu::LinePiecesHeader) + sizeof(gpu::LinePiece) * object.frame.line_piece_capacity);
     write_object_descriptors(object);
+    object.line_buffers_ready = true;  // only now: a failed allocation above leaves it to be tried again
 }
 
 bool draws_edge_lines(const ObjectGpu& object) {

@@ -174,7 +174,8 @@ size_t StippleRenderer::add_object(const Mesh& mesh, const StippleSet& stipples,
     // A copy of a static object already here needs nothing prepared (the key is hashed again in the
     // preparation otherwise: only where there is a shape it could match).
     if (!motion && !shapes_.empty()) {
-        if (std::shared_ptr<ObjectShape> shape = find_shape(object_shape_key(mesh, stipples, params.generation.seed))) {
+        if (std::shared_ptr<ObjectShape> shape = find_shape(object_shape_key(mesh, stipples, params.generation.seed),
+                                                            mesh.indices.size(), stipples.size())) {
             objects_.push_back(create_object_copy(context_, layouts_.object_set, frame_uniforms_, std::move(shape), model,
                                                   params, options_.count_drawn));
             return objects_.size() - 1;
@@ -191,20 +192,24 @@ size_t StippleRenderer::add_object(const ObjectUpload& upload, const glm::mat4& 
 std::unique_ptr<ObjectGpu> StippleRenderer::make_object(const ObjectUpload& upload, const glm::mat4& model,
                                                         const ObjectParams& params) {
     if (!upload.motion)
-        if (std::shared_ptr<ObjectShape> shape = find_shape(upload.shape_key))
+        if (std::shared_ptr<ObjectShape> shape = find_shape(upload.shape_key, upload.index_count, upload.stipple_count))
             return create_object_copy(context_, layouts_.object_set, frame_uniforms_, std::move(shape), model, params,
                                       options_.count_drawn);
     std::unique_ptr<ObjectGpu> object = create_object_gpu(context_, layouts_.object_set, frame_uniforms_, upload, model,
                                                           params, options_.count_drawn, mesh_vec3_texels());
-    if (!upload.motion) shapes_[upload.shape_key] = object->shape;
+    if (!upload.motion) {
+        std::erase_if(shapes_, [](const auto& entry) { return entry.second.expired(); });  // shapes whose objects are gone
+        shapes_[upload.shape_key] = object->shape;
+    }
     return object;
 }
 
-std::shared_ptr<ObjectShape> StippleRenderer::find_shape(uint64_t key) {
+std::shared_ptr<ObjectShape> StippleRenderer::find_shape(uint64_t key, size_t indices, size_t stipples) {
     const auto found = shapes_.find(key);
     if (found == shapes_.end()) return nullptr;
     std::shared_ptr<ObjectShape> shape = found->second.lock();
-    if (!shape) shapes_.erase(found);  // its last object is gone
+    // A hash collision between different objects would share wrongly: the counts at least must agree.
+    if (shape && (shape->geometry.index_count != indices || shape->geometry.stipple_count != stipples)) return nullptr;
     return shape;
 }
 

@@ -274,7 +274,8 @@ private:
     std::vector<std::unique_ptr<ObjectGpu>> objects_;
     // The shapes of the static objects by key (object_shape_key): a copy of one shares it.
     std::unordered_map<uint64_t, std::weak_ptr<ObjectShape>> shapes_;
-    std::shared_ptr<ObjectShape> find_shape(uint64_t key);  // null where none is alive
+    // Null where none is alive (or a live one's counts differ: a hash collision).
+    std::shared_ptr<ObjectShape> find_shape(uint64_t key, size_t indices, size_t stipples);
     std::unique_ptr<ObjectGpu> make_object(const ObjectUpload& upload, const glm::mat4& model, const ObjectParams& params);
     FrameView view_;
     FrameStats stats_;

@@ -123,9 +123,13 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
 
 bool is_static_copy(const Scene& scene, const SceneContent& content, size_t i) {
     if (content.objects[i].motion) return false;
-    const GenerationKey key{mesh_key(scene, i), generation_values(scene.objects[i].params.generation)};
+    // One model's objects hold one mesh (a mirrored copy another: load_scene_models), so the mesh is compared
+    // first, cheaply, and the generation parameters only where it is the same.
+    const Mesh* mesh = content.objects[i].mesh.get();
+    const std::vector<double> generation = generation_values(scene.objects[i].params.generation);
     for (size_t j = 0; j < i; ++j)
-        if (!content.objects[j].motion && GenerationKey{mesh_key(scene, j), generation_values(scene.objects[j].params.generation)} == key)
+        if (content.objects[j].mesh.get() == mesh && !content.objects[j].motion &&
+            generation_values(scene.objects[j].params.generation) == generation)
             return true;
     return false;
 }
