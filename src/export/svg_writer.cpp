@@ -138,7 +138,7 @@ std::string svg_document(const PlotPlan& plan, bool with_travel) {
     out += "<title>stipple drawing</title>\n";
     if (plan.fill_paper)
         out += "<rect width=\"" + width + "\" height=\"" + height + "\" fill=\"" + hex_colour(plan.paper) + "\" stroke=\"none\"/>\n";
-    const Places places{decimals_for(plan.layout.mm_per_px, 1.0 / 20.0, 2), decimals_for(plan.layout.mm_per_px, 1.0 / 200.0, 3)};
+    const Places places{decimals_for(plan.layout.mm_per_px, 1.0 / 10.0, 2), decimals_for(plan.layout.mm_per_px, 1.0 / 100.0, 3)};
     for (const PlotLayer& layer : plan.layers) {
         const std::string ink = hex_colour(layer.ink);
         if (layer.kind == LayerKind::Stipples) append_dots(out, layer, plan.dot_style, ink, places);
