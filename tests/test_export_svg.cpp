@@ -51,6 +51,18 @@ size_t count_children(const tinyxml2::XMLElement* parent, const char* name) {
     return n;
 }
 
+// About `count` dots spread evenly over a 1280 x 1024 frame, of radius `radius` px and intensities from
+// `least` to 1.
+Drawing spread_dots(size_t count, float radius, float least) {
+    Drawing drawing;
+    drawing.width_px = 1280;
+    drawing.height_px = 1024;
+    drawing.objects.push_back({"bunny", 1.0f});
+    for (const glm::dvec2& p : poisson_disc_points(1280.0, 1024.0, poisson_disc_spacing(1280.0, 1024.0, count), 8))
+        drawing.dots.push_back({glm::vec2(p), radius, least + (1.0f - least) * float(std::fmod(p.x * 7.31, 1.0)), 0, 0});
+    return drawing;
+}
+
 TEST(ExportSvg, PageLayersAndCounts) {
     ExportOptions options;
     options.page = parse_page("A4-landscape");
@@ -171,12 +183,7 @@ TEST(ExportSvg, AThinPenKeepsItsWidth) {
 // that the dots keep their places and their ink (to 0.01 and 0.001 mm, a 12.5 mm page wrote every radius as
 // one of 8 values and lost 7% of the ink; on a 10 mm page with 4.99 mm margins, every dot at one of 9 places).
 TEST(ExportSvg, ATinyPageKeepsTheDotsPlacesAndInk) {
-    Drawing drawing;
-    drawing.width_px = 1280;
-    drawing.height_px = 1024;
-    drawing.objects.push_back({"bunny", 1.0f});
-    for (const glm::dvec2& p : poisson_disc_points(1280.0, 1024.0, poisson_disc_spacing(1280.0, 1024.0, 3000), 8))
-        drawing.dots.push_back({glm::vec2(p), 0.85f, 0.2f + 0.8f * float(std::fmod(p.x * 7.31, 1.0)), 0, 0});
+    const Drawing drawing = spread_dots(3000, 0.85f, 0.2f);
     for (const char* page : {"12.5x10mm", "A4"}) {
         ExportOptions options;
         options.page = parse_page(page);
@@ -210,12 +217,7 @@ TEST(ExportSvg, ATinyPageKeepsTheDotsPlacesAndInk) {
 }
 
 TEST(ExportSvg, AtMost48BytesPerDot) {
-    Drawing drawing;
-    drawing.width_px = 1280;
-    drawing.height_px = 1024;
-    drawing.objects.push_back({"bunny", 1.0f});
-    for (const glm::dvec2& p : poisson_disc_points(1280.0, 1024.0, poisson_disc_spacing(1280.0, 1024.0, 20000), 8))
-        drawing.dots.push_back({glm::vec2(p), 0.9f, 0.3f + 0.7f * float(std::fmod(p.x * 7.31, 1.0)), 0, 0});
+    const Drawing drawing = spread_dots(20000, 0.9f, 0.3f);
     ExportOptions options;
     options.page = parse_page("A3");
     const std::string text = svg_document(make_plot_plan(drawing, options));
