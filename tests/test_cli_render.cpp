@@ -457,6 +457,39 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
     }
 }
 
+// A device may allow as few as 4096 memory allocations at once (maxMemoryAllocationCount). Small buffers
+// share blocks (gpu::MemoryPool): eight copies of the default model draw within 60, where with an allocation
+// a buffer they took about 175; under fewer the scene is refused in one line naming the object, not a
+// validation error or a crash (a null pool in the refusal crashed it when first written).
+TEST(CliRender, ASceneBeyondTheDevicesAllocationsIsRefusedInOneLine) {
+    const std::string model = test::source_path("assets/blobby.glb");
+    nlohmann::json scene = {{"objects", nlohmann::json::array()}};
+    for (int i = 0; i < 8; ++i)
+        scene["objects"].push_back({{"model", model}, {"transform", {{"translate", {3.0 * i, 0.0, 0.0}}}}, {"params", {{"dmax", 0.05}}}});
+    const auto dir = test::temp_dir("cli-allocation-limit");
+    const std::string scene_path = test::write_file(dir / "eight.json", scene.dump());
+    const auto out = dir / "eight.png";
+    const auto render = [&](const char* limit) {
+        test::ScopedEnv env("STIPPLE_GPU_ALLOCATION_LIMIT", limit);
+        return test::run_stipple({"render", scene_path, "-o", out.string(), "--width", "64", "--height", "64"});
+    };
+    const test::CommandResult fits = render("60");
+    EXPECT_EQ(fits.exit_code, 0) << fits.err;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    std::filesystem::remove(out);
+    const test::CommandResult refused = render("20");
+    EXPECT_EQ(refused.exit_code, 1) << refused.err;
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    for (const std::string& part : std::vector<std::string>{scene_path + ": objects[", "(" + model + "): this device allows 20 GPU memory allocations",
+                                                            "draw fewer objects"})
+        EXPECT_NE(refused.err.find(part), std::string::npos) << part << " missing in: " << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    test::ScopedEnv env("STIPPLE_GPU_ALLOCATION_LIMIT", "-5");
+    const test::CommandResult typo = test::run_stipple({"render", "-o", out.string(), "--width", "64", "--height", "64"});
+    EXPECT_EQ(typo.exit_code, 1);
+    EXPECT_NE(typo.err.find("STIPPLE_GPU_ALLOCATION_LIMIT=-5 is not a count"), std::string::npos) << typo.err;
+}
+
 // The count of stipples is known before they are made (planned_stipple_count), so an object the device
 // cannot hold is refused before its generation, not after it (until 2026-12-05 igea at --dmax 16
 // --max-stipples 1e8 generated for 192 s to be refused): nothing reaches the stipple cache, and the count

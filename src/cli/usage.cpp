@@ -337,6 +337,8 @@ void environment_section() {
   STIPPLE_THREADS=N       threads for generation and the CPU passes (default: the hardware's; 1: serial)
   STIPPLE_GPU_MEMORY_LIMIT=SIZE  act as if the device had at most SIZE (e.g. 64M) of memory: how a
                           smaller GPU refuses an object or scene too big for it, tried on a big one
+  STIPPLE_GPU_ALLOCATION_LIMIT=N  act as if the device allowed at most N memory allocations at once
+                          (Windows drivers allow 4096): how a crowd of objects is refused there
   STIPPLE_HOST_MEMORY_LIMIT=SIZE  act as if this machine had at most SIZE (e.g. 2G) of memory (it
                           also reads a control group's limit): how a smaller machine refuses a model
                           file or stipples it could not hold

@@ -8,6 +8,7 @@
 #include "core/decimal.hpp"
 #include "core/error.hpp"
 #include "core/memory.hpp"
+#include "gpu/memory_pool.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace stipple::gpu {
@@ -84,6 +85,18 @@ static uint32_t workgroups_from_environment() {
     return uint32_t(limit);
 }
 
+// The device's limit on live memory allocations, lowered by STIPPLE_GPU_ALLOCATION_LIMIT (a test setting).
+static uint32_t allocation_limit(uint32_t device_limit) {
+    const char* text = std::getenv("STIPPLE_GPU_ALLOCATION_LIMIT");
+    if (!text || !*text) return device_limit;
+    char* end = nullptr;
+    const unsigned long long count = std::strtoull(text, &end, 10);
+    // A typo must not silently test nothing.
+    if (*end != '\0' || count < 1 || count > 0xFFFFFFFFull || text[0] == '-')
+        fail(std::string("STIPPLE_GPU_ALLOCATION_LIMIT=") + text + " is not a count of allocations such as 100");
+    return std::min(device_limit, uint32_t(count));
+}
+
 Context::Context(const ContextOptions& options) {
     // Under an address-space limit (ulimit -v) too small for the driver, lavapipe's compiler crashed the
     // process in pipeline creation (a segmentation fault, no message): refused here in one line instead.
@@ -95,6 +108,9 @@ Context::Context(const ContextOptions& options) {
     create_instance(options);
     pick_physical_device(options);
     create_device(options);
+    memory_pool_ = std::make_unique<MemoryPool>(device, memory_properties, properties.limits.nonCoherentAtomSize,
+                                                allocation_limit(properties.limits.maxMemoryAllocationCount),
+                                                allocated_bytes_);
     const uint32_t device_groups_x = properties.limits.maxComputeWorkGroupCount[0];
     max_groups_x_ = asked_groups_x ? std::min(asked_groups_x, device_groups_x) : device_groups_x;
 }
@@ -104,6 +120,7 @@ uint32_t validation_messages_in_process() { return g_validation_messages_in_proc
 Context::~Context() {
     if (device) {
         vkDeviceWaitIdle(device);
+        memory_pool_.reset();
         if (command_pool) vkDestroyCommandPool(device, command_pool, nullptr);
         vkDestroyDevice(device, nullptr);
     }

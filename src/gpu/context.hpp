@@ -4,12 +4,15 @@
 #include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 namespace stipple::gpu {
+
+class MemoryPool;
 
 struct ContextOptions {
     int device_index = -1;  // --device N; -1 picks the best (discrete > integrated > virtual > CPU)
@@ -107,9 +110,12 @@ public:
     // thousand objects, each checked alone, grew to 5 GB). STIPPLE_GPU_MEMORY_LIMIT (e.g. 64M: how a smaller
     // device would refuse, tried on a big one) bounds what the context holds in all.
     uint64_t device_memory_available() const;
-    // Bytes of memory this context's buffers and images hold now (gpu::MemoryTally counts them).
+    // Bytes of memory this context's buffers and images hold now (the shared blocks whole: MemoryPool).
     uint64_t bytes_allocated() const { return allocated_bytes_.load(); }
-    std::atomic<uint64_t>& memory_tally() const { return allocated_bytes_; }
+    // Where buffers and images get their memory. The device's limit on allocations
+    // (maxMemoryAllocationCount) is lowered by STIPPLE_GPU_ALLOCATION_LIMIT (e.g. 100: how a device that
+    // allows few would refuse a crowd, tried on one that allows 2^32).
+    MemoryPool& memory_pool() const { return *memory_pool_; }
     // The largest storage buffer a shader may read (maxStorageBufferRange). Lowered by
     // STIPPLE_MAX_STORAGE_BUFFER (e.g. 16M: how a device with a smaller limit draws large images in tiles).
     uint64_t max_storage_buffer_bytes() const;
@@ -134,6 +140,7 @@ private:
     uint32_t max_groups_x_ = 65535;
     std::atomic<uint32_t> validation_messages_{0};
     mutable std::atomic<uint64_t> allocated_bytes_{0};
+    std::unique_ptr<MemoryPool> memory_pool_;  // made with the device, freed before it
     static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                          VkDebugUtilsMessageTypeFlagsEXT types,
                                                          const VkDebugUtilsMessengerCallbackDataEXT* data,

@@ -71,20 +71,15 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
-    uint32_t type = context.find_memory_type(requirements.memoryTypeBits, required_flags(use), preferred_flags(use));
-    coherent_ = context.memory_properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = requirements.size;
-    alloc.memoryTypeIndex = type;
-    VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory_);
-    if (result != VK_SUCCESS) {
-        reset();
-        fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory (" +
-             vk_result_name(result) + ")");
+    const uint32_t type = context.find_memory_type(requirements.memoryTypeBits, required_flags(use), preferred_flags(use));
+    MemoryPool& pool = context.memory_pool();
+    pool_ = &pool;
+    if (const VkResult result = pool.allocate(requirements, type, use != MemoryUse::DeviceLocal, true, memory_);
+        result != VK_SUCCESS) {
+        reset();  // the buffer made above, not leaked
+        fail(pool.failure_message(result, requirements.size));
     }
-    tally_ = MemoryTally(context.memory_tally(), requirements.size);
-    VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
-    if (use != MemoryUse::DeviceLocal) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_.memory, memory_.offset));
 }
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
@@ -92,11 +87,9 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         reset();
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
         buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
         size_ = std::exchange(other.size_, 0);
-        mapped_ = std::exchange(other.mapped_, nullptr);
-        coherent_ = other.coherent_;
-        tally_ = std::move(other.tally_);
+        pool_ = std::exchange(other.pool_, nullptr);
+        memory_ = std::exchange(other.memory_, MemoryRange());
     }
     return *this;
 }
@@ -104,23 +97,24 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 void Buffer::reset() {
     if (!device_) return;
     if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
-    tally_.release();
+    if (pool_) pool_->free(memory_);
     buffer_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
-    mapped_ = nullptr;
+    pool_ = nullptr;
     device_ = VK_NULL_HANDLE;
 }
 
+// A range of a shared block is flushed alone (its offset and size are whole atoms: MemoryPool::allocate).
 void Buffer::flush() const {
-    if (coherent_ || !mapped_) return;
-    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_, 0, VK_WHOLE_SIZE};
+    if (memory_.coherent || !memory_.mapped) return;
+    const VkDeviceSize size = memory_.block == MemoryRange::kOwn ? VK_WHOLE_SIZE : memory_.size;
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_.memory, memory_.offset, size};
     VK_CHECK(vkFlushMappedMemoryRanges(device_, 1, &range));
 }
 
 void Buffer::invalidate() const {
-    if (coherent_ || !mapped_) return;
-    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_, 0, VK_WHOLE_SIZE};
+    if (memory_.coherent || !memory_.mapped) return;
+    const VkDeviceSize size = memory_.block == MemoryRange::kOwn ? VK_WHOLE_SIZE : memory_.size;
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, memory_.memory, memory_.offset, size};
     VK_CHECK(vkInvalidateMappedMemoryRanges(device_, 1, &range));
 }
 
@@ -131,18 +125,15 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
 
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device_, image_, &requirements);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = requirements.size;
-    alloc.memoryTypeIndex =
-        context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    if (const VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory_); result != VK_SUCCESS) {
-        memory_ = VK_NULL_HANDLE;  // undefined after a failed call
-        reset();                   // the image made above, not leaked
-        fail("cannot allocate " + std::to_string(requirements.size >> 20) + " MiB of GPU memory for a " +
-             std::to_string(extent.width) + "x" + std::to_string(extent.height) + " image (" + vk_result_name(result) + ")");
+    const uint32_t type = context.find_memory_type(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    MemoryPool& pool = context.memory_pool();
+    pool_ = &pool;
+    if (const VkResult result = pool.allocate(requirements, type, false, false, memory_); result != VK_SUCCESS) {
+        reset();  // the image made above, not leaked
+        fail(pool.failure_message(result, requirements.size,
+                                    "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " image"));
     }
-    tally_ = MemoryTally(context.memory_tally(), alloc.allocationSize);
-    VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    VK_CHECK(vkBindImageMemory(device_, image_, memory_.memory, 0));
     view_ = create_view_2d(device_, image_, format, aspect);
 }
 
@@ -189,18 +180,20 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
         for (uint32_t i = 0; i < context.memory_properties.memoryTypeCount; ++i)
             if ((context.memory_properties.memoryTypes[i].propertyFlags & host) != host) types &= ~(1u << i);
     if (types == 0) return instead();
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = std::max(for_image.size, for_words.size);
-    alloc.memoryTypeIndex = context.find_memory_type(types, host_mapped ? host : 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(image.device_, &alloc, nullptr, &image.memory_));
-    image.tally_ = MemoryTally(context.memory_tally(), alloc.allocationSize);
-    VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_, 0));
+    VkMemoryRequirements both = for_image;
+    both.size = std::max(for_image.size, for_words.size);
+    both.alignment = std::max(for_image.alignment, for_words.alignment);
+    const uint32_t type = context.find_memory_type(types, host_mapped ? host : 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    image.pool_ = &context.memory_pool();
+    if (const VkResult result = image.pool_->allocate(both, type, host_mapped, false, image.memory_); result != VK_SUCCESS)
+        fail(image.pool_->failure_message(result, both.size, "a " + std::to_string(extent.width) + "x" +
+                                                                 std::to_string(extent.height) + " image"));
+    VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_.memory, 0));
     if (words) {
-        VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_, 0));
+        VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_.memory, 0));
         static std::atomic<uint64_t> next_serial{1};
         image.words_serial_ = next_serial++;
     }
-    if (host_mapped) VK_CHECK(vkMapMemory(image.device_, image.memory_, 0, VK_WHOLE_SIZE, 0, &image.mapped_));
     image.view_ = create_view_2d(image.device_, image.image_, format, VK_IMAGE_ASPECT_COLOR_BIT);
     return image;
 }
@@ -211,16 +204,15 @@ Image& Image::operator=(Image&& other) noexcept {
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        pool_ = std::exchange(other.pool_, nullptr);
+        memory_ = std::exchange(other.memory_, MemoryRange());
         words_ = std::exchange(other.words_, VK_NULL_HANDLE);
-        mapped_ = std::exchange(other.mapped_, nullptr);
         row_pitch_ = other.row_pitch_;
         words_serial_ = std::exchange(other.words_serial_, 0);
         pixels_offset_ = other.pixels_offset_;
         format_ = other.format_;
         extent_ = other.extent_;
         aspect_ = other.aspect_;
-        tally_ = std::move(other.tally_);
     }
     return *this;
 }
@@ -230,13 +222,11 @@ void Image::reset() {
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (words_) vkDestroyBuffer(device_, words_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
-    tally_.release();
+    if (pool_) pool_->free(memory_);  // unmaps implicitly
     view_ = VK_NULL_HANDLE;
     words_ = VK_NULL_HANDLE;
-    mapped_ = nullptr;
     image_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
+    pool_ = nullptr;
     device_ = VK_NULL_HANDLE;
 }
 

@@ -9,6 +9,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "gpu/memory_pool.hpp"
+
 namespace stipple::gpu {
 
 class Context;
@@ -17,35 +19,6 @@ enum class MemoryUse {
     DeviceLocal,  // GPU-only data (stipples, per-frame densities, depth)
     Upload,       // host-visible, written by the CPU (uniforms, staging)
     Readback,     // host-visible and cached, read by the CPU (images, counters)
-};
-
-// The memory a Buffer or Image holds, counted in its context's tally while it lives
-// (Context::bytes_allocated, which device_memory_available subtracts).
-class MemoryTally {
-public:
-    MemoryTally() = default;
-    MemoryTally(std::atomic<uint64_t>& total, uint64_t bytes) : total_(&total), bytes_(bytes) { total += bytes; }
-    ~MemoryTally() { release(); }
-    MemoryTally(MemoryTally&& other) noexcept { *this = std::move(other); }
-    MemoryTally& operator=(MemoryTally&& other) noexcept {
-        if (this != &other) {
-            release();
-            total_ = std::exchange(other.total_, nullptr);
-            bytes_ = std::exchange(other.bytes_, 0);
-        }
-        return *this;
-    }
-    MemoryTally(const MemoryTally&) = delete;
-    MemoryTally& operator=(const MemoryTally&) = delete;
-    void release() {
-        if (total_) *total_ -= bytes_;
-        total_ = nullptr;
-        bytes_ = 0;
-    }
-
-private:
-    std::atomic<uint64_t>* total_ = nullptr;
-    uint64_t bytes_ = 0;
 };
 
 class Buffer {
@@ -61,7 +34,7 @@ public:
     void reset();
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return size_; }
-    void* mapped() const { return mapped_; }  // non-null for Upload and Readback
+    void* mapped() const { return memory_.mapped; }  // non-null for Upload and Readback
     explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
 
     // Makes host writes visible / device writes readable on non-coherent memory.
@@ -71,11 +44,9 @@ public:
 private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkBuffer buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
-    void* mapped_ = nullptr;
-    bool coherent_ = true;
-    MemoryTally tally_;
+    MemoryPool* pool_ = nullptr;
+    MemoryRange memory_;  // its own allocation, or a range of a block shared with other small buffers
 };
 
 class Image {
@@ -106,7 +77,7 @@ public:
     // Names words() for the image's life, process-wide (RenderTargets::color_words_serial); 0 without words.
     uint64_t words_serial() const { return words_serial_; }
     // linear_with_words(..., host_mapped): the pixels, rows row_pitch() bytes apart.
-    const void* mapped() const { return mapped_ ? static_cast<const char*>(mapped_) + pixels_offset_ : nullptr; }
+    const void* mapped() const { return memory_.mapped ? static_cast<const char*>(memory_.mapped) + pixels_offset_ : nullptr; }
     VkDeviceSize row_pitch() const { return row_pitch_; }
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
@@ -116,15 +87,14 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    MemoryPool* pool_ = nullptr;
+    MemoryRange memory_;  // always its own allocation
     VkBuffer words_ = VK_NULL_HANDLE;
-    void* mapped_ = nullptr;
     VkDeviceSize row_pitch_ = 0, pixels_offset_ = 0;
     uint64_t words_serial_ = 0;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
     VkImageAspectFlags aspect_ = 0;
-    MemoryTally tally_;
 };
 
 // A device-local buffer filled once from host data through a staging buffer (waits for completion).

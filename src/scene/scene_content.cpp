@@ -201,9 +201,16 @@ Sphere scene_bounds(const Scene& scene, const std::vector<ObjectData>& objects) 
 
 void add_scene_objects(StippleRenderer& renderer, const Scene& scene, const std::vector<ObjectData>& objects) {
     STIPPLE_CHECK(scene.objects.size() == objects.size(), "one ObjectData per scene object");
-    for (size_t i = 0; i < objects.size(); ++i)
-        renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.drawing_matrix(),
-                            scene.objects[i].params, objects[i].motion);
+    for (size_t i = 0; i < objects.size(); ++i) {
+        try {
+            renderer.add_object(*objects[i].mesh, *objects[i].stipples, scene.objects[i].transform.drawing_matrix(),
+                                scene.objects[i].params, objects[i].motion);
+        } catch (const Error& e) {
+            // What the plan could not foresee (the device's allocations all taken): which object met it.
+            if (scene.source.empty() || scene.objects.size() < 2) throw;
+            fail_file(scene.source, "objects[" + std::to_string(i) + "] (" + scene.model_path(i) + "): " + e.what());
+        }
+    }
 }
 
 int resolve_animation(const ObjectData& model, const AnimationChoice& choice) {
