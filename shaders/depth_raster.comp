@@ -280,14 +280,27 @@ void large_pass() {  // at most kRasterMaxGroups workgroups: each takes every th
         rasterise_large(large_triangles[listed]);
 }
 
+// True when the three corners lie beyond one plane of the view volume (-w <= x, y <= w, 0 <= z <= w): the
+// triangle covers nothing. Clipping is linear in clip space, so this holds whatever the corners' w, behind
+// the eye included.
+bool beyond_one_plane(vec4 c0, vec4 c1, vec4 c2) {
+    return (c0.x > c0.w && c1.x > c1.w && c2.x > c2.w) || (c0.x < -c0.w && c1.x < -c1.w && c2.x < -c2.w) ||
+           (c0.y > c0.w && c1.y > c1.w && c2.y > c2.w) || (c0.y < -c0.w && c1.y < -c1.w && c2.y < -c2.w) ||
+           (c0.z < 0.0f && c1.z < 0.0f && c2.z < 0.0f) || (c0.z > c0.w && c1.z > c1.w && c2.z > c2.w);
+}
+
 void triangle_pass() {
     uint t = linear_invocation();
     bool large = false;
     if (t < object.flags.y) {
         uvec3 corners = mesh_triangle(t);
         vec4 c0 = corner_clip(corners.x), c1 = corner_clip(corners.y), c2 = corner_clip(corners.z);
-        // Crossing the near plane (z < 0 in clip space) or the eye plane: clipped by the large pass.
-        if (c0.z < 0.0f || c1.z < 0.0f || c2.z < 0.0f || c0.w <= 0.0f || c1.w <= 0.0f || c2.w <= 0.0f) {
+        // Wholly beside the frame, behind the eye or beyond the far plane: nothing to draw. Such triangles
+        // were listed for the large pass when they reached beyond the guard band, a workgroup each to clip
+        // them to nothing: a model far to the side of the view took a second a frame.
+        if (beyond_one_plane(c0, c1, c2)) {
+            large = false;
+        } else if (c0.z < 0.0f || c1.z < 0.0f || c2.z < 0.0f || c0.w <= 0.0f || c1.w <= 0.0f || c2.w <= 0.0f) {
             large = true;
         } else {
             vec2 window[3] = vec2[3](window_xy(c0), window_xy(c1), window_xy(c2));
