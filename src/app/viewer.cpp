@@ -245,9 +245,11 @@ int Viewer::run() {
                     swapchain_.mode_name().c_str(), 1000.0 / ms, ms);
         const FrameStats& st = collected_;
         if (panel_visible_) print_panel_draws("benchmark");
-        std::printf("benchmark: %zu objects, %llu polygons, %llu candidate stipples, %lld drawn (last frame)\n",
-                    live_.size(), (unsigned long long)st.triangles, (unsigned long long)st.candidate_stipples,
-                    (long long)st.drawn_stipples);
+        // Negative where the drawn stipples are not counted (--no-count-drawn): said, not printed as -1.
+        const std::string drawn = st.drawn_stipples >= 0 ? std::to_string(st.drawn_stipples) + " drawn (last frame)"
+                                                         : "drawn not counted (--no-count-drawn)";
+        std::printf("benchmark: %zu objects, %llu polygons, %llu candidate stipples, %s\n", live_.size(),
+                    (unsigned long long)st.triangles, (unsigned long long)st.candidate_stipples, drawn.c_str());
         for (const auto& [pass, total] : bench_gpu_ms_)
             std::printf("benchmark: gpu %-12s mean %.3f ms\n", pass.c_str(), total / std::max(bench_samples_, 1));
     }
@@ -315,6 +317,7 @@ void Viewer::run_script() {
                 }
                 const ParamSpec& spec = *find_param(action.key);
                 script_set_line_ = action.line;
+                script_set_unapplied_ = true;
                 spec.set(live_.scene().objects[action.object].params, action.value);
                 if (spec.effect == ParamEffect::Regenerate) pending_regeneration_.push_back(action.object);
                 message("script: object " + std::to_string(action.object) + " " + action.key + " = " +
@@ -329,6 +332,9 @@ void Viewer::run_script() {
                 if (!export_view(action.path, plot::ExportOptions{})) script_failed_ = true;  // exit code 1 at the end
                 break;
             case ScriptAction::Kind::Quit:
+                // Not before the next frame has applied the settings: one the scene refuses there (the cpu density
+                // path for an animated model) must still end the run with exit code 1 (`set` then `quit` exited 0).
+                if (script_set_unapplied_) return;
                 window_.request_close();
                 break;
         }

@@ -180,6 +180,7 @@ void Viewer::frame() {
 
 void Viewer::record(uint32_t image) {
     for (const std::string& refused : live_.sync(timeline_.time())) message(refused, true);
+    script_set_unapplied_ = false;
     FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), swapchain_.extent());
     renderer_.prepare(view);
 
