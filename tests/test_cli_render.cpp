@@ -861,6 +861,8 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"render", "-o", "x.csv", "--pen-width", "0.3"}, "--pen-width sets the pen of SVG or PDF output's lines and dots; a CSV"},
         {{"parity", "--devices", "0,0", "--paths", "splat,fast"}, "--paths"},
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
+        {{"parity", "--yaws", "0"}, "--yaws"},  // said before the count of devices (lavapipe alone: one)
+        {{"parity", "--paths", "foo"}, "--paths: unknown density path 'foo'"},
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},
         // Numbers are decimal everywhere: hex was read by some options (--seed 0x10 as 16) and not others.
         {{"render", "--seed", "0x10"}, "--seed: '0x10' is not an integer"},

@@ -16,7 +16,11 @@ const PaperRow* find_paper_row(const std::string& name) {
 
 std::string paper_row_names() {
     std::string names;
-    for (const PaperRow& row : kPaperTable) names += std::string(names.empty() ? "" : ", ") + row.name;
+    for (const PaperRow& row : kPaperTable) {  // as a shell takes them without quotes (and bench --help lists them)
+        std::string hyphened = row.name;
+        std::replace(hyphened.begin(), hyphened.end(), ' ', '-');
+        names += (names.empty() ? "" : ", ") + hyphened;
+    }
     return names;
 }
 

@@ -33,7 +33,7 @@ inline constexpr std::array<PaperRow, 7> kPaperTable{{
 
 // The row named `name`, or nullptr.
 const PaperRow* find_paper_row(const std::string& name);
-// Names of all rows, comma separated (for messages).
+// Names of all rows, comma separated, spaces as hyphens (for messages).
 std::string paper_row_names();
 
 // Beyond the paper: one kind of object-space line per column (ObjectParams::contours, borders, creases).

@@ -59,14 +59,7 @@ int run_parity(const std::vector<std::string>& argv) {
     args.expect_at_most_positionals(1, "parity takes at most one MODEL");
     apply_cache_options(args);
     const std::string path = args.positionals().empty() ? default_model_path() : args.positionals()[0];
-    const std::vector<std::string> names = gpu::Context::list_devices();
-    if (names.empty()) fail("parity: this machine has no Vulkan device");
-    const std::vector<int> devices = args.has("--devices")
-                                         ? parse_devices(args.get("--devices", ""), names.size())
-                                         : std::vector<int>{0, 1};
-    if (!args.has("--devices") && names.size() < 2)
-        fail("parity compares two Vulkan devices and this machine has " + std::to_string(names.size()) +
-             " (--devices 0,0 compares one with itself)");
+    // The options first: a mistyped one is said as such, not hidden behind the count of devices.
     const std::vector<DensityPath> paths = parse_paths(args.get("--paths", "splat,vertex"));
     const long long yaws = args.integer("--yaws", 8);
     if (yaws < 1 || yaws > 64) fail("--yaws = " + std::to_string(yaws) + " must be in 1..64");
@@ -75,6 +68,14 @@ int run_parity(const std::vector<std::string>& argv) {
         fail("--width/--height must be between 16 and 16384 (got " + std::to_string(width) + "x" +
              std::to_string(height) + ")");
     const ObjectParams params = read_object_params(args);
+    const std::vector<std::string> names = gpu::Context::list_devices();
+    if (names.empty()) fail("parity: this machine has no Vulkan device");
+    const std::vector<int> devices = args.has("--devices")
+                                         ? parse_devices(args.get("--devices", ""), names.size())
+                                         : std::vector<int>{0, 1};
+    if (!args.has("--devices") && names.size() < 2)
+        fail("parity compares two Vulkan devices and this machine has " + std::to_string(names.size()) +
+             " (--devices 0,0 compares one with itself)");
     const ObjectData object = load_object_data(path, params.generation);
     require_candidates(path, object.stipples->size(), params.generation.dmax, "compare");
     const std::vector<ParityView> views = parity_views(int(yaws), paths);

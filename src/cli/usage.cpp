@@ -44,10 +44,11 @@ void render_section() {
   --width N, --height N   image size in pixels (default 1280 x 1024)
   --stats                 print triangles, candidate and drawn stipples (counted on the GPU), the
                           mean ink inside the object (as tone measures it), and the GPU time of each pass
-  --repeat N              after the image, time N more frames (no read-back) and print the median
-                          frame time and GPU time per pass, and the least
+  --repeat N              after the image, time N more frames (no read-back; 0..100000) and print
+                          the median frame time and GPU time per pass, and the least
   --queued K              with --repeat: each timed frame is K frames queued back to back in one
-                          submission, over K (default: 1 on a CPU device, 8 on a GPU, as for bench)
+                          submission, over K (1..1000; default: 1 on a CPU device, 8 on a GPU, as
+                          for bench)
   --depth-cull MODE        auto, on or off: the depth pass draws only the triangles that may cover a
                           pixel centre, listed by a compute pass (the same image). auto considers it
                           for models whose triangles average under 2 px on screen and keeps it where
@@ -78,7 +79,8 @@ void render_section() {
 
 void camera_section() {
     std::printf(R"(Camera, light and colours (render and view):
-  --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z)
+  --yaw DEG, --pitch DEG  orbit the camera around the model (default 0, 0: looking down -Z; yaw
+                          within +-36000, pitch within +-90)
   --distance D            camera distance as a multiple of the framing distance (default 1 = framed;
                           0.0001..10000)
   --light X,Y,Z           direction toward the light in view space: x right, y up, z toward the
@@ -110,13 +112,13 @@ void vector_section() {
                           vector output; a print image names its page). A named size without
                           -portrait or -landscape is turned as the drawing is (landscape when wider
                           than tall); with --fit frame and no --width a print image's is portrait
-  --margin MM             border of bare paper around the drawing (default 10)
+  --margin MM             border of bare paper around the drawing (0..500, default 10)
   --fit WHAT              vector output and print images: drawing (what is drawn, its dots and
                           lines, fills the page inside the margins, enlarged at most 4 times) or
                           frame (the whole frame, empty paper included, as the screen shows it)
                           (default: drawing; frame for a frame sequence, so that its pages line up)
-  --pen-width MM          stroke of lines and of circle/tick dots (default: lines as wide as drawn,
-                          dots 0.3)
+  --pen-width MM          stroke of lines and of circle/tick dots (above 0, at most 10; default:
+                          lines as wide as drawn, dots 0.3)
   --dot-style STYLE       filled (discs, for print and PDF; default), circle or tick (for plotters)
   --fill-paper            SVG and PDF: paint the page in the scene's paper colour (a print image's
                           page is always the paper colour)
@@ -128,14 +130,16 @@ void vector_section() {
                           its size follows the page, its dpi is in the PNG. The screen frame it enlarges
                           takes the page's shape, or with --width the screen image's (--width W
                           --height H prints the composition of the W x H screen image)
-  --tile N                print images are drawn in tiles of at most N pixels a side (default 4096)
+  --tile N                print images are drawn in tiles of at most N pixels a side (64..16384,
+                          default 4096)
 
   With several frames, -o (and --mask) must hold a frame number, %%d or %%0Nd: -o frames/%%04d.png
   writes frames/0000.png, frames/0001.png, ... (%%%% is a literal %%, in a single frame's -o too). A
   progress bar shows on a terminal; the same command always writes the same files (but a PDF's creation
   date, unless SOURCE_DATE_EPOCH gives it). With a SCENE.json, --yaw, --pitch, --distance,
   --orthographic or --perspective, --light, --ink and --paper override the scene's camera, light and
-  colours (an object's own "ink" stays its own; the projection asked draws a camera_path's frames too).
+  colours (an object's own "ink" stays its own; the projection asked draws a camera_path's frames too,
+  and --yaw, --pitch and --distance are refused with one: the path sets the camera).
 
 )");
 }
@@ -243,11 +247,12 @@ disk, so a model reopened with the same generation parameters skips generation (
 stipple, checked when read; a damaged entry is reported and regenerated)
   --cache-dir DIR         where (default: $STIPPLE_CACHE_DIR/stipples, else
                           $XDG_CACHE_HOME/stipple/stipples, else ~/.cache/stipple/stipples; an
-                          empty or relative variable counts as unset, and without a home a private
-                          stipple-cache-UID/stipples in the temporary folder)
-  --cache-size SIZE       the folder's limit, e.g. 500M or 2G (MiB, GiB; default 1G); when an entry
-                          is written, the least recently used ones are removed beyond it (an entry
-                          larger than the whole limit is not kept)
+                          empty variable counts as unset, and a relative XDG_CACHE_HOME too (a
+                          relative STIPPLE_CACHE_DIR is taken from the current folder); without a
+                          home a private stipple-cache-UID/stipples in the temporary folder)
+  --cache-size SIZE       the folder's limit, e.g. 500M or 2G (M and G: MiB and GiB; default 1G);
+                          when an entry is written, the least recently used ones are removed beyond
+                          it (an entry larger than the whole limit is not kept)
 
 )");
 }
