@@ -725,6 +725,62 @@ TEST_F(SceneObjects, ViewerSceneTakesDropsAndResultsOnlyAsThePanelAsks) {
     EXPECT_DOUBLE_EQ(timeline.time(), length + 1.0);
 }
 
+// A model the viewer draws already, dropped again: a copy sharing its mesh, stipples and GPU shape (each drop
+// loaded the file again, held it anew and was charged as a new model). And what the viewer adds, a saved scene
+// loads again: drops are checked beside the scene file's plan, not only what the device holds (the viewer took
+// 748 copies whose saved file was then refused at objects[724]).
+TEST_F(SceneObjects, ViewerSceneDropsOfAModelItDrawsAreCopiesThatASavedSceneHolds) {
+    auto dir = test::temp_dir("scene-live-copies");
+    const std::string sphere = write_sphere_obj(dir).string();
+    Scene scene;
+    scene.base_dir = dir;
+    scene.objects.push_back({"sphere.obj", {}, {}});
+    scene.objects[0].params.generation.dmax = 0.02f;
+    const std::string saved = (dir / "saved.json").string();
+    size_t added = 0;
+    {
+        SceneContent content = load_scene_content(scene);
+        StippleRenderer renderer(*context, kColorFormat, context->depth_format);
+        app::LiveScene live(scene, std::move(content), renderer);
+        live.add_model(sphere);
+        ASSERT_EQ(live.size(), 2u);
+        EXPECT_EQ(live.model(1).mesh, live.model(0).mesh);
+        EXPECT_EQ(live.model(1).stipples, live.model(0).stipples);
+        EXPECT_EQ(renderer.object(1).shape, renderer.object(0).shape);
+        // Under a limit that holds a few dozen copies by the plan, drops until one is refused.
+        const uint64_t copy = planned_object_bytes(*live.model(0).mesh, live.model(0).stipples->size(), true);
+        const uint64_t plan = planned_scene_bytes(live.scene(), SceneContent{live.objects()});
+        test::ScopedEnv limit("STIPPLE_GPU_MEMORY_LIMIT", std::to_string(plan + 30 * copy + copy / 2));
+        bool refused = false;
+        for (int i = 0; i < 200 && !refused; ++i) {
+            try {
+                live.add_model(sphere);
+                ++added;
+            } catch (const Error& e) {
+                refused = true;
+                EXPECT_NE(std::string(e.what()).find("of GPU memory"), std::string::npos) << e.what();
+            }
+        }
+        EXPECT_TRUE(refused);
+        std::printf("%zu copies added before a refusal (the plan holds 30)\n", added);
+        EXPECT_GE(added, 20u);
+        EXPECT_LE(added, 30u);
+        live.save(saved, OrbitCamera{});
+    }
+    // The renderer gone, the saved scene's plan holds under the same limit.
+    const Scene again = load_scene(saved);
+    ASSERT_EQ(again.objects.size(), added + 2);
+    const SceneContent content = load_scene_content(again);
+    const uint64_t copy = planned_object_bytes(*content.objects[0].mesh, content.objects[0].stipples->size(), true);
+    Scene first = again;
+    first.objects.resize(2);
+    SceneContent first_content;
+    first_content.objects.assign(content.objects.begin(), content.objects.begin() + 2);
+    const uint64_t plan = planned_scene_bytes(first, first_content);
+    test::ScopedEnv limit("STIPPLE_GPU_MEMORY_LIMIT", std::to_string(plan + 30 * copy + copy / 2));
+    EXPECT_NO_THROW(check_scene_fits(*context, again, content));
+}
+
 TEST_F(SceneObjects, ViewerSceneAddsDroppedModelsAndRegeneratesOnCommit) {
     // What the viewer does with a drop and with the panel's generation parameters, without a window.
     auto dir = test::temp_dir("scene-live");

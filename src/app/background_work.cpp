@@ -44,9 +44,9 @@ void BackgroundWork::regenerate(uint64_t object_id, const ObjectData& model, con
     wake_.notify_one();
 }
 
-void BackgroundWork::load(const std::string& path, const ObjectParams& params) {
+void BackgroundWork::load(const std::string& path, const ObjectParams& params, uint64_t planned_before) {
     std::lock_guard<std::mutex> lock(mutex_);
-    queue_.push_back({FinishedWork::Kind::Loaded, 0, path, ObjectData{}, params, "loading " + path});
+    queue_.push_back({FinishedWork::Kind::Loaded, 0, path, ObjectData{}, params, "loading " + path, planned_before});
     wake_.notify_one();
 }
 
@@ -115,7 +115,7 @@ FinishedWork BackgroundWork::execute(const Job& job) {
     work.params = job.params;
     work.data = job.kind == FinishedWork::Kind::Loaded ? load_model_data(job.path) : job.model;
     // A count this device cannot hold is refused before the stipples are made (minutes at a high D_max).
-    check_model_fits(context_, work.data, job.params.generation);
+    check_model_fits(context_, work.data, job.params.generation, job.planned_before);
     // Named by its file in what it refuses (the host's memory, memory that runs out).
     const std::string& path = job.path.empty() && work.data.mesh ? work.data.mesh->source : job.path;
     work.data.stipples = make_model_stipples(path, work.data, job.params.generation);

@@ -40,7 +40,8 @@ public:
 
     // New stipples for a loaded model (its mesh, and an animated one's motion: its headroom shapes them).
     void regenerate(uint64_t object_id, const ObjectData& model, const ObjectParams& params);
-    void load(const std::string& path, const ObjectParams& params);
+    // `planned_before`: the bytes to check the model beside (LiveScene::planned_beyond_held).
+    void load(const std::string& path, const ObjectParams& params, uint64_t planned_before = 0);
 
     std::vector<FinishedWork> take_finished();
     // What runs now, e.g. "new stipples for stanford-bunny.obj", and how far it is; nothing when idle.
@@ -61,6 +62,7 @@ private:
         ObjectData model;  // regenerations: the mesh and motion (no stipples)
         ObjectParams params;
         std::string label;
+        uint64_t planned_before = 0;  // loads: check_model_fits beside these bytes
     };
     void run();
     FinishedWork execute(const Job& job);

@@ -5,7 +5,9 @@
 
 #include "anim/pose.hpp"
 #include "core/error.hpp"
+#include "gpu/context.hpp"
 #include "params/param_table.hpp"
+#include "scene/scene_content.hpp"
 #include "scene/scene_json.hpp"
 
 namespace stipple::app {
@@ -118,11 +120,47 @@ bool LiveScene::regenerate_if_changed(size_t object) {
     return true;
 }
 
+std::optional<size_t> LiveScene::copy_source(const std::string& path, const ObjectParams& params) const {
+    const std::vector<double> wanted = generation_values(params.generation);
+    for (size_t i = 0; i < data_.size(); ++i) {
+        if (data_[i].motion || scene_.objects[i].transform.mirrors() || !data_[i].stipples) continue;
+        if (generation_values(generated_with_[i].generation) != wanted) continue;
+        std::error_code ec;
+        if (std::filesystem::equivalent(path, scene_.model_path(i), ec) && !ec) return i;
+    }
+    return std::nullopt;
+}
+
+uint64_t LiveScene::planned_beyond_held() const {
+    Scene planned = scene_;
+    for (size_t i = 0; i < planned.objects.size(); ++i) planned.objects[i].params.generation = generated_with_[i].generation;
+    const uint64_t plan = planned_scene_bytes(planned, SceneContent{data_});
+    const uint64_t held = renderer_.context().bytes_allocated();
+    return plan > held ? plan - held : 0;
+}
+
+void LiveScene::add_copy(size_t source, const ObjectParams& params) {
+    ObjectData data = data_.at(source);  // the mesh and stipples shared
+    check_object_fits(renderer_.context(), *data.mesh, data.stipples->size(), planned_beyond_held(), true);
+    SceneObject object;
+    object.model = std::filesystem::absolute(scene_.model_path(source)).lexically_normal().string();
+    object.params = params;
+    float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.drawing_matrix()).radius;
+    object.transform = placement_beside(bounds(), data.bounds, reference);
+    // The renderer finds the source's shape by its key and makes a copy of it (no upload).
+    renderer_.add_object(*data.mesh, *data.stipples, object.transform.drawing_matrix(), object.params, data.motion);
+    scene_.objects.push_back(object);
+    data_.push_back(std::move(data));
+    generated_with_.push_back(object.params);
+    ids_.push_back(next_id_++);
+}
+
 void LiveScene::add_model(const std::string& path) {
     if (is_scene_file(path)) fail_file(path, "is a scene file: open it with `stipple view " + path + "`");
     const ObjectParams params = params_for_new_object();
+    if (const std::optional<size_t> source = copy_source(path, params)) return add_copy(*source, params);
     ObjectData data = load_model_data(path);
-    check_model_fits(renderer_.context(), data, params.generation);
+    check_model_fits(renderer_.context(), data, params.generation, planned_beyond_held());
     data.stipples = make_model_stipples(path, data, params.generation);
     const ObjectUpload upload =
         prepare_object_upload(renderer_.context(), *data.mesh, *data.stipples, params.generation.seed, data.motion);

@@ -52,6 +52,18 @@ public:
     // The parameters a model dropped now would get (the last object's).
     ObjectParams params_for_new_object() const;
 
+    // A model dropped again: an object of the scene drawn from the same file (not mirrored, not animated) whose
+    // stipples were made with `params`' generation parameters, of which the new object can be a copy
+    // (add_copy: it shares the mesh, the stipples and their GPU buffers); none otherwise.
+    std::optional<size_t> copy_source(const std::string& path, const ObjectParams& params) const;
+    // A static copy of object `source`, added beside the others as a dropped model is.
+    void add_copy(size_t source, const ObjectParams& params);
+    // The bytes to check a new object against beside this scene's: what a scene file of these objects plans
+    // for them (planned_scene_bytes) less what the device holds now (its own share counted there), so that
+    // the viewer adds only what a saved scene can load again (the viewer took 748 copies that the saved file
+    // then refused at objects[724]).
+    uint64_t planned_beyond_held() const;
+
     // The current state with `camera` as the scene's camera; model paths relative to the file.
     // The scene as drawn at `scene_seconds` of the timeline: each animated object's start is the pose it shows
     // (its animation time then, wrapped or held), so that render draws the saved file as the window shows it;

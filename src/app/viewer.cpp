@@ -374,7 +374,19 @@ void Viewer::handle_input(const Input& input, float aspect) {
             message(path + ": is a scene file: open it with `stipple view " + path + "`", true);
             continue;
         }
-        work_.load(path, live_.params_for_new_object());
+        // A model the scene draws already, with the same generation parameters: a copy of it, at once, sharing
+        // its mesh, stipples and GPU buffers (each drop loaded the file again and held it all anew).
+        const ObjectParams params = live_.params_for_new_object();
+        if (const std::optional<size_t> source = live_.copy_source(path, params)) {
+            try {
+                live_.add_copy(*source, params);
+                message("added " + path + " (a copy of object " + std::to_string(*source) + ": its stipples shared)");
+            } catch (const Error& e) {
+                message(e.what(), true);
+            }
+            continue;
+        }
+        work_.load(path, params, live_.planned_beyond_held());
         message("loading " + path);
     }
 }

@@ -46,10 +46,8 @@ std::vector<gpu::StippleVertex> pack_stipples(const Mesh& mesh, const StippleSet
 
 }  // namespace
 
-uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before,
-                           bool copy) {
+uint64_t planned_object_bytes(const Mesh& mesh, size_t stipples, bool copy) {
     const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
-    const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
     // The buffers every path needs (mesh, stipples, polygon constants and densities) and its largest path
     // buffers, beside the drawn-stipple mask. The path buffers: the gradient pass's list of polygons, and the
     // splat's three lists the size of its work list (a slot per polygon and per kSplatShortRun candidates)
@@ -58,7 +56,14 @@ uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t
     const uint64_t path_buffers = 4 * t + std::max(3 * work_list, work_list + 4 * s);
     // The shape's part (positions and normals, indices, candidates, polygon constants) once for its copies.
     const uint64_t shape = copy ? 0 : 24 * v + 12 * t + 8 * s + 16 * t;
-    const uint64_t needed = shape + 16 * t + s / 8 + path_buffers;
+    return shape + 16 * t + s / 8 + path_buffers;
+}
+
+uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before,
+                           bool copy) {
+    const uint64_t v = mesh.positions.size(), t = mesh.triangle_count(), s = stipples;
+    const uint64_t largest = std::max({8 * s, 16 * t, 12 * t, 12 * v});  // stipples, polygons, indices, positions
+    const uint64_t needed = planned_object_bytes(mesh, stipples, copy);
     const std::string what = mesh.source.empty() ? std::string("the object") : mesh.source;
     const std::string lower = ": lower --dmax or --max-stipples, or use a simplified model";
     if (largest > context.max_storage_buffer_bytes()) {

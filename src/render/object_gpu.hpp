@@ -174,6 +174,8 @@ uint64_t object_shape_key(const Mesh& mesh, const StippleSet& stipples, uint64_t
 // object checked before, whose shape it shares (its own buffers only). Returns the bytes it needs.
 uint64_t check_object_fits(const gpu::Context& context, const Mesh& mesh, size_t stipples, uint64_t planned_before = 0,
                            bool copy = false);
+// The bytes check_object_fits plans for such an object (its own buffers only, for a copy).
+uint64_t planned_object_bytes(const Mesh& mesh, size_t stipples, bool copy = false);
 // check_object_fits for the stipples make_stipples would make for `model` (planned_stipple_count), before
 // they are made.
 uint64_t check_model_fits(const gpu::Context& context, const ObjectData& model, const GenerationParams& generation,

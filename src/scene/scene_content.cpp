@@ -177,6 +177,14 @@ uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const
     return bytes;
 }
 
+uint64_t planned_scene_bytes(const Scene& scene, const SceneContent& content) {
+    const std::vector<uint64_t> planned = planned_scene_stipples(scene, content);
+    uint64_t bytes = 0;
+    for (size_t i = 0; i < planned.size(); ++i)
+        bytes += planned_object_bytes(*content.objects[i].mesh, planned[i], is_static_copy(scene, content, i));
+    return bytes;
+}
+
 SceneContent load_scene_content(const Scene& scene) {
     SceneContent content = load_scene_models(scene);
     make_scene_stipples(scene, content);

@@ -42,6 +42,9 @@ std::vector<uint64_t> planned_scene_stipples(const Scene& scene, const SceneCont
 // (check_object_fits, object by object); throws its one-line refusal otherwise. Returns the bytes planned.
 uint64_t check_scene_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content,
                           uint64_t planned_before = 0);
+// The bytes check_scene_fits plans for the scene's objects, without checking them: the viewer checks a new
+// object beside them, so that what it accepts a saved scene file's plan also holds.
+uint64_t planned_scene_bytes(const Scene& scene, const SceneContent& content);
 // check_visible_list_fits for object i's planned stipples: from a scene file, the line names the file and the
 // object and says what to lower in its params (the command's --dmax and --max-stipples do not take a scene).
 uint64_t check_scene_visible_list_fits(const gpu::Context& context, const Scene& scene, size_t i, uint64_t planned_stipples);
