@@ -427,6 +427,13 @@ TEST(CliRender, AnObjectTooBigForTheDeviceIsRefusedInOneLine) {
         test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", "40M");
         const test::CommandResult five = test::run_stipple({"render", copies_path, "-o", out.string(), "--width", "64", "--height", "64"});
         EXPECT_EQ(five.exit_code, 0) << five.err;
+        // Vector output adds a list of each object's visible stipples (20 bytes a candidate), most of a copy's
+        // need: the refusal counts it in and says so (it named a spot's 2.8 MiB where 13.3 were needed).
+        const auto svg = std::filesystem::path(copies_path).parent_path() / "never.svg";
+        const test::CommandResult vector = test::run_stipple({"render", copies_path, "-o", svg.string(), "--width", "64", "--height", "64"});
+        EXPECT_EQ(vector.exit_code, 1) << vector.err;
+        for (const char* part : {"MiB of it vector output's list of its visible stipples", "or write a PNG"})
+            EXPECT_NE(vector.err.find(part), std::string::npos) << part << " missing in: " << vector.err;
     }
     for (const auto& [limit, refused] : {std::pair<const char*, bool>{"30M", true}, {"80M", false}}) {
         test::ScopedEnv env("STIPPLE_GPU_MEMORY_LIMIT", limit);

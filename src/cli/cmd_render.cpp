@@ -245,8 +245,8 @@ int run_render(const std::vector<std::string>& argv) {
     const std::string twice = copies == 2 ? " (held twice: vector output with --stats, --mask or --repeat draws the screen's frame too)" : "";
     for (int copy = 0; copy < copies; ++copy)
         for (size_t i = 0; i < planned.size(); ++i) {
-            planned_bytes += check_scene_object_fits(context, scene, content, i, planned[i], planned_bytes, twice);
-            if (vector && copy == 0) planned_bytes += check_scene_visible_list_fits(context, scene, i, planned[i]);
+            const uint64_t list = vector && copy == 0 ? check_scene_visible_list_fits(context, scene, i, planned[i]) : 0;
+            planned_bytes += check_scene_object_fits(context, scene, content, i, planned[i], planned_bytes, twice, list) + list;
         }
     // A D_max the stipple budget caps draws as the cap does: a larger one changes nothing, so it is said (once for
     // the copies of one model).

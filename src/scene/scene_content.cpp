@@ -135,13 +135,14 @@ bool is_static_copy(const Scene& scene, const SceneContent& content, size_t i) {
 }
 
 uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content, size_t i,
-                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice) {
+                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice,
+                                 uint64_t list_bytes) {
     const Mesh& mesh = *content.objects[i].mesh;
     const bool copy = is_static_copy(scene, content, i);
     try {
-        return check_object_fits(context, mesh, planned_stipples, planned_before, copy);
+        return check_object_fits(context, mesh, planned_stipples, planned_before + list_bytes, copy);
     } catch (const Error&) {
-        if (planned_before == 0) throw;
+        if (planned_before == 0 && list_bytes == 0) throw;
         // Too large by itself, this throws its own refusal, which says what to lower.
         const uint64_t alone = check_object_fits(context, mesh, planned_stipples, 0, copy);
         // 200 copies of a model at the default D_max: each fits, all together do not.
@@ -149,11 +150,15 @@ uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene
         const std::string object = file                      ? "objects[" + std::to_string(i) + "] (" + mesh.source + ")"
                                    : scene.objects.size() > 1 ? mesh.source + " (model " + std::to_string(i + 1) + ")"
                                                               : mesh.source;
-        const std::string line = object + " needs about " + mebibytes(alone) + " of GPU memory beside the " +
-                                 mebibytes(planned_before) + " the objects before it take" + twice +
-                                 ", and the device has no more room: " +
+        // Vector output's list is most of a copy's need: said, or 2.8 MiB a spot was named where 13 were needed.
+        const std::string list = list_bytes ? " (" + mebibytes(list_bytes) + " of it vector output's list of its visible "
+                                                 "stipples, 20 bytes a candidate)" : "";
+        const std::string before = planned_before ? " beside the " + mebibytes(planned_before) + " the objects before it take" : "";
+        const std::string line = object + " needs about " + mebibytes(alone + list_bytes) + " of GPU memory" + list + before +
+                                 twice + ", and the device has no more room: " +
                                  (file ? "fewer objects, or lighter ones (a lower \"dmax\" or \"max_stipples\" in their params)"
-                                       : "fewer models, or a lower --dmax or --max-stipples");
+                                       : "fewer models, or a lower --dmax or --max-stipples") +
+                                 (list_bytes ? ", or write a PNG" : "");
         if (scene.source.empty()) fail(line);
         fail_file(scene.source, line);
     }

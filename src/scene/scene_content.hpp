@@ -54,8 +54,11 @@ bool is_static_copy(const Scene& scene, const SceneContent& content, size_t i);
 // Object i's part of that check. An object that fits alone but not beside the ones before it is refused in a
 // line about the scene (naming the object and what the others take; `twice`, when not empty, says why the
 // scene is held twice), not with the single model's advice of --dmax, which a scene file does not take.
+// `list_bytes`: vector output's list of the object's visible stipples, checked with it and named in the line
+// (returned apart: the bytes returned are the object's own).
 uint64_t check_scene_object_fits(const gpu::Context& context, const Scene& scene, const SceneContent& content, size_t i,
-                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice = "");
+                                 uint64_t planned_stipples, uint64_t planned_before, const std::string& twice = "",
+                                 uint64_t list_bytes = 0);
 
 
 // World-space bounds of all objects: the union of their transformed bounding spheres.
