@@ -47,16 +47,33 @@ VkResult MemoryPool::allocate_memory(VkDeviceSize size, uint32_t type, bool map,
     return VK_SUCCESS;
 }
 
-// First fit: the lowest free range of the block that holds `size` bytes from an aligned offset.
+void MemoryPool::Block::add_range(VkDeviceSize offset, VkDeviceSize length) {
+    free.emplace(offset, length);
+    by_length.emplace(length, offset);
+}
+
+void MemoryPool::Block::remove_range(std::map<VkDeviceSize, VkDeviceSize>::iterator range) {
+    auto [first, last] = by_length.equal_range(range->second);
+    for (auto it = first; it != last; ++it)
+        if (it->second == range->first) {
+            by_length.erase(it);
+            break;
+        }
+    free.erase(range);
+}
+
+// Best fit: the shortest free range of the block that holds `size` bytes from an aligned offset, found by
+// length (a scan of every range in offset order took 81% of a 2,000-object scene's run: its blocks hold
+// thousands of ranges).
 bool MemoryPool::take(Block& block, VkDeviceSize size, VkDeviceSize alignment, VkDeviceSize& offset) {
-    if (block.free_bytes < size) return false;
-    for (auto it = block.free.begin(); it != block.free.end(); ++it) {
-        const VkDeviceSize begin = it->first, end = it->first + it->second;
+    if (block.free_bytes < size || block.by_length.empty() || block.by_length.rbegin()->first < size) return false;
+    for (auto it = block.by_length.lower_bound(size); it != block.by_length.end(); ++it) {
+        const VkDeviceSize begin = it->second, end = it->second + it->first;
         const VkDeviceSize at = align_up(begin, alignment);
-        if (at + size > end) continue;
-        block.free.erase(it);
-        if (at > begin) block.free.emplace(begin, at - begin);
-        if (at + size < end) block.free.emplace(at + size, end - (at + size));
+        if (at + size > end) continue;  // the alignment's gap leaves too little: a longer range will do
+        block.remove_range(block.free.find(begin));
+        if (at > begin) block.add_range(begin, at - begin);
+        if (at + size < end) block.add_range(at + size, end - (at + size));
         block.free_bytes -= size;
         offset = at;
         return true;
@@ -81,7 +98,8 @@ VkResult MemoryPool::allocate(const VkMemoryRequirements& requirements, uint32_t
     // A flush or invalidate of non-coherent memory covers whole atoms: each range starts and ends on one, so
     // that a buffer's never reaches into its neighbour's.
     const VkDeviceSize alignment = coherent ? requirements.alignment : std::max(requirements.alignment, atom_);
-    const VkDeviceSize size = align_up(std::max<VkDeviceSize>(requirements.size, 1), coherent ? 1 : atom_);
+    // Sizes rounded up to the alignment too, so that ranges of one alignment follow each other without gaps.
+    const VkDeviceSize size = align_up(std::max<VkDeviceSize>(requirements.size, 1), alignment);
     MemoryRange shared;
     shared.size = size;
     shared.coherent = coherent;
@@ -101,7 +119,7 @@ VkResult MemoryPool::allocate(const VkMemoryRequirements& requirements, uint32_t
     block->coherent = coherent;
     if (const VkResult result = allocate_memory(kBlockBytes, type, map, block->memory, block->host); result != VK_SUCCESS)
         return result;
-    block->free.emplace(0, kBlockBytes);
+    block->add_range(0, kBlockBytes);
     block->free_bytes = kBlockBytes;
     const auto empty = std::find(blocks_.begin(), blocks_.end(), nullptr);
     const uint32_t index = uint32_t(empty - blocks_.begin());
@@ -128,17 +146,19 @@ void MemoryPool::free(MemoryRange& range) {
         auto after = block.free.lower_bound(begin);
         if (after != block.free.end() && begin + length == after->first) {
             length += after->second;
-            after = block.free.erase(after);
+            auto next = std::next(after);
+            block.remove_range(after);
+            after = next;
         }
         if (after != block.free.begin()) {
             auto before = std::prev(after);
             if (before->first + before->second == begin) {
                 begin = before->first;
                 length += before->second;
-                block.free.erase(before);
+                block.remove_range(before);
             }
         }
-        block.free.emplace(begin, length);
+        block.add_range(begin, length);
         block.free_bytes += range.size;
         if (block.free_bytes == kBlockBytes) {  // empty: given back, so a scene that shrinks holds less
             vkFreeMemory(device_, block.memory, nullptr);

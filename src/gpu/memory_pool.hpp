@@ -69,8 +69,11 @@ private:
         bool mapped = false;
         bool coherent = true;
         void* host = nullptr;
-        VkDeviceSize free_bytes = 0;
         std::map<VkDeviceSize, VkDeviceSize> free;  // offset -> length, no two touching
+        std::multimap<VkDeviceSize, VkDeviceSize> by_length;  // the same ranges, length -> offset
+        VkDeviceSize free_bytes = 0;
+        void add_range(VkDeviceSize offset, VkDeviceSize length);
+        void remove_range(std::map<VkDeviceSize, VkDeviceSize>::iterator range);
     };
     VkResult allocate_memory(VkDeviceSize size, uint32_t type, bool map, VkDeviceMemory& memory, void*& host);
     bool take(Block& block, VkDeviceSize size, VkDeviceSize alignment, VkDeviceSize& offset);
