@@ -370,6 +370,10 @@ void Viewer::handle_input(const Input& input, float aspect) {
     }
     for (const std::string& path : input.dropped) {
         // Loaded in the background; a bad file costs a message, never the session.
+        if (path.find("://") != std::string::npos) {  // a link dragged from a browser, not a file
+            message(path + ": not a local file (only model files on this machine can be dropped)", true);
+            continue;
+        }
         if (is_scene_file(path)) {
             message(path + ": is a scene file: open it with `stipple view " + path + "`", true);
             continue;
