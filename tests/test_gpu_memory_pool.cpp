@@ -93,8 +93,8 @@ TEST_F(MemoryPool, FreedNeighboursJoinForALargerBuffer) {
         const Buffer more = piece();
         EXPECT_EQ(pool.allocation_count(), allocations_before + 3);
     }
-    // Two neighbours of the first block freed (first fit placed them side by side): the largest shared buffer
-    // fits in their joined range, and in neither alone.
+    // Two neighbours of the first block freed (the block was filled from its start, one after the other): the
+    // largest shared buffer fits in their joined range, and in neither alone.
     pieces[1].reset(), pieces[2].reset();
     const Buffer joined(*context, gpu::MemoryPool::kLargestShared, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceLocal);
     EXPECT_EQ(pool.allocation_count(), allocations_before + 2);

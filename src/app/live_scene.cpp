@@ -83,6 +83,16 @@ bool LiveScene::apply_stipples(uint64_t id, const GenerationParams& generation,
 
 bool LiveScene::add_loaded(const std::string& path, ObjectData data, const ObjectUpload& upload,
                            const ObjectParams& params) {
+    // Checked again here, beside the scene as it is now: loads dropped together (or one dropped while another
+    // loaded) were each checked when dropped, beside the same plan. A model that another load of the same file
+    // has brought in meanwhile becomes a copy of it.
+    if (!data.motion) {
+        if (const std::optional<size_t> source = copy_source(path, params)) {
+            add_copy(*source, params);
+            return false;
+        }
+    }
+    check_object_fits(renderer_.context(), *data.mesh, data.stipples->size(), planned_beyond_held());
     SceneObject object;
     // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
     object.model = std::filesystem::absolute(path).lexically_normal().string();

@@ -334,7 +334,12 @@ void Viewer::run_script() {
             case ScriptAction::Kind::Quit:
                 // Not before the next frame has applied the settings: one the scene refuses there (the cpu density
                 // path for an animated model) must still end the run with exit code 1 (`set` then `quit` exited 0).
-                if (script_set_unapplied_) return;
+                // At most a couple of seconds (a window that draws no frame, minimised, applies nothing).
+                if (script_set_unapplied_) {
+                    if (!script_wait_until_) script_wait_until_ = Clock::now() + std::chrono::seconds(2);
+                    if (Clock::now() < *script_wait_until_) return;
+                }
+                script_wait_until_.reset();
                 window_.request_close();
                 break;
         }

@@ -85,17 +85,22 @@ static uint32_t workgroups_from_environment() {
     return uint32_t(limit);
 }
 
-// The device's limit on live memory allocations, lowered by STIPPLE_GPU_ALLOCATION_LIMIT (a test setting).
-static uint32_t allocation_limit(uint32_t device_limit) {
+// STIPPLE_GPU_ALLOCATION_LIMIT (a test setting: how a device that allows few allocations refuses), 0 when unset.
+// Read before the device is made: a refusal from the constructor after it would leak the device.
+static uint32_t allocation_limit_from_environment() {
     const char* text = std::getenv("STIPPLE_GPU_ALLOCATION_LIMIT");
-    if (!text || !*text) return device_limit;
+    if (!text || !*text) return 0;
     char* end = nullptr;
     const unsigned long long count = std::strtoull(text, &end, 10);
     // A typo must not silently test nothing.
     if (*end != '\0' || count < 1 || count > 0xFFFFFFFFull || text[0] == '-')
         fail(std::string("STIPPLE_GPU_ALLOCATION_LIMIT=") + text + " is not a count of allocations such as 100");
-    return std::min(device_limit, uint32_t(count));
+    return uint32_t(count);
 }
+
+// Allocations made outside the pool (the viewer's Dear ImGui backend: its font image and its frames' vertex
+// and index buffers) are left room under the device's limit.
+constexpr uint32_t kAllocationsOutsideThePool = 16;
 
 Context::Context(const ContextOptions& options) {
     // Under an address-space limit (ulimit -v) too small for the driver, lavapipe's compiler crashed the
@@ -105,11 +110,14 @@ Context::Context(const ContextOptions& options) {
              " the Vulkan driver and its shader compiler need (lavapipe reserves about 1 GiB): raise it");
     // The loader needs a runtime dir on some set-ups; an unset XDG_RUNTIME_DIR only causes warnings.
     const uint32_t asked_groups_x = workgroups_from_environment();
+    const uint32_t asked_allocations = allocation_limit_from_environment();
     create_instance(options);
     pick_physical_device(options);
     create_device(options);
-    memory_pool_ = std::make_unique<MemoryPool>(device, memory_properties, properties.limits.nonCoherentAtomSize,
-                                                allocation_limit(properties.limits.maxMemoryAllocationCount),
+    const uint32_t device_allocations = properties.limits.maxMemoryAllocationCount;
+    const uint32_t allocations = asked_allocations ? std::min(asked_allocations, device_allocations)
+                                                   : device_allocations - std::min(kAllocationsOutsideThePool, device_allocations / 2);
+    memory_pool_ = std::make_unique<MemoryPool>(device, memory_properties, properties.limits.nonCoherentAtomSize, allocations,
                                                 allocated_bytes_);
     const uint32_t device_groups_x = properties.limits.maxComputeWorkGroupCount[0];
     max_groups_x_ = asked_groups_x ? std::min(asked_groups_x, device_groups_x) : device_groups_x;

@@ -90,8 +90,10 @@ VkResult MemoryPool::allocate(const VkMemoryRequirements& requirements, uint32_t
         MemoryRange own;
         own.size = requirements.size;
         own.coherent = coherent;
-        if (const VkResult result = allocate_memory(requirements.size, type, map, own.memory, own.mapped); result != VK_SUCCESS)
+        if (const VkResult result = allocate_memory(requirements.size, type, map, own.memory, own.mapped); result != VK_SUCCESS) {
+            range.size = requirements.size;
             return result;
+        }
         range = own;
         return VK_SUCCESS;
     }
@@ -117,8 +119,10 @@ VkResult MemoryPool::allocate(const VkMemoryRequirements& requirements, uint32_t
     block->type = type;
     block->mapped = map;
     block->coherent = coherent;
-    if (const VkResult result = allocate_memory(kBlockBytes, type, map, block->memory, block->host); result != VK_SUCCESS)
+    if (const VkResult result = allocate_memory(kBlockBytes, type, map, block->memory, block->host); result != VK_SUCCESS) {
+        range.size = kBlockBytes;  // what was asked of the driver, for the message
         return result;
+    }
     block->add_range(0, kBlockBytes);
     block->free_bytes = kBlockBytes;
     const auto empty = std::find(blocks_.begin(), blocks_.end(), nullptr);
@@ -127,7 +131,19 @@ VkResult MemoryPool::allocate(const VkMemoryRequirements& requirements, uint32_t
         blocks_.push_back(std::move(block));
     else
         *empty = std::move(block);
-    place(index);  // a whole block holds any range of up to kLargestShared
+    if (!place(index)) {  // an alignment near the block's size: the range on its own after all
+        vkFreeMemory(device_, blocks_[index]->memory, nullptr);
+        tally_ -= kBlockBytes;
+        --allocations_;
+        blocks_[index].reset();
+        MemoryRange own;
+        own.size = requirements.size;
+        own.coherent = coherent;
+        if (const VkResult result = allocate_memory(requirements.size, type, map, own.memory, own.mapped); result != VK_SUCCESS)
+            return result;
+        range = own;
+        return VK_SUCCESS;
+    }
     range = shared;
     return VK_SUCCESS;
 }
@@ -180,8 +196,9 @@ std::string MemoryPool::failure_message(VkResult result, VkDeviceSize bytes, con
         return "this device allows " + std::to_string(max_allocations_) +
                " GPU memory allocations at once (maxMemoryAllocationCount), and the drawing holds them all: "
                "draw fewer objects";
-    return "cannot allocate " + std::to_string(bytes >> 20) + " MiB of GPU memory" + (what.empty() ? "" : " for " + what) +
-           " (" + vk_result_name(result) + ")";
+    const std::string size = bytes >= (VkDeviceSize(1) << 20) ? std::to_string(bytes >> 20) + " MiB" : std::to_string(bytes >> 10) + " KiB";
+    return std::string(result == VK_ERROR_MEMORY_MAP_FAILED ? "cannot map " : "cannot allocate ") + size + " of GPU memory" +
+           (what.empty() ? "" : " for " + what) + " (" + vk_result_name(result) + ")";
 }
 
 }  // namespace stipple::gpu

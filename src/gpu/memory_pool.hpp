@@ -48,8 +48,9 @@ public:
     MemoryPool& operator=(const MemoryPool&) = delete;
 
     // Memory of memory type `type` for `requirements`, host-mapped where `map`; `shareable` lets a small one
-    // share a block (buffers; an image gets its own). On failure `range` is untouched and the result says
-    // why: VK_ERROR_TOO_MANY_OBJECTS where the device's allocations are all taken (failure_message words it).
+    // share a block (buffers; an image gets its own). On failure `range` holds no memory, its size the bytes
+    // asked of the driver (a whole block for a small buffer), and the result says why:
+    // VK_ERROR_TOO_MANY_OBJECTS where the device's allocations are all taken (failure_message words it).
     VkResult allocate(const VkMemoryRequirements& requirements, uint32_t type, bool map, bool shareable,
                       MemoryRange& range);
     void free(MemoryRange& range);
@@ -58,8 +59,8 @@ public:
     uint32_t allocation_count() const;
     uint32_t max_allocations() const { return max_allocations_; }
 
-    // One line for a failed allocate of `bytes` ("cannot allocate 3 MiB of GPU memory (VK_ERROR_...)", or the
-    // allocation limit), `what` naming the thing for which it was (an image's size, or nothing).
+    // One line for a failed allocate of `bytes` (the range's size after it: "cannot allocate 2 MiB of GPU memory
+    // (VK_ERROR_...)", "cannot map ...", or the allocation limit), `what` naming the thing for which it was.
     std::string failure_message(VkResult result, VkDeviceSize bytes, const std::string& what = "") const;
 
 private:

@@ -76,8 +76,10 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
     pool_ = &pool;
     if (const VkResult result = pool.allocate(requirements, type, use != MemoryUse::DeviceLocal, true, memory_);
         result != VK_SUCCESS) {
+        const VkDeviceSize asked = memory_.size;
+        memory_ = MemoryRange();
         reset();  // the buffer made above, not leaked
-        fail(pool.failure_message(result, requirements.size));
+        fail(pool.failure_message(result, asked));
     }
     VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_.memory, memory_.offset));
 }
@@ -129,6 +131,7 @@ Image::Image(const Context& context, VkExtent2D extent, VkFormat format, VkImage
     MemoryPool& pool = context.memory_pool();
     pool_ = &pool;
     if (const VkResult result = pool.allocate(requirements, type, false, false, memory_); result != VK_SUCCESS) {
+        memory_ = MemoryRange();
         reset();  // the image made above, not leaked
         fail(pool.failure_message(result, requirements.size,
                                     "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " image"));
@@ -185,9 +188,11 @@ Image Image::linear_with_words(const Context& context, VkExtent2D extent, VkForm
     both.alignment = std::max(for_image.alignment, for_words.alignment);
     const uint32_t type = context.find_memory_type(types, host_mapped ? host : 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     image.pool_ = &context.memory_pool();
-    if (const VkResult result = image.pool_->allocate(both, type, host_mapped, false, image.memory_); result != VK_SUCCESS)
+    if (const VkResult result = image.pool_->allocate(both, type, host_mapped, false, image.memory_); result != VK_SUCCESS) {
+        image.memory_ = MemoryRange();
         fail(image.pool_->failure_message(result, both.size, "a " + std::to_string(extent.width) + "x" +
                                                                  std::to_string(extent.height) + " image"));
+    }
     VK_CHECK(vkBindImageMemory(image.device_, image.image_, image.memory_.memory, 0));
     if (words) {
         VK_CHECK(vkBindBufferMemory(image.device_, image.words_, image.memory_.memory, 0));
