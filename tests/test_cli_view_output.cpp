@@ -118,6 +118,24 @@ TEST(CliView, ASettingTheSceneRefusesFailsTheScript) {
     }
 }
 
+// An error of a later action is named at its own line: a missing object was named at the line before and its
+// own (doubled prefix), an export that cannot write at the line before.
+TEST(CliView, AScriptErrorNamesItsOwnLine) {
+    if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
+    auto dir = test::temp_dir("cli-view-script-error-line");
+    for (const auto& [action, said] : {std::pair<std::string, std::string>{"set 5 seed 2", "script.txt:3: there is no object 5"},
+                                       {"export /proc/nope/x.svg", "script.txt:3: "}}) {
+        std::ofstream(dir / "script.txt") << "wait 0.1\nwait 0.1\n" + action + "\nquit\n";
+        ViewerSession session(dir);
+        ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+        session.start_viewer({"--width", "160", "--height", "128", "--no-panel", "--script", (dir / "script.txt").string(),
+                              "--cache-dir", (dir / "cache").string()});
+        EXPECT_EQ(session.viewer().wait_exit(300s), 1) << action << session.out() << session.err();
+        EXPECT_NE(session.err().find(said), std::string::npos) << session.err();
+        EXPECT_EQ(session.err().find("script.txt:2:"), std::string::npos) << session.err();
+    }
+}
+
 // A model too big for the device is refused before its stipples are made, as render refuses it: the viewer
 // made them first (minutes for a large model at a high density) and refused them after.
 TEST(CliView, AModelTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {

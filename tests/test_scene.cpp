@@ -747,6 +747,17 @@ TEST_F(SceneObjects, ViewerSceneDropsOfAModelItDrawsAreCopiesThatASavedSceneHold
         EXPECT_EQ(live.model(1).mesh, live.model(0).mesh);
         EXPECT_EQ(live.model(1).stipples, live.model(0).stipples);
         EXPECT_EQ(renderer.object(1).shape, renderer.object(0).shape);
+        {  // The file rewritten since it was loaded (a model edited and exported again): loaded anew, not copied.
+            const std::string text = test::slurp(sphere);
+            const auto time = std::filesystem::last_write_time(sphere);
+            write_text(sphere, text + "# edited\n");
+            live.add_model(sphere);
+            ASSERT_EQ(live.size(), 3u);
+            EXPECT_NE(live.model(2).mesh, live.model(0).mesh);
+            live.remove(2);
+            write_text(sphere, text);
+            std::filesystem::last_write_time(sphere, time);  // as loaded: copies again below
+        }
         // Under a limit that holds a few dozen copies by the plan, drops until one is refused.
         const uint64_t copy = planned_object_bytes(*live.model(0).mesh, live.model(0).stipples->size(), true);
         const uint64_t plan = planned_scene_bytes(live.scene(), SceneContent{live.objects()});

@@ -20,9 +20,10 @@ LiveScene::LiveScene(Scene scene, SceneContent content, StippleRenderer& rendere
                               [](const ObjectData& o) { return o.stipples != nullptr; }),
                   "LiveScene needs every object's stipples (make_scene_stipples)");
     data_ = std::move(content.objects);
-    for (const SceneObject& o : scene_.objects) {
-        generated_with_.push_back(o.params);
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        generated_with_.push_back(scene_.objects[i].params);
         ids_.push_back(next_id_++);
+        loaded_as_.emplace(data_[i].mesh.get(), stamp_of(scene_.model_path(i)));
     }
     add_scene_objects(renderer_, scene_, data_);
 }
@@ -109,6 +110,7 @@ bool LiveScene::add_loaded(const std::string& path, ObjectData data, const Objec
     // would ask the renderer for an object it does not have).
     renderer_.add_object(upload, object.transform.drawing_matrix(), object.params);
     scene_.objects.push_back(object);
+    loaded_as_[data.mesh.get()] = stamp_of(path);  // read moments ago, by the background load
     data_.push_back(std::move(data));
     generated_with_.push_back(object.params);
     ids_.push_back(next_id_++);
@@ -130,11 +132,23 @@ bool LiveScene::regenerate_if_changed(size_t object) {
     return true;
 }
 
+std::optional<LiveScene::FileStamp> LiveScene::stamp_of(const std::string& path) {
+    std::error_code time_error, size_error;
+    FileStamp stamp{std::filesystem::last_write_time(path, time_error), std::filesystem::file_size(path, size_error)};
+    if (time_error || size_error) return std::nullopt;
+    return stamp;
+}
+
 std::optional<size_t> LiveScene::copy_source(const std::string& path, const ObjectParams& params) const {
     const std::vector<double> wanted = generation_values(params.generation);
+    const std::optional<FileStamp> now = stamp_of(path);
+    if (!now) return std::nullopt;  // not there (the load says so)
     for (size_t i = 0; i < data_.size(); ++i) {
         if (data_[i].motion || scene_.objects[i].transform.mirrors() || !data_[i].stipples) continue;
         if (generation_values(generated_with_[i].generation) != wanted) continue;
+        // The file as it was loaded: one rewritten since (a model edited and exported again) is loaded anew.
+        const auto loaded = loaded_as_.find(data_[i].mesh.get());
+        if (loaded == loaded_as_.end() || loaded->second != now) continue;
         std::error_code ec;
         if (std::filesystem::equivalent(path, scene_.model_path(i), ec) && !ec) return i;
     }

@@ -4,6 +4,8 @@
 // removed objects when they are ready). Objects have ids that survive removals, so work finished in
 // the background (background_work.hpp) lands on the object it was started for.
 #include <cstdint>
+#include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,7 +76,16 @@ public:
                 bool paused = false) const;
 
 private:
+    // A model file as it was when loaded: a drop of the same file rewritten since is loaded again, not copied.
+    struct FileStamp {
+        std::filesystem::file_time_type time{};
+        uintmax_t size = 0;
+        bool operator==(const FileStamp&) const = default;
+    };
+    static std::optional<FileStamp> stamp_of(const std::string& path);
+
     Scene scene_;
+    std::map<const Mesh*, std::optional<FileStamp>> loaded_as_;  // by the mesh its objects share
     std::vector<ObjectData> data_;
     std::vector<ObjectParams> generated_with_;
     std::vector<uint64_t> ids_;

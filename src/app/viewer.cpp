@@ -158,8 +158,12 @@ void Viewer::message(const std::string& text, bool error) {
     // An error while a script runs (a setting the scene refuses when it is applied, such as the cpu density path
     // for an animated model) ends it with exit code 1, named at the script's last `set` (or the last line begun):
     // the viewer went on with the old setting and the script's screenshots showed that, exit code 0.
-    if (error && !script_.empty() && script_at_ > 0 && !script_failed_) {
-        const int line = script_set_line_ > 0 ? script_set_line_ : script_[std::min(script_at_, script_.size()) - 1].line;
+    // An error of the action running now (an export that cannot write, an object that is not there) is named at
+    // its own line: it was named at the line before, and a missing object's line twice.
+    if (error && !script_.empty() && (script_at_ > 0 || script_action_line_ > 0) && !script_failed_) {
+        const int line = script_action_line_ > 0 ? script_action_line_
+                         : script_set_line_ > 0  ? script_set_line_
+                                                 : script_[std::min(script_at_, script_.size()) - 1].line;
         std::fprintf(stderr, "stipple: %s:%d: %s\n", options_.script.c_str(), line, text.c_str());
         std::fflush(stderr);
         script_failed_ = true;
@@ -308,9 +312,11 @@ void Viewer::run_script() {
                 break;
             case ScriptAction::Kind::Set: {
                 if (action.object >= live_.size()) {
-                    message(options_.script + ":" + std::to_string(action.line) + ": there is no object " +
-                                std::to_string(action.object) + " (the scene's objects are 0.." + std::to_string(live_.size() - 1) + ")",
+                    script_action_line_ = action.line;
+                    message("there is no object " + std::to_string(action.object) + " (the scene's objects are 0.." +
+                                std::to_string(live_.size() - 1) + ")",
                             true);
+                    script_action_line_ = 0;
                     script_failed_ = true;
                     window_.request_close();
                     return;
@@ -329,7 +335,9 @@ void Viewer::run_script() {
                 ++script_at_;
                 return;  // this frame draws what it shows
             case ScriptAction::Kind::Export:
+                script_action_line_ = action.line;
                 if (!export_view(action.path, plot::ExportOptions{})) script_failed_ = true;  // exit code 1 at the end
+                script_action_line_ = 0;
                 break;
             case ScriptAction::Kind::Quit:
                 // Not before the next frame has applied the settings: one the scene refuses there (the cpu density

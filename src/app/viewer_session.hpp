@@ -117,6 +117,7 @@ private:
     bool script_failed_ = false;
     int script_set_line_ = 0;  // the script's last `set` line run (a refusal comes when the setting is applied)
     bool script_set_unapplied_ = false;  // a `set` run since the last frame applied the settings
+    int script_action_line_ = 0;  // the line of the action running now, while it runs (its errors name it)
     FILE* frame_log_ = nullptr;
     Clock::time_point started_ = Clock::now();
     std::optional<size_t> pending_removal_;
