@@ -136,6 +136,28 @@ TEST(CliView, AScriptErrorNamesItsOwnLine) {
     }
 }
 
+// The viewer's export draws the scene again, with a list of each object's visible stipples: checked against
+// the device as render checks vector output (a crowd render refused exported from the viewer).
+TEST(CliView, AnExportTheDeviceCannotHoldIsRefused) {
+    if (const std::string missing = test::missing_viewer_tools(); !missing.empty()) GTEST_SKIP() << missing;
+    auto dir = test::temp_dir("cli-view-export-refused");
+    std::string scene = "{\"objects\": [";
+    for (int i = 0; i < 5; ++i)
+        scene += std::string(i ? ", " : "") + "{\"model\": \"" + test::source_path("assets/blobby.glb") +
+                 "\", \"transform\": {\"translate\": [" + std::to_string(3 * i) + ", 0, 0]}}";
+    std::ofstream(dir / "five.json") << scene + "]}";
+    const std::string svg = (dir / "five.svg").string();
+    std::ofstream(dir / "script.txt") << "wait-idle\nexport " + svg + "\nquit\n";
+    ViewerSession session(dir);
+    ASSERT_TRUE(session.start_x()) << "could not start Xvfb: " << slurp(dir / "xvfb.err");
+    session.start_viewer({(dir / "five.json").string(), "--width", "160", "--height", "128", "--no-panel", "--script",
+                          (dir / "script.txt").string(), "--cache-dir", (dir / "cache").string()},
+                         {{"STIPPLE_GPU_MEMORY_LIMIT", "60M"}});
+    EXPECT_EQ(session.viewer().wait_exit(300s), 1) << session.out() << session.err();
+    EXPECT_NE(session.err().find("script.txt:2: " + svg + ": exporting needs about"), std::string::npos) << session.err();
+    EXPECT_FALSE(std::filesystem::exists(svg));
+}
+
 // A model too big for the device is refused before its stipples are made, as render refuses it: the viewer
 // made them first (minutes for a large model at a high density) and refused them after.
 TEST(CliView, AModelTooBigForTheDeviceIsRefusedBeforeItsStipplesAreMade) {

@@ -155,10 +155,14 @@ std::optional<size_t> LiveScene::copy_source(const std::string& path, const Obje
     return std::nullopt;
 }
 
-uint64_t LiveScene::planned_beyond_held() const {
+uint64_t LiveScene::planned_bytes() const {
     Scene planned = scene_;
     for (size_t i = 0; i < planned.objects.size(); ++i) planned.objects[i].params.generation = generated_with_[i].generation;
-    const uint64_t plan = planned_scene_bytes(planned, SceneContent{data_});
+    return planned_scene_bytes(planned, SceneContent{data_});
+}
+
+uint64_t LiveScene::planned_beyond_held() const {
+    const uint64_t plan = planned_bytes();
     const uint64_t held = renderer_.context().bytes_allocated();
     return plan > held ? plan - held : 0;
 }

@@ -65,6 +65,8 @@ public:
     // the viewer adds only what a saved scene can load again (the viewer took 748 copies that the saved file
     // then refused at objects[724]).
     uint64_t planned_beyond_held() const;
+    // What a scene file of these objects plans for them (planned_scene_bytes, the stipples as generated).
+    uint64_t planned_bytes() const;
 
     // The current state with `camera` as the scene's camera; model paths relative to the file.
     // The scene as drawn at `scene_seconds` of the timeline: each animated object's start is the pose it shows

@@ -17,6 +17,7 @@
 #include "core/printf_string.hpp"
 #include "gpu/vk_check.hpp"
 #include "params/param_table.hpp"
+#include "render/object_gpu.hpp"
 #include "render/offscreen.hpp"
 
 namespace stipple::app {
@@ -440,6 +441,15 @@ bool Viewer::export_view(const std::string& path, const plot::ExportOptions& opt
     try {
         const VkExtent2D extent = swapchain_.valid() ? swapchain_.extent() : window_.framebuffer_size();
         if (extent.width == 0 || extent.height == 0) fail_file(path, "the window has no size to export");
+        // The export draws the scene again, with a renderer of its own and a list of each object's visible
+        // stipples (20 bytes a candidate): checked beside what the device holds, as render checks vector output
+        // (a crowd that render refused exported from the viewer, and a smaller GPU would have run out instead).
+        uint64_t needed = live_.planned_bytes();
+        for (const ObjectData& object : live_.objects()) needed += check_visible_list_fits(context_, object.stipples->size());
+        if (const uint64_t free = context_.device_memory_available(); needed > free)
+            fail_file(path, "exporting needs about " + mebibytes(needed) + " of GPU memory (the scene drawn again, with a list of "
+                            "each object's visible stipples), and the device has " + mebibytes(free) +
+                            " free: fewer objects, or lighter ones (a lower D_max), or a screenshot");
         const FrameView view = scene_frame_view(live_.scene(), camera_, live_.bounds(), extent);
         const plot::PlotStats stats = export_frame(context_, live_.scene(), live_.objects(), view, options, path,
                                                          timeline_.time());
