@@ -94,27 +94,36 @@ bool LiveScene::add_loaded(const std::string& path, ObjectData data, const Objec
         }
     }
     check_object_fits(renderer_.context(), *data.mesh, data.stipples->size(), planned_beyond_held());
-    SceneObject object;
-    // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
-    object.model = std::filesystem::absolute(path).lexically_normal().string();
-    object.params = params;
+    SceneObject object = placed_beside(path, params, data.bounds);
     // A new object takes the last one's parameters, but a model that moves cannot take a density path
     // computed on the CPU from the rest pose: it takes the splat's, the default.
     const bool moved_to_gpu = data.motion && density_on_cpu(object.params.density_path);
     if (moved_to_gpu) object.params.density_path = ObjectParams{}.density_path;
-    if (!data_.empty()) {
-        float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.drawing_matrix()).radius;
-        object.transform = placement_beside(bounds(), data.bounds, reference);
-    }
     // The renderer first: if it refuses the object, the scene's lists must not hold it (the next frame
     // would ask the renderer for an object it does not have).
     renderer_.add_object(upload, object.transform.drawing_matrix(), object.params);
-    scene_.objects.push_back(object);
     loaded_as_[data.mesh.get()] = stamp_of(path);  // read moments ago, by the background load
-    data_.push_back(std::move(data));
-    generated_with_.push_back(object.params);
-    ids_.push_back(next_id_++);
+    push_object(std::move(object), std::move(data));
     return moved_to_gpu;
+}
+
+SceneObject LiveScene::placed_beside(const std::string& path, const ObjectParams& params, const Sphere& model_bounds) const {
+    SceneObject object;
+    // Absolute: the scene may have come from a file in another folder (base_dir); the drop did not.
+    object.model = std::filesystem::absolute(path).lexically_normal().string();
+    object.params = params;
+    if (!data_.empty()) {
+        float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.drawing_matrix()).radius;
+        object.transform = placement_beside(bounds(), model_bounds, reference);
+    }
+    return object;
+}
+
+void LiveScene::push_object(SceneObject object, ObjectData data) {
+    generated_with_.push_back(object.params);
+    scene_.objects.push_back(std::move(object));
+    data_.push_back(std::move(data));
+    ids_.push_back(next_id_++);
 }
 
 ObjectParams LiveScene::params_for_new_object() const {
@@ -170,17 +179,10 @@ uint64_t LiveScene::planned_beyond_held() const {
 void LiveScene::add_copy(size_t source, const ObjectParams& params) {
     ObjectData data = data_.at(source);  // the mesh and stipples shared
     check_object_fits(renderer_.context(), *data.mesh, data.stipples->size(), planned_beyond_held(), true);
-    SceneObject object;
-    object.model = std::filesystem::absolute(scene_.model_path(source)).lexically_normal().string();
-    object.params = params;
-    float reference = transform_sphere(data_[0].bounds, scene_.objects[0].transform.drawing_matrix()).radius;
-    object.transform = placement_beside(bounds(), data.bounds, reference);
+    SceneObject object = placed_beside(scene_.model_path(source), params, data.bounds);
     // The renderer finds the source's shape by its key and makes a copy of it (no upload).
     renderer_.add_object(*data.mesh, *data.stipples, object.transform.drawing_matrix(), object.params, data.motion);
-    scene_.objects.push_back(object);
-    data_.push_back(std::move(data));
-    generated_with_.push_back(object.params);
-    ids_.push_back(next_id_++);
+    push_object(std::move(object), std::move(data));
 }
 
 void LiveScene::add_model(const std::string& path) {

@@ -85,6 +85,10 @@ private:
         bool operator==(const FileStamp&) const = default;
     };
     static std::optional<FileStamp> stamp_of(const std::string& path);
+    // A new object of the model at `path` (absolute) with `params`, placed beside the scene at the first
+    // object's size; and it, with its data, appended to the scene's lists.
+    SceneObject placed_beside(const std::string& path, const ObjectParams& params, const Sphere& model_bounds) const;
+    void push_object(SceneObject object, ObjectData data);
 
     Scene scene_;
     std::map<const Mesh*, std::optional<FileStamp>> loaded_as_;  // by the mesh its objects share
