@@ -73,7 +73,7 @@ STIPPLE_CONST float kRoundPointsAbovePx = 2.5f;
 STIPPLE_CONST uint kSpecCountDrawn = 0;      // stipple.vert, splat.comp: record drawn stipples in the debug buffer
 STIPPLE_CONST uint kSpecDrawnList = 1;       // stipple.vert: draw the survivors' list (DrawnStipples), not every candidate
 STIPPLE_CONST uint kSpecListDrawn = 0;       // density.comp: append polygons with stipples to the splat's list
-STIPPLE_CONST uint kSpecDepthUnorm24 = 1;    // splat.comp, line_edges.comp: the depth words are X8_D24 (else float bits)
+STIPPLE_CONST uint kSpecDepthUnorm24 = 9;    // scene_depth.h (splat.comp, stipple.vert), line_walk.comp, silhouette_words.frag, depth_raster.comp, depth_coverage.comp: the depth words are X8_D24 (else float bits)
 STIPPLE_CONST uint kSpecRecordVisible = 2;   // splat.comp: list every drawn stipple that inks a pixel (export)
 STIPPLE_CONST uint kSpecMeshVec3Texels = 3;  // stipple_position.h: a vertex (triangle) per mesh texel, else a float (index)
 // silhouette.frag, silhouette_words.frag: the Raskar-Cohen lines' round caps, points of the line's width at an end
@@ -112,6 +112,9 @@ STIPPLE_CONST uint kSplatListRing = 2;     // the work items with a dot astride 
 STIPPLE_CONST uint kSpecGradientListed = 5;  // the draw of every candidate, without that code
 STIPPLE_CONST uint kSpecGradientChunks = 6;  // the second draw
 STIPPLE_CONST uint kGradientChunk = 8;
+// stipple.vert: the variant that moves dots astride the outline onto the surface (outline_shift), for objects
+// small on screen (kOutlineShiftBelowPx, src/render/object_gpu.hpp); a variant, not a flag, for the same reason
+STIPPLE_CONST uint kSpecOutlineShift = 7;
 STIPPLE_CONST uint kSpecFacingOnly = 1;      // density.comp: only the facing bits (the CPU density paths' objects with lines)
 // density.comp: the variant that writes the facing bits (objects with lines); the others skip its ballot.
 STIPPLE_CONST uint kSpecFacingBits = 2;

@@ -33,14 +33,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared_types.h"
 #include "dispatch.h"
+#include "scene_depth.h"
 #include "stipple_formulas.h"
 #include "stipple_position.h"
 #include "triangle_draws.h"
 
 layout(local_size_x = kDensityWorkgroupSize) in;
 layout(constant_id = kSpecCountDrawn) const bool kCountDrawn = false;
-// The depth pass's format: 24-bit unorm (X8_D24 words) or 32-bit float (the words are float bits).
-layout(constant_id = kSpecDepthUnorm24) const bool kDepthUnorm24 = true;
 layout(constant_id = kSpecRecordVisible) const bool kRecordVisible = false;
 layout(constant_id = kSpecRoundPoints) const bool kRoundPoints = false;  // discs, not squares
 layout(constant_id = kSpecWholeDot) const bool kWholeDot = false;  // print detail (see splat)
@@ -73,10 +72,6 @@ layout(set = 0, binding = kBindingVisibleStipples, std430) buffer Visible {
     VisibleStipple visible_stipples[];
 };
 layout(set = 1, binding = kBindingSplatBackground, std430) readonly buffer Background { uint background[]; };
-// The depth words as texels (kBindingSceneDepthTexels): a software GPU gathers them, where it loads a
-// storage buffer lane by lane.
-layout(set = 1, binding = kBindingSceneDepthTexels) uniform usamplerBuffer scene_depth_texels;
-uint scene_depth_at(uint at) { return texelFetch(scene_depth_texels, int(at)).x; }
 layout(set = 1, binding = kBindingColorBuffer, std430) buffer ColorBuffer { uint color[]; };
 layout(set = 1, binding = kBindingSplatCover, std430) buffer SplatCover { uint optical_depth[]; };
 layout(push_constant) uniform Push {
@@ -92,23 +87,6 @@ uint pack_color(vec3 rgb, float uncovered) {
 vec3 unpack_color(uint packed) {
     vec4 c = unpackUnorm4x8(packed);
     return blue_first != 0u ? c.bgr : c.rgb;
-}
-
-// Whether a stipple at window depth z is hidden at a pixel whose depth-pass word is given, or no
-// surface covers the pixel; compared as the rasteriser's LESS_OR_EQUAL test sees it (quantised).
-bool hidden_or_uncovered(float z, uint word) {
-    if (kDepthUnorm24) {
-        uint surface = word & 0xFFFFFFu;
-        return surface == 0xFFFFFFu || uint(z * 16777215.0 + 0.5) > surface;
-    }
-    float surface = uintBitsToFloat(word);
-    return surface >= 1.0 || z > surface;
-}
-
-// Whether no surface covers the pixel (beyond the object's outline).
-bool uncovered(uint word) {
-    if (kDepthUnorm24) return (word & 0xFFFFFFu) == 0xFFFFFFu;
-    return uintBitsToFloat(word) >= 1.0;
 }
 
 // What every stipple of a run reads from the uniforms, read once per run: loads from a uniform block

@@ -2,6 +2,7 @@
 // drawn, the same images, every stipple of large polygons, large dots as whole discs. The density
 // pass against its CPU definition: test_gpu_density.cpp.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <cstdio>
 
@@ -11,6 +12,7 @@
 #include "render/path_buffers.hpp"
 #include "support/gpu_test.hpp"
 #include "support/render_helpers.hpp"
+#include "support/run_command.hpp"
 #include "support/test_paths.hpp"
 #include "support/test_shapes.hpp"
 
@@ -251,6 +253,54 @@ TEST_F(DensityPaths, PolygonsOutsideTheViewDrawNothingAndTheImageStays) {
         std::printf("close up, %s path: mean ink %.4f (vertex %.4f)\n", density_path_name(kAllDensityPaths[i]), ink, vertex);
         EXPECT_NEAR(ink, vertex, 0.03 * vertex) << density_path_name(kAllDensityPaths[i]);
     }
+}
+
+// The dots astride the outline of an object small on screen (kOutlineShiftBelowPx): the points paths move them
+// onto the surface (stipple.vert, outline_shift), as the splat inks their pixels beyond the outline beside them.
+// Clipped there, they left the outline band lighter, a share of the footprint that grows as the object shrinks.
+// The same stipples are drawn either way; where the frame's depth words do not fit one buffer, the points are
+// drawn as before (placeholders bound in their place).
+TEST_F(DensityPaths, PointsMoveTheirDotsAstrideASmallObjectsOutlineOntoIt) {
+    ObjectParams params;
+    Prepared blob = test::prepare(load_mesh(blobby_path()), params);
+    RendererOptions options;
+    options.count_drawn = true;
+    StippleRenderer renderer(*context, kColorFormat, context->depth_format, options);
+    renderer.add_object(blob.mesh, blob.stipples, glm::mat4(1.0f), params);
+    OffscreenTarget target(*context, {1600, 1280});
+    const DensityPath paths[] = {DensityPath::Splat, DensityPath::Vertex, DensityPath::Cpu, DensityPath::Indirect};
+    double splat = 0.0, vertex = 0.0, before = 0.0;  // mean ink summed over views all around, 64 px high
+    size_t drawn = 0;
+    for (float yaw = 0.0f; yaw < 360.0f; yaw += 45.0f) {
+        const FrameView view = test::framed_view(compute_bounding_sphere(blob.mesh), target.extent(), 20.0f, yaw);
+        std::vector<RenderedFrame> frames;
+        std::vector<std::vector<uint32_t>> masks;
+        for (DensityPath path : paths) {
+            renderer.params(0).density_path = path;
+            frames.push_back(target.render(renderer, view));
+            masks.push_back(renderer.drawn_mask(0));
+        }
+        {
+            test::ScopedEnv small("STIPPLE_MAX_STORAGE_BUFFER", "6M");  // the frame's 7.8 MiB of words do not fit
+            renderer.params(0).density_path = DensityPath::Vertex;
+            before += test::mean_ink(target.render(renderer, view));
+            EXPECT_EQ(renderer.drawn_mask(0), masks[1]) << "yaw " << yaw;
+        }
+        splat += test::mean_ink(frames[0]);
+        vertex += test::mean_ink(frames[1]);
+        drawn += test::popcount(masks[0]);
+        for (size_t i = 1; i < masks.size(); ++i) EXPECT_EQ(masks[i], masks[0]) << density_path_name(paths[i]) << ", yaw " << yaw;
+        // The list paths draw with the same vertex shader variant: the same pixels.
+        for (size_t i = 2; i < frames.size(); ++i)
+            EXPECT_EQ(fraction_differing(frames[1].color, frames[i].color, 0), 0.0) << density_path_name(paths[i]);
+    }
+    std::printf("%zu stipples drawn in 8 views; mean ink: splat %.4f, vertex %.4f, vertex with its outline dots clipped "
+                "%.4f\n", drawn, splat / 8.0, vertex / 8.0, before / 8.0);
+    EXPECT_GT(drawn, 1000u);
+    // A whole-pixel move keeps fewer of the lost pixels than the splat's ring where a dot cannot move whole onto
+    // visible surface (thin parts, steep sides).
+    EXPECT_LT(std::abs(vertex - splat), 0.5 * std::abs(before - splat)) << "the outline's dots were not moved";
+    EXPECT_GT(vertex, before);
 }
 
 // Dots above 2.5 px are discs (round points; the splat's kSpecRoundPoints variant). On a flat disc

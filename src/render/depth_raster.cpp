@@ -88,12 +88,12 @@ void StippleRenderer::record_depth_raster(VkCommandBuffer cb, const RenderTarget
                                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
                                     VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
     }
-    // The splat, the line walk and the Raskar-Cohen lines read the words (as texels); the copy into the
-    // depth image and the coverage pass may too.
+    // The splat, the line walk, the Raskar-Cohen lines and the points' outline shift read the words (as
+    // texels); the copy into the depth image and the coverage pass may too.
     gpu::buffer_barrier(cb, splat_depth_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                            VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
                             VK_ACCESS_2_TRANSFER_READ_BIT);
 }

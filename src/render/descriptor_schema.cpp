@@ -70,9 +70,9 @@ RenderLayouts create_render_layouts(const gpu::Context& context) {
     RenderLayouts layouts;
     layouts.object_set = gpu::create_set_layout(context, object_descriptor_bindings(), kAllStages);
     // Also the fragment stage: the Raskar-Cohen lines test the depth words when the depth pass ran as
-    // compute (shaders/silhouette_words.frag).
-    layouts.splat_frame_set = gpu::create_set_layout(context, kSplatFrameBindings,
-                                                     VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+    // compute (shaders/silhouette_words.frag); and the vertex stage: the points' outline shift (stipple.vert).
+    layouts.splat_frame_set = gpu::create_set_layout(
+        context, kSplatFrameBindings, VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_VERTEX_BIT);
     layouts.pipeline = gpu::create_pipeline_layout(context, std::span(&layouts.object_set, 1), kPushConstantBytes);
     const VkDescriptorSetLayout splat_sets[] = {layouts.object_set, layouts.splat_frame_set};
     layouts.splat_pipeline = gpu::create_pipeline_layout(context, splat_sets, kPushConstantBytes);

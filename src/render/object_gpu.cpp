@@ -514,7 +514,7 @@ gpu::ObjectUniforms make_object_uniforms(const ObjectGpu& object, const FrameVie
     return u;
 }
 
-LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, float max_width) {
+float projected_radius_px(const ObjectGpu& object, const FrameView& view) {
     const Sphere& bounds = object.polygons.bounds;
     float radius_world = world_radius(object, model_scale(object.model));
     glm::vec3 center_view = glm::vec3(view.camera.view * object_to_world(object) * glm::vec4(bounds.center, 1.0f));
@@ -522,8 +522,11 @@ LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, fl
     // whole camera distance of a model 1e-8 units across, and thinned its lines to half.
     float distance = scaling_depth(view.camera, std::max(-center_view.z, std::max(radius_world * 1e-4f, 1e-30f)));
     // Thinned as at the extent the stipples are chosen for, then enlarged with them (detail_scale).
-    float projected_radius =
-        radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);
+    return radius_world * view.camera.proj[1][1] * 0.5f * float(view.extent.height) / (distance * view.detail_scale);
+}
+
+LineWidths object_line_widths(const ObjectGpu& object, const FrameView& view, float max_width) {
+    const float projected_radius = projected_radius_px(object, view);
     const auto width = [&](float user_width) {
         const float thinned = formulas::silhouette_line_width(user_width, projected_radius, object.params.silhouette_thinning);
         return std::min(thinned * view.detail_scale, max_width);

@@ -67,6 +67,28 @@ void StippleRenderer::ensure_frame_buffers(const RenderTargets& targets) {
     gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers, frame_views);
 }
 
+bool StippleRenderer::points_read_depth_words(VkExtent2D extent) const {
+    return VkDeviceSize(extent.width) * extent.height <= context_.max_pixel_words();
+}
+
+void StippleRenderer::bind_placeholder_frame_buffers() {
+    if (splat_extent_.width == 0 && splat_extent_.height == 0 && splat_depth_texels_) return;  // bound already
+    const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    splat_background_ = gpu::Buffer(context_, 4, usage, gpu::MemoryUse::DeviceLocal);
+    splat_color_ = gpu::Buffer(context_, 4, usage, gpu::MemoryUse::DeviceLocal);
+    splat_depth_ = gpu::Buffer(context_, 4, usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, gpu::MemoryUse::DeviceLocal);
+    splat_cover_ = gpu::Buffer(context_, 4, usage, gpu::MemoryUse::DeviceLocal);
+    if (splat_depth_texels_) vkDestroyBufferView(context_.device, splat_depth_texels_, nullptr);
+    splat_depth_texels_ = gpu::create_texel_view(context_, splat_depth_.handle(), VK_FORMAT_R32_UINT);
+    splat_extent_ = {};  // the next frame that fits makes its buffers again (ensure_frame_buffers)
+    splat_in_words_ = false;
+    splat_words_serial_ = 0;
+    const VkBuffer frame_buffers[] = {splat_background_.handle(), splat_depth_.handle(), splat_color_.handle(),
+                                      splat_cover_.handle(), splat_depth_.handle()};
+    const VkBufferView frame_views[] = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, VK_NULL_HANDLE, splat_depth_texels_};
+    gpu::write_buffer_set(context_.device, image_set_, splat_frame_bindings(), frame_buffers, frame_views);
+}
+
 // Whether a splat object draws large (round) dots, whose overlapping fractional ones compose (splat.comp).
 bool StippleRenderer::splat_composes_dots() const {
     return std::any_of(objects_.begin(), objects_.end(), [&](const auto& object) {

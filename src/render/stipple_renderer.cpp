@@ -80,7 +80,8 @@ void StippleRenderer::define_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.fragment_shader = "stipple.frag";
     const uint32_t vec3_texels = mesh_vec3_texels() ? 1u : 0u;
     stipple.specialization.constants = {{gpu::kSpecCountDrawn, options_.count_drawn ? 1u : 0u},
-                                        {gpu::kSpecMeshVec3Texels, vec3_texels}};
+                                        {gpu::kSpecMeshVec3Texels, vec3_texels},
+                                        {gpu::kSpecDepthUnorm24, depth_format == VK_FORMAT_D24_UNORM_S8_UINT ? 1u : 0u}};
     stipple.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     stipple.vertex_bindings = {{0, sizeof(gpu::StippleVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     stipple.vertex_attributes = {{0, 0, VK_FORMAT_R16G16_UNORM, offsetof(gpu::StippleVertex, barycentric)},
@@ -91,17 +92,19 @@ void StippleRenderer::define_pipelines(VkFormat color_format, VkFormat depth_for
     stipple.blend = true;
     stipple.color_format = color_format;
     stipple.depth_format = depth_format;
-    for (uint32_t round : {0u, 1u}) {  // [1]: large dots, pulled onto their own slanted surface
+    for (uint32_t index = 0; index < 4; ++index) {  // round: large dots, pulled onto their own slanted surface
+        const uint32_t round = index & 1u, outline = index >> 1;
         gpu::GraphicsPipelineDesc variant = stipple;
         variant.specialization.constants.push_back({gpu::kSpecRoundPoints, round});
-        stipple_pipelines_[round].define_graphics(context_, variant, layouts_.pipeline);
+        variant.specialization.constants.push_back({gpu::kSpecOutlineShift, outline});
+        stipple_pipelines_[index].define_graphics(context_, variant, layouts_.splat_pipeline);
         gpu::GraphicsPipelineDesc vertex_path = variant;  // the vertex path's two draws
         vertex_path.specialization.constants.push_back({gpu::kSpecGradientListed, 1u});
-        stipple_gradient_listed_pipelines_[round].define_graphics(context_, vertex_path, layouts_.pipeline);
+        stipple_gradient_listed_pipelines_[index].define_graphics(context_, vertex_path, layouts_.splat_pipeline);
         vertex_path.specialization.constants.push_back({gpu::kSpecGradientChunks, 1u});
-        stipple_chunk_pipelines_[round].define_graphics(context_, vertex_path, layouts_.pipeline);
+        stipple_chunk_pipelines_[index].define_graphics(context_, vertex_path, layouts_.splat_pipeline);
         variant.specialization.constants.push_back({gpu::kSpecDrawnList, 1u});
-        stipple_list_pipelines_[round].define_graphics(context_, variant, layouts_.pipeline);
+        stipple_list_pipelines_[index].define_graphics(context_, variant, layouts_.splat_pipeline);
     }
 
     gpu::GraphicsPipelineDesc toon = depth;
@@ -270,6 +273,8 @@ void StippleRenderer::prepare(const FrameView& view) {
         object->frame.line_width = widths.outline;
         object->frame.crease_width = widths.crease;
         object->frame.uniforms = make_object_uniforms(*object, view, widths);
+        object->frame.outline_shift =
+            points_read_depth_words(view.extent) && projected_radius_px(*object, view) < kOutlineShiftBelowPx;
         std::memcpy(object->frame.object_uniforms.mapped(), &object->frame.uniforms, sizeof(object->frame.uniforms));
         object->frame.object_uniforms.flush();
         object->frame.depth_listed = false;
@@ -297,10 +302,11 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         const bool listed = object->params.density_path == DensityPath::Indirect ||
                             object->params.density_path == DensityPath::Cpu;
         const size_t round = (object->frame.uniforms.flags.x & gpu::kFlagRoundPoints) != 0u ? 1 : 0;
+        const size_t variant = round + (object->frame.outline_shift ? 2 : 0);
         const bool gradient_listed = lists_gradient_chunks(*object);
-        const VkPipeline pipeline = listed            ? stipple_list_pipelines_[round].get()
-                                    : gradient_listed ? stipple_gradient_listed_pipelines_[round].get()
-                                                      : stipple_pipelines_[round].get();
+        const VkPipeline pipeline = listed            ? stipple_list_pipelines_[variant].get()
+                                    : gradient_listed ? stipple_gradient_listed_pipelines_[variant].get()
+                                                      : stipple_pipelines_[variant].get();
         auto use = [&](VkPipeline p) {
             if (p != bound) vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
             bound = p;
@@ -308,15 +314,16 @@ void StippleRenderer::record_stipples(VkCommandBuffer cb) {
         use(pipeline);
         VkDeviceSize offset = 0;
         VkBuffer vb = object->geometry.stipples.handle();
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.pipeline, 0, 1, &object->set, 0,
-                                nullptr);
+        // Set 1: the depth words, for the dots astride the outline (stipple.vert, kSpecOutlineShift).
+        const VkDescriptorSet sets[] = {object->set, image_set_};
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, layouts_.splat_pipeline, 0, 2, sets, 0, nullptr);
         vkCmdBindVertexBuffers(cb, 0, 1, &vb, &offset);
         if (listed) {
             vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
         } else {  // vertex; splat and cpu-splat on targets without the splat's transfers
             vkCmdDraw(cb, object->geometry.stipple_count, 1, 0, 0);
             if (gradient_listed) {  // the polygons whose density changes across them, a chunk an instance
-                use(stipple_chunk_pipelines_[round].get());
+                use(stipple_chunk_pipelines_[variant].get());
                 vkCmdDrawIndirect(cb, object->frame.drawn_stipples.handle(), 0, 1, sizeof(gpu::DrawCommand));
             }
         }
@@ -371,6 +378,9 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
     const bool splat_covers_image = any_splat && paper_under_splat();
     const bool any_points =
         std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) { return draws_points(*o); });
+    const bool any_outline_shift = std::any_of(objects_.begin(), objects_.end(), [&](const auto& o) {
+        return draws_points(*o) && o->frame.outline_shift;
+    });
     if (depth_by_compute_) {
         // §2.1 by compute, into the words; the depth image gets them where a pass tests against it.
         record_depth_raster(cb, targets);
@@ -388,12 +398,16 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
         record_depth(cb);  // §2.1: polygons pushed back by the polygon offset (and toon surfaces, §3.1)
         vkCmdEndRendering(cb);
         timer_.mark(cb, "depth");
-        if (any_splat || any_object_space_lines) {  // the depth as words in a buffer, for compute passes to test against
+        // The depth as words in a buffer, for the compute passes to test against and the points' outline shift.
+        if (any_splat || any_object_space_lines || any_outline_shift) {
             copy_scene_depth(cb, targets);
             timer_.mark(cb, "depth_copy");
         }
     }
     if (any_points) {
+        // Set 1 holds the depth words where a points object moves its dots off the outline, else whatever the
+        // frame's compute passes bound there, or placeholders (only the outline variant reads them).
+        if (!any_outline_shift && !any_splat && !any_object_space_lines && !depth_by_compute_) bind_placeholder_frame_buffers();
         begin_rendering(cb, targets, false);
         record_stipples(cb);
         vkCmdEndRendering(cb);

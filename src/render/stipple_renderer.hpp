@@ -201,6 +201,10 @@ private:
     void copy_depth_words_to_image(VkCommandBuffer cb, const RenderTargets& targets);  // with the coverage stencil
     // splat_pass.cpp
     void ensure_frame_buffers(const RenderTargets& targets);
+    // Whether the stipple pass's points read the depth words (their outline shift, kSpecOutlineShift): the
+    // frame's words fit in one buffer. Larger frames bind placeholders of a word (their pipelines have set 1).
+    bool points_read_depth_words(VkExtent2D extent) const;
+    void bind_placeholder_frame_buffers();
     bool splat_composes_dots() const;
     void record_splat(VkCommandBuffer cb, const RenderTargets& targets);
     // list: kSplatList*; varying_density: the variant with the density across a polygon (kSpecVaryingDensity).
@@ -217,13 +221,14 @@ private:
     RenderLayouts layouts_;  // the object set, the splat frame set and their pipeline layouts
     std::unique_ptr<DeformPass> deform_pass_;  // animated objects' deformation, before the density
     gpu::LazyPipeline depth_pipeline_;
-    // [1]: the variants for large dots (kSpecRoundPoints).
-    gpu::LazyPipeline stipple_pipelines_[2];       // every candidate; the vertex shader culls (§3.2)
-    gpu::LazyPipeline stipple_list_pipelines_[2];  // the survivors' list (indirect and cpu paths)
+    // [round + 2 * outline]: the variants for large dots (kSpecRoundPoints) and those that move the dots astride
+    // the outline onto the surface (kSpecOutlineShift, objects small on screen: ObjectFrame::outline_shift).
+    gpu::LazyPipeline stipple_pipelines_[4];       // every candidate; the vertex shader culls (§3.2)
+    gpu::LazyPipeline stipple_list_pipelines_[4];  // the survivors' list (indirect and cpu paths)
     // The vertex path's: every candidate but those of the polygons whose density changes across them,
     // then those, a chunk an instance.
-    gpu::LazyPipeline stipple_gradient_listed_pipelines_[2];
-    gpu::LazyPipeline stipple_chunk_pipelines_[2];
+    gpu::LazyPipeline stipple_gradient_listed_pipelines_[4];
+    gpu::LazyPipeline stipple_chunk_pipelines_[4];
     // [1]: the variants that also write the facing bits (objects with lines; kSpecFacingBits)
     gpu::LazyPipeline density_pipelines_[2];
     gpu::LazyPipeline density_list_pipelines_[2];  // also list the polygons that draw, for the splat
