@@ -103,6 +103,31 @@ TEST(Winding, MixedTrianglesOfAClosedMeshAgreeAndFaceOutward) {
     }
 }
 
+// Corners a rounding step or two apart are one corner (weld_by_position, kWeldTolerance): an export that
+// wrote each face's corners with its own rounding made every triangle a part of its own, so the winding repair
+// turned nothing and every edge was a border (lines in dashes; a jittered cube drew none). Corners farther
+// apart than the tolerance stay apart.
+TEST(Winding, CornersARoundingStepApartAreOneCorner) {
+    Mesh soup = unwelded(make_icosphere(3));
+    const size_t triangles = soup.triangle_count();
+    for (size_t v = 0; v < soup.positions.size(); ++v) {  // half the corners one float step off on one axis
+        if (v % 2) continue;
+        float& x = soup.positions[v][int(v / 2 % 3)];
+        x = std::nextafter(x, v % 4 ? 2.0f : -2.0f);
+    }
+    const std::vector<uint32_t> corner = weld_by_position(soup.positions);
+    EXPECT_EQ(border_edge_count(soup), 0u);
+    reverse_all(soup);
+    const WindingRepair repair = orient_consistently(soup);
+    EXPECT_EQ(repair.parts, 1u);
+    EXPECT_EQ(repair.triangles_turned, triangles);  // inside out, as one part
+    for (size_t v = 0; v < soup.positions.size(); ++v) EXPECT_LE(corner[v], v);  // the first of its set
+    // 1e-4 of the extent apart: distinct corners (an open seam of a fine scan, not a rounding).
+    Mesh apart = unwelded(make_icosphere(3));
+    for (size_t v = 0; v < apart.positions.size(); v += 2) apart.positions[v].x += 2e-4f;
+    EXPECT_GT(border_edge_count(apart), apart.triangle_count());
+}
+
 TEST(Winding, EachPartIsTurnedOutwardOnItsOwn) {
     // Two spheres side by side; the second inside out. A whole-mesh volume (what loading tested before)
     // is zero here and would turn neither.
@@ -187,9 +212,10 @@ TEST(Winding, AThinClosedPartAcrossItsBoxIsTurnedToo) {
 TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
     const auto dir = test::temp_dir("winding_loose_panel");
     // Five faces of a unit cube sharing 8 corners, outward, with outward face normals; the +z face on its own
-    // corners 1e-6 out, wound clockwise seen from outside.
+    // corners 1e-4 out (1e-6 is within the welding tolerance since 2026-12-07: one corner with the cube's),
+    // wound clockwise seen from outside.
     const std::string box = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                            "v 0 0 1.000001\nv 1 0 1.000001\nv 1 1 1.000001\nv 0 1 1.000001\n"
+                            "v 0 0 1.0001\nv 1 0 1.0001\nv 1 1 1.0001\nv 0 1 1.0001\n"
                             "vn 0 0 -1\nvn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 1\n"
                             "f 1//1 4//1 3//1 2//1\nf 1//2 2//2 6//2 5//2\nf 2//3 3//3 7//3 6//3\n"
                             "f 3//4 4//4 8//4 7//4\nf 4//5 1//5 5//5 8//5\nf 9//6 12//6 11//6 10//6\n";

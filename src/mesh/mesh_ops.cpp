@@ -1,15 +1,18 @@
 #include "mesh/mesh_ops.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
-
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include <glm/gtx/component_wise.hpp>
 #include <meshoptimizer.h>
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace stipple {
 
@@ -46,21 +49,71 @@ Mesh weld_positions(const Mesh& mesh) {
     return compact(positions, indices, mesh.source);
 }
 
+namespace {
+
+// Union-find's root, halving the path on the way.
+uint32_t weld_root(std::vector<uint32_t>& parent, uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+}  // namespace
+
 std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
-    // meshoptimizer's hash of the bytes (an unordered_map took a fifth of the winding repair's time on an
-    // 871k-triangle scan), numbering the positions in order of first use.
-    std::vector<glm::vec3> keys(positions.size());
-    // -0 and +0 are one position.
-    for (size_t v = 0; v < positions.size(); ++v) keys[v] = positions[v] + glm::vec3(0.0f);
-    std::vector<uint32_t> id(positions.size());
-    const size_t unique =
-        meshopt_generateVertexRemap(id.data(), nullptr, keys.size(), keys.data(), keys.size(), sizeof(glm::vec3));
-    std::vector<uint32_t> first(unique, UINT32_MAX);
-    std::vector<uint32_t> representative(positions.size());
-    for (size_t v = 0; v < positions.size(); ++v) {
-        if (first[id[v]] == UINT32_MAX) first[id[v]] = uint32_t(v);
-        representative[v] = first[id[v]];
+    const size_t n = positions.size();
+    std::vector<uint32_t> parent(n);
+    for (size_t v = 0; v < n; ++v) parent[v] = uint32_t(v);
+    // Positions a rounding step or so apart are one corner too (kWeldTolerance): an export that wrote each
+    // face's corners with its own rounding left every triangle a part of its own, and its lines in dashes
+    // or none. Positions that are not numbers keep their own corner.
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : positions)
+        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const float extent = n > 0 && lo.x <= hi.x ? glm::compMax(hi - lo) : 0.0f;
+    const float magnitude = n > 0 && lo.x <= hi.x ? std::max(glm::compMax(glm::abs(lo)), glm::compMax(glm::abs(hi))) : 0.0f;
+    const double cell = std::max(double(extent) * kWeldTolerance, double(magnitude) * 8.0 * double(FLT_EPSILON));
+    // Keys on grids of twice the tolerance, each axis at offset 0 or half a cell (8 grids): two positions
+    // within the tolerance on every axis share a cell of one of them (on each axis a boundary falls between
+    // them on at most one of the two offsets), and the positions of a cell are one corner (so a pair up to
+    // twice the tolerance apart may be). Hashed as bytes by meshoptimizer (an unordered_map took a fifth
+    // of the winding repair's time on an 871k-triangle scan). Without a cell (one position, or all alike) the
+    // exact positions are the keys, -0 and +0 one.
+    const int grids = cell > 0.0 ? 8 : 1;
+    // Two grids at a time, their keys and ids side by side on two cores, then joined in order on one: at most
+    // 32 bytes a position more (the loaded mesh's budget, loader_util.cpp).
+    constexpr int kGridsAtOnce = 2;
+    std::vector<uint32_t> ids[kGridsAtOnce];
+    std::vector<uint32_t> first;
+    for (int batch = 0; batch < grids; batch += kGridsAtOnce) {
+        const int count = std::min(kGridsAtOnce, grids - batch);
+        parallel_for(size_t(count), 1, [&](size_t k) {
+            const int grid = batch + int(k);
+            const glm::dvec3 offset(grid & 1 ? 0.5 : 0.0, grid & 2 ? 0.5 : 0.0, grid & 4 ? 0.5 : 0.0);
+            std::vector<glm::vec3> keys(n);
+            for (size_t v = 0; v < n; ++v) {
+                const glm::vec3& p = positions[v];
+                const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+                keys[v] = grids == 1 || !finite ? p + glm::vec3(0.0f)
+                                                : glm::vec3(glm::floor((glm::dvec3(p) - glm::dvec3(lo)) / (2.0 * cell) + offset));
+            }
+            ids[k].resize(n);
+            meshopt_generateVertexRemap(ids[k].data(), nullptr, n, keys.data(), n, sizeof(glm::vec3));
+        });
+        for (int k = 0; k < count; ++k) {
+            first.assign(n, UINT32_MAX);  // ids are below n
+            for (size_t v = 0; v < n; ++v) {
+                const uint32_t id = ids[k][v];
+                if (first[id] == UINT32_MAX) {
+                    first[id] = uint32_t(v);
+                    continue;
+                }
+                const uint32_t a = weld_root(parent, first[id]), b = weld_root(parent, uint32_t(v));
+                parent[std::max(a, b)] = std::min(a, b);  // the root is the first position of the set
+            }
+        }
     }
+    std::vector<uint32_t> representative(n);
+    for (size_t v = 0; v < n; ++v) representative[v] = weld_root(parent, uint32_t(v));
     return representative;
 }
 
