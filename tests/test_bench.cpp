@@ -170,6 +170,19 @@ TEST(ModelSet, DerivationIsDeterministicAndCached) {
     // A damaged key (as after a source change) makes it derive again.
     std::ofstream(a / "horse.key") << "stipple bench model v0\n";
     EXPECT_TRUE(bench::prepare_model_set(options)[0].derived_now);
+    // So does a derived model cut short in the cache, when the bench loads it (it failed the run until
+    // 2026-12-07, where a damaged stipple cache entry is made again).
+    std::vector<bench::ModelEntry> cut = bench::prepare_model_set(options);
+    ASSERT_EQ(cut[0].path.parent_path(), a);
+    fs::resize_file(cut[0].path, fs::file_size(cut[0].path) / 2);
+    EXPECT_THROW(bench::load_model(cut[0]), Error);
+    std::string said;
+    options.log = [&](const std::string& line) { said += line + "\n"; };
+    const Mesh mesh = bench::load_model(cut[0], options);
+    EXPECT_EQ(mesh.triangle_count(), first[0].triangles);
+    EXPECT_TRUE(cut[0].derived_now);
+    EXPECT_NE(said.find("deriving it again"), std::string::npos) << said;
+    EXPECT_EQ(read_bytes(cut[0].path), read_bytes(second[0].path));  // as derived into the other folder
 }
 
 // A run of chosen rows needs only their scans: --models horse with horse.ply alone was reported as
@@ -636,19 +649,23 @@ TEST(BenchCommand, QuickRunWritesTableJsonAndChart) {
 
 TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     fs::path out = test::temp_dir("bench_no_scans");
+    // A folder without the scans (one named that is not there is refused: BadArgumentsFailWithOneLine).
+    const fs::path models = test::temp_dir("bench_no_scans_models") / "stipple's models";
+    fs::create_directories(models);
     // Three frames queued per submission: every column's passes recorded back to back in one command
     // buffer (the validation layer is on: a descriptor set rewritten between them would be an error).
     test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1",
                                          "--warmup", "0", "--width", "320", "--height", "256", "--models-dir",
-                                         "/nonexistent/stipple's models", "--out", out.string(), "--queued", "3"});
+                                         models.string(), "--out", out.string(), "--queued", "3"});
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("not in /nonexistent/stipple's models"), std::string::npos);
+    EXPECT_NE(r.out.find("not in " + models.string()), std::string::npos);
     EXPECT_NE(r.out.find("procedural UV sphere"), std::string::npos);
     nlohmann::json j = nlohmann::json::parse(read_bytes(out / "results.json"));
     EXPECT_FALSE(j["scans_found"].get<bool>());
     // The command as a shell reads it back (a word with a space was recorded as two).
-    EXPECT_NE(j["command"].get<std::string>().find(" --models-dir '/nonexistent/stipple'\\''s models' --out"), std::string::npos)
+    EXPECT_NE(j["command"].get<std::string>().find(" --models-dir '" + models.parent_path().string() + "/stipple'\\''s models' --out"),
+              std::string::npos)
         << j["command"];
     EXPECT_EQ(j["queued_frames"], 3);
     EXPECT_EQ(j["validation_messages"], 0);
@@ -668,6 +685,36 @@ TEST(BenchCommand, WithoutScansItSaysSoAndUsesSpheres) {
     EXPECT_FALSE(j.contains("animated")) << "rows named with --models: no animated row unless asked";
 }
 
+// The bench's rows are checked against the machine's memory as every command's models are (it generated the
+// horse's 276k stipples under a 5 MB limit that info, tone and render refused), and a refusal advises what
+// the bench can take (it said "lower --dmax", an option it does not have).
+TEST(BenchCommand, ARowBeyondTheMachinesMemoryIsRefusedInOneLine) {
+    test::ScopedEnv limit("STIPPLE_HOST_MEMORY_LIMIT", "5M");
+    const test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "splat", "--frames", "1", "--warmup",
+                                               "0", "--width", "160", "--height", "128", "--models-dir",
+                                               test::temp_dir("bench_memory_no_scans").string(), "--out",
+                                               test::temp_dir("bench_memory").string()});
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("stipples planned"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the bench draws every row at the default D_max"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("--dmax"), std::string::npos) << r.err;
+}
+
+// Where some rows' scans are missing, the report says which rows are spheres, not that all are.
+TEST(BenchReport, SaysWhichRowsAreSpheres) {
+    bench::BenchResults results;
+    results.models_dir = "/scans";
+    results.cache_dir = "/cache";
+    results.rows_run = 2;
+    results.sphere_rows = {"dragon"};
+    const std::string some = bench::models_note(results);
+    EXPECT_NE(some.find("derived from the scans in /scans"), std::string::npos) << some;
+    EXPECT_NE(some.find("but dragon: a PROCEDURAL UV sphere"), std::string::npos) << some;
+    results.sphere_rows = {"horse", "dragon"};
+    EXPECT_EQ(bench::models_note(results).find("PROCEDURAL UV spheres with each row's polygon count (the scans are not in /scans)"), 0u);
+}
+
 TEST(BenchCommand, CompareListsTheCellsThatGotSlower) {
     // An earlier run where the sphere standing in for the horse drew at a million fps on the indirect
     // path and generated a billion stipples a second; it also had a cell this run has not.
@@ -677,7 +724,8 @@ TEST(BenchCommand, CompareListsTheCellsThatGotSlower) {
         "cells": [{"column": "indirect", "median_fps": 1e6}, {"column": "cpu", "median_fps": 1.0}]}]})";
     test::CommandResult r = run_stipple({"bench", "--models", "horse", "--paths", "indirect", "--frames", "1", "--warmup",
                                          "0", "--width", "320", "--height", "256", "--models-dir",
-                                         "/nonexistent/stipple/models", "--out", out.string(), "--compare", old_path});
+                                         test::temp_dir("bench_compare_no_scans").string(), "--out", out.string(),
+                                         "--compare", old_path});
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("slower: horse / indirect -"), std::string::npos);
@@ -698,7 +746,11 @@ TEST(BenchCommand, BadArgumentsFailWithOneLine) {
           {"bench", "--models", "horse,horse"}, {"bench", "--paths", "vertex,cpu,vertex"}, {"bench", "--cache-dir", ""},
           {"bench", "--out", test::write_file(test::temp_dir("bench_out_file") / "a_file", "x")},
           // A file where the scans' folder should be (until 2026-12-04 it drew spheres as if none were there).
-          {"bench", "--models-dir", test::write_file(test::temp_dir("bench_models_file") / "models.obj", "x")}}) {
+          {"bench", "--models-dir", test::write_file(test::temp_dir("bench_models_file") / "models.obj", "x")},
+          // A folder named that is not there (a typo ran the whole bench on spheres until 2026-12-07), and the
+          // animated row alone with rows or paths it would not run.
+          {"bench", "--models-dir", "/nonexistent/stipple/models"}, {"bench", "--animated-only", "--models", "horse"},
+          {"bench", "--animated-only", "--paths", "splat"}}) {
         test::CommandResult r = run_stipple(args);
         EXPECT_EQ(r.exit_code, 1) << args.back();
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

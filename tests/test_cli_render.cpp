@@ -870,6 +870,7 @@ TEST(CliRender, BadParametersAreRejectedClearly) {
         {{"parity", "--devices", "0,0", "--yaws", "0"}, "--yaws"},
         {{"parity", "--yaws", "0"}, "--yaws"},  // said before the count of devices (lavapipe alone: one)
         {{"parity", "--paths", "foo"}, "--paths: unknown density path 'foo'"},
+        {{"parity", "--paths", "splat,vertex,splat"}, "--paths: 'splat' is named twice"},  // drew its rows twice
         {{"parity", "--devices", "0,0", "--density-path", "cpu"}, "--density-path does not apply"},
         // Numbers are decimal everywhere: hex was read by some options (--seed 0x10 as 16) and not others.
         {{"render", "--seed", "0x10"}, "--seed: '0x10' is not an integer"},

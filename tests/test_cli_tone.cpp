@@ -117,7 +117,7 @@ TEST(CliTone, ADistanceThatCoversNothingIsLeftOutOfMaxOverMin) {
         const test::CommandResult r = test::run_stipple(
             {"tone", "--distances", distances, "--views", "30:10", "--width", "96", "--height", "80"});
         ASSERT_EQ(r.exit_code, 0) << r.err;
-        EXPECT_NE(r.err.find("at d=300 the object covers no pixel in view 30:10"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("at d=300 the object covers no pixel or inks none in view 30:10"), std::string::npos) << r.err;
         const auto on = rows(r.out, "on");
         ASSERT_EQ(on.size(), 1u) << r.out;
         ASSERT_EQ(on[0].size(), 6u) << r.out;
@@ -187,7 +187,13 @@ TEST(CliTone, BadOptionsGetOneLine) {
              {{"--seeds", "1.5"}, "stipple: --seeds: '1.5' is not a whole number in [0, 4294967295]\n"},
              {{"--seed", "2", "--seeds", "1,2"}, "stipple: give --seed or --seeds, not both\n"},
              {{"--distances", "0"}, "stipple: --distances: 0 must be in [0.0001, 10000]\n"},
-             {{"--views", "30"}, "stipple: --views: '30' is not YAW:PITCH (degrees)\n"}}) {
+             {{"--views", "30"}, "stipple: --views: '30' is not YAW:PITCH (degrees)\n"},
+             // Repeats drew a column or a seed's table twice (the seed averaged in twice) until 2026-12-07.
+             {{"--distances", "1,1.0,2"},
+              "stipple: --distances: '1.0' is the same distance as an earlier one, as the table names them\n"},
+             {{"--seeds", "1,2,1"}, "stipple: --seeds: 1 is named twice (its table would be averaged in twice)\n"},
+             {{"--images", "/proc/stipple-tone-images"},
+              "stipple: --images /proc/stipple-tone-images: cannot make the folder (No such file or directory)\n"}}) {
         std::vector<std::string> argv{"tone"};
         argv.insert(argv.end(), args.begin(), args.end());
         const test::CommandResult r = test::run_stipple(argv);

@@ -85,6 +85,7 @@ AnimatedRow run_animated_row(const gpu::Context& context, OffscreenTarget& targe
     const ObjectData model = load_model_data(path.string());
     if (!model.motion) fail_file(path.string(), "the generated cylinder has no animation");
     const ObjectParams params;  // the defaults, as every row
+    check_generation_fits_memory(path.string(), planned_stipple_count(model, params.generation));
     const auto animated_stipples = make_stipples(model, params.generation);
     const auto static_stipples = make_stipples(*model.mesh, params.generation);  // the same surface, no headroom
 

@@ -144,6 +144,7 @@ std::string json_report(const BenchResults& r) {
         {"view", {{"yaw_deg", kViewYawDeg}, {"pitch_deg", kViewPitchDeg}, {"distance", kViewDistance}}},
         {"models_dir", r.models_dir},
         {"scans_found", r.scans_found},
+        {"sphere_rows", r.sphere_rows},
         {"cache_dir", r.cache_dir},
         {"columns", columns},
         {"paper_table", paper},

@@ -8,6 +8,9 @@
 namespace stipple::bench {
 
 std::string markdown_report(const BenchResults& results);
+// What the rows were made from where some or all scans are missing: "PROCEDURAL UV spheres ..." for every row,
+// else the rows that are spheres (the others derived from the scans).
+std::string models_note(const BenchResults& results);
 std::string json_report(const BenchResults& results);  // pretty-printed
 std::string svg_chart(const BenchResults& results);
 

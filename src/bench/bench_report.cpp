@@ -22,6 +22,20 @@ const CellResult* find_cell(const ModelResult& model, const Column& column) {
 
 std::string drawn_text(int64_t drawn) { return drawn < 0 ? "n/a" : with_commas(uint64_t(drawn)); }
 
+}  // namespace
+
+std::string models_note(const BenchResults& r) {
+    if (r.sphere_rows.size() >= r.rows_run)
+        return "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " + r.models_dir + ")";
+    std::string rows;
+    for (const std::string& row : r.sphere_rows) rows += (rows.empty() ? "" : ", ") + row;
+    return "derived from the scans in " + r.models_dir + " (cache: " + r.cache_dir + "), but " + rows +
+           (r.sphere_rows.size() == 1 ? ": a PROCEDURAL UV sphere" : ": PROCEDURAL UV spheres") +
+           " with the row's polygon count (the scan is not there)";
+}
+
+namespace {
+
 void header_lines(std::ostringstream& md, const BenchResults& r) {
     md << "# stipple bench: the paper's Table 1 on this machine\n\n";
     md << "- device: " << r.device << "\n";
@@ -34,10 +48,7 @@ void header_lines(std::ostringstream& md, const BenchResults& r) {
                                         r.queued, r.queued)
                         : std::string())
        << "; GPU ms: median of each pass's timestamps\n";
-    md << "- models: "
-       << (r.scans_found ? "derived from the scans in " + r.models_dir + " (cache: " + r.cache_dir + ")"
-                         : "PROCEDURAL UV spheres with each row's polygon count (the scans are not in " +
-                               r.models_dir + ")")
+    md << "- models: " << (r.scans_found ? "derived from the scans in " + r.models_dir + " (cache: " + r.cache_dir + ")" : models_note(r))
        << "\n";
     md << "- date: " << r.date << (r.quick ? " (--quick: a reduced set, a few frames a cell: a cell alone may be off by tens of percent)" : "") << "; total " << printf_string("%.0f", r.total_seconds)
        << " s\n";

@@ -2,6 +2,7 @@
 #include "bench/bench_runner.hpp"
 
 #include "bench/animated_row.hpp"
+#include "bench/bench_output.hpp"
 #include "bench/limit_probe.hpp"
 
 #include <algorithm>
@@ -198,7 +199,9 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
     results.depth_raster = depth_raster_name(options.depth_raster);
     results.models_dir = options.models_dir.string();
     results.cache_dir = options.cache_dir.string();
-    results.scans_found = scans_available(options.models_dir, options.models);
+    results.sphere_rows = options.animated_only ? std::vector<std::string>{} : rows_without_scans(options.models_dir, options.models);
+    results.scans_found = results.sphere_rows.empty();
+    results.rows_run = options.animated_only ? 0 : options.models.empty() ? std::size(kPaperTable) : options.models.size();
     results.columns = make_columns(options.paths.empty() ? all_density_paths() : options.paths, options.object_lines);
 
     // The device first: a bad --device fails before any model is derived.
@@ -209,9 +212,7 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
     if (options.queued == 0) options.queued = OffscreenTarget::default_queued_frames(context);
     results.queued = options.queued;
 
-    if (!results.scans_found)
-        log("NOTE: the scanned models are not in " + results.models_dir +
-            ": benchmarking procedural UV spheres with each row's polygon count instead");
+    if (!results.scans_found) log("NOTE: " + models_note(results));
     ModelSetOptions set_options;
     set_options.models_dir = options.models_dir;
     set_options.cache_dir = options.cache_dir;
@@ -227,14 +228,17 @@ BenchResults run_bench(const BenchOptions& requested, const Logger& log) {
                context.device_name.c_str(), options.width, options.height, options.warmup, options.frames,
                double(kViewYawDeg), double(kViewPitchDeg)));
 
-    for (const ModelEntry& entry : entries) {
+    for (ModelEntry& entry : entries) {
         ModelResult model;
-        model.entry = entry;
         auto start = Clock::now();
-        Mesh mesh = load_model(entry);
+        Mesh mesh = load_model(entry, set_options);  // a damaged derived model is derived again
+        model.entry = entry;
         model.load_seconds = seconds_since(start);
         ObjectParams params;  // the defaults: the README's look
-        // Generated every time (not from the stipple cache): the benchmark times the preprocessing.
+        // Generated every time (not from the stipple cache): the benchmark times the preprocessing. Checked
+        // against the machine's memory first, as every command's models are.
+        check_generation_fits_memory(entry.path.empty() ? entry.source : entry.path.string(),
+                                     planned_stipple_count(mesh, params.generation));
         const std::shared_ptr<const StippleSet> generated = make_stipples(mesh, params.generation, StippleSource::Generate);
         const StippleSet& stipples = *generated;
         model.generation_seconds = stipples.generation_seconds;

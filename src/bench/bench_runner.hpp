@@ -145,7 +145,9 @@ struct BenchResults {
     bool quick = false;
     std::string depth_cull = "auto", depth_raster = "auto";  // the options' names, for --compare
     std::string models_dir;
-    bool scans_found = false;
+    bool scans_found = false;                 // every row run from its scan
+    std::vector<std::string> sphere_rows;     // the rows run without their scans, as UV spheres
+    size_t rows_run = 0;                      // rows asked (the animated row not counted)
     std::string cache_dir;
     std::vector<Column> columns;
     std::vector<ModelResult> models;

@@ -160,13 +160,18 @@ fs::path ModelSetOptions::default_cache_dir() {
     return fs::path(STIPPLE_SHADER_DIR).parent_path() / "bench-models";
 }
 
-bool scans_available(const fs::path& models_dir, const std::vector<std::string>& rows) {
+std::vector<std::string> rows_without_scans(const fs::path& models_dir, const std::vector<std::string>& rows) {
     // Only the rows run: --models horse with horse.ply alone said every row was a sphere.
+    std::vector<std::string> missing;
     for (const Recipe& r : kRecipes)
         if ((rows.empty() || std::find(rows.begin(), rows.end(), r.row) != rows.end()) &&
             !fs::is_regular_file(models_dir / r.source))
-            return false;
-    return true;
+            missing.push_back(r.row);
+    return missing;
+}
+
+bool scans_available(const fs::path& models_dir, const std::vector<std::string>& rows) {
+    return rows_without_scans(models_dir, rows).empty();
 }
 
 std::vector<ModelEntry> prepare_model_set(const ModelSetOptions& options) {
@@ -215,6 +220,23 @@ Mesh load_model(const ModelEntry& entry) {
         return mesh;
     }
     return load_mesh_for_drawing(entry.path.string());
+}
+
+Mesh load_model(ModelEntry& entry, const ModelSetOptions& options) {
+    const bool derived = !entry.procedural && entry.path.parent_path() == options.cache_dir;
+    if (!derived) return load_model(entry);
+    try {
+        return load_model(entry);
+    } catch (const Error& e) {
+        if (options.log) options.log(std::string("NOTE: ") + e.what() + ": deriving it again");
+        std::error_code ec;
+        fs::remove(options.cache_dir / (slug(entry.name) + ".key"), ec);
+        fs::remove(entry.path, ec);
+        ModelSetOptions again = options;
+        again.only = {entry.name};
+        entry = prepare_model_set(again).at(0);
+        return load_model(entry);
+    }
 }
 
 }  // namespace stipple::bench

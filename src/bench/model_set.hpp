@@ -49,6 +49,8 @@ struct ModelSetOptions {
 
 // True when every scan the rows need is in `models_dir` (`rows`: names of Table 1's rows; empty: all).
 bool scans_available(const std::filesystem::path& models_dir, const std::vector<std::string>& rows = {});
+// The rows (of `rows`, or all) whose scan is not in `models_dir`: each is a UV sphere of its polygon count.
+std::vector<std::string> rows_without_scans(const std::filesystem::path& models_dir, const std::vector<std::string>& rows = {});
 
 // Prepares the requested rows: with the scans, derives each missing or stale model into the cache
 // (stale: the key file's source size, mtime, target or derivation version differ); without them,
@@ -57,5 +59,8 @@ std::vector<ModelEntry> prepare_model_set(const ModelSetOptions& options);
 
 // The entry's mesh: its file loaded, or the procedural sphere.
 Mesh load_model(const ModelEntry& entry);
+// load_model, but a derived model that does not load (truncated or damaged in the cache) is derived again from
+// its scan, said through options.log, and `entry` updated: the stipple cache regenerates a damaged entry too.
+Mesh load_model(ModelEntry& entry, const ModelSetOptions& options);
 
 }  // namespace stipple::bench

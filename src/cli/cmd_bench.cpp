@@ -70,6 +70,9 @@ int run_bench(const std::vector<std::string>& argv) {
         bounded(args, "--animated-triangles", rows_named ? 0 : options.quick ? 20'000 : 100'000, 0, 10'000'000));
     options.animated_only = args.flag("--animated-only");
     if (options.animated_only && options.animated_triangles == 0) fail("--animated-only needs --animated-triangles > 0");
+    if (options.animated_only && (args.has("--models") || args.has("--paths")))
+        fail(std::string("--animated-only runs the animated row alone, on its own cylinder and path: it takes no ") +
+             (args.has("--models") ? "--models" : "--paths"));
     if (args.has("--models")) {
         for (const std::string& name : split_list("--models", args.get("--models", ""))) {
             const bench::PaperRow* row = bench::find_paper_row(name);
@@ -107,10 +110,11 @@ int run_bench(const std::vector<std::string>& argv) {
     if (args.has("--models-dir")) options.models_dir = args.get("--models-dir", "");
     if (args.has("--cache-dir")) options.cache_dir = args.get("--cache-dir", "");
     if (args.has("--models-dir") && options.models_dir.empty()) fail("--models-dir needs a folder");
-    // A missing folder means a machine without the scans (the bench says so and draws spheres); a file
-    // named where the folder should be is a mistake.
-    if (args.has("--models-dir") && std::filesystem::exists(options.models_dir) &&
-        !std::filesystem::is_directory(options.models_dir))
+    // Without the option a missing folder means a machine without the scans (the bench says so and draws
+    // spheres); a folder named that is not there, or a file named where it should be, is a mistake.
+    if (args.has("--models-dir") && !std::filesystem::exists(options.models_dir))
+        fail("--models-dir " + options.models_dir.string() + ": no such folder");
+    if (args.has("--models-dir") && !std::filesystem::is_directory(options.models_dir))
         fail("--models-dir " + options.models_dir.string() + " is a file, not a folder");
     if (args.has("--cache-dir") && options.cache_dir.empty()) fail("--cache-dir needs a folder");
     const std::filesystem::path out = args.get("--out", "bench-results");
@@ -158,7 +162,18 @@ int run_bench(const std::vector<std::string>& argv) {
         std::fflush(stdout);
     };
     const auto start = std::chrono::steady_clock::now();
-    bench::BenchResults results = bench::run_bench(options, log);
+    bench::BenchResults results;
+    try {
+        results = bench::run_bench(options, log);
+    } catch (const Error& e) {
+        // The checks that refuse a model advise the options render takes; the bench draws every row at the
+        // defaults and has none of them (it said "lower --dmax", which it refused as an unknown option).
+        std::string message = e.what();
+        const size_t advice = message.find(": lower --dmax or --max-stipples");
+        if (advice == std::string::npos) throw;
+        fail(message.substr(0, advice) + ": the bench draws every row at the default D_max (leave the row out with "
+                                         "--models, or run it on a machine with more memory)");
+    }
     if (plot_row) {
         results.plot_order = measure_plot_order_row(plot_dots, !options.quick, options.models_dir, options.width,
                                                     options.height, options.device, log);

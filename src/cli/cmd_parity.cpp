@@ -1,4 +1,5 @@
 // stipple parity: do two Vulkan devices (lavapipe and a real GPU) draw the same stipples? (issue 17)
+#include <algorithm>
 #include <cstdio>
 #include <set>
 
@@ -38,6 +39,7 @@ std::vector<DensityPath> parse_paths(const std::string& text) {
     for (const std::string& part : split_list("--paths", text)) {
         const auto path = parse_density_path(part);
         if (!path) fail("--paths: unknown density path '" + part + "' (vertex, cpu, indirect, splat, cpu-splat)");
+        if (std::find(paths.begin(), paths.end(), *path) != paths.end()) fail("--paths: '" + part + "' is named twice");
         paths.push_back(*path);
     }
     return paths;

@@ -3,7 +3,9 @@
 // --regimes where the stipples the tone asks for go (src/render/tone_survey.hpp).
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "core/unit_direction.hpp"
@@ -42,6 +44,10 @@ std::vector<float> parse_distances(const std::string& text) {
     for (const std::string& part : split_list("--distances", text)) {
         double d = parse_number(part, "--distances");
         if (!(d >= 1e-4) || d > 1e4) fail("--distances: " + part + " must be in [0.0001, 10000]");
+        // Compared as the table and --images name them (%g): a repeat drew the same column twice.
+        for (float earlier : distances)
+            if (printf_string("%g", earlier) == printf_string("%g", float(d)))
+                fail("--distances: '" + part + "' is the same distance as an earlier one, as the table names them");
         distances.push_back(float(d));
     }
     if (distances.empty() || distances.size() > 64) fail("--distances needs 1 to 64 comma-separated values");
@@ -76,6 +82,8 @@ std::vector<uint64_t> parse_seeds(const std::string& text) {
         const double seed = parse_number(part, "--seeds");
         if (seed < 0.0 || seed > 4294967295.0 || seed != std::floor(seed))
             fail("--seeds: '" + part + "' is not a whole number in [0, 4294967295]");
+        if (std::find(seeds.begin(), seeds.end(), uint64_t(seed)) != seeds.end())
+            fail("--seeds: " + part + " is named twice (its table would be averaged in twice)");
         seeds.push_back(uint64_t(seed));
     }
     if (seeds.empty() || seeds.size() > 16) fail("--seeds needs 1 to 16 comma-separated seeds");
@@ -227,9 +235,15 @@ int run_tone(const std::vector<std::string>& argv) {
     if (!options.image_dir.empty()) {
         // Made if missing, as -o's folders are; a file of that name is refused.
         std::error_code ec;
+        if (std::filesystem::exists(options.image_dir, ec) && !std::filesystem::is_directory(options.image_dir, ec))
+            fail("--images " + options.image_dir + " is not a folder");
         std::filesystem::create_directories(options.image_dir, ec);
         if (!std::filesystem::is_directory(options.image_dir))
-            fail("--images " + options.image_dir + " is not a folder" + (ec ? " (" + ec.message() + ")" : ""));
+            fail("--images " + options.image_dir + ": cannot make the folder" + (ec ? " (" + ec.message() + ")" : ""));
+        // And its files can be written: an unwritable folder failed after the whole survey, its tables lost.
+        const std::filesystem::path probe = std::filesystem::path(options.image_dir) / ".stipple-write-test";
+        if (!std::ofstream(probe)) fail("--images " + options.image_dir + ": cannot write in the folder (the images would be lost after the survey)");
+        std::filesystem::remove(probe, ec);
     }
     glm::vec3 light = FrameView{}.light_view;
     if (args.has("--light")) {
@@ -279,10 +293,10 @@ int run_tone(const std::vector<std::string>& argv) {
     for (const ToneSample& sample : ons.front().samples)
         for (size_t v = 0; v < options.views.size(); ++v)
             if (!sample.covered(v))
-                std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel in view %g:%g (beyond the frame, "
-                                     "the camera inside it, thinner than a pixel there (between pixel centres), or "
-                                     "only the back of a one-sided surface in view, which --two-sided draws): shown "
-                                     "as -, left out of max/min\n",
+                std::fprintf(stderr, "stipple tone: at d=%g the object covers no pixel or inks none in view %g:%g "
+                                     "(beyond the frame, the camera inside it, thinner than a pixel there (between "
+                                     "pixel centres), or only the back of a one-sided surface in view, which "
+                                     "--two-sided draws): shown as -, left out of max/min\n",
                              sample.distance, options.views[v][0], options.views[v][1]);
     std::printf("Mean ink inside the coverage mask at each distance (multiples of the framing distance)%s:\n\n",
                 several ? "; per seed, then each distance averaged over the seeds" : "");

@@ -278,9 +278,9 @@ itself; without MODEL the default scene's model):
                           less enlarged by a whole factor, at most 8, to 129-256 px) as PNG:
                           DIR/tone-YAW_PITCH-dDISTANCE-on.png (and -off), named by the view; with
                           --frames the first frame's, at the start of the --arc
-  A distance at which the object covers no pixel (beyond the frame, the camera inside it, thinner than
-  a pixel, or only the back of a one-sided surface in view) shows as - and is left out of max/min,
-  with a warning.
+  A distance at which the object covers no pixel or inks none (beyond the frame, the camera inside it,
+  thinner than a pixel, or only the back of a one-sided surface in view) shows as - and is left out of
+  max/min, with a warning. A distance or seed given twice is refused.
   Where a view's figure rests on so few dots that sampling alone may move it by over 2.5%% (1/sqrt
   of the dots), a last line says so, with the dots and the spread.
 
@@ -309,12 +309,13 @@ void bench_section() {
                           (rows: horse, low-res-dragon, bunny, skeleton1, skeleton2, hand, dragon)
   --width N --height N (default 1280 x 1024)  --device N  --list-devices
   --models-dir DIR        where the scans are (default: $STIPPLE_SHARED_MODELS, else the source
-                          folder's ../shared/models)
+                          folder's ../shared/models); a row whose scan is not there is a UV sphere of
+                          its polygon count (a folder named here must exist)
   --cache-dir DIR         where the models derived from them are kept (not the stipple cache;
                           default: $STIPPLE_CACHE_DIR/bench-models, else the build folder's bench-models)
   --animated-triangles N  the animated row's skinned cylinder (default 100000, --quick 20000; 0: none;
                           not run when --models names rows, unless this is given)
-  --animated-only         the animated row alone
+  --animated-only         the animated row alone (no --models or --paths with it)
   --depth-cull MODE       auto, on or off, as for render (default auto)
   --depth-raster MODE     auto, compute or fixed, as for render (default auto)
   --queued N              queue N frames back to back per submission, each timed frame the batch's wall

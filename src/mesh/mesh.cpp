@@ -97,7 +97,7 @@ void validate_mesh(const Mesh& mesh) {
     if (extent > 0.0f && offset > kMaxOffsetOverExtent * extent) {
         char text[256];
         std::snprintf(text, sizeof(text),
-                      "the model lies %g units from the origin, %g times its size (at most %g): the drawing places "
+                      "the model lies up to %g units from the origin along an axis, %g times its size (at most %g): the drawing places "
                       "it in single precision, which keeps too few digits there; move it near the origin",
                       double(offset), double(offset / extent), double(kMaxOffsetOverExtent));
         fail_file(source, text);

@@ -317,7 +317,7 @@ FrameView survey_view(const Sphere& bounds, VkExtent2D full, VkExtent2D crop, fl
 
 }  // namespace
 
-bool ToneSample::covered(size_t view) const { return view < ink.size() && ink[view].covered > 0; }
+bool ToneSample::covered(size_t view) const { return view < ink.size() && ink[view].covered > 0 && ink[view].ink > 0.0; }
 
 double ToneSurvey::max_over_min(size_t view) const {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;

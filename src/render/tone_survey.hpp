@@ -103,7 +103,10 @@ struct ToneSample {
     std::vector<double> mean_ink;  // per view
     std::vector<ToneTally> tallies;  // per view, summed over its frames (empty regimes unless options.regimes)
     std::vector<InkFigures> ink;     // per view, summed over its frames
-    bool covered(size_t view) const;  // the object covers a pixel there (out of frame, or the camera inside it: not)
+    // The object covers a pixel there and inks one: out of frame, or the camera inside it, not; nor where only
+    // surfaces that draw no stipples are in view (the back of a one-sided open surface, which the depth pass
+    // holds to hide what lies behind it; the camera inside an open mesh), whose ink 0 made max/min infinite.
+    bool covered(size_t view) const;
 };
 
 struct ToneSurvey {

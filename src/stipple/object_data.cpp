@@ -128,8 +128,6 @@ uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& 
     return planned_stipple_count(*model.mesh, generation, stretch_headroom(model));
 }
 
-namespace {
-
 void check_generation_fits_memory(const std::string& path, uint64_t count) {
     const uint64_t memory = physical_memory_bytes();
     const uint64_t most = memory / kGenerationBytesPerStipple;
@@ -139,8 +137,6 @@ void check_generation_fits_memory(const std::string& path, uint64_t count) {
                         " bytes a stipple), more than this machine's " + byte_size(memory) + " of memory holds (at most " +
                         std::to_string(most) + " stipples): lower --dmax or --max-stipples");
 }
-
-}  // namespace
 
 std::shared_ptr<const StippleSet> make_model_stipples(const std::string& path, const ObjectData& model,
                                                       const GenerationParams& generation, StippleSource source) {

@@ -62,6 +62,11 @@ uint64_t planned_stipple_count(const ObjectData& model, const GenerationParams& 
 // dragon (docs/performance.md, "Memory").
 inline constexpr uint64_t kGenerationBytesPerStipple = 40;
 
+// Refuses, in one line naming `path`, the count and the limit, `count` stipples whose generation would not fit
+// in the machine's physical memory (or STIPPLE_HOST_MEMORY_LIMIT's): make_model_stipples's check, for callers
+// that generate from a mesh of their own (the bench's rows).
+void check_generation_fits_memory(const std::string& path, uint64_t count);
+
 // make_stipples for the model loaded from `path`, refused first, in one line naming `path`, the count and the
 // limit, where its planned stipples (planned_stipple_count) could not be generated in the machine's physical
 // memory (`info stack.obj --max-stipples 2000000000` grew past 7 GB; render, tone and the viewer checked only
