@@ -72,7 +72,6 @@ bool StippleRenderer::points_read_depth_words(VkExtent2D extent) const {
 }
 
 void StippleRenderer::bind_placeholder_frame_buffers() {
-    if (splat_extent_.width == 0 && splat_extent_.height == 0 && splat_depth_texels_) return;  // bound already
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     splat_background_ = gpu::Buffer(context_, 4, usage, gpu::MemoryUse::DeviceLocal);
     splat_color_ = gpu::Buffer(context_, 4, usage, gpu::MemoryUse::DeviceLocal);

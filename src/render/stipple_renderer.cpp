@@ -405,9 +405,10 @@ void StippleRenderer::record(VkCommandBuffer cb, const RenderTargets& targets) {
         }
     }
     if (any_points) {
-        // Set 1 holds the depth words where a points object moves its dots off the outline, else whatever the
-        // frame's compute passes bound there, or placeholders (only the outline variant reads them).
-        if (!any_outline_shift && !any_splat && !any_object_space_lines && !depth_by_compute_) bind_placeholder_frame_buffers();
+        // Set 1 holds the depth words where a points object moves its dots off the outline (made above), else
+        // whatever an earlier frame bound there, or placeholders before any (only the outline variant reads
+        // them). Kept, not replaced by placeholders: a frame of the splat after would make them again.
+        if (!splat_depth_texels_) bind_placeholder_frame_buffers();
         begin_rendering(cb, targets, false);
         record_stipples(cb);
         vkCmdEndRendering(cb);

@@ -202,7 +202,8 @@ private:
     // splat_pass.cpp
     void ensure_frame_buffers(const RenderTargets& targets);
     // Whether the stipple pass's points read the depth words (their outline shift, kSpecOutlineShift): the
-    // frame's words fit in one buffer. Larger frames bind placeholders of a word (their pipelines have set 1).
+    // frame's words fit in one buffer. Before any frame has made the splat's buffers, placeholders of a word are
+    // bound in their place (the stipple pipelines have set 1).
     bool points_read_depth_words(VkExtent2D extent) const;
     void bind_placeholder_frame_buffers();
     bool splat_composes_dots() const;
