@@ -193,8 +193,8 @@ void main() {
                                            object.model_view_proj * vec4(polygon.edge_v, 0.0), frame.viewport.xy);
         gl_Position.z -= large_dot_depth_pull(slope, gl_PointSize) * gl_Position.w;
     }
-    if (kOutlineShift) {  // moved along its own plane: its depth follows (window_depth_slope_at)
-        vec2 slope = window_depth_slope_at(gl_Position, object.model_view_proj * vec4(polygon.edge_u, 0.0),
+    if (kOutlineShift) {  // moved along its own plane: its depth follows (window_depth_slope_at, of the plane itself)
+        vec2 slope = window_depth_slope_at(object.model_view_proj * vec4(position, 1.0), object.model_view_proj * vec4(polygon.edge_u, 0.0),
                                            object.model_view_proj * vec4(polygon.edge_v, 0.0), frame.viewport.xy);
         ivec2 move = outline_shift(gl_Position, gl_PointSize, kRoundPoints || out_intensity < 0.0f, slope);
         gl_Position.xy += vec2(2.0f * float(move.x) * frame.viewport.z, -2.0f * float(move.y) * frame.viewport.w) * gl_Position.w;

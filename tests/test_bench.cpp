@@ -178,6 +178,7 @@ TEST(ModelSet, DerivationIsDeterministicAndCached) {
     EXPECT_THROW(bench::load_model(cut[0]), Error);
     std::string said;
     options.log = [&](const std::string& line) { said += line + "\n"; };
+    options.cache_dir = a.string() + "/";  // the folder however written (with a trailing slash it was not derived again)
     const Mesh mesh = bench::load_model(cut[0], options);
     EXPECT_EQ(mesh.triangle_count(), first[0].triangles);
     EXPECT_TRUE(cut[0].derived_now);

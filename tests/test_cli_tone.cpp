@@ -191,7 +191,7 @@ TEST(CliTone, BadOptionsGetOneLine) {
              // Repeats drew a column or a seed's table twice (the seed averaged in twice) until 2026-12-07.
              {{"--distances", "1,1.0,2"},
               "stipple: --distances: '1.0' is the same distance as an earlier one, as the table names them\n"},
-             {{"--seeds", "1,2,1"}, "stipple: --seeds: 1 is named twice (its table would be averaged in twice)\n"},
+             {{"--seeds", "1,2,1"}, "stipple: --seeds: '1' is named twice (its table would be averaged in twice)\n"},
              {{"--images", "/proc/stipple-tone-images"},
               "stipple: --images /proc/stipple-tone-images: cannot make the folder (No such file or directory)\n"}}) {
         std::vector<std::string> argv{"tone"};

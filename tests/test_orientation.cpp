@@ -103,10 +103,12 @@ TEST(Winding, MixedTrianglesOfAClosedMeshAgreeAndFaceOutward) {
     }
 }
 
-// Corners a rounding step or two apart are one corner (weld_by_position, kWeldTolerance): an export that
+// Corners a rounding step or two apart are one corner (weld_by_position, kWeldFloatSteps): an export that
 // wrote each face's corners with its own rounding made every triangle a part of its own, so the winding repair
 // turned nothing and every edge was a border (lines in dashes; a jittered cube drew none). Corners farther
-// apart than the tolerance stay apart.
+// apart stay apart, however large the rest of the file: a first version welded within a millionth of the
+// file's extent and dropped 28,907 of a bunny's triangles beside a 600-unit ground quad (all of them beside
+// one stray vertex 30,000 units away).
 TEST(Winding, CornersARoundingStepApartAreOneCorner) {
     Mesh soup = unwelded(make_icosphere(3));
     const size_t triangles = soup.triangle_count();
@@ -126,6 +128,15 @@ TEST(Winding, CornersARoundingStepApartAreOneCorner) {
     Mesh apart = unwelded(make_icosphere(3));
     for (size_t v = 0; v < apart.positions.size(); v += 2) apart.positions[v].x += 2e-4f;
     EXPECT_GT(border_edge_count(apart), apart.triangle_count());
+    // A sphere 2e-3 across with 642 corners 1e-4 apart or more, in one file with a 600-unit quad and a stray
+    // vertex far away: every corner its own.
+    Mesh scene = make_icosphere(3, 1e-3f);
+    const size_t small = scene.positions.size();
+    for (const glm::vec3 corner : {glm::vec3(-300, -300, -1), glm::vec3(300, -300, -1), glm::vec3(300, 300, -1)})
+        scene.indices.push_back(uint32_t(scene.positions.size())), scene.positions.push_back(corner);
+    scene.positions.push_back(glm::vec3(30000.0f, 0.0f, 0.0f));
+    const std::vector<uint32_t> own = weld_by_position(scene.positions);
+    for (size_t v = 0; v < small; ++v) EXPECT_EQ(own[v], v);
 }
 
 TEST(Winding, EachPartIsTurnedOutwardOnItsOwn) {
@@ -212,10 +223,9 @@ TEST(Winding, AThinClosedPartAcrossItsBoxIsTurnedToo) {
 TEST(Winding, ALoosePanelWoundAgainstItsFileNormalsIsTurnedToThem) {
     const auto dir = test::temp_dir("winding_loose_panel");
     // Five faces of a unit cube sharing 8 corners, outward, with outward face normals; the +z face on its own
-    // corners 1e-4 out (1e-6 is within the welding tolerance since 2026-12-07: one corner with the cube's),
-    // wound clockwise seen from outside.
+    // corners 1e-6 out (8 float steps: beyond the weld's, kWeldFloatSteps), wound clockwise seen from outside.
     const std::string box = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                            "v 0 0 1.0001\nv 1 0 1.0001\nv 1 1 1.0001\nv 0 1 1.0001\n"
+                            "v 0 0 1.000001\nv 1 0 1.000001\nv 1 1 1.000001\nv 0 1 1.000001\n"
                             "vn 0 0 -1\nvn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 1\n"
                             "f 1//1 4//1 3//1 2//1\nf 1//2 2//2 6//2 5//2\nf 2//3 3//3 7//3 6//3\n"
                             "f 3//4 4//4 8//4 7//4\nf 4//5 1//5 5//5 8//5\nf 9//6 12//6 11//6 10//6\n";

@@ -223,13 +223,13 @@ Mesh load_model(const ModelEntry& entry) {
 }
 
 Mesh load_model(ModelEntry& entry, const ModelSetOptions& options) {
-    const bool derived = !entry.procedural && entry.path.parent_path() == options.cache_dir;
+    std::error_code ec;  // the same folder however written (a trailing slash, a relative path)
+    const bool derived = !entry.procedural && fs::equivalent(entry.path.parent_path(), options.cache_dir, ec);
     if (!derived) return load_model(entry);
     try {
         return load_model(entry);
     } catch (const Error& e) {
         if (options.log) options.log(std::string("NOTE: ") + e.what() + ": deriving it again");
-        std::error_code ec;
         fs::remove(options.cache_dir / (slug(entry.name) + ".key"), ec);
         fs::remove(entry.path, ec);
         ModelSetOptions again = options;

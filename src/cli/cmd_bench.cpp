@@ -172,7 +172,7 @@ int run_bench(const std::vector<std::string>& argv) {
         const size_t advice = message.find(": lower --dmax or --max-stipples");
         if (advice == std::string::npos) throw;
         fail(message.substr(0, advice) + ": the bench draws every row at the default D_max (leave the row out with "
-                                         "--models, or run it on a machine with more memory)");
+                                         "--models)");
     }
     if (plot_row) {
         results.plot_order = measure_plot_order_row(plot_dots, !options.quick, options.models_dir, options.width,

@@ -83,7 +83,7 @@ std::vector<uint64_t> parse_seeds(const std::string& text) {
         if (seed < 0.0 || seed > 4294967295.0 || seed != std::floor(seed))
             fail("--seeds: '" + part + "' is not a whole number in [0, 4294967295]");
         if (std::find(seeds.begin(), seeds.end(), uint64_t(seed)) != seeds.end())
-            fail("--seeds: " + part + " is named twice (its table would be averaged in twice)");
+            fail("--seeds: '" + part + "' is named twice (its table would be averaged in twice)");
         seeds.push_back(uint64_t(seed));
     }
     if (seeds.empty() || seeds.size() > 16) fail("--seeds needs 1 to 16 comma-separated seeds");

@@ -1,14 +1,13 @@
 #include "mesh/mesh_ops.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
-#include <glm/gtx/component_wise.hpp>
 #include <meshoptimizer.h>
 
 #include "core/error.hpp"
@@ -63,43 +62,48 @@ std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions) {
     const size_t n = positions.size();
     std::vector<uint32_t> parent(n);
     for (size_t v = 0; v < n; ++v) parent[v] = uint32_t(v);
-    // Positions a rounding step or so apart are one corner too (kWeldTolerance): an export that wrote each
-    // face's corners with its own rounding left every triangle a part of its own, and its lines in dashes
-    // or none. Positions that are not numbers keep their own corner.
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const glm::vec3& p : positions)
-        if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    const float extent = n > 0 && lo.x <= hi.x ? glm::compMax(hi - lo) : 0.0f;
-    const float magnitude = n > 0 && lo.x <= hi.x ? std::max(glm::compMax(glm::abs(lo)), glm::compMax(glm::abs(hi))) : 0.0f;
-    const double cell = std::max(double(extent) * kWeldTolerance, double(magnitude) * 8.0 * double(FLT_EPSILON));
-    // Keys on grids of twice the tolerance, each axis at offset 0 or half a cell (8 grids): two positions
-    // within the tolerance on every axis share a cell of one of them (on each axis a boundary falls between
-    // them on at most one of the two offsets), and the positions of a cell are one corner (so a pair up to
-    // twice the tolerance apart may be). Hashed as bytes by meshoptimizer (an unordered_map took a fifth
-    // of the winding repair's time on an 871k-triangle scan). Without a cell (one position, or all alike) the
-    // exact positions are the keys, -0 and +0 one.
-    const int grids = cell > 0.0 ? 8 : 1;
+    // Positions a rounding step or so apart are one corner too (kWeldFloatSteps): an export that wrote each
+    // face's corners with its own rounding left every triangle a part of its own, and its lines in dashes or
+    // none. Measured in steps of each coordinate's own float, not in the model's size: a model sharing its
+    // file with a large ground plane, or holding one stray vertex far away, keeps its fine detail (a tolerance
+    // of a millionth of the whole file's extent collapsed and dropped most of a bunny beside a 600-unit quad).
+    // Keys: each coordinate's bits as an ordered integer (adjacent floats adjacent, -0 and +0 one), in buckets
+    // of twice kWeldFloatSteps, each axis at offset 0 or half a bucket (8 grids): two positions within
+    // kWeldFloatSteps on every axis share a bucket of one of them (on each axis a bucket boundary falls
+    // between them at most at one of the two offsets). Hashed as bytes by meshoptimizer (an unordered_map took
+    // a fifth of the winding repair's time on an 871k-triangle scan). Positions that are not numbers keep
+    // their own corner (their bits as they are).
+    const auto ordered = [](float x) {
+        uint32_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        const int64_t magnitude = int64_t(bits & 0x7FFFFFFFu);
+        return (bits & 0x80000000u) ? -magnitude : magnitude;  // -0 and +0 both 0
+    };
+    constexpr int64_t kBucket = 2 * kWeldFloatSteps;
+    constexpr int kGrids = 8;
     // Two grids at a time, their keys and ids side by side on two cores, then joined in order on one: at most
     // 32 bytes a position more (the loaded mesh's budget, loader_util.cpp).
     constexpr int kGridsAtOnce = 2;
     std::vector<uint32_t> ids[kGridsAtOnce];
     std::vector<uint32_t> first;
-    for (int batch = 0; batch < grids; batch += kGridsAtOnce) {
-        const int count = std::min(kGridsAtOnce, grids - batch);
-        parallel_for(size_t(count), 1, [&](size_t k) {
+    for (int batch = 0; batch < kGrids; batch += kGridsAtOnce) {
+        parallel_for(size_t(kGridsAtOnce), 1, [&](size_t k) {
             const int grid = batch + int(k);
-            const glm::dvec3 offset(grid & 1 ? 0.5 : 0.0, grid & 2 ? 0.5 : 0.0, grid & 4 ? 0.5 : 0.0);
-            std::vector<glm::vec3> keys(n);
+            std::vector<int32_t> keys(3 * n);
             for (size_t v = 0; v < n; ++v) {
                 const glm::vec3& p = positions[v];
                 const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-                keys[v] = grids == 1 || !finite ? p + glm::vec3(0.0f)
-                                                : glm::vec3(glm::floor((glm::dvec3(p) - glm::dvec3(lo)) / (2.0 * cell) + offset));
+                for (int axis = 0; axis < 3; ++axis) {
+                    const int64_t o = ordered(p[axis]) + ((grid >> axis) & 1 ? kBucket / 2 : 0);
+                    // Floor division: buckets of equal width on both sides of zero.
+                    keys[3 * v + axis] = finite ? int32_t(o >= 0 ? o / kBucket : -((-o + kBucket - 1) / kBucket))
+                                                : int32_t(ordered(p[axis]));
+                }
             }
             ids[k].resize(n);
-            meshopt_generateVertexRemap(ids[k].data(), nullptr, n, keys.data(), n, sizeof(glm::vec3));
+            meshopt_generateVertexRemap(ids[k].data(), nullptr, n, keys.data(), n, 3 * sizeof(int32_t));
         });
-        for (int k = 0; k < count; ++k) {
+        for (int k = 0; k < kGridsAtOnce; ++k) {
             first.assign(n, UINT32_MAX);  // ids are below n
             for (size_t v = 0; v < n; ++v) {
                 const uint32_t id = ids[k][v];

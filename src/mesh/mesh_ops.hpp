@@ -15,14 +15,14 @@ namespace stipple {
 // are recomputed. Triangles are kept as they are (degenerate ones included).
 Mesh weld_positions(const Mesh& mesh);
 
-// Each vertex's representative: the first vertex at the same position, within kWeldTolerance of the model's
-// extent (or 8 float steps of its largest coordinate, where that is more). A mesh whose corners are split (a
-// triangle soup, a glTF primitive without indices, per-face normals or texture seams) would otherwise make
-// every split edge a border; edge tables and the winding repair (mesh/orientation.hpp) are built on the
-// representatives, which lie where the split corners do. Exported corners a rounding step apart (each face
-// written with its own rounding) are split corners too: welded only where exactly equal until 2026-12-07,
-// such a bunny drew its outline in dashes, a cube none.
-inline constexpr double kWeldTolerance = 1e-6;
+// Each vertex's representative: the first vertex at the same position, each coordinate within kWeldFloatSteps
+// steps of its float (up to twice that where they share a bucket). A mesh whose corners are split (a triangle
+// soup, a glTF primitive without indices, per-face normals or texture seams) would otherwise make every split
+// edge a border; edge tables and the winding repair (mesh/orientation.hpp) are built on the representatives,
+// which lie where the split corners do. Exported corners a rounding step apart (each face written with its
+// own rounding) are split corners too: welded only where exactly equal until 2026-12-07, such a bunny drew its
+// outline in dashes, a cube none.
+inline constexpr int64_t kWeldFloatSteps = 4;
 std::vector<uint32_t> weld_by_position(std::span<const glm::vec3> positions);
 
 // Drops every triangle that repeats an earlier one: the same corners (welded by position) in the same
