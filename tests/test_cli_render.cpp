@@ -952,7 +952,7 @@ TEST(CliRender, ATriangleDrawsTheSameAtEverySize) {
     // (The last: a unit triangle 1e7 units from the origin, whose corners single precision cannot tell apart.)
     for (const auto& [size, message] : {std::pair<std::string, std::string>{"1e19", "beyond the 1e+18 units"},
                                         {"1e-20", "units across, below the 1e-15"},
-                                        {"far", "from the origin, 1e+07 times its size"}}) {
+                                        {"far", "from the origin along an axis, 1e+07 times its size"}}) {
         const std::string model = (dir / ("t" + size + ".obj")).string();
         if (size == "far") write_file(model, "v 1e7 0 0\nv 10000001 0 0\nv 1e7 1 0\nf 1 2 3\n");
         else write_file(model, "v 0 0 0\nv " + size + " 0 0\nv 0 " + size + " 0\nf 1 2 3\n");

@@ -641,7 +641,7 @@ TEST(PlyLoader, AFarModelInDoublesKeepsItsShape) {
 TEST(BadInput, UnusedVerticesSetNeitherTheModelsSizeNorItsPlace) {
     const auto dir = temp_dir("loaders_unused_vertices");
     expect_load_error(write_file(dir / "far.obj", "v 0 0 0\nv 1e6 0 0\nv 1000001 0 0\nv 1e6 1 0\nf 2 3 4\n"),
-                      "from the origin, 1e+06 times its size");
+                      "from the origin along an axis, 1e+06 times its size");
     expect_load_error(write_file(dir / "tiny.obj", "v 5 5 5\nv 0 0 0\nv 1e-20 0 0\nv 0 1e-20 0\nf 2 3 4\n"),
                       "units across, below the 1e-15");
     const Mesh m = load_mesh(write_file(dir / "stray.obj", "v 1e19 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"));
